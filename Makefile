@@ -1,0 +1,57 @@
+# Thin wrapper: every target installs what is missing, configures and builds first.
+BUILD      ?= build
+JOBS       ?= $(shell nproc)
+SUDO       := $(if $(filter 0,$(shell id -u)),,sudo)
+# DESIGN.md section 2, plus the compiler tool chain and what the tests and benches use.
+PACKAGES   := build-essential cmake pkg-config \
+              libopencv-dev libv4l-dev v4l-utils libusb-1.0-0-dev libhdf5-dev libeigen3-dev \
+              libfftw3-dev libpugixml-dev nlohmann-json3-dev libvalijson-dev libboost-math-dev \
+              libcli11-dev libsndfile1-dev gnuplot-nox libgtest-dev libgmock-dev libbenchmark-dev \
+              python3-h5py python3-numpy
+BENCH_PACKAGES := python3-scipy hyperfine
+HAPTEX     := $(BUILD)/haptex
+DEMO       := $(BUILD)/demo
+
+.PHONY: all deps build test demo bench golden clean
+
+all: build
+
+deps:
+	@missing=$$(for p in $(PACKAGES) $(EXTRA_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "make deps: installing $$missing"; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) --timeout 600
+
+demo: build
+	@rm -rf $(DEMO) && mkdir -p $(DEMO)/xml
+	$(BUILD)/tests/make_sample_recording --material "Demo Canvas" -o $(DEMO)/xml/demo_canvas_0.xml
+	$(BUILD)/tests/make_sample_recording --material "Demo Canvas" --seed 2 -o $(DEMO)/xml/demo_canvas_1.xml
+	$(BUILD)/tests/make_sample_recording --material "Demo Cork" --seed 3 --roughness 0.4 -o $(DEMO)/xml/demo_cork_0.xml
+	$(HAPTEX) convert hatt $(DEMO)/xml -o $(DEMO)/recordings.h5
+	$(HAPTEX) info $(DEMO)/recordings.h5
+
+bench:
+	$(MAKE) deps EXTRA_PACKAGES="$(BENCH_PACKAGES)"
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DHAPTEX_BUILD_BENCH=ON $(CMAKE_ARGS)
+	cmake --build $(BUILD) -j $(JOBS)
+	bench/run_bench.sh $(BUILD)
+
+# Regenerates the reference values under tests/golden with Debian's python3-scipy.
+golden:
+	$(MAKE) deps EXTRA_PACKAGES=python3-scipy
+	cd tests/golden && for s in *.py; do /usr/bin/python3 $$s || exit 1; done
+
+clean:
+	rm -rf $(BUILD)

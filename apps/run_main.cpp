@@ -1,0 +1,56 @@
+#include <iostream>
+
+#include "apps/command.hpp"
+#include "core/error.hpp"
+#include "core/version.hpp"
+
+namespace haptex::apps {
+
+int run_main(int argc, char** argv) {
+  CLI::App app{"haptex: build, check and model haptic texture data (GelSight images + vibrations)", "haptex"};
+  app.set_version_flag("--version", std::string("haptex ") + kVersion);
+  app.require_subcommand(1);
+  app.fallthrough();  // shared flags may follow the subcommand's own
+
+  GlobalOptions global;
+  app.add_flag("--json", global.json, "Machine-readable result on stdout");
+  app.add_flag("-q,--quiet", global.quiet, "Print only errors");
+  app.add_flag("-v,--verbose", global.verbose, "Print more detail on stderr (repeatable)");
+
+  auto commands = all_commands();
+  std::vector<std::pair<CLI::App*, Command*>> parsed;
+  for (auto& command : commands) {
+    CLI::App* sub = app.add_subcommand(command->name(), command->summary());
+    command->declare(*sub);
+    parsed.emplace_back(sub, command.get());
+  }
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "haptex: " << e.what() << "\nRun 'haptex --help' or 'haptex <command> --help' for usage.\n";
+    return 2;
+  }
+
+  for (auto& [sub, command] : parsed) {
+    if (!sub->parsed()) continue;
+    try {
+      return command->run(global);
+    } catch (const Error& e) {
+      std::cerr << "haptex " << command->name() << ": error: " << e.what() << "\n";
+      return e.kind() == Error::Kind::bad_input ? 2 : 1;
+    } catch (const std::exception& e) {
+      std::cerr << "haptex " << command->name() << ": unexpected error: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  return 2;
+}
+
+}  // namespace haptex::apps

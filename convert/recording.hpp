@@ -1,0 +1,38 @@
+#pragma once
+// One vibration recording as read from a HaTT recorded-data XML or a CSV file, before it is
+// turned into the recordings file (DESIGN.md sections 3-5).
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace haptex::convert {
+
+// Canonical channel names. Required: accel_x/y/z, force_normal, speed.
+// Optional: force_tangential, position_x/y/z (all three or none).
+inline const std::vector<std::string> kRequiredChannels = {"accel_x", "accel_y", "accel_z", "force_normal", "speed"};
+inline const std::vector<std::string> kOptionalChannels = {"force_tangential", "position_x", "position_y",
+                                                           "position_z"};
+
+struct Recording {
+  std::string material;       // the surface's name as the file gives it
+  std::optional<int> texture; // HaTT texture number, when the file has one
+  double sample_rate_hz = 0;
+  std::map<std::string, std::string> units;  // "accel", "force", "speed", "position"
+  std::map<std::string, std::vector<double>> channels;
+  std::string source_path;
+  std::string source_sha256;
+
+  std::size_t samples() const { return channels.empty() ? 0 : channels.begin()->second.size(); }
+  bool has(const std::string& channel) const { return channels.count(channel) > 0; }
+};
+
+inline constexpr double kSampleRateHz = 10000.0;
+// What each quantity must be measured in (DESIGN.md section 3).
+inline const std::map<std::string, std::string> kExpectedUnits = {
+    {"accel", "m/s^2"}, {"force", "N"}, {"speed", "mm/s"}, {"position", "mm"}};
+
+// The quantity a channel measures: accel_x -> accel, force_normal -> force, ...
+std::string quantity_of(const std::string& channel);
+
+}  // namespace haptex::convert

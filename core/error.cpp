@@ -1,0 +1,16 @@
+#include "core/error.hpp"
+
+namespace haptex {
+
+Error input_error(const std::string& file, const std::string& where, const std::string& what,
+                  const std::string& fix) {
+  std::string message = file;
+  if (!where.empty()) message += ": " + where;
+  message += ": " + what;
+  if (!fix.empty()) message += ". " + fix;
+  return Error(Error::Kind::bad_input, message);
+}
+
+Error failure(const std::string& what) { return Error(Error::Kind::failed, what); }
+
+}  // namespace haptex

@@ -1,0 +1,28 @@
+#pragma once
+// haptex::Error is the one exception type the libraries throw. Its message names the file,
+// the place in it and what the user can do; apps/ turns its kind into the exit code.
+#include <stdexcept>
+#include <string>
+
+namespace haptex {
+
+class Error : public std::runtime_error {
+ public:
+  enum class Kind {
+    bad_input,  // unreadable or invalid input, bad usage: exit code 2
+    failed,     // the work itself failed (or a check found errors): exit code 1
+  };
+
+  Error(Kind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+  Kind kind() const { return kind_; }
+
+ private:
+  Kind kind_;
+};
+
+// "FILE: WHERE: WHAT. FIX" — the shape every bad-input message takes.
+[[nodiscard]] Error input_error(const std::string& file, const std::string& where, const std::string& what,
+                                const std::string& fix);
+[[nodiscard]] Error failure(const std::string& what);
+
+}  // namespace haptex
