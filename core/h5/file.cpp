@@ -1,0 +1,58 @@
+#include "core/h5/file.hpp"
+
+#include <chrono>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+
+#include "core/error.hpp"
+#include "core/version.hpp"
+
+namespace haptex::h5 {
+
+File File::open(const std::string& path, bool writable) {
+  silence_library_errors();
+  if (!std::filesystem::exists(path))
+    throw input_error(path, "", "no such file", "Check the path");
+  if (H5Fis_hdf5(path.c_str()) <= 0)
+    throw input_error(path, "", "not an HDF5 file", "Give a file written by haptex (recordings, gelsight, dataset or model)");
+  Handle file(check(H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT), "open the file",
+                    path));
+  return File(std::move(file), path);
+}
+
+File File::create(const std::string& path) {
+  silence_library_errors();
+  Handle file(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "create the file", path));
+  return File(std::move(file), path);
+}
+
+Group File::root() const {
+  return Group(Handle(check(H5Gopen2(handle_.get(), "/", H5P_DEFAULT), "open the root group", path_)), path_, "/");
+}
+
+void File::flush() { check_status(H5Fflush(handle_.get(), H5F_SCOPE_GLOBAL), "flush the file", path_); }
+
+void File::close() {
+  if (!handle_.valid()) return;
+  check_status(H5Fclose(handle_.release()), "close the file", path_);
+}
+
+std::string utc_now_iso8601() {
+  std::time_t now = std::time(nullptr);
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) now = static_cast<std::time_t>(std::atoll(epoch));
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+void stamp_root(Group root, const std::string& format, const std::string& source) {
+  root.set_attr("haptex_format", format);
+  root.set_attr("haptex_version", kVersion);
+  root.set_attr("created_utc", utc_now_iso8601());
+  root.set_attr("source", source);
+}
+
+}  // namespace haptex::h5

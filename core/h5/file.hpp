@@ -1,0 +1,33 @@
+#pragma once
+// An HDF5 file opened for reading or created for writing. New files are written through
+// AtomicFile (core/h5/atomic_file.hpp) so a crash never leaves a half file under the final name.
+#include <string>
+
+#include "core/h5/node.hpp"
+
+namespace haptex::h5 {
+
+class File {
+ public:
+  // Throws haptex::Error (bad_input) naming the path when it is missing or not an HDF5 file.
+  static File open(const std::string& path, bool writable = false);
+  // Creates (or truncates) a file.
+  static File create(const std::string& path);
+
+  const std::string& path() const { return path_; }
+  Group root() const;
+  void flush();
+  void close();  // closes every object of the file; throws when HDF5 reports a failure
+
+ private:
+  File(Handle handle, std::string path) : handle_(std::move(handle)), path_(std::move(path)) {}
+  Handle handle_;
+  std::string path_;
+};
+
+// Root attributes every haptex file carries (DESIGN.md section 5): haptex_format (e.g. "recordings/1"),
+// haptex_version, created_utc (ISO 8601; SOURCE_DATE_EPOCH is honoured for reproducible files), source.
+void stamp_root(Group root, const std::string& format, const std::string& source);
+std::string utc_now_iso8601();
+
+}  // namespace haptex::h5

@@ -1,0 +1,298 @@
+#include "core/h5/node.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/error.hpp"
+
+namespace haptex::h5 {
+namespace {
+
+Handle utf8_string_type() {
+  Handle type(H5Tcopy(H5T_C_S1));
+  H5Tset_size(type.get(), H5T_VARIABLE);
+  H5Tset_cset(type.get(), H5T_CSET_UTF8);
+  return type;
+}
+
+// Object creation without timestamps, so the same content gives the same bytes.
+Handle untimed_creation_list(hid_t list_class) {
+  Handle list(H5Pcreate(list_class));
+  H5Pset_obj_track_times(list.get(), false);
+  return list;
+}
+
+bool all_digits(const std::string& s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); });
+}
+
+Shape automatic_chunk(const Shape& shape, std::size_t element_size) {
+  Shape chunk = shape;
+  std::size_t row_bytes = element_size;
+  for (std::size_t i = 1; i < shape.size(); ++i) row_bytes *= shape[i];
+  const hsize_t rows = std::max<hsize_t>(1, (64 * 1024) / std::max<std::size_t>(1, row_bytes));
+  chunk[0] = std::min<hsize_t>(shape[0], rows);
+  return chunk;
+}
+
+}  // namespace
+
+// ---- attributes
+
+void Node::write_attr(std::string_view name, hid_t type, hid_t space, const void* data) {
+  const std::string n(name);
+  if (H5Aexists(id(), n.c_str()) > 0) H5Adelete(id(), n.c_str());
+  Handle attr(check(H5Acreate2(id(), n.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), "create attribute " + n,
+                    where()));
+  check_status(H5Awrite(attr.get(), type, data), "write attribute " + n, where());
+}
+
+void Node::set_attr(std::string_view name, double value) {
+  Handle space(H5Screate(H5S_SCALAR));
+  write_attr(name, H5T_NATIVE_DOUBLE, space.get(), &value);
+}
+
+void Node::set_attr(std::string_view name, std::int64_t value) {
+  Handle space(H5Screate(H5S_SCALAR));
+  write_attr(name, H5T_NATIVE_INT64, space.get(), &value);
+}
+
+void Node::set_attr(std::string_view name, std::string_view value) {
+  Handle space(H5Screate(H5S_SCALAR));
+  Handle type = utf8_string_type();
+  const std::string copy(value);
+  const char* pointer = copy.c_str();
+  write_attr(name, type.get(), space.get(), &pointer);
+}
+
+void Node::set_attr(std::string_view name, std::span<const double> values) {
+  const hsize_t dims[1] = {values.size()};
+  Handle space(H5Screate_simple(1, dims, nullptr));
+  write_attr(name, H5T_NATIVE_DOUBLE, space.get(), values.data());
+}
+
+bool Node::has_attr(std::string_view name) const { return H5Aexists(id(), std::string(name).c_str()) > 0; }
+
+std::vector<std::string> Node::attr_names() const {
+  std::vector<std::string> names;
+  H5Aiterate2(
+      id(), H5_INDEX_NAME, H5_ITER_INC, nullptr,
+      [](hid_t, const char* name, const H5A_info_t*, void* out) -> herr_t {
+        static_cast<std::vector<std::string>*>(out)->emplace_back(name);
+        return 0;
+      },
+      &names);
+  return names;
+}
+
+Handle Node::open_attr(std::string_view name) const {
+  const std::string n(name);
+  if (!has_attr(name))
+    throw input_error(file_, object_path_, "attribute '" + n + "' is missing",
+                      "Was the file written by haptex? Check it with 'haptex qa'");
+  return Handle(check(H5Aopen(id(), n.c_str(), H5P_DEFAULT), "open attribute " + n, where()));
+}
+
+double Node::attr_double(std::string_view name) const {
+  Handle attr = open_attr(name);
+  Handle type(H5Aget_type(attr.get()));
+  const H5T_class_t type_class = H5Tget_class(type.get());
+  if (type_class != H5T_FLOAT && type_class != H5T_INTEGER)
+    throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' is not a number",
+                      "Rewrite the file with haptex");
+  double value = 0;
+  check_status(H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &value), "read attribute", where());
+  return value;
+}
+
+std::int64_t Node::attr_int(std::string_view name) const {
+  Handle attr = open_attr(name);
+  Handle type(H5Aget_type(attr.get()));
+  if (H5Tget_class(type.get()) != H5T_INTEGER)
+    throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' is not an integer",
+                      "Rewrite the file with haptex");
+  std::int64_t value = 0;
+  check_status(H5Aread(attr.get(), H5T_NATIVE_INT64, &value), "read attribute", where());
+  return value;
+}
+
+std::string Node::attr_string(std::string_view name) const {
+  Handle attr = open_attr(name);
+  Handle type(H5Aget_type(attr.get()));
+  if (H5Tget_class(type.get()) != H5T_STRING)
+    throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' is not a string",
+                      "Rewrite the file with haptex");
+  if (H5Tis_variable_str(type.get()) > 0) {
+    Handle memory = utf8_string_type();
+    char* text = nullptr;
+    check_status(H5Aread(attr.get(), memory.get(), &text), "read attribute", where());
+    std::string value = text ? text : "";
+    Handle space(H5Aget_space(attr.get()));
+    H5Dvlen_reclaim(memory.get(), space.get(), H5P_DEFAULT, &text);
+    return value;
+  }
+  std::string value(H5Tget_size(type.get()), '\0');  // fixed-length strings, as other tools write them
+  check_status(H5Aread(attr.get(), type.get(), value.data()), "read attribute", where());
+  return value.substr(0, value.find('\0'));
+}
+
+std::vector<double> Node::attr_doubles(std::string_view name) const {
+  Handle attr = open_attr(name);
+  Handle space(H5Aget_space(attr.get()));
+  std::vector<double> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())));
+  check_status(H5Aread(attr.get(), H5T_NATIVE_DOUBLE, values.data()), "read attribute", where());
+  return values;
+}
+
+// ---- datasets
+
+Shape Dataset::shape() const {
+  Handle space(H5Dget_space(id()));
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  Shape dims(static_cast<std::size_t>(std::max(rank, 0)));
+  H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+  return dims;
+}
+
+std::size_t Dataset::elements() const {
+  std::size_t n = 1;
+  for (auto d : shape()) n *= d;
+  return n;
+}
+
+std::string Dataset::dtype() const {
+  Handle type(H5Dget_type(id()));
+  const std::size_t bytes = H5Tget_size(type.get());
+  switch (H5Tget_class(type.get())) {
+    case H5T_FLOAT: return "float" + std::to_string(8 * bytes);
+    case H5T_INTEGER:
+      return std::string(H5Tget_sign(type.get()) == H5T_SGN_NONE ? "uint" : "int") + std::to_string(8 * bytes);
+    case H5T_STRING: return "string";
+    case H5T_VLEN: return "vlen";
+    default: return "other";
+  }
+}
+
+void Dataset::read_raw(hid_t memory_type, void* out) const {
+  check_status(H5Dread(id(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out), "read dataset", where());
+}
+
+std::vector<std::string> Dataset::read_strings() const {
+  Handle memory = utf8_string_type();
+  std::vector<char*> pointers(elements(), nullptr);
+  check_status(H5Dread(id(), memory.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "read strings", where());
+  std::vector<std::string> values(pointers.begin(), pointers.end());
+  Handle space(H5Dget_space(id()));
+  H5Dvlen_reclaim(memory.get(), space.get(), H5P_DEFAULT, pointers.data());
+  return values;
+}
+
+// ---- groups
+
+std::string Group::child_path(std::string_view name) const {
+  return (object_path_ == "/" ? "/" : object_path_ + "/") + std::string(name);
+}
+
+Group Group::create_group(std::string_view name) {
+  const std::string path = child_path(name);
+  Handle list = untimed_creation_list(H5P_GROUP_CREATE);
+  Handle group(check(H5Gcreate2(id(), std::string(name).c_str(), H5P_DEFAULT, list.get(), H5P_DEFAULT),
+                     "create group", file_ + ":" + path));
+  return Group(std::move(group), file_, path);
+}
+
+Group Group::require_group(std::string_view name) {
+  return has_group(name) ? open_group(name) : create_group(name);
+}
+
+Group Group::open_group(std::string_view name) const {
+  const std::string path = child_path(name);
+  if (!has_group(name))
+    throw input_error(file_, path, "group is missing", "Check the file's layout with 'haptex info' or 'haptex qa'");
+  return Group(Handle(check(H5Gopen2(id(), std::string(name).c_str(), H5P_DEFAULT), "open group", file_ + ":" + path)),
+               file_, path);
+}
+
+Dataset Group::open_dataset(std::string_view name) const {
+  const std::string path = child_path(name);
+  if (!has_dataset(name))
+    throw input_error(file_, path, "dataset is missing", "Check the file's layout with 'haptex info' or 'haptex qa'");
+  return Dataset(
+      Handle(check(H5Dopen2(id(), std::string(name).c_str(), H5P_DEFAULT), "open dataset", file_ + ":" + path)),
+      file_, path);
+}
+
+bool Group::has(std::string_view name) const {
+  return H5Lexists(id(), std::string(name).c_str(), H5P_DEFAULT) > 0;
+}
+
+static bool has_object_of_type(hid_t group, std::string_view name, H5O_type_t type) {
+  const std::string n(name);
+  if (H5Lexists(group, n.c_str(), H5P_DEFAULT) <= 0) return false;
+  H5O_info_t info;
+  if (H5Oget_info_by_name(group, n.c_str(), &info, H5P_DEFAULT) < 0) return false;
+  return info.type == type;
+}
+
+bool Group::has_group(std::string_view name) const { return has_object_of_type(id(), name, H5O_TYPE_GROUP); }
+bool Group::has_dataset(std::string_view name) const { return has_object_of_type(id(), name, H5O_TYPE_DATASET); }
+
+std::vector<std::string> Group::children() const {
+  std::vector<std::string> names;
+  H5Literate(
+      id(), H5_INDEX_NAME, H5_ITER_INC, nullptr,
+      [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
+        static_cast<std::vector<std::string>*>(out)->emplace_back(name);
+        return 0;
+      },
+      &names);
+  std::stable_sort(names.begin(), names.end(), [](const std::string& a, const std::string& b) {
+    if (all_digits(a) && all_digits(b) && a.size() != b.size()) return a.size() < b.size();
+    return a < b;
+  });
+  return names;
+}
+
+Dataset Group::write_raw(std::string_view name, hid_t type, std::size_t element_size, const void* data,
+                         std::size_t count, const Shape& shape, const DatasetOptions& options) {
+  const std::string path = child_path(name);
+  std::size_t expected = 1;
+  for (auto d : shape) expected *= d;
+  if (expected != count)
+    throw failure(file_ + ":" + path + ": internal: " + std::to_string(count) + " values for a shape of " +
+                  std::to_string(expected));
+  Handle space(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr));
+  Handle list = untimed_creation_list(H5P_DATASET_CREATE);
+  if (options.compress && count > 0 && !shape.empty()) {
+    const Shape chunk = options.chunk.empty() ? automatic_chunk(shape, element_size) : options.chunk;
+    H5Pset_chunk(list.get(), static_cast<int>(chunk.size()), chunk.data());
+    H5Pset_shuffle(list.get());
+    H5Pset_deflate(list.get(), static_cast<unsigned>(options.gzip_level));
+  }
+  Handle dataset(check(H5Dcreate2(id(), std::string(name).c_str(), type, space.get(), H5P_DEFAULT, list.get(),
+                                  H5P_DEFAULT),
+                       "create dataset", file_ + ":" + path));
+  if (count > 0)
+    check_status(H5Dwrite(dataset.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write dataset",
+                 file_ + ":" + path);
+  return Dataset(std::move(dataset), file_, path);
+}
+
+Dataset Group::write_strings(std::string_view name, const std::vector<std::string>& values) {
+  const std::string path = child_path(name);
+  const hsize_t dims[1] = {values.size()};
+  Handle space(H5Screate_simple(1, dims, nullptr));
+  Handle type = utf8_string_type();
+  Handle list = untimed_creation_list(H5P_DATASET_CREATE);
+  Handle dataset(check(H5Dcreate2(id(), std::string(name).c_str(), type.get(), space.get(), H5P_DEFAULT, list.get(),
+                                  H5P_DEFAULT),
+                       "create dataset", file_ + ":" + path));
+  std::vector<const char*> pointers;
+  for (const auto& v : values) pointers.push_back(v.c_str());
+  if (!values.empty())
+    check_status(H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()),
+                 "write strings", file_ + ":" + path);
+  return Dataset(std::move(dataset), file_, path);
+}
+
+}  // namespace haptex::h5

@@ -1,0 +1,110 @@
+#pragma once
+// Groups and datasets of an HDF5 file, with their attributes. Paths in error messages read
+// "FILE:/group/dataset" so a user can find the object with h5ls or h5py.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/h5/handle.hpp"
+#include "core/h5/types.hpp"
+
+namespace haptex::h5 {
+
+using Shape = std::vector<hsize_t>;
+
+// Anything that carries attributes.
+class Node {
+ public:
+  Node(Handle handle, std::string file, std::string object_path)
+      : handle_(std::move(handle)), file_(std::move(file)), object_path_(std::move(object_path)) {}
+
+  const std::string& file() const { return file_; }
+  const std::string& object_path() const { return object_path_; }
+  std::string where() const { return file_ + ":" + object_path_; }
+  hid_t id() const { return handle_.get(); }
+
+  void set_attr(std::string_view name, double value);
+  void set_attr(std::string_view name, std::int64_t value);
+  void set_attr(std::string_view name, int value) { set_attr(name, static_cast<std::int64_t>(value)); }
+  void set_attr(std::string_view name, std::string_view value);  // variable-length UTF-8
+  void set_attr(std::string_view name, const char* value) { set_attr(name, std::string_view(value)); }
+  void set_attr(std::string_view name, std::span<const double> values);
+
+  bool has_attr(std::string_view name) const;
+  std::vector<std::string> attr_names() const;
+  // Readers throw haptex::Error (bad_input) naming the object when the attribute is missing or of another kind.
+  double attr_double(std::string_view name) const;
+  std::int64_t attr_int(std::string_view name) const;
+  std::string attr_string(std::string_view name) const;
+  std::vector<double> attr_doubles(std::string_view name) const;
+
+ protected:
+  Handle handle_;
+  std::string file_;
+  std::string object_path_;
+
+ private:
+  Handle open_attr(std::string_view name) const;
+  void write_attr(std::string_view name, hid_t type, hid_t space, const void* data);
+};
+
+class Dataset : public Node {
+ public:
+  using Node::Node;
+  Shape shape() const;
+  std::size_t elements() const;
+  // "float64", "float32", "int64", "uint8", "string", ... (numpy's names)
+  std::string dtype() const;
+
+  template <typename T>
+  std::vector<T> read() const {
+    std::vector<T> out(elements());
+    read_raw(native_type<T>(), out.data());
+    return out;
+  }
+  std::vector<std::string> read_strings() const;
+
+ private:
+  void read_raw(hid_t memory_type, void* out) const;
+};
+
+struct DatasetOptions {
+  bool compress = true;   // gzip + shuffle (readable by h5py and MATLAB without plugins)
+  int gzip_level = 4;
+  Shape chunk;            // empty: about 64 KiB chunks along the first axis
+};
+
+class Group : public Node {
+ public:
+  using Node::Node;
+  Group create_group(std::string_view name);
+  Group require_group(std::string_view name);  // opens or creates
+  Group open_group(std::string_view name) const;
+  Dataset open_dataset(std::string_view name) const;
+
+  bool has(std::string_view name) const;
+  bool has_group(std::string_view name) const;
+  bool has_dataset(std::string_view name) const;
+  // Member names, numbers in numeric order ("2" before "10"), others alphabetically.
+  std::vector<std::string> children() const;
+
+  template <typename T>
+  Dataset write_array(std::string_view name, std::span<const T> data, const Shape& shape,
+                      const DatasetOptions& options = {}) {
+    return write_raw(name, native_type<T>(), sizeof(T), data.data(), data.size(), shape, options);
+  }
+  template <typename T>
+  Dataset write(std::string_view name, const std::vector<T>& data, const DatasetOptions& options = {}) {
+    return write_array<T>(name, std::span<const T>(data), Shape{data.size()}, options);
+  }
+  Dataset write_strings(std::string_view name, const std::vector<std::string>& values);
+
+ private:
+  std::string child_path(std::string_view name) const;
+  Dataset write_raw(std::string_view name, hid_t type, std::size_t element_size, const void* data, std::size_t count,
+                    const Shape& shape, const DatasetOptions& options);
+};
+
+}  // namespace haptex::h5

@@ -1,0 +1,254 @@
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <numeric>
+
+#include "core/error.hpp"
+#include "core/h5/atomic_file.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::h5 {
+namespace {
+
+using test::TempDir;
+
+TEST(H5, DatasetsOfAnyRankRoundTrip) {
+  TempDir dir;
+  const std::string path = dir.file("a.h5");
+  std::vector<double> line(1000);
+  std::iota(line.begin(), line.end(), 0.5);
+  std::vector<float> matrix(300 * 3);
+  std::iota(matrix.begin(), matrix.end(), -10.0f);
+  std::vector<std::uint8_t> cube(4 * 5 * 3, 7);
+  {
+    AtomicFile out(path, false);
+    Group g = out.root().create_group("materials").create_group("book");
+    g.write("line", line);
+    g.write_array<float>("matrix", matrix, {300, 3});
+    g.write_array<std::uint8_t>("cube", cube, {4, 5, 3}, DatasetOptions{.compress = false, .chunk = {}});
+    g.write<double>("empty", std::vector<double>{});
+    g.write_strings("names", {"Book", "Brick 2", "Ünïcode"});
+    out.commit();
+  }
+  File in = File::open(path);
+  Group g = in.root().open_group("materials").open_group("book");
+  EXPECT_EQ(g.open_dataset("line").read<double>(), line);
+  auto m = g.open_dataset("matrix");
+  EXPECT_EQ(m.shape(), (Shape{300, 3}));
+  EXPECT_EQ(m.dtype(), "float32");
+  EXPECT_EQ(m.read<float>(), matrix);
+  EXPECT_EQ(g.open_dataset("cube").shape(), (Shape{4, 5, 3}));
+  EXPECT_EQ(g.open_dataset("cube").read<std::uint8_t>(), cube);
+  EXPECT_EQ(g.open_dataset("empty").elements(), 0u);
+  EXPECT_EQ(g.open_dataset("names").read_strings(), (std::vector<std::string>{"Book", "Brick 2", "Ünïcode"}));
+}
+
+TEST(H5, CompressedDatasetsUseGzipAndShuffle) {
+  TempDir dir;
+  const std::string path = dir.file("c.h5");
+  {
+    AtomicFile out(path, false);
+    out.root().write("x", std::vector<double>(100000, 1.0));
+    out.commit();
+  }
+  EXPECT_LT(std::filesystem::file_size(path), 100000u);  // 800 kB of ones compress to almost nothing
+  File in = File::open(path);
+  Handle plist(H5Dget_create_plist(in.root().open_dataset("x").id()));
+  ASSERT_EQ(H5Pget_nfilters(plist.get()), 2);
+  unsigned flags = 0, cd[4];
+  size_t n = 4;
+  EXPECT_EQ(H5Pget_filter2(plist.get(), 0, &flags, &n, cd, 0, nullptr, nullptr), H5Z_FILTER_SHUFFLE);
+  n = 4;
+  EXPECT_EQ(H5Pget_filter2(plist.get(), 1, &flags, &n, cd, 0, nullptr, nullptr), H5Z_FILTER_DEFLATE);
+}
+
+TEST(H5, AttributesRoundTrip) {
+  TempDir dir;
+  const std::string path = dir.file("attrs.h5");
+  {
+    AtomicFile out(path, false);
+    Group root = out.root();
+    root.set_attr("rate", 10000.0);
+    root.set_attr("count", 42);
+    root.set_attr("units", "m/s^2");
+    root.set_attr("name", std::string("Brick 2 — grès"));
+    const std::vector<double> corners = {1.5, 2.5};
+    root.set_attr("corners", corners);
+    root.set_attr("rate", 20000.0);  // overwriting replaces
+    stamp_root(root, "recordings/1", "unit test");
+    out.commit();
+  }
+  Group root = File::open(path).root();
+  EXPECT_EQ(root.attr_double("rate"), 20000.0);
+  EXPECT_EQ(root.attr_int("count"), 42);
+  EXPECT_EQ(root.attr_double("count"), 42.0);
+  EXPECT_EQ(root.attr_string("units"), "m/s^2");
+  EXPECT_EQ(root.attr_string("name"), "Brick 2 — grès");
+  EXPECT_EQ(root.attr_doubles("corners"), (std::vector<double>{1.5, 2.5}));
+  EXPECT_EQ(root.attr_string("haptex_format"), "recordings/1");
+  EXPECT_EQ(root.attr_string("created_utc").size(), 20u);
+  EXPECT_THROW(root.attr_int("units"), Error);
+  try {
+    root.attr_string("missing");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("attribute 'missing' is missing"), std::string::npos);
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+  }
+}
+
+TEST(H5, ChildrenSortNumbersNumerically) {
+  TempDir dir;
+  AtomicFile out(dir.file("n.h5"), false);
+  Group g = out.root();
+  for (const char* name : {"10", "2", "1", "beta", "alpha"}) g.create_group(name);
+  EXPECT_EQ(g.children(), (std::vector<std::string>{"1", "2", "10", "alpha", "beta"}));
+  EXPECT_TRUE(g.has_group("10"));
+  EXPECT_FALSE(g.has_dataset("10"));
+  EXPECT_THROW(g.open_dataset("10"), Error);
+}
+
+TEST(H5, SameContentGivesSameBytes) {
+  TempDir dir;
+  setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
+  for (const char* name : {"one.h5", "two.h5"}) {
+    AtomicFile out(dir.file(name), false);
+    stamp_root(out.root(), "recordings/1", "test");
+    out.root().create_group("g").write("x", std::vector<double>{1, 2, 3});
+    out.commit();
+  }
+  unsetenv("SOURCE_DATE_EPOCH");
+  auto bytes = [](const std::string& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(dir.file("one.h5")), bytes(dir.file("two.h5")));
+}
+
+TEST(H5, UncommittedFileLeavesNothing) {
+  TempDir dir;
+  const std::string path = dir.file("never.h5");
+  {
+    AtomicFile out(path, false);
+    out.root().write("x", std::vector<double>{1, 2, 3});
+    EXPECT_TRUE(std::filesystem::exists(path + ".partial"));
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
+  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+}
+
+TEST(H5, RefusesExistingOutputUnlessOverwrite) {
+  TempDir dir;
+  const std::string path = dir.file("exists.h5");
+  { std::ofstream(path) << "keep me"; }
+  EXPECT_THROW(AtomicFile(path, false), Error);
+  std::ifstream in(path);
+  std::string kept;
+  std::getline(in, kept);
+  EXPECT_EQ(kept, "keep me");
+  AtomicFile replaced(path, true);
+  replaced.commit();
+  EXPECT_GT(H5Fis_hdf5(path.c_str()), 0);
+}
+
+TEST(H5, RefusesUnwritableDirectory) {
+  if (geteuid() == 0) {
+    // root writes anywhere; a missing directory still exercises the refusal
+    TempDir dir;
+    EXPECT_THROW(AtomicFile(dir.file("no/such/dir/x.h5"), false), Error);
+    return;
+  }
+  TempDir dir;
+  std::filesystem::permissions(dir.path(), std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+  EXPECT_THROW(AtomicFile(dir.file("x.h5"), false), Error);
+}
+
+TEST(H5, OpenRefusesMissingAndNonHdf5Files) {
+  TempDir dir;
+  EXPECT_THROW(File::open(dir.file("absent.h5")), Error);
+  { std::ofstream(dir.file("text.h5")) << "not hdf5"; }
+  try {
+    File::open(dir.file("text.h5"));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not an HDF5 file"), std::string::npos);
+  }
+}
+
+// A writer killed with SIGKILL at any point leaves either no file under the final name or a complete one.
+void write_many_datasets(const std::string& path, int write_fd) {
+  AtomicFile out(path, false);
+  Group root = out.root();
+  std::vector<double> block(50000);
+  for (int i = 0; i < 60; ++i) {
+    std::iota(block.begin(), block.end(), double(i));
+    root.write("d" + std::to_string(i), block);
+    out.file().flush();
+    if (i == 20) {
+      char ready = 'x';
+      if (::write(write_fd, &ready, 1) != 1) _exit(3);
+    }
+  }
+  root.set_attr("complete", 1);
+  out.commit();
+}
+
+bool opens_as_complete_file(const std::string& path) {
+  File in = File::open(path);
+  Group root = in.root();
+  if (!root.has_attr("complete")) return false;
+  for (int i = 0; i < 60; ++i) {
+    auto values = root.open_dataset("d" + std::to_string(i)).read<double>();
+    if (values.size() != 50000 || values[49999] != 49999.0 + i) return false;
+  }
+  return true;
+}
+
+TEST(H5, KilledWriterNeverLeavesHalfFile) {
+  TempDir dir;
+  for (int trial = 0; trial < 3; ++trial) {
+    const std::string path = dir.file("killed" + std::to_string(trial) + ".h5");
+    int pipe_fds[2];
+    ASSERT_EQ(pipe(pipe_fds), 0);
+    pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      close(pipe_fds[0]);
+      write_many_datasets(path, pipe_fds[1]);
+      _exit(0);
+    }
+    close(pipe_fds[1]);
+    char ready;
+    ASSERT_EQ(read(pipe_fds[0], &ready, 1), 1);  // the writer is in the middle of its work
+    usleep(trial * 2000);
+    kill(child, SIGKILL);
+    int status = 0;
+    waitpid(child, &status, 0);
+    close(pipe_fds[0]);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "the writer finished before it was killed";
+    EXPECT_FALSE(std::filesystem::exists(path)) << "a killed writer left a file under the final name";
+  }
+  // And a writer left alone finishes with a complete file.
+  const std::string path = dir.file("finished.h5");
+  pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    int devnull[2];
+    if (pipe(devnull) != 0) _exit(4);
+    write_many_datasets(path, devnull[1]);
+    _exit(0);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  EXPECT_TRUE(opens_as_complete_file(path));
+}
+
+}  // namespace
+}  // namespace haptex::h5
