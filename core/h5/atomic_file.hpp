@@ -30,10 +30,4 @@ class AtomicFile {
   bool committed_ = false;
 };
 
-// Checks that path can be created: its directory exists and is writable, and it does not exist
-// unless overwrite. Throws haptex::Error (bad_input) saying which and what to do.
-void check_output_path(const std::string& path, bool overwrite);
-// fsync a file and its directory after writing it, then rename; shared by every atomic writer.
-void durable_rename(const std::string& from, const std::string& to);
-
 }  // namespace haptex::h5

@@ -1,0 +1,16 @@
+// The subcommands, in the order `haptex --help` lists them.
+#include "apps/command.hpp"
+
+namespace haptex::apps {
+
+std::unique_ptr<Command> make_convert_command();
+std::unique_ptr<Command> make_info_command();
+
+std::vector<std::unique_ptr<Command>> all_commands() {
+  std::vector<std::unique_ptr<Command>> commands;
+  commands.push_back(make_convert_command());
+  commands.push_back(make_info_command());
+  return commands;
+}
+
+}  // namespace haptex::apps

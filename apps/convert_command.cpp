@@ -1,0 +1,73 @@
+// haptex convert hatt <files or directories> -o recordings.h5 [--map FILE] [--max-bytes N] [--force]
+#include <chrono>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "apps/command.hpp"
+#include "apps/terminal_progress.hpp"
+#include "convert/convert_recordings.hpp"
+
+namespace haptex::apps {
+namespace {
+
+class ConvertCommand : public Command {
+ public:
+  std::string name() const override { return "convert"; }
+  std::string summary() const override { return "Turn vibration recordings into a haptex recordings file"; }
+
+  void declare(CLI::App& app) override {
+    app.require_subcommand(1);
+    hatt_ = app.add_subcommand("hatt", "HaTT recorded-data XML and CSV recordings -> recordings.h5");
+    hatt_->add_option("inputs", inputs_, "Recording files, or directories searched for *.xml and *.csv")->required();
+    hatt_->add_option("-o,--output", output_, "Recordings file to write (HDF5)")->required();
+    hatt_->add_option("--map", map_, "Field map JSON naming your files' elements (default: schemas/hatt-recording-map.json)");
+    hatt_->add_option("--max-bytes", options_.max_bytes, "Refuse input files larger than this")
+        ->capture_default_str();
+    hatt_->add_flag("--force", options_.overwrite, "Replace the output file if it exists");
+  }
+
+  int run(const GlobalOptions& global) override {
+    if (!map_.empty()) options_.map_path = map_;
+    options_.provenance = "haptex convert hatt -o " + output_;
+    for (const auto& input : inputs_) options_.provenance += " " + input;
+    const auto start = std::chrono::steady_clock::now();
+    const auto result = convert::convert_recordings(inputs_, output_, options_, terminal_progress(global, "convert"));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    print(result, seconds, global);
+    return 0;
+  }
+
+ private:
+  void print(const convert::ConvertResult& result, double seconds, const GlobalOptions& global) const {
+    std::size_t samples = 0;
+    for (const auto& r : result.recordings) samples += r.samples;
+    if (global.json) {
+      nlohmann::json recordings = nlohmann::json::array();
+      for (const auto& r : result.recordings)
+        recordings.push_back({{"source", r.source}, {"material", r.material}, {"material_id", r.material_id},
+                              {"recording", r.index}, {"samples", r.samples}});
+      std::cout << nlohmann::json{{"output", output_}, {"recordings", recordings}, {"samples", samples},
+                                  {"input_bytes", result.input_bytes}, {"seconds", seconds}}
+                       .dump(2)
+                << "\n";
+      return;
+    }
+    if (global.quiet) return;
+    if (global.verbose)
+      for (const auto& r : result.recordings)
+        std::cerr << r.source << " -> /materials/" << r.material_id << "/recordings/" << r.index << "\n";
+    std::cout << "wrote " << output_ << ": " << result.recordings.size() << " recordings, " << samples
+              << " samples, in " << seconds << " s\n";
+  }
+
+  CLI::App* hatt_ = nullptr;
+  std::vector<std::string> inputs_;
+  std::string output_, map_;
+  convert::ConvertOptions options_;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_convert_command() { return std::make_unique<ConvertCommand>(); }
+
+}  // namespace haptex::apps

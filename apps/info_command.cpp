@@ -1,0 +1,68 @@
+// haptex info FILE [--json]: what a haptex HDF5 file holds.
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "apps/command.hpp"
+#include "core/file_summary.hpp"
+
+namespace haptex::apps {
+namespace {
+
+std::string shape_text(const std::vector<std::uint64_t>& shape) {
+  std::string text;
+  for (auto extent : shape) text += (text.empty() ? "" : " x ") + std::to_string(extent);
+  return text.empty() ? "scalar" : text;
+}
+
+class InfoCommand : public Command {
+ public:
+  std::string name() const override { return "info"; }
+  std::string summary() const override { return "Summarise a haptex HDF5 file"; }
+  void declare(CLI::App& app) override { app.add_option("file", file_, "haptex HDF5 file")->required(); }
+
+  int run(const GlobalOptions& global) override {
+    const FileSummary summary = summarize_file(file_);
+    if (global.json) {
+      std::cout << to_json(summary).dump(2) << "\n";
+      return 0;
+    }
+    print(summary);
+    return 0;
+  }
+
+ private:
+  static void print(const FileSummary& s) {
+    std::cout << s.path << " (" << s.bytes << " bytes)\n"
+              << "  format   " << s.format << ", written by haptex " << s.version << " at " << s.created_utc << "\n"
+              << "  source   " << s.source << "\n"
+              << "  materials " << s.materials.size() << "\n";
+    for (const auto& m : s.materials) {
+      std::cout << "  " << m.id << " (" << m.name << ")\n";
+      for (const auto& c : m.collections) {
+        std::cout << "    " << c.name << ": " << c.items.size() << "\n";
+        for (const auto& item : c.items) print_item(item);
+      }
+    }
+    for (const auto& d : s.other_datasets)
+      std::cout << "  " << d.name << "  " << d.dtype << " [" << shape_text(d.shape) << "]\n";
+  }
+
+  static void print_item(const ItemSummary& item) {
+    std::cout << "      " << item.key << ":";
+    if (item.duration_s) std::cout << " " << std::fixed << std::setprecision(2) << *item.duration_s << " s";
+    if (item.sample_rate_hz) std::cout << " at " << std::setprecision(0) << *item.sample_rate_hz << " Hz";
+    std::cout << std::defaultfloat << "\n";
+    for (const auto& d : item.datasets)
+      std::cout << "        " << std::left << std::setw(18) << d.name << std::setw(9) << d.dtype << std::setw(14)
+                << "[" + shape_text(d.shape) + "]" << d.units << std::right << "\n";
+  }
+
+  std::string file_;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_info_command() { return std::make_unique<InfoCommand>(); }
+
+}  // namespace haptex::apps

@@ -1,0 +1,76 @@
+#include "convert/convert_recordings.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "convert/csv_recording_reader.hpp"
+#include "convert/field_map.hpp"
+#include "convert/hatt_recording_reader.hpp"
+#include "convert/recordings_writer.hpp"
+#include "core/error.hpp"
+#include "core/h5/atomic_file.hpp"
+
+namespace haptex::convert {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string lower_extension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+bool is_recording_file(const fs::path& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".xml" || ext == ".csv";
+}
+
+}  // namespace
+
+std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
+  std::vector<std::string> files;
+  for (const std::string& input : inputs) {
+    if (fs::is_directory(input)) {
+      std::vector<std::string> found;
+      for (const auto& entry : fs::recursive_directory_iterator(input))
+        if (entry.is_regular_file() && is_recording_file(entry.path())) found.push_back(entry.path().string());
+      std::sort(found.begin(), found.end());
+      if (found.empty())
+        throw input_error(input, "", "the directory holds no .xml or .csv recordings", "Point at the recordings' folder");
+      files.insert(files.end(), found.begin(), found.end());
+    } else if (fs::is_regular_file(input)) {
+      files.push_back(input);
+    } else {
+      throw input_error(input, "", "no such file or directory", "Check the path");
+    }
+  }
+  if (files.empty()) throw input_error("(command line)", "", "no input files given", "Name files or directories to convert");
+  return files;
+}
+
+ConvertResult convert_recordings(const std::vector<std::string>& inputs, const std::string& output,
+                                 const ConvertOptions& options, const Progress& progress) {
+  const FieldMap map = options.map_path ? load_field_map(*options.map_path) : default_field_map();
+  const std::vector<std::string> files = expand_inputs(inputs);
+  h5::AtomicFile out(output, options.overwrite);
+  h5::stamp_root(out.root(), kRecordingsFormat, options.provenance);
+  out.root().set_attr("field_map", map.origin);
+
+  ConvertResult result;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const std::string& file = files[i];
+    if (progress) progress(i, files.size(), file);
+    const Recording recording = lower_extension(file) == ".csv" ? read_csv_recording(file, map, options.max_bytes)
+                                                                : read_hatt_recording_xml(file, map, options.max_bytes);
+    const WrittenRecording written = write_recording(out.root(), recording);
+    result.recordings.push_back({file, recording.material, written.material_id, written.index, recording.samples(),
+                                 recording.sample_rate_hz});
+    result.input_bytes += fs::file_size(file);
+  }
+  if (progress) progress(files.size(), files.size(), "");
+  out.commit();
+  return result;
+}
+
+}  // namespace haptex::convert

@@ -1,0 +1,31 @@
+#include "convert/input_limits.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+
+namespace haptex::convert {
+
+std::vector<char> read_whole_file(const std::string& path, std::uintmax_t max_bytes) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw input_error(path, "", "cannot read the file (" + ec.message() + ")", "Check the path and permissions");
+  if (size > max_bytes)
+    throw input_error(path, "", "the file is " + std::to_string(size) + " bytes, over the limit of " +
+                                    std::to_string(max_bytes) + " bytes",
+                      "If the file is genuine, raise the limit with --max-bytes");
+  std::vector<char> buffer(size);
+  std::ifstream in(path, std::ios::binary);
+  if (!in.read(buffer.data(), static_cast<std::streamsize>(size)))
+    throw input_error(path, "", "the file could not be read completely", "Check the disk and permissions");
+  return buffer;
+}
+
+std::size_t line_of_offset(const std::vector<char>& buffer, std::size_t offset) {
+  offset = std::min(offset, buffer.size());
+  return 1 + static_cast<std::size_t>(std::count(buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
+}
+
+}  // namespace haptex::convert

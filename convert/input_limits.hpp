@@ -1,0 +1,18 @@
+#pragma once
+// Reading a whole input file into memory, after checking it is not larger than the user allows.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace haptex::convert {
+
+inline constexpr std::uintmax_t kDefaultMaxBytes = std::uintmax_t(1) << 30;  // 1 GiB
+
+// The file's bytes. Refuses, before reading,
+// a file over max_bytes, naming the limit and --max-bytes.
+std::vector<char> read_whole_file(const std::string& path, std::uintmax_t max_bytes);
+
+// 1-based line of a byte offset, for error messages.
+std::size_t line_of_offset(const std::vector<char>& buffer, std::size_t offset);
+
+}  // namespace haptex::convert

@@ -1,0 +1,11 @@
+#pragma once
+#include <optional>
+#include <string_view>
+
+namespace haptex::convert {
+
+// The number in text (surrounding white space and a leading '+' allowed), nullopt when the
+// text is not exactly one number. NaN and Inf parse; callers reject them with their own message.
+std::optional<double> parse_number(std::string_view text);
+
+}  // namespace haptex::convert

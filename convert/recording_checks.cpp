@@ -1,0 +1,55 @@
+#include "convert/recording_checks.hpp"
+
+#include <cmath>
+
+#include "convert/units.hpp"
+#include "core/error.hpp"
+
+namespace haptex::convert {
+
+void check_sample_rate(const std::string& file, const std::string& where, double rate_hz) {
+  if (std::abs(rate_hz - kSampleRateHz) > 1e-6 * kSampleRateHz)
+    throw input_error(file, where,
+                      "the sample rate is " + std::to_string(rate_hz) + " Hz; haptex works at 10000 Hz",
+                      "Resample the recording to 10 kHz before converting it");
+}
+
+void apply_units(Recording& recording, const std::string& quantity, const std::string& unit,
+                 const std::string& where) {
+  auto scale = unit_scale(quantity, unit);
+  if (!scale)
+    throw input_error(recording.source_path, where, "unknown " + quantity + " unit '" + unit + "'",
+                      "Use one of: " + accepted_units(quantity));
+  recording.units[quantity] = kExpectedUnits.at(quantity);
+  if (*scale == 1.0) return;
+  for (auto& [channel, samples] : recording.channels)
+    if (quantity_of(channel) == quantity)
+      for (double& v : samples) v *= *scale;
+}
+
+void check_channels(const Recording& recording, const std::function<std::string(const std::string&)>& where) {
+  const std::string& file = recording.source_path;
+  const std::string& first = kRequiredChannels.front();
+  const std::size_t n = recording.channels.at(first).size();
+  for (const auto& [channel, samples] : recording.channels)
+    if (samples.size() != n)
+      throw input_error(file, where(channel),
+                        "has " + std::to_string(samples.size()) + " samples but " + where(first) + " has " +
+                            std::to_string(n),
+                        "All channels must be sampled together; re-export the recording or trim the channels "
+                        "to the same length");
+  if (n < kMinimumSamples)
+    throw input_error(file, where(first), "only " + std::to_string(n) + " samples",
+                      "A recording needs at least 1000 samples (0.1 s at 10 kHz)");
+  const int positions = int(recording.has("position_x")) + recording.has("position_y") + recording.has("position_z");
+  if (positions != 0 && positions != 3)
+    throw input_error(file, where("position_x"), "only some of position x, y, z are present",
+                      "Give all three position channels or none");
+}
+
+std::string describe_bad_value(std::string_view text, bool parsed) {
+  if (!parsed) return "'" + std::string(text.substr(0, 40)) + "' is not a number";
+  return "'" + std::string(text.substr(0, 40)) + "' is not a finite number (NaN or Inf)";
+}
+
+}  // namespace haptex::convert

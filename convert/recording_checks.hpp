@@ -1,0 +1,23 @@
+#pragma once
+// Checks shared by the XML and CSV readers, so both refuse the same things with the same words.
+#include <functional>
+#include <string>
+
+#include "convert/recording.hpp"
+
+namespace haptex::convert {
+
+// Minimum length: one model window (DESIGN.md section 3).
+inline constexpr std::size_t kMinimumSamples = 1000;
+
+void check_sample_rate(const std::string& file, const std::string& where, double rate_hz);
+// Scales a quantity's channels into haptex units; refuses unknown units.
+void apply_units(Recording& recording, const std::string& quantity, const std::string& unit,
+                 const std::string& where);
+// Equal lengths, at least kMinimumSamples, position all-or-none. where(channel) names a channel's
+// place in the file for messages ("<accelY> at line 12", "column 'accelY'").
+void check_channels(const Recording& recording, const std::function<std::string(const std::string&)>& where);
+// "value 17 is NaN" / "value 17 is 'abc'" message parts, shared by both readers.
+std::string describe_bad_value(std::string_view text, bool parsed);
+
+}  // namespace haptex::convert

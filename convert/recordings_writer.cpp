@@ -1,0 +1,81 @@
+#include "convert/recordings_writer.hpp"
+
+#include "core/naming.hpp"
+#include "core/signal/butterworth.hpp"
+#include "core/signal/dft321.hpp"
+#include "core/signal/sosfilt.hpp"
+
+namespace haptex::convert {
+namespace {
+
+// Samples are stored as float32: 24 bits of mantissa is beyond any accelerometer's or force
+// sensor's resolution and halves the files; all computation happens in double before.
+std::vector<float> narrow(const std::vector<double>& x) { return std::vector<float>(x.begin(), x.end()); }
+
+std::vector<float> interleave(const std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& c) {
+  std::vector<float> rows(3 * a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    rows[3 * i] = float(a[i]);
+    rows[3 * i + 1] = float(b[i]);
+    rows[3 * i + 2] = float(c[i]);
+  }
+  return rows;
+}
+
+void write_signal(h5::Group& group, const std::string& name, const std::vector<float>& values, h5::Shape shape,
+                  const std::string& units, const std::string& description) {
+  h5::Dataset dataset = group.write_array<float>(name, values, shape);
+  dataset.set_attr("units", units);
+  dataset.set_attr("description", description);
+}
+
+void write_lowpassed(h5::Group& group, const std::string& name, const std::vector<double>& raw,
+                     const std::string& units, const std::string& what) {
+  static const signal::Sos sos = signal::butter_lowpass_hz(kLowpassOrder, kLowpassCutoffHz, kSampleRateHz);
+  write_signal(group, name, narrow(signal::sosfiltfilt(sos, raw)), {raw.size()}, units,
+               what + ", 4th-order Butterworth low-pass at 20 Hz run forward and backward (zero phase)");
+}
+
+}  // namespace
+
+WrittenRecording write_recording(h5::Group root, const Recording& r) {
+  WrittenRecording written{material_id(r.material), 0};
+  h5::Group material = root.require_group("materials").require_group(written.material_id);
+  material.set_attr("name", r.material);
+  h5::Group recordings = material.require_group("recordings");
+  written.index = static_cast<int>(recordings.children().size());
+  h5::Group g = recordings.create_group(std::to_string(written.index));
+
+  const std::size_t n = r.samples();
+  const auto& ch = r.channels;
+  g.set_attr("sample_rate_hz", r.sample_rate_hz);
+  g.set_attr("samples", static_cast<std::int64_t>(n));
+  g.set_attr("duration_s", double(n) / r.sample_rate_hz);
+  g.set_attr("lowpass_filter", "butterworth");
+  g.set_attr("lowpass_order", kLowpassOrder);
+  g.set_attr("lowpass_cutoff_hz", kLowpassCutoffHz);
+  g.set_attr("lowpass_method", "sosfiltfilt, odd padding, default pad length (scipy semantics)");
+  g.set_attr("accel_reduction", "DFT321 over the whole recording (Landin et al. 2010)");
+  g.set_attr("source_file", r.source_path);
+  g.set_attr("source_sha256", r.source_sha256);
+  if (r.texture) g.set_attr("hatt_texture", *r.texture);
+
+  const std::string accel_units = r.units.at("accel"), force_units = r.units.at("force");
+  write_signal(g, "accel", narrow(signal::dft321(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z"))), {n},
+               accel_units, "tool acceleration, three axes reduced to one with DFT321");
+  write_signal(g, "accel_xyz", interleave(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z")), {n, 3}, accel_units,
+               "raw tool acceleration, columns x, y, z");
+  write_signal(g, "force_normal", narrow(ch.at("force_normal")), {n}, force_units, "normal force, unfiltered");
+  write_signal(g, "speed", narrow(ch.at("speed")), {n}, r.units.at("speed"), "tangential speed, unfiltered");
+  write_lowpassed(g, "force_normal_lp", ch.at("force_normal"), force_units, "normal force");
+  write_lowpassed(g, "speed_lp", ch.at("speed"), r.units.at("speed"), "tangential speed");
+  if (r.has("force_tangential"))
+    write_signal(g, "force_tangential", narrow(ch.at("force_tangential")), {n}, force_units,
+                 "tangential (friction) force, unfiltered");
+  if (r.has("position_x"))
+    write_signal(g, "position", interleave(ch.at("position_x"), ch.at("position_y"), ch.at("position_z")), {n, 3},
+                 r.units.at("position"), "tool position, columns x, y, z");
+  return written;
+}
+
+}  // namespace haptex::convert

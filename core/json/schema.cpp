@@ -1,0 +1,76 @@
+#include "core/json/schema.hpp"
+
+#include <fstream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <valijson/adapters/nlohmann_json_adapter.hpp>
+#include <valijson/schema.hpp>
+#include <valijson/schema_parser.hpp>
+#include <valijson/validation_results.hpp>
+#include <valijson/validator.hpp>
+
+#include "core/embedded.hpp"
+#include "core/error.hpp"
+#include "core/durable_file.hpp"
+
+namespace haptex::json {
+namespace {
+
+const valijson::Schema& compiled_schema(std::string_view name) {
+  static std::mutex mutex;
+  static std::map<std::string, std::unique_ptr<valijson::Schema>, std::less<>> cache;
+  std::lock_guard lock(mutex);
+  auto it = cache.find(name);
+  if (it != cache.end()) return *it->second;
+  const nlohmann::json schema_doc = nlohmann::json::parse(embedded::schema(name));
+  auto schema = std::make_unique<valijson::Schema>();
+  valijson::SchemaParser parser;
+  valijson::adapters::NlohmannJsonAdapter adapter(schema_doc);
+  parser.populateSchema(adapter, *schema);
+  return *cache.emplace(std::string(name), std::move(schema)).first->second;
+}
+
+}  // namespace
+
+nlohmann::json read_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw input_error(path, "", "cannot open the JSON file", "Check the path");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw input_error(path, "byte " + std::to_string(e.byte), "not valid JSON (" + std::string(e.what()) + ")",
+                      "Fix the syntax; a JSON linter shows the exact spot");
+  }
+}
+
+void validate(const nlohmann::json& doc, std::string_view schema_name, const std::string& file) {
+  valijson::Validator validator;
+  valijson::ValidationResults results;
+  valijson::adapters::NlohmannJsonAdapter adapter(doc);
+  if (validator.validate(compiled_schema(schema_name), adapter, &results)) return;
+  valijson::ValidationResults::Error error;
+  std::string where = "/", reason = "does not match the schema";
+  // The last error is the innermost one: the element that actually failed.
+  while (results.popError(error)) {
+    where.clear();
+    for (const auto& part : error.context)
+      if (part != "<root>") where += part;
+    if (where.empty()) where = "<document>";
+    reason = error.description;
+  }
+  throw input_error(file, where, reason, "See schemas/" + std::string(schema_name) + " for the expected form");
+}
+
+void write_file(const nlohmann::json& doc, const std::string& path) {
+  const std::string partial = create_partial(path);
+  {
+    std::ofstream out(partial);
+    out << doc.dump(2) << "\n";
+    if (!out) throw failure(partial + ": write failed (disk full?)");
+  }
+  durable_rename(partial, path);
+}
+
+}  // namespace haptex::json

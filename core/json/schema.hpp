@@ -1,0 +1,20 @@
+#pragma once
+// JSON documents checked against the JSON Schemas in schemas/ (compiled in), with valijson.
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+#include <string_view>
+
+namespace haptex::json {
+
+// Parses a JSON file; a syntax error becomes haptex::Error (bad_input) naming the file and byte.
+nlohmann::json read_file(const std::string& path);
+
+// Throws haptex::Error (bad_input) naming `file`, the JSON pointer of the first failing element and
+// the reason, when doc does not satisfy schemas/<schema_name>.
+void validate(const nlohmann::json& doc, std::string_view schema_name, const std::string& file);
+
+// Writes doc (indented) atomically: temporary file, fsync, rename.
+void write_file(const nlohmann::json& doc, const std::string& path);
+
+}  // namespace haptex::json
