@@ -1,16 +1,26 @@
 #include "convert/recording_checks.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "convert/units.hpp"
 #include "core/error.hpp"
 
 namespace haptex::convert {
+namespace {
+
+std::string format_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", value);
+  return text;
+}
+
+}  // namespace
 
 void check_sample_rate(const std::string& file, const std::string& where, double rate_hz) {
   if (std::abs(rate_hz - kSampleRateHz) > 1e-6 * kSampleRateHz)
     throw input_error(file, where,
-                      "the sample rate is " + std::to_string(rate_hz) + " Hz; haptex works at 10000 Hz",
+                      "the sample rate is " + format_number(rate_hz) + " Hz; haptex works at 10000 Hz",
                       "Resample the recording to 10 kHz before converting it");
 }
 

@@ -50,16 +50,18 @@ void validate(const nlohmann::json& doc, std::string_view schema_name, const std
   valijson::ValidationResults results;
   valijson::adapters::NlohmannJsonAdapter adapter(doc);
   if (validator.validate(compiled_schema(schema_name), adapter, &results)) return;
+  // valijson reports the innermost failure first: the element that actually broke the rule.
   valijson::ValidationResults::Error error;
-  std::string where = "/", reason = "does not match the schema";
-  // The last error is the innermost one: the element that actually failed.
-  while (results.popError(error)) {
-    where.clear();
-    for (const auto& part : error.context)
-      if (part != "<root>") where += part;
-    if (where.empty()) where = "<document>";
-    reason = error.description;
+  results.popError(error);
+  std::string where;
+  for (std::string part : error.context) {
+    if (part == "<root>") continue;
+    if (part.size() >= 2 && part.front() == '[' && part.back() == ']') part = part.substr(1, part.size() - 2);
+    if (part.size() >= 2 && part.front() == '"' && part.back() == '"') part = part.substr(1, part.size() - 2);
+    where += "/" + part;
   }
+  if (where.empty()) where = "(top level)";
+  const std::string reason = error.description;
   throw input_error(file, where, reason, "See schemas/" + std::string(schema_name) + " for the expected form");
 }
 

@@ -1,0 +1,184 @@
+#include "convert/hatt_recording_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "convert/csv_recording_reader.hpp"
+#include "core/error.hpp"
+#include "tests/support/sample_recording.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::convert {
+namespace {
+
+using test::SampleRecordingSpec;
+using test::TempDir;
+
+std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+std::string error_of(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    return e.what();
+  }
+  ADD_FAILURE() << "no error was thrown";
+  return "";
+}
+
+TEST(HattRecordingReader, ReadsTheDefaultFormat) {
+  TempDir dir;
+  SampleRecordingSpec spec;
+  spec.seconds = 0.5;
+  const std::string path = dir.file("canvas.xml");
+  test::write_text_file(path, test::sample_recording_xml(spec));
+  const Recording r = read_hatt_recording_xml(path, default_field_map());
+  EXPECT_EQ(r.material, "Sample Canvas");
+  EXPECT_EQ(r.texture, 7);
+  EXPECT_EQ(r.sample_rate_hz, 10000.0);
+  EXPECT_EQ(r.samples(), 5000u);
+  EXPECT_EQ(r.channels.size(), 9u);
+  EXPECT_EQ(r.units.at("accel"), "m/s^2");
+  EXPECT_EQ(r.source_sha256.size(), 64u);
+  const auto expected = test::make_sample_channels(spec);
+  for (std::size_t i = 0; i < r.samples(); i += 97) {
+    EXPECT_NEAR(r.channels.at("accel_y")[i], expected.accel_y[i], 5e-7);
+    EXPECT_NEAR(r.channels.at("speed")[i], expected.speed[i], 5e-7);
+    EXPECT_NEAR(r.channels.at("position_z")[i], expected.position_z[i], 5e-7);
+  }
+}
+
+TEST(HattRecordingReader, OptionalChannelsMayBeAbsent) {
+  TempDir dir;
+  SampleRecordingSpec spec;
+  spec.seconds = 0.2;
+  spec.with_position = false;
+  spec.with_tangential_force = false;
+  test::write_text_file(dir.file("a.xml"), test::sample_recording_xml(spec));
+  const Recording r = read_hatt_recording_xml(dir.file("a.xml"), default_field_map());
+  EXPECT_FALSE(r.has("position_x"));
+  EXPECT_FALSE(r.has("force_tangential"));
+  EXPECT_TRUE(r.has("force_normal"));
+}
+
+TEST(HattRecordingReader, FieldMapPointsAtOtherElementNames) {
+  TempDir dir;
+  SampleRecordingSpec spec;
+  spec.seconds = 0.2;
+  std::string xml = test::sample_recording_xml(spec);
+  xml = replace_all(xml, "accelX", "acc_x");
+  xml = replace_all(xml, "recordedData", "trial");
+  xml = replace_all(xml, "<value>", "<v>");
+  xml = replace_all(xml, "</value>", "</v>");
+  test::write_text_file(dir.file("renamed.xml"), xml);
+  EXPECT_NE(error_of([&] { read_hatt_recording_xml(dir.file("renamed.xml"), default_field_map()); }).find("<trial>"),
+            std::string::npos);
+
+  FieldMap map = default_field_map();
+  std::string map_json = R"({"root": "trial", "material": "material", "sample_rate": "SampleRate", "value": "v",
+    "csv_time_column": "time_s",
+    "units": {"accel": "AccelUnits", "force": "ForceUnits", "speed": "SpeedUnits"},
+    "channels": {"accel_x": "acc_x", "accel_y": "accelY", "accel_z": "accelZ", "force_normal": "forceNormal",
+                 "speed": "speed"}})";
+  test::write_text_file(dir.file("map.json"), map_json);
+  const Recording r = read_hatt_recording_xml(dir.file("renamed.xml"), load_field_map(dir.file("map.json")));
+  EXPECT_EQ(r.samples(), 2000u);
+  EXPECT_TRUE(r.has("accel_x"));
+  EXPECT_FALSE(r.has("position_x"));  // this map does not name positions
+}
+
+TEST(HattRecordingReader, InvalidFieldMapIsRefusedWithItsPlace) {
+  TempDir dir;
+  test::write_text_file(dir.file("map.json"), R"({"root": "x", "material": "m", "sample_rate": "r", "value": "v",
+    "csv_time_column": "t", "units": {"accel": "a", "force": "f", "speed": "s"},
+    "channels": {"accel_x": "ax", "accel_y": "ay", "accel_z": 3, "force_normal": "f", "speed": "s"}})");
+  const std::string message = error_of([&] { load_field_map(dir.file("map.json")); });
+  EXPECT_NE(message.find("map.json"), std::string::npos);
+  EXPECT_NE(message.find("/channels/accel_z"), std::string::npos) << message;
+  test::write_text_file(dir.file("broken.json"), "{\"root\": ");
+  EXPECT_NE(error_of([&] { load_field_map(dir.file("broken.json")); }).find("not valid JSON"), std::string::npos);
+}
+
+TEST(HattRecordingReader, ConvertsKnownUnitsAndRefusesUnknownOnes) {
+  TempDir dir;
+  SampleRecordingSpec spec;
+  spec.seconds = 0.2;
+  const std::string xml = test::sample_recording_xml(spec);
+  test::write_text_file(dir.file("g.xml"), replace_all(xml, "<AccelUnits>m/s^2<", "<AccelUnits>g<"));
+  const Recording in_g = read_hatt_recording_xml(dir.file("g.xml"), default_field_map());
+  const auto expected = test::make_sample_channels(spec);
+  EXPECT_NEAR(in_g.channels.at("accel_x")[10], 9.80665 * expected.accel_x[10], 1e-5);
+  EXPECT_EQ(in_g.units.at("accel"), "m/s^2");
+
+  test::write_text_file(dir.file("lbf.xml"), replace_all(xml, "<ForceUnits>N<", "<ForceUnits>lbf<"));
+  const std::string message = error_of([&] { read_hatt_recording_xml(dir.file("lbf.xml"), default_field_map()); });
+  EXPECT_NE(message.find("unknown force unit 'lbf'"), std::string::npos) << message;
+  EXPECT_NE(message.find("<ForceUnits> at line 6"), std::string::npos) << message;
+}
+
+TEST(HattRecordingReader, TooShortRecordingIsRefused) {
+  TempDir dir;
+  SampleRecordingSpec spec;
+  spec.seconds = 0.05;
+  test::write_text_file(dir.file("short.xml"), test::sample_recording_xml(spec));
+  EXPECT_NE(error_of([&] { read_hatt_recording_xml(dir.file("short.xml"), default_field_map()); }).find("only 500 samples"),
+            std::string::npos);
+}
+
+TEST(CsvRecordingReader, ReadsColumnsAndDerivesTheRate) {
+  TempDir dir;
+  SampleRecordingSpec spec;
+  spec.seconds = 0.3;
+  test::write_text_file(dir.file("Cork_2.csv"), test::sample_recording_csv(spec));
+  const Recording r = read_csv_recording(dir.file("Cork_2.csv"), default_field_map());
+  EXPECT_EQ(r.material, "Cork");
+  EXPECT_NEAR(r.sample_rate_hz, 10000.0, 1e-3);
+  EXPECT_EQ(r.samples(), 3000u);
+  EXPECT_EQ(r.channels.size(), 5u);
+  EXPECT_NEAR(r.channels.at("force_normal")[42], test::make_sample_channels(spec).force_normal[42], 5e-7);
+}
+
+TEST(CsvRecordingReader, MaterialNameFromFileName) {
+  EXPECT_EQ(material_from_file_stem("Cork_2"), "Cork");
+  EXPECT_EQ(material_from_file_stem("Brick 2"), "Brick 2");
+  EXPECT_EQ(material_from_file_stem("sandpaper-100-3"), "sandpaper-100");
+  EXPECT_EQ(material_from_file_stem("felt"), "felt");
+}
+
+TEST(CsvRecordingReader, RefusesRaggedRowsBadValuesAndJitteredClocks) {
+  TempDir dir;
+  SampleRecordingSpec spec;
+  spec.seconds = 0.2;
+  const std::string csv = test::sample_recording_csv(spec);
+  std::string ragged = csv;
+  ragged.insert(ragged.find('\n', ragged.find('\n', ragged.find('\n') + 1) + 1), ",5");  // line 3
+  test::write_text_file(dir.file("ragged.csv"), ragged);
+  EXPECT_NE(error_of([&] { read_csv_recording(dir.file("ragged.csv"), default_field_map()); })
+                .find("line 3: has 7 fields but the header has 6"),
+            std::string::npos);
+
+  std::string nan = csv;
+  const auto line5 = nan.find('\n', nan.find('\n', nan.find('\n', nan.find('\n') + 1) + 1) + 1) + 1;
+  nan.replace(nan.find(',', line5) + 1, nan.find(',', nan.find(',', line5) + 1) - nan.find(',', line5) - 1, "nan");
+  test::write_text_file(dir.file("nan.csv"), nan);
+  const std::string message = error_of([&] { read_csv_recording(dir.file("nan.csv"), default_field_map()); });
+  EXPECT_NE(message.find("line 5, column 'accelX'"), std::string::npos) << message;
+  EXPECT_NE(message.find("NaN or Inf"), std::string::npos) << message;
+
+  test::write_text_file(dir.file("jitter.csv"), replace_all(csv, "0.010000,", "0.010300,"));
+  EXPECT_NE(error_of([&] { read_csv_recording(dir.file("jitter.csv"), default_field_map()); }).find("time step"),
+            std::string::npos);
+
+  test::write_text_file(dir.file("notime.csv"), replace_all(csv, "time_s", "t"));
+  EXPECT_NE(error_of([&] { read_csv_recording(dir.file("notime.csv"), default_field_map()); }).find("no 'time_s' column"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace haptex::convert

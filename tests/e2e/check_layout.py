@@ -1,0 +1,99 @@
+"""Checks a haptex HDF5 file against the tables of schemas/hdf5-layout.md, with h5py.
+
+Usage: check_layout.py LAYOUT.md FILE.h5 SECTION-KEYWORD
+Prints one line per violation and exits 1 when there is any; 0 and 'layout ok' otherwise.
+"""
+import re
+import sys
+
+import h5py
+import numpy as np
+
+
+def table_rows(markdown, keyword):
+    """Rows of the 'Every file' table and of the table under the heading that contains keyword."""
+    rows, section = [], None
+    for line in markdown.splitlines():
+        if line.startswith("## "):
+            section = line
+        elif line.startswith("| `") and section and ("Every file" in section or keyword in section):
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            rows.append(dict(path=cells[0].strip("`"), dtype=cells[1], shape=cells[2], units=cells[3],
+                             required=cells[4] == "always"))
+    return rows
+
+
+def objects(f, pattern):
+    """Concrete paths of the groups or datasets matching a path with {placeholders}."""
+    found = ["/"]
+    for part in [p for p in pattern.strip("/").split("/") if p]:
+        nxt = []
+        for base in found:
+            group = f[base]
+            if not isinstance(group, h5py.Group):
+                continue
+            names = list(group) if part.startswith("{") else [part] if part in group else []
+            nxt += [base.rstrip("/") + "/" + name for name in names]
+        found = nxt
+    return found
+
+
+def dtype_name(value):
+    if isinstance(value, (str, bytes)) or (hasattr(value, "dtype") and value.dtype.kind in "OSU"):
+        return "string"
+    return np.asarray(value).dtype.name
+
+
+def check_dataset(obj, row, problems):
+    if not isinstance(obj, h5py.Dataset):
+        problems.append(f"{obj.name}: not a dataset")
+        return
+    if obj.dtype.name != row["dtype"]:
+        problems.append(f"{obj.name}: dtype {obj.dtype.name}, expected {row['dtype']}")
+    if row["units"] and obj.attrs.get("units") != row["units"]:
+        problems.append(f"{obj.name}: units {obj.attrs.get('units')!r}, expected {row['units']!r}")
+    n = obj.parent.attrs.get("samples")
+    dims = [d for d in row["shape"].strip("()").replace(" ", "").split(",") if d]
+    want = tuple(int(n) if d == "N" else int(d) for d in dims)
+    if obj.shape != want:
+        problems.append(f"{obj.name}: shape {obj.shape}, expected {want}")
+
+
+def check(f, row, problems):
+    owner_pattern, _, attr = row["path"].partition("@")
+    if attr:
+        for owner in objects(f, owner_pattern):
+            attrs = f[owner].attrs
+            if attr not in attrs:
+                if row["required"]:
+                    problems.append(f"missing attribute: {owner}@{attr}")
+            elif dtype_name(attrs[attr]) != row["dtype"]:
+                problems.append(f"{owner}@{attr}: dtype {dtype_name(attrs[attr])}, expected {row['dtype']}")
+        return
+    parent, name = owner_pattern.rsplit("/", 1)
+    for owner in objects(f, parent or "/"):
+        if name not in f[owner]:
+            if row["required"]:
+                problems.append(f"missing: {owner}/{name}")
+        else:
+            check_dataset(f[owner][name], row, problems)
+
+
+def main():
+    layout, h5_path, keyword = sys.argv[1:4]
+    rows = table_rows(open(layout, encoding="utf-8").read(), keyword)
+    if not rows:
+        print(f"no layout rows for {keyword!r}")
+        return 1
+    problems = []
+    with h5py.File(h5_path, "r") as f:
+        for row in rows:
+            check(f, row, problems)
+    for p in problems:
+        print(p)
+    print("layout ok" if not problems else f"{len(problems)} problems")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

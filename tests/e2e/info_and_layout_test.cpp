@@ -1,0 +1,92 @@
+// `haptex info`, and the recordings file as a Python user sees it (h5py) against schemas/hdf5-layout.md.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+#include "core/json/schema.hpp"
+#include "tests/support/run_haptex.hpp"
+#include "tests/support/sample_recording.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+
+class ConvertedFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    SampleRecordingSpec spec;
+    spec.seconds = 0.5;
+    write_text_file(dir_.file("canvas_1.xml"), sample_recording_xml(spec));
+    spec.seed = 2;
+    spec.with_position = false;
+    write_text_file(dir_.file("canvas_2.xml"), sample_recording_xml(spec));
+    spec.material = "Cork";
+    write_text_file(dir_.file("cork.xml"), sample_recording_xml(spec));
+    const CommandResult r = run_haptex({"convert", "hatt", dir_.path().string(), "-o", file_});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  TempDir dir_;
+  TempDir out_;
+  std::string file_ = out_.file("recordings.h5");
+};
+
+TEST_F(ConvertedFile, InfoPrintsMaterialsRecordingsAndUnits) {
+  const CommandResult r = run_haptex({"info", file_});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("recordings/1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("sample_canvas (Sample Canvas)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("recordings: 2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("0.50 s at 10000 Hz"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("m/s^2"), std::string::npos) << r.out;
+}
+
+TEST_F(ConvertedFile, InfoJsonFollowsItsSchema) {
+  const CommandResult r = run_haptex({"info", file_, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  EXPECT_NO_THROW(json::validate(doc, "info.schema.json", "info output"));
+  ASSERT_EQ(doc["materials"].size(), 2u);
+  EXPECT_EQ(doc["materials"][0]["id"], "cork");
+  const auto& recordings = doc["materials"][1]["collections"]["recordings"];
+  ASSERT_EQ(recordings.size(), 2u);
+  EXPECT_DOUBLE_EQ(recordings[0]["duration_s"].get<double>(), 0.5);
+  EXPECT_EQ(recordings[0]["datasets"].size(), 8u);  // with position
+  EXPECT_EQ(recordings[1]["datasets"].size(), 7u);  // without
+
+  nlohmann::json broken = doc;
+  broken["materials"][0]["id"] = "Not An Id";
+  EXPECT_THROW(json::validate(broken, "info.schema.json", "info output"), Error);
+}
+
+TEST_F(ConvertedFile, InfoRefusesFilesHaptexDidNotWrite) {
+  write_text_file(out_.file("plain.txt"), "hello");
+  const CommandResult r = run_haptex({"info", out_.file("plain.txt")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("not an HDF5 file"), std::string::npos) << r.err;
+}
+
+TEST_F(ConvertedFile, H5pyReadsTheDocumentedLayout) {
+  if (run_shell("/usr/bin/python3 -c 'import h5py'").exit_code != 0)
+    GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const std::string script = std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/check_layout.py";
+  const std::string layout = std::string(HAPTEX_SCHEMA_DIR) + "/hdf5-layout.md";
+  const CommandResult ok = run_shell("/usr/bin/python3 " + shell_quote(script) + " " + shell_quote(layout) + " " +
+                                     shell_quote(file_) + " Recordings");
+  EXPECT_EQ(ok.exit_code, 0) << ok.out << ok.err;
+  EXPECT_NE(ok.out.find("layout ok"), std::string::npos) << ok.out << ok.err;
+
+  // The checker itself must catch a file that breaks the layout.
+  const CommandResult broken = run_shell(
+      "/usr/bin/python3 -c \"import h5py; f = h5py.File('" + file_ +
+      "', 'r+'); del f['/materials/cork/recordings/0/speed_lp']; f['/materials/cork/recordings/0/accel'].attrs['units'] = 'g'\"");
+  ASSERT_EQ(broken.exit_code, 0) << broken.err;
+  const CommandResult bad = run_shell("/usr/bin/python3 " + shell_quote(script) + " " + shell_quote(layout) + " " +
+                                      shell_quote(file_) + " Recordings");
+  EXPECT_EQ(bad.exit_code, 1) << bad.out;
+  EXPECT_NE(bad.out.find("missing: /materials/cork/recordings/0/speed_lp"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("units 'g'"), std::string::npos) << bad.out;
+}
+
+}  // namespace
+}  // namespace haptex::test
