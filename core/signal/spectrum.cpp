@@ -1,0 +1,37 @@
+#include "core/signal/spectrum.hpp"
+
+#include <complex>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/signal/fft.hpp"
+
+namespace haptex::signal {
+
+void amplitude_spectrum(std::span<const double> window, std::span<double> out, std::size_t first_bin) {
+  const std::size_t n = window.size();
+  if (n == 0) throw failure("amplitude spectrum: the window is empty");
+  const auto& fft = real_fft<double>(n);
+  if (first_bin + out.size() > fft.bins())
+    throw failure("amplitude spectrum: bins " + std::to_string(first_bin) + ".." +
+                  std::to_string(first_bin + out.size() - 1) + " requested, a " + std::to_string(n) +
+                  "-sample window has bins 0.." + std::to_string(fft.bins() - 1));
+  // Called once per training window: a per-thread buffer that only grows keeps it allocation-free.
+  thread_local std::vector<std::complex<double>> spectrum;
+  if (spectrum.size() < fft.bins()) spectrum.resize(fft.bins());
+  const std::span<std::complex<double>> X(spectrum.data(), fft.bins());
+  fft.forward(window, X);
+  const double scale = 2.0 / static_cast<double>(n);
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = scale * std::abs(X[first_bin + k]);
+}
+
+std::vector<double> amplitude_spectrum(std::span<const double> window) {
+  if (window.size() != kWindowSamples)
+    throw failure("amplitude spectrum: the window has " + std::to_string(window.size()) + " samples, expected " +
+                  std::to_string(kWindowSamples));
+  std::vector<double> out(kSpectrumBins);
+  amplitude_spectrum(window, out, 1);
+  return out;
+}
+
+}  // namespace haptex::signal

@@ -1,0 +1,106 @@
+#include "core/signal/spectrum.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <new>
+#include <numbers>
+#include <vector>
+
+#include "core/error.hpp"
+#include "tests/support/npy.hpp"
+
+// Counts allocations on this thread while a test asks for it. The replacement covers all of
+// test_core, but it is plain malloc/free, as libstdc++'s own is. Every unaligned form is replaced
+// so that new and delete always pair, also under AddressSanitizer.
+namespace {
+thread_local bool counting_allocations = false;
+thread_local std::size_t allocation_count = 0;
+
+void* counted_malloc(std::size_t size) noexcept {
+  if (counting_allocations) ++allocation_count;
+  return std::malloc(size == 0 ? 1 : size);
+}
+void* counted_new(std::size_t size) {
+  if (void* p = counted_malloc(size)) return p;
+  throw std::bad_alloc();
+}
+}  // namespace
+
+void* operator new(std::size_t size) { return counted_new(size); }
+void* operator new[](std::size_t size) { return counted_new(size); }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return counted_malloc(size); }
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept { return counted_malloc(size); }
+// GCC cannot see that these deletes pair with the malloc-based news above.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
+#pragma GCC diagnostic pop
+
+namespace haptex::signal {
+namespace {
+
+using test::load_golden;
+using test::max_scaled_error;
+
+TEST(SignalSpectrum, MatchesNumpy) {
+  const auto window = load_golden("signal/spectrum_window.npy").data;
+  const auto expected = load_golden("signal/spectrum_bins.npy").data;
+  const auto out = amplitude_spectrum(window);
+  ASSERT_EQ(out.size(), kSpectrumBins);
+  EXPECT_LT(max_scaled_error(out, expected), 1e-12);
+}
+
+// A sine of amplitude A exactly on bin k reads A at bin k, which is index k - 1 (bins start at 1).
+TEST(SignalSpectrum, PureSineReadsItsAmplitude) {
+  std::vector<double> window(kWindowSamples);
+  for (std::size_t i = 0; i < window.size(); ++i)
+    window[i] = 3.0 * std::sin(2.0 * std::numbers::pi * 7.0 * static_cast<double>(i) / 1000.0 + 0.3);
+  const auto out = amplitude_spectrum(window);
+  EXPECT_NEAR(out[6], 3.0, 1e-12);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    if (k == 6) continue;
+    EXPECT_NEAR(out[k], 0.0, 1e-12) << "index " << k;
+  }
+}
+
+TEST(SignalSpectrum, FirstBinSelectsTheRange) {
+  const auto window = load_golden("signal/spectrum_window.npy").data;
+  const auto expected = load_golden("signal/spectrum_bins.npy").data;  // bins 1..100
+  std::vector<double> out(10);
+  amplitude_spectrum(window, out, 5);
+  EXPECT_LT(max_scaled_error(out, std::vector<double>(expected.begin() + 4, expected.begin() + 14)), 1e-12);
+}
+
+TEST(SignalSpectrum, NoAllocationAfterFirstCall) {
+  const auto window = load_golden("signal/spectrum_window.npy").data;
+  std::vector<double> out(kSpectrumBins);
+  amplitude_spectrum(window, out, 1);  // plans the size and sizes the scratch buffer
+  allocation_count = 0;
+  counting_allocations = true;
+  for (int i = 0; i < 10; ++i) amplitude_spectrum(window, out, 1);
+  counting_allocations = false;
+  EXPECT_EQ(allocation_count, 0u);
+  // The counter works: the vector-returning form has to allocate its result.
+  counting_allocations = true;
+  const auto allocated = amplitude_spectrum(window);
+  counting_allocations = false;
+  EXPECT_GT(allocation_count, 0u);
+  EXPECT_EQ(allocated, out);
+}
+
+TEST(SignalSpectrum, RejectsBadWindows) {
+  std::vector<double> out(kSpectrumBins);
+  EXPECT_THROW(amplitude_spectrum(std::vector<double>(150, 1.0), out, 1), Error);  // bins 1..100 need N >= 200
+  EXPECT_THROW(amplitude_spectrum(std::vector<double>{}, out, 1), Error);
+  EXPECT_THROW(amplitude_spectrum(std::vector<double>(999, 1.0)), Error);
+}
+
+}  // namespace
+}  // namespace haptex::signal
