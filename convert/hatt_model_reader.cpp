@@ -31,7 +31,7 @@ void refuse_declarations(std::string_view xml, const std::string& source) {
       throw input_error(source, "line " + std::to_string(line_at(xml, std::ptrdiff_t(at))),
                         std::string("the file declares ") + (keyword + 2) +
                             ", which haptex refuses (no DTDs, no entity expansion)",
-                        "remove the declaration; HaTT model files need none");
+                        "Remove the declaration; HaTT model files need none");
   }
 }
 
@@ -54,7 +54,7 @@ class Reader {
     pugi::xml_node child = parent.child(name);
     if (!child)
       throw error(parent, std::string("missing <") + name + ">",
-                  std::string("add the <") + name + "> element (DESIGN.md section 4 lists the format)");
+                  std::string("Add the <") + name + "> element (DESIGN.md section 4 lists the format)");
     return child;
   }
 
@@ -63,7 +63,7 @@ class Reader {
     double value = 0.0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
-      throw error(node, "\"" + std::string(text) + "\" is not a finite number", "write a decimal number");
+      throw error(node, "\"" + std::string(text) + "\" is not a finite number", "Write a decimal number");
     return value;
   }
 
@@ -72,7 +72,7 @@ class Reader {
     long value = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (text.empty() || ec != std::errc() || end != text.data() + text.size())
-      throw error(node, "\"" + std::string(text) + "\" is not an integer", "write a whole number");
+      throw error(node, "\"" + std::string(text) + "\" is not an integer", "Write a whole number");
     return value;
   }
 
@@ -81,7 +81,7 @@ class Reader {
   std::size_t count_child(pugi::xml_node parent, const char* name) const {
     const pugi::xml_node node = require(parent, name);
     const long value = integer(node);
-    if (value < 0) throw error(node, "must not be negative", "write a count >= 0");
+    if (value < 0) throw error(node, "must not be negative", "Write a count >= 0");
     return std::size_t(value);
   }
 
@@ -108,7 +108,7 @@ void check_count(const Reader& r, pugi::xml_node count_node, std::size_t declare
                  const std::string& what_found) {
   if (declared != found)
     throw r.error(count_node, "says " + std::to_string(declared) + " but the file has " + std::to_string(found) + " " + what_found,
-                  "make <" + std::string(count_node.name()) + "> match the elements listed");
+                  "Make <" + std::string(count_node.name()) + "> match the elements listed");
 }
 
 void read_header(const Reader& r, pugi::xml_node root, ar::ModelSet& set) {
@@ -116,7 +116,7 @@ void read_header(const Reader& r, pugi::xml_node root, ar::ModelSet& set) {
     const std::string_view text = texture.value();
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), set.texture);
     if (text.empty() || ec != std::errc() || end != text.data() + text.size())
-      throw r.error(root, "texture=\"" + std::string(text) + "\" is not an integer", "write texture=\"N\"");
+      throw r.error(root, "texture=\"" + std::string(text) + "\" is not an integer", "Write texture=\"N\"");
   }
   set.material = root.child_value("material");
   if (root.child("AccelUnits")) set.accel_units = root.child_value("AccelUnits");
@@ -124,7 +124,7 @@ void read_header(const Reader& r, pugi::xml_node root, ar::ModelSet& set) {
   if (root.child("ForceUnits")) set.force_units = root.child_value("ForceUnits");
   set.sample_rate_hz = r.number_child(root, "SampleRate");
   if (!(set.sample_rate_hz > 0.0))
-    throw r.error(root.child("SampleRate"), "the sample rate must be positive", "write the rate in Hz");
+    throw r.error(root.child("SampleRate"), "the sample rate must be positive", "Write the rate in Hz");
   set.mu = r.number_child(root, "mu");
   set.max_speed = r.number_child(root, "maxSpeed");
   set.max_force = r.number_child(root, "maxForce");
@@ -147,14 +147,14 @@ void read_triangles(const Reader& r, pugi::xml_node root, std::size_t num_mod, a
     std::array<std::size_t, 3> vertex{};
     std::size_t n = 0;
     for (pugi::xml_node v = tri.child("value"); v; v = v.next_sibling("value"), ++n) {
-      if (n == 3) throw r.error(tri, "a triangle has more than 3 vertices", "list exactly 3 model indices");
+      if (n == 3) throw r.error(tri, "a triangle has more than 3 vertices", "List exactly 3 model indices");
       const long index = r.integer(v);
       if (index < 1 || std::size_t(index) > num_mod)
         throw r.error(v, "model index " + std::to_string(index) + " is outside 1.." + std::to_string(num_mod),
-                      "use 1-based indices of existing models");
+                      "Use 1-based indices of existing models");
       vertex[n] = std::size_t(index - 1);
     }
-    if (n != 3) throw r.error(tri, "a triangle has " + std::to_string(n) + " vertices", "list exactly 3 model indices");
+    if (n != 3) throw r.error(tri, "a triangle has " + std::to_string(n) + " vertices", "List exactly 3 model indices");
     set.triangles.push_back(vertex);
   }
   check_count(r, root.child("numTri"), r.count_child(root, "numTri"), set.triangles.size(), "<tri> elements");
@@ -169,10 +169,10 @@ ar::ArModel read_model(const Reader& r, pugi::xml_node node, std::size_t order) 
   m.ar_lsf = r.values(lsf);
   if (m.ar_lsf.size() != order)
     throw r.error(lsf, "has " + std::to_string(m.ar_lsf.size()) + " values but numARCoeff is " + std::to_string(order),
-                  "give numARCoeff LSFs per model");
+                  "Give numARCoeff LSFs per model");
   if (m.ar_coeff.size() != order + 1)
     throw r.error(coeff, "has " + std::to_string(m.ar_coeff.size()) + " values but numARCoeff + 1 is " + std::to_string(order + 1),
-                  "give the leading 1 and numARCoeff coefficients");
+                  "Give the leading 1 and numARCoeff coefficients");
   if (node.child("MAcoeff")) m.ma_coeff = r.values(node.child("MAcoeff"));
   if (node.child("MAlsf")) m.ma_lsf = r.values(node.child("MAlsf"));
   m.variance = r.number_child(node, "var");
@@ -191,9 +191,9 @@ ar::ModelSet parse_hatt_model(std::string_view xml, const std::string& source) {
   if (!parsed)
     throw input_error(source, "line " + std::to_string(line_at(xml, parsed.offset)),
                       std::string("malformed XML (") + parsed.description() + ")",
-                      "the file looks truncated or corrupted; copy it again from the HaTT release");
+                      "The file looks truncated or corrupted; copy it again from the HaTT release");
   const pugi::xml_node root = doc.child("modelSet");
-  if (!root) throw input_error(source, "", "no <modelSet> root element", "give a HaTT model file (Models_<Material>.xml)");
+  if (!root) throw input_error(source, "", "no <modelSet> root element", "Give a HaTT model file (Models_<Material>.xml)");
   const Reader r(xml, source);
   ar::ModelSet set;
   set.source = source;
@@ -209,10 +209,10 @@ ar::ModelSet parse_hatt_model(std::string_view xml, const std::string& source) {
 
 ar::ModelSet read_hatt_model(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw input_error(file.string(), "", "cannot open the file", "check the path and permissions");
+  if (!in) throw input_error(file.string(), "", "cannot open the file", "Check the path and permissions");
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad()) throw input_error(file.string(), "", "reading the file failed", "check the disk and retry");
+  if (in.bad()) throw input_error(file.string(), "", "reading the file failed", "Check the disk and retry");
   return parse_hatt_model(text.str(), file.string());
 }
 

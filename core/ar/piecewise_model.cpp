@@ -46,18 +46,18 @@ std::array<double, 3> barycentric(const std::array<double, 3>& x, const std::arr
 
 void check_sizes(const ModelSet& set) {
   const std::string file = file_of(set);
-  if (set.models.empty()) throw input_error(file, "modelSet", "the set has no models", "add <model> elements");
+  if (set.models.empty()) throw input_error(file, "modelSet", "the set has no models", "Add <model> elements");
   if (set.speed_list.size() != set.models.size() || set.force_list.size() != set.models.size())
     throw input_error(file, "speedList/forceList",
                       "the vertex lists have " + std::to_string(set.speed_list.size()) + " and " +
                           std::to_string(set.force_list.size()) + " values for " +
                           std::to_string(set.models.size()) + " models",
-                      "give one speed and one force per model");
+                      "Give one speed and one force per model");
   if (!(set.max_speed > 0.0) || !(set.max_force > 0.0) || !std::isfinite(set.max_speed) ||
       !std::isfinite(set.max_force))
     throw input_error(file, "maxSpeed/maxForce", "the modelled maxima must be finite and positive",
-                      "fix maxSpeed and maxForce");
-  if (set.triangles.empty()) throw input_error(file, "tri", "the set has no triangles", "add <tri> elements");
+                      "Fix maxSpeed and maxForce");
+  if (set.triangles.empty()) throw input_error(file, "tri", "the set has no triangles", "Add <tri> elements");
 }
 
 std::size_t check_models(const ModelSet& set) {
@@ -69,19 +69,19 @@ std::size_t check_models(const ModelSet& set) {
     if (m.ar_lsf.size() != p)
       throw input_error(file, where + " ARlsf",
                         "has " + std::to_string(m.ar_lsf.size()) + " LSFs, the set's AR order is " + std::to_string(p),
-                        "give every model numARCoeff LSFs");
+                        "Give every model numARCoeff LSFs");
     try {
       check_lsf(m.ar_lsf, "ARlsf");
     } catch (const Error& e) {
       throw input_error(file, where, e.what(), "");
     }
     if (!std::isfinite(m.variance) || m.variance < 0.0)
-      throw input_error(file, where + " var", "the variance must be finite and >= 0", "fix <var>");
+      throw input_error(file, where + " var", "the variance must be finite and >= 0", "Fix <var>");
     if (!close(m.speed, set.speed_list[i]) || !close(m.force, set.force_list[i]))
       throw input_error(file, where,
                         "speedMod/forceMod (" + std::to_string(m.speed) + ", " + std::to_string(m.force) +
                             ") differ from vertex " + std::to_string(i + 1) + " of speedList/forceList",
-                        "list the models in the order of speedList/forceList");
+                        "List the models in the order of speedList/forceList");
   }
   return p;
 }
@@ -96,11 +96,11 @@ void check_triangles(const ModelSet& set) {
       if (v >= set.models.size())
         throw input_error(file, where,
                           "vertex index " + std::to_string(v + 1) + " is outside 1.." + std::to_string(set.models.size()),
-                          "use 1-based model indices");
+                          "Use 1-based model indices");
     const double area2 = (set.speed_list[tri[1]] - set.speed_list[tri[0]]) * (set.force_list[tri[2]] - set.force_list[tri[0]]) -
                          (set.speed_list[tri[2]] - set.speed_list[tri[0]]) * (set.force_list[tri[1]] - set.force_list[tri[0]]);
     if (!(std::abs(area2) > 1e-12 * scale))
-      throw input_error(file, where, "the triangle has no area (collinear vertices)", "fix the triangulation");
+      throw input_error(file, where, "the triangle has no area (collinear vertices)", "Fix the triangulation");
   }
 }
 
