@@ -58,6 +58,10 @@ void check_sizes(const ModelSet& set) {
     throw input_error(file, "maxSpeed/maxForce", "the modelled maxima must be finite and positive",
                       "Fix maxSpeed and maxForce");
   if (set.triangles.empty()) throw input_error(file, "tri", "the set has no triangles", "Add <tri> elements");
+  // Only HaTT's lower-rate files are ARMA; rendering them without their MA part would be wrong.
+  if (set.num_ma_coeff > 0)
+    throw input_error(file, "numMACoeff", "ARMA models (numMACoeff > 0) are not supported",
+                      "Use the toolkit's 10 kHz pure-AR model files");
 }
 
 std::size_t check_models(const ModelSet& set) {

@@ -30,8 +30,8 @@ struct BlendedAr {
 
 class PiecewiseArModel {
  public:
-  // Checks the set (counts, LSF ordering, vertex positions, triangle indices and areas) and throws
-  // haptex::Error naming set.source and the offending model or triangle.
+  // Checks the set (counts, LSF ordering, vertex positions, triangle indices and areas; ARMA sets
+  // are refused) and throws haptex::Error naming set.source and the offending model or triangle.
   explicit PiecewiseArModel(ModelSet set);
 
   const ModelSet& set() const { return set_; }

@@ -241,6 +241,9 @@ TEST(ArPiecewiseModel, RefusesInconsistentSets) {
   bad = good;
   bad.models[3].ar_lsf.pop_back();
   expect_error(bad, "AR order");
+  bad = good;
+  bad.num_ma_coeff = 2;
+  expect_error(bad, "ARMA");
 }
 
 }  // namespace
