@@ -22,7 +22,8 @@ void multiply_quadratic(double* c, std::size_t& len, double b) {
 }
 
 // prod over every other LSF (starting at `first`) of (1 - 2 cos(w) z^-1 + z^-2): a real, palindromic
-// polynomial with roots exp(+-jw). Real arithmetic keeps it exactly palindromic-free of imaginary dust.
+// polynomial with roots exp(+-jw). Real quadratic factors leave no imaginary rounding dust to drop,
+// unlike MATLAB's poly() of the complex roots.
 std::size_t unit_circle_product(std::span<const double> lsf, std::size_t first, double* c) {
   std::size_t len = 1;
   c[0] = 1.0;
