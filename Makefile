@@ -36,9 +36,9 @@ test: build
 
 demo: build
 	@rm -rf $(DEMO) && mkdir -p $(DEMO)/xml
-	$(BUILD)/tests/make_sample_recording --material "Demo Canvas" -o $(DEMO)/xml/demo_canvas_0.xml
-	$(BUILD)/tests/make_sample_recording --material "Demo Canvas" --seed 2 -o $(DEMO)/xml/demo_canvas_1.xml
-	$(BUILD)/tests/make_sample_recording --material "Demo Cork" --seed 3 --roughness 0.4 -o $(DEMO)/xml/demo_cork_0.xml
+	$(BUILD)/tests/make_sample_recording --material "Demo Canvas" --seconds 10 -o $(DEMO)/xml/demo_canvas_0.xml
+	$(BUILD)/tests/make_sample_recording --material "Demo Canvas" --seconds 10 --seed 2 -o $(DEMO)/xml/demo_canvas_1.xml
+	$(BUILD)/tests/make_sample_recording --material "Demo Cork" --seconds 10 --seed 3 --roughness 0.4 -o $(DEMO)/xml/demo_cork_0.xml
 	$(HAPTEX) convert hatt $(DEMO)/xml -o $(DEMO)/recordings.h5
 	$(HAPTEX) info $(DEMO)/recordings.h5
 

@@ -1,5 +1,7 @@
 #include "core/sha256.hpp"
 
+#include <immintrin.h>
+
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -22,12 +24,58 @@ constexpr std::array<std::uint32_t, 64> kRound = {
 
 constexpr std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
 
+// One block with the x86 SHA extensions (about 5x the portable code; provenance hashing of a
+// 25 MB XML file otherwise costs as much as parsing it). Message schedule per FIPS 180-4:
+// W[t] = s1(W[t-2]) + W[t-7] + s0(W[t-15]) + W[t-16], four words per register.
+__attribute__((target("sha,sse4.1"))) void compress_with_sha_extensions(std::array<std::uint32_t, 8>& state,
+                                                                         const std::uint8_t* block) {
+  const __m128i byte_swap = _mm_set_epi64x(0x0c0d0e0f08090a0bULL, 0x0405060700010203ULL);
+  // The instructions keep the state as (A, B, E, F) and (C, D, G, H).
+  __m128i dcba = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&state[0]));
+  __m128i hgfe = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&state[4]));
+  __m128i cdab = _mm_shuffle_epi32(dcba, 0xB1);
+  __m128i efgh = _mm_shuffle_epi32(hgfe, 0x1B);
+  __m128i abef = _mm_alignr_epi8(cdab, efgh, 8);
+  __m128i cdgh = _mm_blend_epi16(efgh, cdab, 0xF0);
+  const __m128i abef_start = abef, cdgh_start = cdgh;
+
+  __m128i w[4];
+  for (int g = 0; g < 16; ++g) {
+    if (g < 4) {
+      w[g] = _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(block + 16 * g)), byte_swap);
+    } else {
+      const __m128i older = _mm_sha256msg1_epu32(w[g % 4], w[(g - 3) % 4]);
+      const __m128i w7 = _mm_alignr_epi8(w[(g - 1) % 4], w[(g - 2) % 4], 4);
+      w[g % 4] = _mm_sha256msg2_epu32(_mm_add_epi32(older, w7), w[(g - 1) % 4]);
+    }
+    __m128i wk = _mm_add_epi32(w[g % 4], _mm_loadu_si128(reinterpret_cast<const __m128i*>(&kRound[4 * g])));
+    cdgh = _mm_sha256rnds2_epu32(cdgh, abef, wk);
+    wk = _mm_shuffle_epi32(wk, 0x0E);
+    abef = _mm_sha256rnds2_epu32(abef, cdgh, wk);
+  }
+  abef = _mm_add_epi32(abef, abef_start);
+  cdgh = _mm_add_epi32(cdgh, cdgh_start);
+
+  const __m128i feba = _mm_shuffle_epi32(abef, 0x1B);
+  const __m128i dchg = _mm_shuffle_epi32(cdgh, 0xB1);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(&state[0]), _mm_blend_epi16(feba, dchg, 0xF0));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(&state[4]), _mm_alignr_epi8(dchg, feba, 8));
+}
+
+bool cpu_has_sha_extensions() {
+  static const bool has = __builtin_cpu_supports("sha") && __builtin_cpu_supports("sse4.1");
+  return has;
+}
+
 }  // namespace
+
+bool Sha256::use_cpu_extensions = true;
 
 Sha256::Sha256()
     : state_{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19} {}
 
 void Sha256::compress(const std::uint8_t* block) {
+  if (use_cpu_extensions && cpu_has_sha_extensions()) return compress_with_sha_extensions(state_, block);
   std::array<std::uint32_t, 64> w;
   for (int i = 0; i < 16; ++i)
     w[i] = (std::uint32_t(block[4 * i]) << 24) | (std::uint32_t(block[4 * i + 1]) << 16) |

@@ -14,6 +14,8 @@ class Sha256 {
   void update(std::string_view text);
   std::array<std::uint8_t, 32> digest();  // finishes; the object must not be updated afterwards
   std::string hex_digest();
+  // The x86 SHA extensions are used when the CPU has them; tests switch them off to check the portable path.
+  static bool use_cpu_extensions;
 
  private:
   void compress(const std::uint8_t* block);

@@ -28,6 +28,19 @@ TEST(Sha256, ChunkedUpdatesMatchOneShot) {
   EXPECT_EQ(whole.hex_digest(), pieces.hex_digest());
 }
 
+TEST(Sha256, CpuExtensionsAndPortableCodeAgree) {
+  std::string text(100000, '\0');
+  for (std::size_t i = 0; i < text.size(); ++i) text[i] = char((i * 7919) % 251);
+  Sha256 fast;
+  fast.update(text);
+  Sha256::use_cpu_extensions = false;
+  Sha256 portable;
+  portable.update(text);
+  const std::string portable_hex = portable.hex_digest();
+  Sha256::use_cpu_extensions = true;
+  EXPECT_EQ(fast.hex_digest(), portable_hex);
+}
+
 TEST(Sha256, MillionAs) {
   Sha256 hash;
   std::string block(1000, 'a');

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Runs every benchmark on one core and prints the figures the issues ask for.
+# Usage: bench/run_bench.sh BUILD_DIR   (make bench calls it)
+set -euo pipefail
+build=${1:-build}
+out=$build/bench-results
+mkdir -p "$out"
+one_core="taskset -c 0"
+command -v taskset >/dev/null || one_core=""
+
+$one_core "$build/bench/bench_signal" --benchmark_format=json --benchmark_out="$out/signal.json" --benchmark_out_format=json >/dev/null
+$one_core "$build/bench/bench_convert" --benchmark_format=json --benchmark_out="$out/convert.json" --benchmark_out_format=json >/dev/null
+$one_core /usr/bin/python3 "$(dirname "$0")/scipy_sosfiltfilt.py" > "$out/scipy.json"
+
+/usr/bin/python3 - "$out" <<'PY'
+import json, sys
+out = sys.argv[1]
+bench = {b["name"]: b for f in ("signal", "convert") for b in json.load(open(f"{out}/{f}.json"))["benchmarks"]}
+scipy = json.load(open(f"{out}/scipy.json"))
+def seconds(name):
+    b = bench[name]
+    return b["real_time"] * {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b["time_unit"]]
+ours = seconds("BM_Sosfiltfilt_1e5")
+theirs = scipy["scipy_sosfiltfilt_1e5_seconds"]
+print(f"sosfiltfilt, 1e5 samples, order 4:  haptex {ours*1e3:.3f} ms   scipy {scipy['scipy']} {theirs*1e3:.3f} ms   scipy/haptex = {theirs/ours:.2f}x")
+for name in ("BM_ParseHattXml_10s", "BM_ConvertXmlToHdf5_10s"):
+    b = bench[name]
+    print(f"{name}: {seconds(name)*1e3:.1f} ms per 10 s recording, {b['bytes_per_second']/1e6:.1f} MB/s of XML, {b['items_per_second']/1e6:.2f} M samples/s (x 9 channels)")
+print(f"DFT321 of 10 s: {seconds('BM_Dft321_10s')*1e3:.2f} ms;  amplitude spectrum of one window: {seconds('BM_AmplitudeSpectrum_1000')*1e6:.2f} us")
+PY

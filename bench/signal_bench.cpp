@@ -1,0 +1,48 @@
+// Signal kernels on one core. bench/run_bench.sh compares sosfiltfilt with scipy's in the same run.
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "core/signal/butterworth.hpp"
+#include "core/signal/dft321.hpp"
+#include "core/signal/sosfilt.hpp"
+#include "core/signal/spectrum.hpp"
+
+namespace {
+
+std::vector<double> noisy_force(std::size_t n) {
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> noise(0, 0.05);
+  std::vector<double> x(n);
+  for (std::size_t i = 0; i < n; ++i) x[i] = 2.0 + 0.5 * std::sin(double(i) * 1e-3) + noise(rng);
+  return x;
+}
+
+void BM_Sosfiltfilt_1e5(benchmark::State& state) {
+  const auto sos = haptex::signal::butter_lowpass(4, 0.004);
+  const auto x = noisy_force(100000);
+  for (auto _ : state) benchmark::DoNotOptimize(haptex::signal::sosfiltfilt(sos, x));
+  state.SetItemsProcessed(state.iterations() * 100000);
+}
+BENCHMARK(BM_Sosfiltfilt_1e5)->Unit(benchmark::kMicrosecond);
+
+void BM_Dft321_10s(benchmark::State& state) {
+  const auto x = noisy_force(100000), y = noisy_force(100000), z = noisy_force(100000);
+  for (auto _ : state) benchmark::DoNotOptimize(haptex::signal::dft321(x, y, z));
+  state.SetItemsProcessed(state.iterations() * 100000);
+}
+BENCHMARK(BM_Dft321_10s)->Unit(benchmark::kMicrosecond);
+
+void BM_AmplitudeSpectrum_1000(benchmark::State& state) {
+  const auto x = noisy_force(1000);
+  std::vector<double> out(100);
+  for (auto _ : state) {
+    haptex::signal::amplitude_spectrum(x, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+BENCHMARK(BM_AmplitudeSpectrum_1000);
+
+}  // namespace
+
+BENCHMARK_MAIN();
