@@ -11,7 +11,7 @@ namespace haptex::convert {
 std::vector<char> read_whole_file(const std::string& path, std::uintmax_t max_bytes) {
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) throw input_error(path, "", "cannot read the file (" + ec.message() + ")", "Check the path and permissions");
+  if (ec) throw input_error(path, "", "cannot open the file (" + ec.message() + ")", "Check the path and permissions");
   if (size > max_bytes)
     throw input_error(path, "", "the file is " + std::to_string(size) + " bytes, over the limit of " +
                                     std::to_string(max_bytes) + " bytes",

@@ -1,0 +1,46 @@
+#pragma once
+// An XML input (HaTT recorded data or models) parsed in place with pugixml. DTDs and entity
+// declarations are refused, never expanded; every lookup that fails names the element and its line.
+#include <pugixml.hpp>
+
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace haptex::convert {
+
+class XmlFile {
+ public:
+  // `bytes` is the whole file (see read_whole_file); `source` names it in messages. Hashes the
+  // original bytes (SHA-256, for provenance), then parses them in place.
+  XmlFile(std::string source, std::vector<char> bytes);
+  XmlFile(const XmlFile&) = delete;
+  XmlFile& operator=(const XmlFile&) = delete;
+
+  const std::string& source() const { return source_; }
+  const std::string& sha256() const { return sha256_; }
+  pugi::xml_node root() const { return doc_.document_element(); }
+
+  // "<name> at line N"
+  std::string where(const pugi::xml_node& node) const;
+  Error error(const pugi::xml_node& node, const std::string& what, const std::string& fix) const;
+  // The child, or an error at the parent saying it is missing, with the fix.
+  pugi::xml_node require(const pugi::xml_node& parent, const std::string& name, const std::string& fix) const;
+  // The node's text as a finite number / an integer, or an error at the node.
+  double number(const pugi::xml_node& node) const;
+  long integer(const pugi::xml_node& node) const;
+  // Every <value_name> child of an array element, streamed straight into doubles.
+  std::vector<double> values(const pugi::xml_node& array, const std::string& value_name) const;
+
+ private:
+  std::string source_;
+  std::vector<char> bytes_;
+  std::string sha256_;
+  pugi::xml_document doc_;
+};
+
+// The node's text without surrounding white space.
+std::string_view trimmed_text(const pugi::xml_node& node);
+
+}  // namespace haptex::convert
