@@ -22,7 +22,8 @@ class ConvertCommand : public Command {
     hatt_->add_option("-o,--output", output_, "Recordings file to write (HDF5)")->required();
     hatt_->add_option("--map", map_, "Field map JSON naming your files' elements (default: schemas/hatt-recording-map.json)");
     hatt_->add_option("--max-bytes", options_.max_bytes, "Refuse input files larger than this")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
     hatt_->add_flag("--force", options_.overwrite, "Replace the output file if it exists");
   }
 

@@ -1,3 +1,4 @@
+#include <filesystem>
 #include <iostream>
 
 #include "apps/command.hpp"
@@ -45,6 +46,10 @@ int run_main(int argc, char** argv) {
     } catch (const Error& e) {
       std::cerr << "haptex " << command->name() << ": error: " << e.what() << "\n";
       return e.kind() == Error::Kind::bad_input ? 2 : 1;
+    } catch (const std::filesystem::filesystem_error& e) {
+      std::cerr << "haptex " << command->name() << ": error: " << e.path1().string() << ": " << e.code().message()
+                << ". Check the path and its permissions\n";
+      return 2;
     } catch (const std::exception& e) {
       std::cerr << "haptex " << command->name() << ": unexpected error: " << e.what() << "\n";
       return 1;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 
 #include "convert/csv_recording_reader.hpp"
 #include "convert/field_map.hpp"
@@ -30,17 +31,25 @@ bool is_recording_file(const fs::path& path) {
 
 std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
   std::vector<std::string> files;
+  std::set<fs::path> seen;  // a file named twice (or inside a named directory too) is one recording
+  auto add = [&](const fs::path& file) {
+    std::error_code ec;
+    if (seen.insert(fs::weakly_canonical(file, ec)).second) files.push_back(file.string());
+  };
   for (const std::string& input : inputs) {
-    if (fs::is_directory(input)) {
-      std::vector<std::string> found;
-      for (const auto& entry : fs::recursive_directory_iterator(input))
-        if (entry.is_regular_file() && is_recording_file(entry.path())) found.push_back(entry.path().string());
-      std::sort(found.begin(), found.end());
+    std::error_code ec;
+    if (fs::is_directory(input, ec)) {
+      std::vector<fs::path> found;
+      for (auto it = fs::recursive_directory_iterator(input, ec); !ec && it != fs::recursive_directory_iterator();
+           it.increment(ec))
+        if (it->is_regular_file() && is_recording_file(it->path())) found.push_back(it->path());
+      if (ec) throw input_error(input, "", "cannot list the directory (" + ec.message() + ")", "Check its permissions");
       if (found.empty())
         throw input_error(input, "", "the directory holds no .xml or .csv recordings", "Point at the recordings' folder");
-      files.insert(files.end(), found.begin(), found.end());
-    } else if (fs::is_regular_file(input)) {
-      files.push_back(input);
+      std::sort(found.begin(), found.end());
+      for (const auto& file : found) add(file);
+    } else if (fs::is_regular_file(input, ec)) {
+      add(input);
     } else {
       throw input_error(input, "", "no such file or directory", "Check the path");
     }

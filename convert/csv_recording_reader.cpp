@@ -23,10 +23,11 @@ std::vector<std::string_view> split_fields(std::string_view line) {
   }
 }
 
-std::string trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r\"");
-  if (first == std::string_view::npos) return "";
-  return std::string(s.substr(first, s.find_last_not_of(" \t\r\"") - first + 1));
+// A header cell without white space or surrounding quotes.
+std::string column_name(std::string_view cell) {
+  cell = trim(cell);
+  if (cell.size() >= 2 && cell.front() == '"' && cell.back() == '"') cell = trim(cell.substr(1, cell.size() - 2));
+  return std::string(cell);
 }
 
 // Walks the buffer line by line with 1-based line numbers.
@@ -77,9 +78,7 @@ Recording read_csv_recording(const std::string& path, const FieldMap& map, std::
   const std::vector<char> buffer = read_whole_file(path, max_bytes);
   Recording recording;
   recording.source_path = path;
-  Sha256 hash;
-  hash.update(std::span(reinterpret_cast<const std::uint8_t*>(buffer.data()), buffer.size()));
-  recording.source_sha256 = hash.hex_digest();
+  recording.source_sha256 = sha256_hex(buffer);
   recording.material = material_from_file_stem(std::filesystem::path(path).stem().string());
 
   Lines lines(buffer);
@@ -87,7 +86,7 @@ Recording read_csv_recording(const std::string& path, const FieldMap& map, std::
   if (!lines.next(line))
     throw input_error(path, "line 1", "the file is empty", "Write a header row and one row per sample");
   std::vector<std::string> header;
-  for (auto field : split_fields(line)) header.push_back(trim(field));
+  for (auto field : split_fields(line)) header.push_back(column_name(field));
 
   // column index -> channel ("" for the time column, absent for ignored columns)
   std::map<std::size_t, std::string> columns;
@@ -104,7 +103,7 @@ Recording read_csv_recording(const std::string& path, const FieldMap& map, std::
     if (auto index = column_of(name)) {
       columns[*index] = channel;
       recording.channels[channel];
-    } else if (std::find(kRequiredChannels.begin(), kRequiredChannels.end(), channel) != kRequiredChannels.end()) {
+    } else if (is_required_channel(channel)) {
       throw input_error(path, "line 1", "the header has no '" + name + "' column (" + channel + ")",
                         "Add the column, or map \"" + channel + "\" to your column's name in a field map (--map)");
     }

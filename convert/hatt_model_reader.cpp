@@ -31,12 +31,7 @@ void check_count(const XmlFile& r, pugi::xml_node count_node, std::size_t declar
 }
 
 void read_header(const XmlFile& r, pugi::xml_node root, ar::ModelSet& set) {
-  if (pugi::xml_attribute texture = root.attribute("texture")) {
-    const std::string_view text = texture.value();
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), set.texture);
-    if (text.empty() || ec != std::errc() || end != text.data() + text.size())
-      throw r.error(root, "texture=\"" + std::string(text) + "\" is not an integer", "Write texture=\"N\"");
-  }
+  if (auto texture = r.integer_attribute(root, "texture")) set.texture = int(*texture);
   set.material = root.child_value("material");
   if (root.child("AccelUnits")) set.accel_units = root.child_value("AccelUnits");
   if (root.child("SpeedUnits")) set.speed_units = root.child_value("SpeedUnits");
@@ -100,10 +95,6 @@ ar::ArModel read_model(const XmlFile& r, pugi::xml_node node, std::size_t order)
   m.force = number_child(r, node, "forceMod");
   return m;
 }
-
-}  // namespace
-
-namespace {
 
 ar::ModelSet read_model_set(const XmlFile& r) {
   const pugi::xml_node root = r.root();

@@ -1,26 +1,21 @@
 #include "convert/hatt_recording_reader.hpp"
 
-#include <algorithm>
-
+#include "convert/parse_number.hpp"
 #include "convert/recording_checks.hpp"
 #include "convert/xml_file.hpp"
 
 namespace haptex::convert {
 namespace {
 
-bool is_required(const std::string& channel) {
-  return std::find(kRequiredChannels.begin(), kRequiredChannels.end(), channel) != kRequiredChannels.end();
-}
-
 void read_identity(const XmlFile& xml, const pugi::xml_node& root, const FieldMap& map, Recording& recording) {
   const pugi::xml_node material =
       xml.require(root, map.material, "Add <" + map.material + ">surface name</" + map.material + ">");
-  recording.material = std::string(trimmed_text(material));
+  recording.material = std::string(trim(material.child_value()));
   if (recording.material.empty())
     throw xml.error(material, "the material name is empty",
                     "Name the surface, e.g. <" + map.material + ">Book</" + map.material + ">");
   if (!map.texture_attribute.empty())
-    if (pugi::xml_attribute texture = root.attribute(map.texture_attribute.c_str())) recording.texture = texture.as_int();
+    if (auto texture = xml.integer_attribute(root, map.texture_attribute)) recording.texture = int(*texture);
   const pugi::xml_node rate = xml.require(
       root, map.sample_rate, "Add <" + map.sample_rate + ">10000</" + map.sample_rate + ">; haptex needs 10 kHz recordings");
   recording.sample_rate_hz = xml.number(rate);
@@ -44,7 +39,7 @@ Recording read_hatt_recording_xml(const std::string& path, const FieldMap& map, 
   std::map<std::string, pugi::xml_node> channel_nodes;
   for (const auto& [channel, element] : map.channels) {
     const pugi::xml_node array = root.child(element.c_str());
-    if (!array && !is_required(channel)) continue;
+    if (!array && !is_required_channel(channel)) continue;
     if (!array)
       throw xml.error(root, "channel <" + element + "> (" + channel + ") is missing",
                       "Add it, or point \"" + channel + "\" at your element's name in a field map (--map)");
@@ -53,7 +48,7 @@ Recording read_hatt_recording_xml(const std::string& path, const FieldMap& map, 
   }
   for (const auto& [quantity, element] : map.units) {
     const pugi::xml_node node = root.child(element.c_str());
-    if (node) apply_units(recording, quantity, std::string(trimmed_text(node)), xml.where(node));
+    if (node) apply_units(recording, quantity, std::string(trim(node.child_value())), xml.where(node));
     else recording.units[quantity] = kExpectedUnits.at(quantity);  // the format's documented default
   }
   check_channels(recording, [&](const std::string& channel) {

@@ -11,8 +11,7 @@ namespace haptex::convert {
 // Canonical channel names. Required: accel_x/y/z, force_normal, speed.
 // Optional: force_tangential, position_x/y/z (all three or none).
 inline const std::vector<std::string> kRequiredChannels = {"accel_x", "accel_y", "accel_z", "force_normal", "speed"};
-inline const std::vector<std::string> kOptionalChannels = {"force_tangential", "position_x", "position_y",
-                                                           "position_z"};
+bool is_required_channel(const std::string& channel);
 
 struct Recording {
   std::string material;       // the surface's name as the file gives it

@@ -1,5 +1,6 @@
 #include "convert/recordings_writer.hpp"
 
+#include "core/error.hpp"
 #include "core/naming.hpp"
 #include "core/signal/butterworth.hpp"
 #include "core/signal/dft321.hpp"
@@ -40,8 +41,15 @@ void write_lowpassed(h5::Group& group, const std::string& name, const std::vecto
 
 WrittenRecording write_recording(h5::Group root, const Recording& r) {
   WrittenRecording written{material_id(r.material), 0};
-  h5::Group material = root.require_group("materials").require_group(written.material_id);
-  material.set_attr("name", r.material);
+  if (written.material_id.empty())
+    throw input_error(r.source_path, "material name", "'" + r.material + "' has no letters or digits to make an id from",
+                      "Name the material with at least one ASCII letter or digit");
+  // Names that differ only in case, spaces, '_' or '-' are one material (as `haptex align` joins them);
+  // the first spelling is kept.
+  h5::Group materials = root.require_group("materials");
+  const bool first = !materials.has_group(written.material_id);
+  h5::Group material = materials.require_group(written.material_id);
+  if (first) material.set_attr("name", r.material);
   h5::Group recordings = material.require_group("recordings");
   written.index = static_cast<int>(recordings.children().size());
   h5::Group g = recordings.create_group(std::to_string(written.index));

@@ -1,48 +1,48 @@
 #include "convert/xml_file.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 
-#include "convert/input_limits.hpp"
 #include "convert/parse_number.hpp"
 #include "convert/recording_checks.hpp"
 #include "core/sha256.hpp"
 
 namespace haptex::convert {
 
-std::string_view trimmed_text(const pugi::xml_node& node) {
-  std::string_view text = node.child_value();
-  const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
-  while (!text.empty() && space(text.front())) text.remove_prefix(1);
-  while (!text.empty() && space(text.back())) text.remove_suffix(1);
-  return text;
-}
-
 XmlFile::XmlFile(std::string source, std::vector<char> bytes) : source_(std::move(source)), bytes_(std::move(bytes)) {
-  Sha256 hash;
-  hash.update(std::span(reinterpret_cast<const std::uint8_t*>(bytes_.data()), bytes_.size()));
-  sha256_ = hash.hex_digest();
+  sha256_ = sha256_hex(bytes_);
+  line_starts_.push_back(0);
+  for (const char* at = bytes_.data(), *end = at + bytes_.size();
+       (at = static_cast<const char*>(std::memchr(at, '\n', std::size_t(end - at)))) != nullptr; ++at)
+    line_starts_.push_back(std::size_t(at - bytes_.data()) + 1);
   // Minimal parsing keeps the <value> text in place; the doctype node is kept only so it can be refused.
   const unsigned flags = pugi::parse_minimal | pugi::parse_escapes | pugi::parse_doctype;
   const pugi::xml_parse_result result = doc_.load_buffer_inplace(bytes_.data(), bytes_.size(), flags);
   if (!result)
-    throw input_error(source_, "line " + std::to_string(line_of_offset(bytes_, std::size_t(std::max<std::ptrdiff_t>(result.offset, 0)))),
+    throw input_error(source_, "line " + std::to_string(line_of(result.offset)),
                       std::string("malformed XML (") + result.description() + ")",
                       "The file looks truncated or damaged; export or copy it again");
   // Entity declarations can expand without bound ("billion laughs") or pull in other files; the
   // formats never need them, so any DOCTYPE is refused.
   for (const pugi::xml_node& node : doc_.children())
     if (node.type() == pugi::node_doctype)
-      throw input_error(source_, "line " + std::to_string(line_of_offset(bytes_, std::size_t(node.offset_debug()))),
+      throw input_error(source_, "line " + std::to_string(line_of(node.offset_debug())),
                         "the file has a DTD or entity declaration (<!DOCTYPE ...>)",
                         "haptex refuses DTDs and never expands entities; remove the <!DOCTYPE> block");
   if (!root()) throw input_error(source_, "", "the file has no document element", "Give an XML file with content");
 }
 
+std::size_t XmlFile::line_of(std::ptrdiff_t offset) const {
+  const auto after = std::upper_bound(line_starts_.begin(), line_starts_.end(), std::size_t(std::max<std::ptrdiff_t>(offset, 0)));
+  return std::size_t(after - line_starts_.begin());
+}
+
 std::string XmlFile::where(const pugi::xml_node& node) const {
   const std::string place = "<" + std::string(node.name()) + ">";
   const std::ptrdiff_t offset = node.offset_debug();
-  return offset < 0 ? place : place + " at line " + std::to_string(line_of_offset(bytes_, std::size_t(offset)));
+  return offset < 0 ? place : place + " at line " + std::to_string(line_of(offset));
 }
 
 Error XmlFile::error(const pugi::xml_node& node, const std::string& what, const std::string& fix) const {
@@ -56,19 +56,33 @@ pugi::xml_node XmlFile::require(const pugi::xml_node& parent, const std::string&
 }
 
 double XmlFile::number(const pugi::xml_node& node) const {
-  const std::string_view text = trimmed_text(node);
+  const std::string_view text = trim(node.child_value());
   const std::optional<double> value = parse_number(text);
   if (!value || !std::isfinite(*value))
     throw error(node, describe_bad_value(text, value.has_value()), "Write a finite decimal number");
   return *value;
 }
 
-long XmlFile::integer(const pugi::xml_node& node) const {
-  const std::string_view text = trimmed_text(node);
+static std::optional<long> parse_integer(std::string_view text) {
+  text = trim(text);
   long value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || ec != std::errc() || end != text.data() + text.size())
-    throw error(node, "'" + std::string(text) + "' is not an integer", "Write a whole number");
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+long XmlFile::integer(const pugi::xml_node& node) const {
+  const auto value = parse_integer(node.child_value());
+  if (!value) throw error(node, "'" + std::string(trim(node.child_value())) + "' is not an integer", "Write a whole number");
+  return *value;
+}
+
+std::optional<long> XmlFile::integer_attribute(const pugi::xml_node& node, const std::string& name) const {
+  const pugi::xml_attribute attribute = node.attribute(name.c_str());
+  if (!attribute) return std::nullopt;
+  const auto value = parse_integer(attribute.value());
+  if (!value)
+    throw error(node, name + "=\"" + attribute.value() + "\" is not an integer", "Write " + name + "=\"N\"");
   return value;
 }
 

@@ -3,6 +3,7 @@
 // declarations are refused, never expanded; every lookup that fails names the element and its line.
 #include <pugixml.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,8 @@ class XmlFile {
   // The node's text as a finite number / an integer, or an error at the node.
   double number(const pugi::xml_node& node) const;
   long integer(const pugi::xml_node& node) const;
+  // An integer attribute of node: nullopt when absent, an error at the node when not an integer.
+  std::optional<long> integer_attribute(const pugi::xml_node& node, const std::string& name) const;
   // Every <value_name> child of an array element, streamed straight into doubles.
   std::vector<double> values(const pugi::xml_node& array, const std::string& value_name) const;
 
@@ -37,10 +40,10 @@ class XmlFile {
   std::string source_;
   std::vector<char> bytes_;
   std::string sha256_;
+  std::vector<std::size_t> line_starts_;  // taken before in-place parsing overwrites some newlines
   pugi::xml_document doc_;
-};
 
-// The node's text without surrounding white space.
-std::string_view trimmed_text(const pugi::xml_node& node);
+  std::size_t line_of(std::ptrdiff_t offset) const;
+};
 
 }  // namespace haptex::convert

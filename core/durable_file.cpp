@@ -1,6 +1,7 @@
 #include "core/durable_file.hpp"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -33,23 +34,17 @@ void fsync_path(const std::string& path, int flags) {
 
 void check_output_path(const std::string& path, bool overwrite) {
   const std::string dir = directory_of(path);
-  if (!fs::is_directory(dir))
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
     throw input_error(path, "", "the output directory " + dir + " does not exist", "Create it first or choose another -o");
   if (::access(dir.c_str(), W_OK) != 0)
     throw input_error(path, "", "the output directory " + dir + " is not writable",
                       "Choose a directory you can write to with -o");
-  if (fs::exists(path) && !overwrite)
+  if (!fs::exists(path, ec)) return;
+  if (!fs::is_regular_file(path, ec))
+    throw input_error(path, "", "the output path exists and is not a file", "Name a file with -o");
+  if (!overwrite)
     throw input_error(path, "", "the output file already exists", "Remove it, choose another -o, or pass --force");
-}
-
-std::string create_partial(const std::string& final_path) {
-  const std::string partial = final_path + ".partial";
-  int fd = ::open(partial.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (fd < 0)
-    throw input_error(final_path, "", std::string("cannot create the output file: ") + std::strerror(errno),
-                      "Choose a directory you can write to with -o");
-  ::close(fd);
-  return partial;
 }
 
 void durable_rename(const std::string& from, const std::string& to) {
@@ -57,6 +52,37 @@ void durable_rename(const std::string& from, const std::string& to) {
   if (std::rename(from.c_str(), to.c_str()) != 0)
     throw failure(from + ": cannot rename to " + to + ": " + std::strerror(errno));
   fsync_path(directory_of(to), O_RDONLY | O_DIRECTORY);
+}
+
+PartialFile::PartialFile(const std::string& final_path) : final_path_(final_path), path_(final_path + ".partial") {
+  fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0)
+    throw input_error(final_path, "", std::string("cannot create the output file: ") + std::strerror(errno),
+                      "Choose a directory you can write to with -o");
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    fd_ = -1;
+    throw input_error(final_path, "", "another haptex run is writing this output right now (" + path_ + " is locked)",
+                      "Wait for it to finish, or choose another -o");
+  }
+  if (::ftruncate(fd_, 0) != 0) {  // the leftovers of a killed run
+    const int saved = errno;
+    ::close(fd_);
+    throw input_error(final_path, "", std::string("cannot truncate ") + path_ + ": " + std::strerror(saved),
+                      "Remove it by hand");
+  }
+}
+
+PartialFile::~PartialFile() {
+  if (!committed_) std::remove(path_.c_str());
+  if (fd_ >= 0) ::close(fd_);  // releases the lock
+}
+
+void PartialFile::commit() {
+  durable_rename(path_, final_path_);
+  committed_ = true;
+  ::close(fd_);  // readers may lock the finished file now
+  fd_ = -1;
 }
 
 }  // namespace haptex

@@ -6,11 +6,29 @@
 namespace haptex {
 
 // Checks that path can be created: its directory exists and is writable, and it does not exist
-// unless overwrite. Throws haptex::Error (bad_input) saying which and what to do.
+// (or, with overwrite, is a regular file). Throws haptex::Error (bad_input) saying which and what to do.
 void check_output_path(const std::string& path, bool overwrite);
 // fsync `from`, rename it to `to`, fsync the directory.
 void durable_rename(const std::string& from, const std::string& to);
-// Creates (truncates) `path` + ".partial" and returns its name; errors name errno's reason.
-std::string create_partial(const std::string& final_path);
+
+// NAME.partial, created and locked (flock) for as long as this object lives, so two haptex runs
+// writing the same output refuse instead of corrupting each other. A partial file left by a
+// killed run carries no lock and is simply reused.
+class PartialFile {
+ public:
+  explicit PartialFile(const std::string& final_path);  // throws bad_input: unwritable, or locked by another run
+  ~PartialFile();                                        // removes the file unless kept
+  PartialFile(const PartialFile&) = delete;
+  PartialFile& operator=(const PartialFile&) = delete;
+
+  const std::string& path() const { return path_; }
+  // fsync, rename to the final path, fsync the directory; afterwards nothing is removed.
+  void commit();
+
+ private:
+  std::string final_path_, path_;
+  int fd_ = -1;
+  bool committed_ = false;
+};
 
 }  // namespace haptex

@@ -1,6 +1,9 @@
 #include "core/sha256.hpp"
 
+#if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
+#define HAPTEX_SHA_EXTENSIONS 1
+#endif
 
 #include <cstdio>
 #include <cstring>
@@ -24,6 +27,7 @@ constexpr std::array<std::uint32_t, 64> kRound = {
 
 constexpr std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
 
+#ifdef HAPTEX_SHA_EXTENSIONS
 // One block with the x86 SHA extensions (about 5x the portable code; provenance hashing of a
 // 25 MB XML file otherwise costs as much as parsing it). Message schedule per FIPS 180-4:
 // W[t] = s1(W[t-2]) + W[t-7] + s0(W[t-15]) + W[t-16], four words per register.
@@ -62,20 +66,29 @@ __attribute__((target("sha,sse4.1"))) void compress_with_sha_extensions(std::arr
   _mm_storeu_si128(reinterpret_cast<__m128i*>(&state[4]), _mm_alignr_epi8(dchg, feba, 8));
 }
 
+#endif
+
 bool cpu_has_sha_extensions() {
+#ifdef HAPTEX_SHA_EXTENSIONS
   static const bool has = __builtin_cpu_supports("sha") && __builtin_cpu_supports("sse4.1");
   return has;
+#else
+  return false;
+#endif
 }
 
 }  // namespace
 
 bool Sha256::use_cpu_extensions = true;
+bool Sha256::cpu_extensions_available() { return cpu_has_sha_extensions(); }
 
 Sha256::Sha256()
     : state_{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19} {}
 
 void Sha256::compress(const std::uint8_t* block) {
+#ifdef HAPTEX_SHA_EXTENSIONS
   if (use_cpu_extensions && cpu_has_sha_extensions()) return compress_with_sha_extensions(state_, block);
+#endif
   std::array<std::uint32_t, 64> w;
   for (int i = 0; i < 16; ++i)
     w[i] = (std::uint32_t(block[4 * i]) << 24) | (std::uint32_t(block[4 * i + 1]) << 16) |
@@ -137,6 +150,12 @@ std::string Sha256::hex_digest() {
     hex += two;
   }
   return hex;
+}
+
+std::string sha256_hex(std::span<const char> bytes) {
+  Sha256 hash;
+  hash.update(std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()));
+  return hash.hex_digest();
 }
 
 std::string sha256_file(const std::string& path) {

@@ -16,6 +16,7 @@ class Sha256 {
   std::string hex_digest();
   // The x86 SHA extensions are used when the CPU has them; tests switch them off to check the portable path.
   static bool use_cpu_extensions;
+  static bool cpu_extensions_available();
 
  private:
   void compress(const std::uint8_t* block);
@@ -25,6 +26,7 @@ class Sha256 {
   std::uint64_t total_bytes_ = 0;
 };
 
+std::string sha256_hex(std::span<const char> bytes);
 // Hex SHA-256 of a file's bytes; throws haptex::Error (bad_input) when it cannot be read.
 std::string sha256_file(const std::string& path);
 

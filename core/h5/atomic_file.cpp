@@ -1,30 +1,23 @@
 #include "core/h5/atomic_file.hpp"
 
-#include <cstdio>
-
-#include "core/durable_file.hpp"
-
 namespace haptex::h5 {
 
 AtomicFile::AtomicFile(std::string final_path, bool overwrite)
     : final_path_((check_output_path(final_path, overwrite), std::move(final_path))),
-      partial_path_(create_partial(final_path_)),
-      file_(File::create(partial_path_)) {}
+      partial_(final_path_),
+      file_(File::create(partial_.path())) {}
 
 AtomicFile::~AtomicFile() {
-  if (committed_) return;
   try {
     file_.close();
-  } catch (...) {  // the file is abandoned anyway
+  } catch (...) {  // the file is abandoned; PartialFile removes it
   }
-  std::remove(partial_path_.c_str());
 }
 
 void AtomicFile::commit() {
   file_.flush();
   file_.close();
-  durable_rename(partial_path_, final_path_);
-  committed_ = true;
+  partial_.commit();
 }
 
 }  // namespace haptex::h5

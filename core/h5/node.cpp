@@ -93,8 +93,17 @@ Handle Node::open_attr(std::string_view name) const {
   return Handle(check(H5Aopen(id(), n.c_str(), H5P_DEFAULT), "open attribute " + n, where()));
 }
 
-double Node::attr_double(std::string_view name) const {
+Handle Node::open_scalar_attr(std::string_view name) const {
   Handle attr = open_attr(name);
+  Handle space(H5Aget_space(attr.get()));
+  if (H5Sget_simple_extent_npoints(space.get()) != 1)
+    throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' holds several values, expected one",
+                      "Rewrite the file with haptex");
+  return attr;
+}
+
+double Node::attr_double(std::string_view name) const {
+  Handle attr = open_scalar_attr(name);
   Handle type(H5Aget_type(attr.get()));
   const H5T_class_t type_class = H5Tget_class(type.get());
   if (type_class != H5T_FLOAT && type_class != H5T_INTEGER)
@@ -106,7 +115,7 @@ double Node::attr_double(std::string_view name) const {
 }
 
 std::int64_t Node::attr_int(std::string_view name) const {
-  Handle attr = open_attr(name);
+  Handle attr = open_scalar_attr(name);
   Handle type(H5Aget_type(attr.get()));
   if (H5Tget_class(type.get()) != H5T_INTEGER)
     throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' is not an integer",
@@ -117,7 +126,7 @@ std::int64_t Node::attr_int(std::string_view name) const {
 }
 
 std::string Node::attr_string(std::string_view name) const {
-  Handle attr = open_attr(name);
+  Handle attr = open_scalar_attr(name);
   Handle type(H5Aget_type(attr.get()));
   if (H5Tget_class(type.get()) != H5T_STRING)
     throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' is not a string",

@@ -47,6 +47,7 @@ class Node {
 
  private:
   Handle open_attr(std::string_view name) const;
+  Handle open_scalar_attr(std::string_view name) const;
   void write_attr(std::string_view name, hid_t type, hid_t space, const void* data);
 };
 

@@ -1,5 +1,6 @@
 #include "core/json/schema.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -13,7 +14,6 @@
 
 #include "core/embedded.hpp"
 #include "core/error.hpp"
-#include "core/durable_file.hpp"
 
 namespace haptex::json {
 namespace {
@@ -35,8 +35,11 @@ const valijson::Schema& compiled_schema(std::string_view name) {
 }  // namespace
 
 nlohmann::json read_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw input_error(path, "", "not a readable file", "Give the path of a JSON file");
   std::ifstream in(path);
-  if (!in) throw input_error(path, "", "cannot open the JSON file", "Check the path");
+  if (!in) throw input_error(path, "", "cannot open the JSON file", "Check the path and permissions");
   try {
     return nlohmann::json::parse(in);
   } catch (const nlohmann::json::parse_error& e) {
@@ -63,16 +66,6 @@ void validate(const nlohmann::json& doc, std::string_view schema_name, const std
   if (where.empty()) where = "(top level)";
   const std::string reason = error.description;
   throw input_error(file, where, reason, "See schemas/" + std::string(schema_name) + " for the expected form");
-}
-
-void write_file(const nlohmann::json& doc, const std::string& path) {
-  const std::string partial = create_partial(path);
-  {
-    std::ofstream out(partial);
-    out << doc.dump(2) << "\n";
-    if (!out) throw failure(partial + ": write failed (disk full?)");
-  }
-  durable_rename(partial, path);
 }
 
 }  // namespace haptex::json

@@ -14,7 +14,4 @@ nlohmann::json read_file(const std::string& path);
 // the reason, when doc does not satisfy schemas/<schema_name>.
 void validate(const nlohmann::json& doc, std::string_view schema_name, const std::string& file);
 
-// Writes doc (indented) atomically: temporary file, fsync, rename.
-void write_file(const nlohmann::json& doc, const std::string& path);
-
 }  // namespace haptex::json

@@ -118,6 +118,29 @@ TEST(ConvertRecordings, SeveralFilesPerMaterialBecomeNumberedRecordings) {
             in.file("book_2.xml"));
 }
 
+TEST(ConvertRecordings, SpellingsOfOneNameAreOneMaterialAndNamelessOnesAreRefused) {
+  TempDir in, out;
+  write_sample(in, "a.xml", "Brick 2", 1);
+  write_sample(in, "b.xml", "brick-2", 2);
+  const std::string output = out.file("r.h5");
+  convert_recordings({in.path().string()}, output, {});
+  const h5::Group brick = h5::File::open(output).root().open_group("materials").open_group("brick_2");
+  EXPECT_EQ(brick.attr_string("name"), "Brick 2");  // the first spelling
+  EXPECT_EQ(brick.open_group("recordings").children().size(), 2u);
+
+  TempDir odd;
+  write_sample(odd, "c.xml", "日本", 3);
+  try {
+    convert_recordings({odd.file("c.xml")}, out.file("odd.h5"), {});
+    FAIL() << "a material without an id was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    EXPECT_NE(std::string(e.what()).find(odd.file("c.xml")), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no letters or digits"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(out.file("odd.h5")));
+}
+
 TEST(ConvertRecordings, AnyBadFileLeavesNoOutput) {
   TempDir in, out;
   write_sample(in, "a.xml", "Book", 1);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "convert/csv_recording_reader.hpp"
@@ -120,6 +121,31 @@ TEST(HattRecordingReader, ConvertsKnownUnitsAndRefusesUnknownOnes) {
   const std::string message = error_of([&] { read_hatt_recording_xml(dir.file("lbf.xml"), default_field_map()); });
   EXPECT_NE(message.find("unknown force unit 'lbf'"), std::string::npos) << message;
   EXPECT_NE(message.find("<ForceUnits> at line 6"), std::string::npos) << message;
+}
+
+TEST(HattRecordingReader, LineNumbersCountNewlinesInsideTags) {
+  // In-place parsing overwrites some newlines; the reported line must still be the real one.
+  TempDir dir;
+  SampleRecordingSpec spec;
+  spec.seconds = 0.2;
+  std::string xml = replace_all(test::sample_recording_xml(spec), "<value>", "<value\n>");
+  const auto speed = xml.find("<speed");
+  const auto value = xml.find("<value", speed + 10);
+  const auto text = xml.find('>', value) + 1;
+  xml.replace(text, xml.find('<', text) - text, "oops");
+  test::write_text_file(dir.file("split.xml"), xml);
+  const std::size_t line = 1 + std::count(xml.begin(), xml.begin() + std::ptrdiff_t(value), '\n');
+  const std::string message = error_of([&] { read_hatt_recording_xml(dir.file("split.xml"), default_field_map()); });
+  EXPECT_NE(message.find("<value> at line " + std::to_string(line) + " "), std::string::npos) << message;
+}
+
+TEST(HattRecordingReader, TextureNumberMustBeAnInteger) {
+  TempDir dir;
+  SampleRecordingSpec spec;
+  spec.seconds = 0.2;
+  test::write_text_file(dir.file("t.xml"), replace_all(test::sample_recording_xml(spec), "texture=\"7\"", "texture=\"abc\""));
+  EXPECT_NE(error_of([&] { read_hatt_recording_xml(dir.file("t.xml"), default_field_map()); }).find("texture=\"abc\" is not an integer"),
+            std::string::npos);
 }
 
 TEST(HattRecordingReader, TooShortRecordingIsRefused) {

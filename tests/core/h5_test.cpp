@@ -94,6 +94,7 @@ TEST(H5, AttributesRoundTrip) {
   EXPECT_EQ(root.attr_string("haptex_format"), "recordings/1");
   EXPECT_EQ(root.attr_string("created_utc").size(), 20u);
   EXPECT_THROW(root.attr_int("units"), Error);
+  EXPECT_THROW(root.attr_double("corners"), Error);  // two values where one is expected
   try {
     root.attr_string("missing");
     FAIL();
@@ -143,6 +144,43 @@ TEST(H5, UncommittedFileLeavesNothing) {
   EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
 }
 
+TEST(H5, SecondWriterOfTheSameOutputIsRefused) {
+  TempDir dir;
+  const std::string path = dir.file("busy.h5");
+  AtomicFile first(path, false);
+  first.root().write("x", std::vector<double>{1, 2, 3});
+  try {
+    AtomicFile second(path, true);
+    FAIL() << "a second writer was allowed";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("another haptex run is writing"), std::string::npos) << e.what();
+  }
+  first.commit();  // the refused writer did not disturb the first one
+  EXPECT_EQ(File::open(path).root().open_dataset("x").read<double>(), (std::vector<double>{1, 2, 3}));
+}
+
+TEST(H5, CommitFinishesTheFileEvenWithHandlesStillOpen) {
+  TempDir dir;
+  const std::string path = dir.file("open-handles.h5");
+  AtomicFile out(path, false);
+  Group g = out.root().create_group("g");
+  Dataset d = g.write("x", std::vector<double>(1000, 2.0));
+  out.commit();  // g and d are still alive here
+  EXPECT_EQ(File::open(path).root().open_group("g").open_dataset("x").read<double>()[999], 2.0);
+}
+
+TEST(H5, StalePartialFromAKilledRunIsReused) {
+  TempDir dir;
+  const std::string path = dir.file("stale.h5");
+  { std::ofstream(path + ".partial") << "half a file"; }
+  AtomicFile out(path, false);
+  out.root().set_attr("ok", 1);
+  out.commit();
+  EXPECT_EQ(File::open(path).root().attr_int("ok"), 1);
+  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+}
+
 TEST(H5, RefusesExistingOutputUnlessOverwrite) {
   TempDir dir;
   const std::string path = dir.file("exists.h5");
@@ -154,6 +192,8 @@ TEST(H5, RefusesExistingOutputUnlessOverwrite) {
   EXPECT_EQ(kept, "keep me");
   AtomicFile replaced(path, true);
   replaced.commit();
+  std::filesystem::create_directory(dir.file("a_directory"));
+  EXPECT_THROW(AtomicFile(dir.file("a_directory"), true), Error);
   EXPECT_GT(H5Fis_hdf5(path.c_str()), 0);
 }
 
@@ -231,7 +271,7 @@ TEST(H5, KilledWriterNeverLeavesHalfFile) {
     int status = 0;
     waitpid(child, &status, 0);
     close(pipe_fds[0]);
-    ASSERT_TRUE(WIFSIGNALED(status)) << "the writer finished before it was killed";
+    ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "the writer did not die by our SIGKILL";
     EXPECT_FALSE(std::filesystem::exists(path)) << "a killed writer left a file under the final name";
   }
   // And a writer left alone finishes with a complete file.
