@@ -1,6 +1,5 @@
 #include "convert/input_limits.hpp"
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -21,11 +20,6 @@ std::vector<char> read_whole_file(const std::string& path, std::uintmax_t max_by
   if (!in.read(buffer.data(), static_cast<std::streamsize>(size)))
     throw input_error(path, "", "the file could not be read completely", "Check the disk and permissions");
   return buffer;
-}
-
-std::size_t line_of_offset(const std::vector<char>& buffer, std::size_t offset) {
-  offset = std::min(offset, buffer.size());
-  return 1 + static_cast<std::size_t>(std::count(buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
 }
 
 }  // namespace haptex::convert

@@ -12,7 +12,4 @@ inline constexpr std::uintmax_t kDefaultMaxBytes = std::uintmax_t(1) << 30;  // 
 // a file over max_bytes, naming the limit and --max-bytes.
 std::vector<char> read_whole_file(const std::string& path, std::uintmax_t max_bytes);
 
-// 1-based line of a byte offset, for error messages.
-std::size_t line_of_offset(const std::vector<char>& buffer, std::size_t offset);
-
 }  // namespace haptex::convert
