@@ -15,7 +15,8 @@ $one_core /usr/bin/python3 "$(dirname "$0")/scipy_sosfiltfilt.py" > "$out/scipy.
 /usr/bin/python3 - "$out" <<'PY'
 import json, sys
 out = sys.argv[1]
-bench = {b["name"]: b for f in ("signal", "convert") for b in json.load(open(f"{out}/{f}.json"))["benchmarks"]}
+# Names without Google Benchmark's suffixes ("/real_time").
+bench = {b["name"].split("/")[0]: b for f in ("signal", "convert") for b in json.load(open(f"{out}/{f}.json"))["benchmarks"]}
 scipy = json.load(open(f"{out}/scipy.json"))
 def seconds(name):
     b = bench[name]
@@ -23,6 +24,7 @@ def seconds(name):
 ours = seconds("BM_Sosfiltfilt_1e5")
 theirs = scipy["scipy_sosfiltfilt_1e5_seconds"]
 print(f"sosfiltfilt, 1e5 samples, order 4:  haptex {ours*1e3:.3f} ms   scipy {scipy['scipy']} {theirs*1e3:.3f} ms   scipy/haptex = {theirs/ours:.2f}x")
+print(f"SHA-256 of the 10 s XML: {seconds('BM_Sha256_10sXml')*1e3:.1f} ms ({bench['BM_Sha256_10sXml']['bytes_per_second']/1e9:.2f} GB/s)")
 for name in ("BM_ParseHattXml_10s", "BM_ConvertXmlToHdf5_10s"):
     b = bench[name]
     print(f"{name}: {seconds(name)*1e3:.1f} ms per 10 s recording, {b['bytes_per_second']/1e6:.1f} MB/s of XML, {b['items_per_second']/1e6:.2f} M samples/s (x 9 channels)")
