@@ -124,9 +124,10 @@ HeightField make_height_field(const SurfaceRecipe& recipe, std::uint64_t seed, i
 }
 
 HeightField smoothed_for_tip(const HeightField& field, double tip_radius_mm) {
-  // A sphere of radius R resting on a rough surface touches it over a patch of radius ~ sqrt(R h)
-  // for asperities of height h; for micrometre roughness and sub-millimetre tips that is about R/4.
-  const double sigma = 0.25 * tip_radius_mm;
+  // A sphere of radius R pressed a depth d into a surface touches it over a patch of radius
+  // sqrt(R d); a haptic probe under about 1 N sinks some 2 micrometres.
+  constexpr double kIndentationMm = 0.002;
+  const double sigma = std::sqrt(tip_radius_mm * kIndentationMm);
   const int n = field.n;
   cv::Mat spatial(n, n, CV_32F, const_cast<float*>(field.height_mm.data()));
   cv::Mat spectrum;

@@ -1,0 +1,64 @@
+#include "synth/recorded_data_xml.hpp"
+
+#include <charconv>
+#include <cstdio>
+
+#include "convert/field_map.hpp"
+#include "core/durable_file.hpp"
+#include "core/error.hpp"
+
+namespace haptex::synth {
+namespace {
+
+// Appends "<value>x</value>" lines without going through iostreams: a 10 s recording has 900 000 of them.
+void append_array(std::string& out, const std::string& element, const std::vector<double>& values) {
+  out += "  <" + element + " type=\"array\">\n";
+  char number[64];
+  for (double v : values) {
+    const auto end = std::to_chars(number, number + sizeof number, v, std::chars_format::fixed, 6).ptr;
+    out += "    <value>";
+    out.append(number, end);
+    out += "</value>\n";
+  }
+  out += "  </" + element + ">\n";
+}
+
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '&') out += "&amp;";
+    else if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+void write_recorded_data_xml(const std::string& path, const convert::Recording& r) {
+  const convert::FieldMap map = convert::default_field_map();
+  std::string xml = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<" + map.root;
+  if (r.texture) xml += " " + map.texture_attribute + "=\"" + std::to_string(*r.texture) + "\"";
+  xml += ">\n  <" + map.material + ">" + escaped(r.material) + "</" + map.material + ">\n";
+  xml += "  <" + map.sample_rate + ">" + std::to_string(int(r.sample_rate_hz)) + "</" + map.sample_rate + ">\n";
+  for (const auto& [quantity, element] : map.units) {
+    auto unit = r.units.find(quantity);
+    xml += "  <" + element + ">" + (unit != r.units.end() ? unit->second : convert::kExpectedUnits.at(quantity)) +
+           "</" + element + ">\n";
+  }
+  for (const auto& [channel, element] : map.channels)
+    if (r.has(channel)) append_array(xml, element, r.channels.at(channel));
+  xml += "</" + map.root + ">\n";
+
+  check_output_path(path, true);
+  PartialFile partial(path);
+  FILE* file = std::fopen(partial.path().c_str(), "wb");
+  if (!file) throw failure(partial.path() + ": cannot open for writing");
+  const bool written = std::fwrite(xml.data(), 1, xml.size(), file) == xml.size();
+  const bool closed = std::fclose(file) == 0;
+  if (!written || !closed) throw failure(partial.path() + ": write failed (disk full?)");
+  partial.commit();
+}
+
+}  // namespace haptex::synth

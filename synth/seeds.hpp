@@ -1,0 +1,19 @@
+#pragma once
+// Independent, reproducible random streams for each material, recording and press from one user seed.
+#include <cstdint>
+
+namespace haptex::synth {
+
+// SplitMix64 over the combined inputs: well-mixed seeds, the same on every platform.
+constexpr std::uint64_t derive_seed(std::uint64_t base, std::uint64_t a, std::uint64_t b = 0, std::uint64_t c = 0) {
+  std::uint64_t x = base;
+  for (std::uint64_t part : {a, b, c}) {
+    x += 0x9E3779B97F4A7C15ULL + part;
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+    x ^= x >> 31;
+  }
+  return x;
+}
+
+}  // namespace haptex::synth

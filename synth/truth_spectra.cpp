@@ -1,0 +1,77 @@
+#include "synth/truth_spectra.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "core/h5/atomic_file.hpp"
+#include "core/naming.hpp"
+#include "core/signal/spectrum.hpp"
+
+namespace haptex::synth {
+namespace {
+
+constexpr double kFs = 10000;
+constexpr std::size_t kSettle = 1000;  // samples for the resonance to forget its start
+
+std::vector<double> linear_grid(double low, double high, int count) {
+  std::vector<double> values;
+  for (int i = 0; i < count; ++i) values.push_back(low + (high - low) * i / std::max(1, count - 1));
+  return values;
+}
+
+// Mean amplitude spectrum of straight strokes at one constant speed and force.
+void mean_spectrum(const ProbeVibration& probe, double speed, double force, int strokes, std::mt19937_64& rng,
+                   double* out) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  const std::size_t n = kSettle + signal::kWindowSamples;
+  std::vector<double> x(n), y(n), f(n, force), spectrum(signal::kSpectrumBins);
+  std::fill(out, out + signal::kSpectrumBins, 0.0);
+  for (int s = 0; s < strokes; ++s) {
+    const double angle = 2 * std::numbers::pi * unit(rng), x0 = 100 * unit(rng), y0 = 100 * unit(rng);
+    for (std::size_t i = 0; i < n; ++i) {
+      x[i] = x0 + speed * std::cos(angle) * double(i) / kFs;
+      y[i] = y0 + speed * std::sin(angle) * double(i) / kFs;
+    }
+    const std::vector<double> vibration = probe.along_path(x, y, f, kFs);
+    signal::amplitude_spectrum(std::span(vibration).subspan(kSettle, signal::kWindowSamples), spectrum);
+    for (std::size_t k = 0; k < spectrum.size(); ++k) out[k] += spectrum[k] / strokes;
+  }
+}
+
+}  // namespace
+
+TruthGrid expected_spectra(const ProbeVibration& probe, const StrokeLimits& limits, std::uint64_t seed,
+                           const TruthOptions& options) {
+  TruthGrid grid;
+  grid.speeds_mm_s = linear_grid(0.1 * limits.max_speed_mm_s, limits.max_speed_mm_s, options.speeds);
+  grid.forces_n = linear_grid(0.1 * limits.max_force_n, limits.max_force_n, options.forces);
+  grid.spectra.resize(grid.speeds_mm_s.size() * grid.forces_n.size() * signal::kSpectrumBins);
+  std::mt19937_64 rng(seed);
+  for (std::size_t s = 0; s < grid.speeds_mm_s.size(); ++s)
+    for (std::size_t f = 0; f < grid.forces_n.size(); ++f)
+      mean_spectrum(probe, grid.speeds_mm_s[s], grid.forces_n[f], options.strokes_per_point, rng,
+                    grid.spectra.data() + (s * grid.forces_n.size() + f) * signal::kSpectrumBins);
+  return grid;
+}
+
+void write_truth_file(const std::string& path, const std::vector<MaterialTruth>& materials, const std::string& source) {
+  h5::AtomicFile out(path, true);
+  h5::stamp_root(out.root(), kTruthFormat, source);
+  h5::Group all = out.root().create_group("materials");
+  for (const MaterialTruth& m : materials) {
+    h5::Group g = all.create_group(material_id(m.name));
+    g.set_attr("name", m.name);
+    const auto& grid = m.grid;
+    g.write("speeds", grid.speeds_mm_s).set_attr("units", "mm/s");
+    g.write("forces", grid.forces_n).set_attr("units", "N");
+    h5::Dataset spectrum = g.write_array<double>("spectrum", grid.spectra,
+                                                 {grid.speeds_mm_s.size(), grid.forces_n.size(), signal::kSpectrumBins});
+    spectrum.set_attr("units", "m/s^2");
+    spectrum.set_attr("description", "expected single-sided amplitude spectrum 2|X_k|/N of 1000-sample windows, "
+                                     "bins k = 1..100 (10..1000 Hz), noise-free, at each (speed, force)");
+  }
+  out.commit();
+}
+
+}  // namespace haptex::synth
