@@ -10,7 +10,7 @@ namespace haptex::synth {
 namespace {
 
 constexpr double kReferenceForce = 1.0;  // N
-constexpr double kGain = 0.25;           // tip/handle mass ratio: how much of the trace's motion reaches the handle
+constexpr double kGain = 0.1;            // tip/handle mass ratio: how much of the trace's motion reaches the handle
 
 }  // namespace
 
