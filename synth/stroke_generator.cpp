@@ -47,13 +47,14 @@ class CoverageGrid {
 // One stroke: a dwell at the turn, a smooth ramp up to the target pace, a wandering hold, and a
 // ramp down into the next turn; force glides from where it was to its target over the stroke.
 struct Stroke {
-  double seconds, dwell, ramp_up, ramp_down, dwell_speed, target_speed, from_force, target_force;
+  double seconds, dwell, ramp_up, ramp_down, start_speed, end_speed, target_speed, from_force, target_force;
   double wander_hz, wander_phase;
 
   double speed_at(double t) const {
     const double wander = 1 + 0.08 * std::sin(2 * std::numbers::pi * wander_hz * t + wander_phase);
     const double up = smoothstep((t - dwell) / ramp_up), down = smoothstep((seconds - t) / ramp_down);
-    return dwell_speed + (target_speed * wander - dwell_speed) * std::min(up, down);
+    const double rising = start_speed + (target_speed * wander - start_speed) * up;
+    return end_speed + (rising - end_speed) * down;
   }
   double force_at(double t) const {
     const double glide = smoothstep(t / (0.7 * seconds));
@@ -62,7 +63,7 @@ struct Stroke {
   }
 };
 
-Stroke next_stroke(std::mt19937_64& rng, const CoverageGrid& grid, double from_force) {
+Stroke next_stroke(std::mt19937_64& rng, const CoverageGrid& grid, double from_force, double from_speed) {
   std::uniform_real_distribution<double> unit(0, 1);
   const auto [speed, force] = grid.pick_target(rng);
   Stroke s{};
@@ -70,7 +71,8 @@ Stroke next_stroke(std::mt19937_64& rng, const CoverageGrid& grid, double from_f
   s.dwell = 0.03 + 0.07 * unit(rng);
   s.ramp_up = 0.1 + 0.1 * unit(rng);
   s.ramp_down = 0.1 + 0.1 * unit(rng);
-  s.dwell_speed = 0.5 + 2.5 * unit(rng);
+  s.start_speed = from_speed;
+  s.end_speed = 0.5 + 2.5 * unit(rng);  // the slow turn into the next stroke
   s.target_speed = speed;
   s.from_force = from_force;
   s.target_force = force;
@@ -90,15 +92,15 @@ Strokes generate_strokes(const StrokeLimits& limits, const StrokeOptions& option
   Strokes out;
   for (auto* v : {&out.speed, &out.force, &out.position_x, &out.position_y, &out.position_z}) v->reserve(n);
 
-  double force = limits.max_force_n * (0.2 + 0.3 * unit(rng));
+  double force = limits.max_force_n * (0.2 + 0.3 * unit(rng)), speed = 1.0;
   double heading = 2 * std::numbers::pi * unit(rng), x = 0, y = 0;
   int direction = 1;
   while (out.speed.size() < n) {
-    const Stroke stroke = next_stroke(rng, grid, force);
+    const Stroke stroke = next_stroke(rng, grid, force, speed);
     if (unit(rng) < 0.5) direction = -direction;  // the hand reverses its circle at some turns
     const double radius = 5 + 20 * unit(rng);
     for (double t = 0; t < stroke.seconds && out.speed.size() < n; t += dt) {
-      const double speed = std::clamp(stroke.speed_at(t), 0.0, limits.max_speed_mm_s);
+      speed = std::clamp(stroke.speed_at(t), 0.0, limits.max_speed_mm_s);
       force = std::clamp(stroke.force_at(t), 0.0, limits.max_force_n);
       heading += direction * speed / radius * dt;
       x += speed * std::cos(heading) * dt;
