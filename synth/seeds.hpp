@@ -1,6 +1,7 @@
 #pragma once
 // Independent, reproducible random streams for each material, recording and press from one user seed.
 #include <cstdint>
+#include <string_view>
 
 namespace haptex::synth {
 
@@ -14,6 +15,13 @@ constexpr std::uint64_t derive_seed(std::uint64_t base, std::uint64_t a, std::ui
     x ^= x >> 31;
   }
   return x;
+}
+
+// FNV-1a of a name: a material's streams stay the same when other materials come and go.
+constexpr std::uint64_t name_seed(std::string_view name) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (char c : name) h = (h ^ std::uint64_t(static_cast<unsigned char>(c))) * 0x100000001b3ULL;
+  return h;
 }
 
 }  // namespace haptex::synth

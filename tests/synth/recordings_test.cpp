@@ -83,8 +83,9 @@ TEST(SynthRecordings, HattModelsAreCoveredByTheirStrokes) {
   for (const auto& entry : std::filesystem::directory_iterator(models)) {
     const ar::ModelSet set = convert::read_hatt_model(entry.path());
     const StrokeLimits limits{set.max_speed, set.max_force};
-    // The strokes render_hatt_recording uses for recordings 0 and 1 (seeds as synth hatt derives them).
-    const Strokes a = generate_strokes(limits, {}, 11), b = generate_strokes(limits, {}, 12);
+    // The strokes of recordings 0 and 1 as `haptex synth hatt` (default seed 0, 10 s) renders them.
+    const Strokes a = hatt_strokes(set, 10, hatt_recording_seed(0, set.material, 0));
+    const Strokes b = hatt_strokes(set, 10, hatt_recording_seed(0, set.material, 1));
     EXPECT_GE(operating_range_coverage({&a, &b}, limits), 0.9) << entry.path();
     ++checked;
   }
