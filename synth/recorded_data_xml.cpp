@@ -36,7 +36,7 @@ std::string escaped(const std::string& text) {
 
 }  // namespace
 
-void write_recorded_data_xml(const std::string& path, const convert::Recording& r) {
+std::string recorded_data_xml(const convert::Recording& r) {
   const convert::FieldMap map = convert::default_field_map();
   std::string xml = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<" + map.root;
   if (r.texture) xml += " " + map.texture_attribute + "=\"" + std::to_string(*r.texture) + "\"";
@@ -50,7 +50,11 @@ void write_recorded_data_xml(const std::string& path, const convert::Recording& 
   for (const auto& [channel, element] : map.channels)
     if (r.has(channel)) append_array(xml, element, r.channels.at(channel));
   xml += "</" + map.root + ">\n";
+  return xml;
+}
 
+void write_recorded_data_xml(const std::string& path, const convert::Recording& r) {
+  const std::string xml = recorded_data_xml(r);
   check_output_path(path, true);
   PartialFile partial(path);
   FILE* file = std::fopen(partial.path().c_str(), "wb");

@@ -7,7 +7,9 @@
 
 namespace haptex::synth {
 
-// Atomic: written to PATH.partial, synced, renamed. Values with 6 decimals, as the HaTT files.
+// The document's text; values with 6 decimals, as the HaTT files have them.
+std::string recorded_data_xml(const convert::Recording& recording);
+// Atomic: written to PATH.partial, synced, renamed.
 void write_recorded_data_xml(const std::string& path, const convert::Recording& recording);
 
 }  // namespace haptex::synth

@@ -1,5 +1,7 @@
 #include "tests/support/sample_recording.hpp"
 
+#include "synth/recorded_data_xml.hpp"
+
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -11,16 +13,6 @@ namespace haptex::test {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-void append_array(std::ostringstream& out, const char* name, const std::vector<double>& values) {
-  out << "  <" << name << " type=\"array\">\n";
-  char text[48];
-  for (double v : values) {
-    std::snprintf(text, sizeof text, "    <value>%.6f</value>\n", v);
-    out << text;
-  }
-  out << "  </" << name << ">\n";
-}
 
 }  // namespace
 
@@ -60,26 +52,20 @@ SampleChannels make_sample_channels(const SampleRecordingSpec& spec) {
 
 std::string sample_recording_xml(const SampleRecordingSpec& spec) {
   const SampleChannels c = make_sample_channels(spec);
-  std::ostringstream out;
-  out << "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
-      << "<recordedData texture=\"" << spec.texture << "\">\n"
-      << "  <material>" << spec.material << "</material>\n"
-      << "  <SampleRate>" << spec.sample_rate_hz << "</SampleRate>\n"
-      << "  <AccelUnits>m/s^2</AccelUnits>\n  <ForceUnits>N</ForceUnits>\n  <SpeedUnits>mm/s</SpeedUnits>\n"
-      << "  <PositionUnits>mm</PositionUnits>\n";
-  append_array(out, "accelX", c.accel_x);
-  append_array(out, "accelY", c.accel_y);
-  append_array(out, "accelZ", c.accel_z);
-  append_array(out, "forceNormal", c.force_normal);
-  if (spec.with_tangential_force) append_array(out, "forceTangential", c.force_tangential);
-  append_array(out, "speed", c.speed);
+  convert::Recording r;
+  r.material = spec.material;
+  r.texture = spec.texture;
+  r.sample_rate_hz = spec.sample_rate_hz;
+  r.units = convert::kExpectedUnits;
+  r.channels = {{"accel_x", c.accel_x}, {"accel_y", c.accel_y}, {"accel_z", c.accel_z},
+                {"force_normal", c.force_normal}, {"speed", c.speed}};
+  if (spec.with_tangential_force) r.channels["force_tangential"] = c.force_tangential;
   if (spec.with_position) {
-    append_array(out, "positionX", c.position_x);
-    append_array(out, "positionY", c.position_y);
-    append_array(out, "positionZ", c.position_z);
+    r.channels["position_x"] = c.position_x;
+    r.channels["position_y"] = c.position_y;
+    r.channels["position_z"] = c.position_z;
   }
-  out << "</recordedData>\n";
-  return out.str();
+  return synth::recorded_data_xml(r);
 }
 
 std::string sample_recording_csv(const SampleRecordingSpec& spec) {
