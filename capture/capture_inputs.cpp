@@ -1,0 +1,108 @@
+#include "capture/capture_inputs.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "core/error.hpp"
+
+namespace haptex::capture {
+namespace fs = std::filesystem;
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+std::vector<std::string> sorted_entries(const std::string& dir, bool directories) {
+  std::vector<std::string> out;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string p = entry.path().string();
+    if (directories ? entry.is_directory() : entry.is_regular_file() && (is_video_name(p) || is_press_file_name(p)))
+      out.push_back(p);
+  }
+  std::sort(out.begin(), out.end(), [](const std::string& a, const std::string& b) {
+    return natural_less(fs::path(a).filename().string(), fs::path(b).filename().string());
+  });
+  return out;
+}
+
+CaptureInput input_for(const std::string& path, const std::string& material_name,
+                       const std::optional<std::string>& material) {
+  const bool press = is_press_file_name(path);
+  CaptureInput in{path, material.value_or(press ? "" : material_name),
+                  press ? CaptureInput::Kind::press_file : CaptureInput::Kind::video};
+  return in;
+}
+
+std::string directory_name(const std::string& path) {
+  fs::path p = fs::path(path);
+  if (p.filename().empty()) p = p.parent_path();  // "dir/" names "dir"
+  return fs::absolute(p).lexically_normal().filename().string();
+}
+
+}  // namespace
+
+bool natural_less(const std::string& a, const std::string& b) {
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (std::isdigit(static_cast<unsigned char>(a[i])) && std::isdigit(static_cast<unsigned char>(b[j]))) {
+      std::size_t i_end = i, j_end = j;
+      while (i_end < a.size() && std::isdigit(static_cast<unsigned char>(a[i_end]))) ++i_end;
+      while (j_end < b.size() && std::isdigit(static_cast<unsigned char>(b[j_end]))) ++j_end;
+      std::string x = a.substr(i, i_end - i), y = b.substr(j, j_end - j);
+      x.erase(0, std::min(x.find_first_not_of('0'), x.size()));
+      y.erase(0, std::min(y.find_first_not_of('0'), y.size()));
+      if (x.size() != y.size()) return x.size() < y.size();
+      if (x != y) return x < y;
+      i = i_end;
+      j = j_end;
+    } else {
+      if (a[i] != b[j]) return a[i] < b[j];
+      ++i;
+      ++j;
+    }
+  }
+  return a.size() - i < b.size() - j || (a.size() - i == b.size() - j && a < b);
+}
+
+bool is_video_name(const std::string& path) {
+  static const char* const kVideo[] = {".avi", ".mkv", ".mp4", ".mov", ".m4v", ".webm", ".mpg", ".mpeg", ".wmv", ".ogv", ".flv"};
+  const std::string ext = lower_extension(path);
+  return std::any_of(std::begin(kVideo), std::end(kVideo), [&](const char* v) { return ext == v; });
+}
+
+bool is_press_file_name(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".h5" || ext == ".hdf5";
+}
+
+std::vector<CaptureInput> expand_capture_inputs(const std::vector<std::string>& arguments,
+                                                const std::optional<std::string>& material) {
+  std::vector<CaptureInput> out;
+  for (const std::string& argument : arguments) {
+    std::error_code ec;
+    if (fs::is_regular_file(argument, ec)) {
+      out.push_back(input_for(argument, directory_name(fs::path(argument).parent_path().string()), material));
+      continue;
+    }
+    if (!fs::is_directory(argument, ec))
+      throw input_error(argument, "", "no such file or directory", "Check the path");
+    const std::vector<std::string> files = sorted_entries(argument, false);
+    if (!files.empty()) {  // one material
+      for (const auto& f : files) out.push_back(input_for(f, directory_name(argument), material));
+      continue;
+    }
+    std::size_t before = out.size();
+    for (const auto& dir : sorted_entries(argument, true))
+      for (const auto& f : sorted_entries(dir, false)) out.push_back(input_for(f, directory_name(dir), material));
+    if (out.size() == before)
+      throw input_error(argument, "", "holds no video (.avi .mkv .mp4 ...) or press file (.h5), nor folders of them",
+                        "Give a folder per material with its press videos or press files, or a folder of such folders");
+  }
+  return out;
+}
+
+}  // namespace haptex::capture

@@ -1,0 +1,21 @@
+#pragma once
+// Images in haptex HDF5 files: uint8 H x W x 3 in RGB order (what h5py, PIL and matplotlib users
+// expect), one image per chunk, gzip level 1 (images barely compress further, and writing a
+// 3280 x 2464 frame at level 4 would take longer than a frame period). In memory, OpenCV's BGR.
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "core/h5/node.hpp"
+
+namespace haptex::capture {
+
+h5::Dataset write_image(h5::Group& group, const std::string& name, const cv::Mat& bgr, const std::string& description);
+// N x H x W x 3; every image must have the same size.
+h5::Dataset write_image_stack(h5::Group& group, const std::string& name, const std::vector<cv::Mat>& bgr,
+                              const std::string& description);
+// Reads H x W x 3 uint8 back as BGR. Throws haptex::Error (bad_input) naming the dataset otherwise.
+cv::Mat read_image(const h5::Dataset& dataset);
+
+}  // namespace haptex::capture

@@ -1,0 +1,84 @@
+// Video files through OpenCV's FFmpeg backend (MJPG/MPEG-4 AVI, FFV1 Matroska, H.264 MP4 ...).
+#include <opencv2/videoio.hpp>
+
+#include "capture/frame_source.hpp"
+#include "capture/scoring_image.hpp"
+#include "core/error.hpp"
+
+namespace haptex::capture {
+namespace {
+
+class VideoSource : public FrameSource {
+ public:
+  explicit VideoSource(std::string path) : path_(std::move(path)) {
+    cv::VideoCapture video = open();
+    cv::Mat first;
+    if (!video.read(first) || first.empty())
+      throw input_error(path_, "frame 0", "the video has no readable frame",
+                        "Check it plays (ffprobe " + path_ + "); re-export it as FFV1 .mkv or MJPG .avi");
+    size_ = first.size();
+    fps_ = video.get(cv::CAP_PROP_FPS);
+  }
+
+  const std::string& path() const override { return path_; }
+  cv::Size frame_size() const override { return size_; }
+  double fps() const override { return fps_ > 0 && fps_ < 1000 ? fps_ : 0.0; }
+
+  void scan(const Visitor& visit, const std::function<bool(std::int64_t)>&) override {
+    cv::VideoCapture video = open();
+    cv::Mat frame;
+    for (std::int64_t i = 0; video.read(frame); ++i) {
+      check_size(frame, i);
+      visit(i, scoring_image(frame), frame);
+    }
+  }
+
+  void read(const std::vector<std::int64_t>& indices,
+            const std::function<void(std::int64_t, const cv::Mat&)>& deliver) override {
+    cv::VideoCapture video = open();
+    std::size_t next = 0;
+    cv::Mat frame;
+    // Seeking is unreliable in inter-coded videos; reading on, and converting only the frames we
+    // keep (grab without retrieve), is exact.
+    for (std::int64_t i = 0; next < indices.size(); ++i) {
+      if (!video.grab())
+        throw input_error(path_, "frame " + std::to_string(indices[next]),
+                          "the video ended before this frame on the second reading", "The file may be damaged; re-export it");
+      if (i != indices[next]) continue;
+      video.retrieve(frame);
+      check_size(frame, i);
+      deliver(i, frame);
+      ++next;
+    }
+  }
+
+ private:
+  cv::VideoCapture open() const {
+    cv::VideoCapture video;
+    try {
+      video.open(path_, cv::CAP_FFMPEG);
+      if (!video.isOpened()) video.open(path_, cv::CAP_ANY);
+    } catch (const cv::Exception&) {
+    }
+    if (!video.isOpened())
+      throw input_error(path_, "", "OpenCV cannot open this as a video",
+                        "Give a video file (.avi, .mkv, .mp4 ...) or a press file (.h5) from 'haptex capture record'");
+    return video;
+  }
+
+  void check_size(const cv::Mat& frame, std::int64_t index) const {
+    if (frame.size() != size_ || frame.type() != CV_8UC3)
+      throw input_error(path_, "frame " + std::to_string(index),
+                        "frame size or type changes within the video", "Re-export the video with one frame size");
+  }
+
+  std::string path_;
+  cv::Size size_;
+  double fps_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameSource> open_video(const std::string& path) { return std::make_unique<VideoSource>(path); }
+
+}  // namespace haptex::capture
