@@ -59,7 +59,7 @@ PressTimeline make_press_timeline(std::uint64_t seed, const PressTimelineOptions
     throw failure("make_press_timeline: fps, lead frames and peak depth must be positive, jitter in [0, 1)");
   Draw draw{std::mt19937_64(seed)};
   const int lead = options.lead_frames + draw.integer(0, 2);
-  const int ramp = draw.integer(6, 9), hold = draw.integer(3, 5), release = draw.integer(4, 6), tail = draw.integer(3, 5);
+  const int ramp = draw.integer(6, 9), hold = draw.integer(3, 5), release = draw.integer(4, 6), tail = draw.integer(3, 4);
   const double peak = options.peak_depth_mm * draw.between(1 - options.peak_jitter, 1 + options.peak_jitter);
   const double drift = options.max_drift * draw.between(0.4, 1.0) * (draw.unit() < 0.5 ? -1 : 1);
 

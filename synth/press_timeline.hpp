@@ -30,7 +30,7 @@ struct PressTimeline {
 };
 
 // 31 to 41 frames: 15-17 quiet, a 6-9 frame ramp, a 3-5 frame hold whose middle frame is the unique
-// deepest, a 4-6 frame release, 3-5 quiet. Deterministic for a seed.
+// deepest, a 4-6 frame release, 3-4 quiet. Deterministic for a seed.
 PressTimeline make_press_timeline(std::uint64_t seed, const PressTimelineOptions& options = {});
 
 }  // namespace haptex::synth

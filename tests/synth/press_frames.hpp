@@ -12,11 +12,13 @@
 
 namespace haptex::test {
 
+// All frames of a press video, as many as OpenCV counts in it (empty when it cannot open it).
 inline std::vector<cv::Mat> read_press_frames(const std::string& pattern) {
   cv::VideoCapture capture(pattern, cv::CAP_IMAGES);
   std::vector<cv::Mat> frames;
   if (!capture.isOpened()) return frames;
-  for (cv::Mat frame; capture.read(frame);) frames.push_back(frame.clone());
+  const int count = int(capture.get(cv::CAP_PROP_FRAME_COUNT));
+  for (cv::Mat frame; int(frames.size()) < count && capture.read(frame);) frames.push_back(frame.clone());
   return frames;
 }
 
