@@ -1,5 +1,6 @@
 #include "synth/gelsight_camera.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 

@@ -1,5 +1,6 @@
 #include "synth/gelsight_presses.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>

@@ -1,5 +1,6 @@
 #include "synth/gelsight_renderer.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>

@@ -1,5 +1,6 @@
 #include "synth/press_timeline.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
