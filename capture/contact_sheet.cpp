@@ -69,10 +69,11 @@ cv::Mat score_plot(const ContactSheetInput& in, int width) {
   text(plot, "0", {left - 4, bottom + 20}, 0.4);
   text(plot, std::to_string(n - 1), {right - 24, bottom + 20}, 0.4);
   text(plot, "peak " + std::to_string(in.peak_index), {std::min(x_of(double(in.peak_index)) + 4, right - 80), top + 14}, 0.4, kRed);
-  text(plot, "frame", {(left + right) / 2 - 20, bottom + 28}, 0.4);
+  text(plot, "frame", {left + 40, bottom + 28}, 0.4);
   text(plot, number(top_score / 1.1f), {4, top + 10}, 0.35);
   text(plot, "0", {30, bottom}, 0.35);
   text(plot, "score", {4, (top + bottom) / 2}, 0.35);
+  text(plot, "orange: contact  blue: stored range  ticks: kept frames  dashed: trigger, release", {right - 560, bottom + 28}, 0.35, kGrey);
   return plot;
 }
 

@@ -35,7 +35,7 @@ cv::Mat indenter_shading(int width, int height) {
     for (int x = 0; x < width; ++x) {
       const double d2 = ((x - cx) * (x - cx) + (y - cy) * (y - cy)) / (r * r);
       const float w = float(std::exp(-d2 * 1.5));
-      row[x] = cv::Vec3f(70 * w, 40 * w, -30 * w);
+      row[x] = cv::Vec3f(110 * w, 80 * w, -40 * w);
     }
   }
   return blob;

@@ -155,9 +155,11 @@ std::vector<PressPlan> plan_presses(const std::vector<float>& scores, const Segm
     PressPlan plan;
     plan.press_in_source = int(k);
     plan.contact = presses[k];
-    plan.range_first = std::max<std::int64_t>(presses[k].first - margin_frames, k ? presses[k - 1].last + 1 : 0);
+    // Frames between two presses are shared out at the midpoint, so no frame belongs to two presses.
+    plan.range_first = std::max<std::int64_t>(presses[k].first - margin_frames,
+                                              k ? (presses[k - 1].last + presses[k].first) / 2 + 1 : 0);
     plan.range_last = std::min<std::int64_t>(presses[k].last + margin_frames,
-                                             k + 1 < presses.size() ? presses[k + 1].first - 1 : last_frame);
+                                             k + 1 < presses.size() ? (presses[k].last + presses[k + 1].first) / 2 : last_frame);
     plan.frame_indices = choose_window(scores, presses[k].peak, plan.range_first, plan.range_last, frames_per_press);
     plan.range_first = std::min(plan.range_first, plan.frame_indices.front());
     plan.range_last = std::max(plan.range_last, plan.frame_indices.back());

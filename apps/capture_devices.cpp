@@ -1,0 +1,77 @@
+// haptex capture devices [--json] [--sensors FILE]: the tactile sensors on USB and their video nodes.
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "apps/capture_subcommands.hpp"
+#include "capture/sensor_discovery.hpp"
+
+namespace haptex::apps {
+namespace {
+
+std::string hex4(std::uint16_t id) {
+  char text[8];
+  std::snprintf(text, sizeof text, "%04x", id);
+  return text;
+}
+
+class CaptureDevices : public CaptureSubcommand {
+ public:
+  CLI::App* declare(CLI::App& capture) override {
+    CLI::App* app = capture.add_subcommand("devices", "List connected tactile sensors (USB) and their capture nodes");
+    app->add_option("--sensors", sensors_, "JSON list of more sensors (the form of schemas/tactile-sensors.json)");
+    return app;
+  }
+
+  int run(const GlobalOptions& global) override {
+    capture::SensorCatalog catalog = capture::SensorCatalog::builtin();
+    if (!sensors_.empty()) catalog.prepend(capture::SensorCatalog::from_file(sensors_));
+    const auto usb = capture::list_usb_devices();
+    const auto sensors = capture::discover_sensors(usb, catalog);
+    if (global.json) {
+      std::cout << to_json(sensors, usb.size()).dump(2) << "\n";
+      return 0;
+    }
+    if (sensors.empty()) {
+      std::string known;
+      for (const auto& m : catalog.models())
+        known += (known.empty() ? "" : ", ") + m.model + " (" + hex4(m.vendor_id) + ":" + hex4(m.product_id) + ")";
+      std::cout << "no tactile sensor found among " << usb.size() << " USB devices. Known sensors: " << known
+                << ". Add others with --sensors FILE.\n";
+      return 0;
+    }
+    for (const auto& s : sensors) print(s);
+    return 0;
+  }
+
+ private:
+  static void print(const capture::DiscoveredSensor& s) {
+    std::cout << s.model << "  serial " << (s.serial.empty() ? "(none)" : s.serial) << "  USB " << s.usb.sysfs_name()
+              << " (" << hex4(s.usb.vendor_id) << ":" << hex4(s.usb.product_id) << ")";
+    if (s.capture_node.empty()) std::cout << "  no video node (driver not bound?)";
+    for (const auto& n : s.nodes) std::cout << "  " << (n.capture ? "capture " : "metadata ") << n.dev_path;
+    std::cout << "\n";
+  }
+
+  static nlohmann::json to_json(const std::vector<capture::DiscoveredSensor>& sensors, std::size_t checked) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& s : sensors) {
+      nlohmann::json nodes = nlohmann::json::array();
+      for (const auto& n : s.nodes)
+        nodes.push_back({{"node", n.dev_path}, {"name", n.label}, {"index", n.index}, {"capture", n.capture}});
+      list.push_back({{"model", s.model}, {"serial", s.serial}, {"vendor_id", hex4(s.usb.vendor_id)},
+                      {"product_id", hex4(s.usb.product_id)}, {"usb_path", s.usb.sysfs_name()},
+                      {"product", s.usb.product}, {"manufacturer", s.usb.manufacturer},
+                      {"capture_node", s.capture_node}, {"nodes", nodes}});
+    }
+    return {{"sensors", list}, {"usb_devices_checked", checked}};
+  }
+
+  std::string sensors_;
+};
+
+}  // namespace
+
+std::unique_ptr<CaptureSubcommand> make_capture_devices() { return std::make_unique<CaptureDevices>(); }
+
+}  // namespace haptex::apps

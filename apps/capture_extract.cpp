@@ -1,0 +1,88 @@
+// haptex capture extract <press files | videos | folder per material | folder of those> -o gelsight.h5
+// Per press: the peak frame and its neighbours, the reference, the score curve; and a contact sheet PNG.
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "apps/capture_subcommands.hpp"
+#include "apps/terminal_progress.hpp"
+#include "capture/extract_presses.hpp"
+
+namespace haptex::apps {
+namespace {
+
+class CaptureExtract : public CaptureSubcommand {
+ public:
+  CLI::App* declare(CLI::App& capture) override {
+    CLI::App* app = capture.add_subcommand("extract", "Press files or videos -> gelsight.h5 (peak frames) and contact sheets");
+    app->add_option("inputs", inputs_, "Press files, videos, a folder per material, or a folder of such folders")->required();
+    app->add_option("-o,--output", output_, "GelSight file to write (HDF5)")->required();
+    app->add_option("--reference", reference_, "A no-contact image of the sensor, instead of each video's leading frames");
+    app->add_option("--material", material_, "Material name for every input (default: the folder's name)");
+    app->add_option("--reference-frames", options_.settings.reference_frames, "Leading no-contact frames averaged")
+        ->capture_default_str()
+        ->check(CLI::Range(2, 250));
+    app->add_option("--frames-per-press", options_.settings.frames_per_press, "The peak and its neighbours kept")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 100));
+    app->add_option("--sheets", options_.sheets_dir, "Folder for the contact sheets (default: <output>_sheets)");
+    app->add_flag("--no-sheets", no_sheets_, "Write no contact sheets");
+    app->add_flag("--force", options_.overwrite, "Replace the output file and sheets folder if they exist");
+    return app;
+  }
+
+  int run(const GlobalOptions& global) override {
+    if (!reference_.empty()) options_.reference_path = reference_;
+    if (!material_.empty()) options_.material = material_;
+    options_.sheets = !no_sheets_;
+    options_.provenance = "haptex capture extract -o " + output_;
+    for (const auto& input : inputs_) options_.provenance += " " + input;
+    const auto result = capture::extract_presses(inputs_, output_, options_, terminal_progress(global, "extract"));
+    print(result, global);
+    return 0;
+  }
+
+ private:
+  void print(const capture::ExtractResult& r, const GlobalOptions& global) const {
+    if (global.json) {
+      nlohmann::json presses = nlohmann::json::array();
+      for (const auto& p : r.presses)
+        presses.push_back({{"material", p.material}, {"material_id", p.material_id}, {"press", p.press},
+                           {"source", p.source}, {"press_in_source", p.press_in_source}, {"frame_start", p.frame_start},
+                           {"frame_end", p.frame_end}, {"contact_first", p.contact_first},
+                           {"contact_last", p.contact_last}, {"peak_index", p.peak_index}, {"peak_score", p.peak_score},
+                           {"contact_sheet", p.contact_sheet}});
+      std::cout << nlohmann::json{{"output", output_}, {"presses", presses}, {"sources", r.sources},
+                                  {"sources_without_press", r.sources_without_press}, {"frames_scored", r.frames_scored},
+                                  {"sheets", r.sheets_dir}}
+                       .dump(2)
+                << "\n";
+      return;
+    }
+    if (!global.quiet)
+      for (const auto& s : r.sources_without_press) std::cerr << "haptex capture: warning: " << s << ": no press found\n";
+    if (global.quiet) return;
+    if (global.verbose)
+      for (const auto& p : r.presses)
+        std::cerr << p.source << " -> /materials/" << p.material_id << "/presses/" << p.press << ": frames "
+                  << p.frame_start << "-" << p.frame_end << ", contact " << p.contact_first << "-" << p.contact_last
+                  << ", peak " << p.peak_index << " (score " << p.peak_score << ")\n";
+    std::set<std::string> materials;
+    for (const auto& p : r.presses) materials.insert(p.material_id);
+    std::cout << "wrote " << output_ << ": " << r.presses.size() << " presses of " << materials.size()
+              << " materials from " << r.sources << " files";
+    if (!r.sheets_dir.empty()) std::cout << "; contact sheets in " << r.sheets_dir;
+    std::cout << "\n";
+  }
+
+  std::vector<std::string> inputs_;
+  std::string output_, reference_, material_;
+  bool no_sheets_ = false;
+  capture::ExtractOptions options_;
+};
+
+}  // namespace
+
+std::unique_ptr<CaptureSubcommand> make_capture_extract() { return std::make_unique<CaptureExtract>(); }
+
+}  // namespace haptex::apps

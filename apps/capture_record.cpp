@@ -1,0 +1,172 @@
+// haptex capture record (--device NODE | --serial S) --material NAME [--presses 5] -o DIR
+// One take from a sensor into one press file per press and a session manifest. Ctrl-C ends the take
+// cleanly: the press being recorded is closed with every frame taken.
+#include <csignal>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "apps/capture_subcommands.hpp"
+#include "apps/terminal_progress.hpp"
+#include "capture/camera_controls.hpp"
+#include "capture/fake_device_spec.hpp"
+#include "capture/fourcc.hpp"
+#include "capture/press_recorder.hpp"
+#include "capture/sensor_discovery.hpp"
+#include "capture/system_kernel.hpp"
+#include "core/error.hpp"
+
+namespace haptex::apps {
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+extern "C" void request_stop(int) { g_stop = true; }
+
+// SIGINT and SIGTERM set the stop flag for the duration of the take; a second Ctrl-C kills as usual.
+class StopOnSignal {
+ public:
+  StopOnSignal() {
+    g_stop = false;
+    struct sigaction action {};
+    action.sa_handler = request_stop;
+    action.sa_flags = SA_RESETHAND;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &old_int_);
+    sigaction(SIGTERM, &action, &old_term_);
+  }
+  ~StopOnSignal() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+
+ private:
+  struct sigaction old_int_ {}, old_term_ {};
+};
+
+class CaptureRecord : public CaptureSubcommand {
+ public:
+  CLI::App* declare(CLI::App& capture) override {
+    CLI::App* app = capture.add_subcommand("record", "Record presses from a sensor: one press file per press");
+    auto* device = app->add_option("--device", device_, "Capture node (/dev/videoN), or fake[:KEY=VALUE,...] for the fake camera");
+    auto* serial = app->add_option("--serial", serial_, "Serial number of a sensor 'haptex capture devices' lists");
+    device->excludes(serial);
+    serial->excludes(device);
+    app->add_option("--material", options_.material, "Name of the material pressed (e.g. \"Brick 2\")")->required();
+    app->add_option("--presses", options_.presses, "Presses to record before the take ends")->capture_default_str();
+    app->add_option("-o,--output", request_.output_dir, "Session folder for the press files and session.json")->required();
+    app->add_option("--format", format_, "Pixel format (default: MJPG when offered)");
+    app->add_option("--size", size_, "Frame size WIDTHxHEIGHT (default: the largest)");
+    app->add_option("--fps", fps_, "Frame rate (default: the highest at that size)");
+    app->add_option("--control", controls_, "NAME=VALUE for a V4L2 control (old or new kernel names), e.g. exposure_time_absolute=150")
+        ->take_all();
+    app->add_option("--seconds", options_.seconds, "End the take after this long (0: no limit)")->capture_default_str();
+    app->add_option("--warmup", options_.warmup_frames, "Frames discarded after stream start")->capture_default_str();
+    app->add_option("--reference-frames", options_.reference_frames, "No-contact frames averaged into the reference")
+        ->capture_default_str();
+    app->add_option("--pre-frames", options_.pre_frames, "Frames kept before each contact")->capture_default_str();
+    app->add_option("--post-frames", options_.post_frames, "Frames kept after each release")->capture_default_str();
+    app->add_option("--buffers", request_.buffers, "Driver buffers, 4 to 8")->capture_default_str()->check(CLI::Range(4, 8));
+    app->add_option("--sensors", sensors_, "JSON list of more sensors for --serial (the form of schemas/tactile-sensors.json)");
+    app->add_flag("--force", request_.overwrite, "Replace a session already in the folder");
+    return app;
+  }
+
+  int run(const GlobalOptions& global) override {
+    if (device_.empty() && serial_.empty())
+      throw input_error("capture record", "", "no sensor given", "Name it with --device /dev/videoN or --serial S");
+    build_request();
+    StopOnSignal stop_on_signal;
+    const capture::RecordingResult result = record(global);
+    print(result, global);
+    if (!result.device_fault()) return 0;
+    std::cerr << "haptex capture: error: " << request_.node << ": the sensor "
+              << (result.ended_by == "disconnected" ? "was disconnected" : "stopped sending frames") << " after "
+              << result.totals.frames << " frames; " << result.presses.size() << " presses saved in "
+              << request_.output_dir << ". Check the cable and record the missing presses into a new folder\n";
+    return 1;
+  }
+
+ private:
+  capture::RecordingResult record(const GlobalOptions& global) {
+    const Progress progress = terminal_progress(global, "record");
+    if (capture::is_fake_device(device_)) {
+      const capture::FakeDevice fake = capture::parse_fake_device(device_);
+      capture::FakeCamera camera(fake.config);
+      request_.node = fake.node;
+      return capture::record_session(camera, request_, options_, &g_stop, progress);
+    }
+    capture::SystemKernel kernel;
+    return capture::record_session(kernel, request_, options_, &g_stop, progress);
+  }
+
+  void build_request() {
+    request_.command = "haptex capture record " + (device_.empty() ? "--serial " + serial_ : "--device " + device_) +
+                       " --material '" + options_.material + "' -o " + request_.output_dir;
+    if (!serial_.empty()) {
+      capture::SensorCatalog catalog = capture::SensorCatalog::builtin();
+      if (!sensors_.empty()) catalog.prepend(capture::SensorCatalog::from_file(sensors_));
+      const auto sensor = capture::find_sensor_by_serial(capture::discover_sensors(capture::list_usb_devices(), catalog), serial_);
+      request_.node = sensor.capture_node;
+      request_.serial = sensor.serial;
+      request_.model = sensor.model;
+    } else {
+      request_.node = device_;
+    }
+    if (!format_.empty()) request_.format.fourcc = capture::fourcc_code(format_, "--format");
+    if (!size_.empty()) parse_size();
+    if (fps_ > 0) request_.format.fps = fps_;
+    for (const auto& c : controls_) {
+      const auto eq = c.find('=');
+      if (eq == std::string::npos)
+        throw input_error("--control " + c, "", "expected NAME=VALUE", "e.g. --control exposure_time_absolute=150");
+      try {
+        request_.controls[capture::control_id(c.substr(0, eq))] = std::stoll(c.substr(eq + 1));
+      } catch (const std::logic_error&) {
+        throw input_error("--control " + c, "", "the value is not an integer", "e.g. --control gain=10");
+      }
+    }
+  }
+
+  void parse_size() {
+    const auto x = size_.find('x');
+    try {
+      if (x == std::string::npos) throw std::invalid_argument("no x");
+      request_.format.width = std::uint32_t(std::stoul(size_.substr(0, x)));
+      request_.format.height = std::uint32_t(std::stoul(size_.substr(x + 1)));
+    } catch (const std::logic_error&) {
+      throw input_error("--size " + size_, "", "expected WIDTHxHEIGHT", "e.g. --size 3280x2464");
+    }
+  }
+
+  void print(const capture::RecordingResult& r, const GlobalOptions& global) const {
+    const double cpu_percent = r.totals.wall_seconds > 0 ? 100 * r.totals.cpu_seconds / r.totals.wall_seconds : 0;
+    if (global.json) {
+      std::cout << capture::session_manifest(r.session, r.reference, r.presses, r.totals, r.ended_by).dump(2) << "\n";
+      return;
+    }
+    if (global.quiet) return;
+    if (global.verbose)
+      for (const auto& p : r.presses)
+        std::cerr << p.file << ": take frames " << p.take_first_frame << "-" << p.take_last_frame << ", contact "
+                  << p.contact_first << "-" << p.contact_last << ", peak " << p.peak_frame << ", " << p.dropped_frames
+                  << " dropped, ended by " << p.ended_by << "\n";
+    std::cout << "recorded " << r.presses.size() << " presses of " << options_.material << " into " << request_.output_dir
+              << " (" << r.ended_by << "): " << r.totals.frames << " frames, " << r.totals.dropped_frames << " dropped, "
+              << r.totals.error_buffers << " error buffers; " << capture::fourcc_text(r.session.format.fourcc) << " "
+              << r.session.format.width << "x" << r.session.format.height << " at " << r.session.format.fps()
+              << " fps; CPU " << std::fixed << std::setprecision(0) << cpu_percent << "% of one core\n";
+  }
+
+  std::string device_, serial_, format_, size_, sensors_;
+  double fps_ = 0;
+  std::vector<std::string> controls_;
+  capture::SessionRequest request_;
+  capture::RecorderOptions options_;
+};
+
+}  // namespace
+
+std::unique_ptr<CaptureSubcommand> make_capture_record() { return std::make_unique<CaptureRecord>(); }
+
+}  // namespace haptex::apps
