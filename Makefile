@@ -35,11 +35,9 @@ test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) --timeout 600
 
 demo: build
-	@rm -rf $(DEMO) && mkdir -p $(DEMO)/xml
-	$(BUILD)/tests/make_sample_recording --material "Demo Canvas" --seconds 10 -o $(DEMO)/xml/demo_canvas_0.xml
-	$(BUILD)/tests/make_sample_recording --material "Demo Canvas" --seconds 10 --seed 2 -o $(DEMO)/xml/demo_canvas_1.xml
-	$(BUILD)/tests/make_sample_recording --material "Demo Cork" --seconds 10 --seed 3 --roughness 0.4 -o $(DEMO)/xml/demo_cork_0.xml
-	$(HAPTEX) convert hatt $(DEMO)/xml -o $(DEMO)/recordings.h5
+	@rm -rf $(DEMO) && mkdir -p $(DEMO)
+	$(HAPTEX) synth materials -o $(DEMO)/synth
+	$(HAPTEX) convert hatt $(DEMO)/synth/recordings -o $(DEMO)/recordings.h5
 	$(HAPTEX) info $(DEMO)/recordings.h5
 
 bench:

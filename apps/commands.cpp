@@ -6,12 +6,14 @@ namespace haptex::apps {
 std::unique_ptr<Command> make_convert_command();
 std::unique_ptr<Command> make_info_command();
 std::unique_ptr<Command> make_capture_command();
+std::unique_ptr<Command> make_synth_command();
 
 std::vector<std::unique_ptr<Command>> all_commands() {
   std::vector<std::unique_ptr<Command>> commands;
   commands.push_back(make_convert_command());
   commands.push_back(make_info_command());
   commands.push_back(make_capture_command());
+  commands.push_back(make_synth_command());
   return commands;
 }
 

@@ -27,12 +27,12 @@ class InfoCommand : public Command {
       std::cout << to_json(summary).dump(2) << "\n";
       return 0;
     }
-    print(summary);
+    print(summary, global.verbose > 0);
     return 0;
   }
 
  private:
-  static void print(const FileSummary& s) {
+  static void print(const FileSummary& s, bool every_dataset) {
     std::cout << s.path << " (" << s.bytes << " bytes)\n"
               << "  format   " << s.format << ", written by haptex " << s.version << " at " << s.created_utc << "\n"
               << "  source   " << s.source << "\n"
@@ -41,18 +41,26 @@ class InfoCommand : public Command {
       std::cout << "  " << m.id << " (" << m.name << ")\n";
       for (const auto& c : m.collections) {
         std::cout << "    " << c.name << ": " << c.items.size() << "\n";
-        for (const auto& item : c.items) print_item(item);
+        for (const auto& item : c.items) print_item(item, every_dataset);
       }
     }
     for (const auto& d : s.other_datasets)
       std::cout << "  " << d.name << "  " << d.dtype << " [" << shape_text(d.shape) << "]\n";
   }
 
-  static void print_item(const ItemSummary& item) {
+  // One line per item; with -v, every dataset with its dtype, shape and units.
+  static void print_item(const ItemSummary& item, bool every_dataset) {
     std::cout << "      " << item.key << ":";
     if (item.duration_s) std::cout << " " << std::fixed << std::setprecision(2) << *item.duration_s << " s";
     if (item.sample_rate_hz) std::cout << " at " << std::setprecision(0) << *item.sample_rate_hz << " Hz";
-    std::cout << std::defaultfloat << "\n";
+    std::cout << std::defaultfloat;
+    if (!every_dataset) {
+      std::string names;
+      for (const auto& d : item.datasets) names += (names.empty() ? "" : ", ") + d.name;
+      std::cout << "  [" << names << "]\n";
+      return;
+    }
+    std::cout << "\n";
     for (const auto& d : item.datasets)
       std::cout << "        " << std::left << std::setw(18) << d.name << std::setw(9) << d.dtype << std::setw(14)
                 << "[" + shape_text(d.shape) + "]" << d.units << std::right << "\n";

@@ -52,9 +52,17 @@ def check_dataset(obj, row, problems):
         problems.append(f"{obj.name}: dtype {obj.dtype.name}, expected {row['dtype']}")
     if row["units"] and obj.attrs.get("units") != row["units"]:
         problems.append(f"{obj.name}: units {obj.attrs.get('units')!r}, expected {row['units']!r}")
-    n = obj.parent.attrs.get("samples")
+    # Symbolic extents: N is the recording's `samples` attribute; other letters are the length of
+    # the sibling dataset they abbreviate (S: speeds, F: forces).
+    siblings = {"S": "speeds", "F": "forces"}
+    def extent(d):
+        if d == "N":
+            return int(obj.parent.attrs.get("samples", -1))
+        if d in siblings:
+            return len(obj.parent[siblings[d]]) if siblings[d] in obj.parent else -1
+        return int(d)
     dims = [d for d in row["shape"].strip("()").replace(" ", "").split(",") if d]
-    want = tuple(int(n) if d == "N" else int(d) for d in dims)
+    want = tuple(extent(d) for d in dims)
     if obj.shape != want:
         problems.append(f"{obj.name}: shape {obj.shape}, expected {want}")
 

@@ -32,13 +32,16 @@ class ConvertedFile : public ::testing::Test {
 };
 
 TEST_F(ConvertedFile, InfoPrintsMaterialsRecordingsAndUnits) {
-  const CommandResult r = run_haptex({"info", file_});
+  const CommandResult r = run_haptex({"info", file_, "-v"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("recordings/1"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("sample_canvas (Sample Canvas)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("recordings: 2"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("0.50 s at 10000 Hz"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("m/s^2"), std::string::npos) << r.out;
+  const CommandResult brief = run_haptex({"info", file_});
+  EXPECT_NE(brief.out.find("0.50 s at 10000 Hz  [accel, accel_xyz,"), std::string::npos) << brief.out;
+  EXPECT_EQ(brief.out.find("m/s^2"), std::string::npos) << "units only with -v: " << brief.out;
 }
 
 TEST_F(ConvertedFile, InfoJsonFollowsItsSchema) {

@@ -1,0 +1,123 @@
+// `haptex synth` as a user runs it: deterministic folders that the real pipeline reads unchanged.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "core/json/schema.hpp"
+#include "tests/support/npy.hpp"
+#include "tests/support/run_haptex.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+const std::vector<std::string> kSmall = {"--size", "160x120", "--presses", "2", "--recordings", "1", "--seconds", "0.5"};
+
+CommandResult synth_materials(const std::string& out, std::vector<std::string> extra = {}) {
+  std::vector<std::string> args = {"synth", "materials", "-n", "2", "-o", out};
+  args.insert(args.end(), kSmall.begin(), kSmall.end());
+  args.insert(args.end(), extra.begin(), extra.end());
+  return run_haptex(args);
+}
+
+TEST(SynthCli, MaterialsAreByteIdenticalForASeed) {
+  TempDir dir;
+  setenv("SOURCE_DATE_EPOCH", "1700000000", 1);  // truth.h5 carries a creation time
+  ASSERT_EQ(synth_materials(dir.file("a")).exit_code, 0);
+  ASSERT_EQ(synth_materials(dir.file("b")).exit_code, 0);
+  ASSERT_EQ(synth_materials(dir.file("c"), {"--seed", "1"}).exit_code, 0);
+  unsetenv("SOURCE_DATE_EPOCH");
+  std::size_t files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(dir.file("a"))) {
+    if (!entry.is_regular_file()) continue;
+    const fs::path relative = fs::relative(entry.path(), dir.file("a"));
+    ASSERT_TRUE(fs::exists(fs::path(dir.file("b")) / relative)) << relative;
+    EXPECT_EQ(slurp(entry.path()), slurp(fs::path(dir.file("b")) / relative)) << relative << " differs between runs";
+    ++files;
+  }
+  EXPECT_GT(files, 60u);  // 2 recordings, 4 press videos of ~35 frames, sidecars, truth, manifest
+  EXPECT_NE(slurp(fs::path(dir.file("a")) / "recordings/polished_1_0.xml"),
+            slurp(fs::path(dir.file("c")) / "recordings/polished_1_0.xml"));
+}
+
+TEST(SynthCli, MaterialsReadBackThroughConvertOpenCvAndH5py) {
+  TempDir dir;
+  const std::string out = dir.file("out");
+  const CommandResult made = synth_materials(out, {"--json"});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  EXPECT_EQ(nlohmann::json::parse(made.out)["presses"], 4);
+
+  const CommandResult converted = run_haptex({"convert", "hatt", out + "/recordings", "-o", dir.file("r.h5")});
+  EXPECT_EQ(converted.exit_code, 0) << converted.err;
+  EXPECT_NE(converted.out.find("2 recordings"), std::string::npos) << converted.out;
+
+  for (const char* material : {"Polished 1", "Sandpaper 1"})
+    for (int press = 0; press < 2; ++press) {
+      const std::string base = out + "/gelsight/" + material + "/press_" + std::to_string(press);
+      const nlohmann::json sidecar = json::read_file(base + ".json");
+      cv::VideoCapture video(base + "/frame_%04d.png", cv::CAP_IMAGES);
+      ASSERT_TRUE(video.isOpened()) << base;
+      int frames = 0;
+      for (cv::Mat frame; video.read(frame); ++frames) ASSERT_EQ(frame.cols, 160);
+      EXPECT_EQ(frames, sidecar["frames"].get<int>()) << base;
+      EXPECT_GE(sidecar["contact_first"].get<int>(), 15);
+    }
+
+  EXPECT_NO_THROW(json::validate(json::read_file(out + "/materials.json"), "synth-materials.schema.json", "materials.json"));
+  if (run_shell("/usr/bin/python3 -c 'import h5py'").exit_code != 0) GTEST_SKIP() << "python3-h5py is not installed";
+  const CommandResult layout = run_shell("/usr/bin/python3 " + shell_quote(std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/check_layout.py") +
+                                         " " + shell_quote(std::string(HAPTEX_SCHEMA_DIR) + "/hdf5-layout.md") + " " +
+                                         shell_quote(out + "/truth.h5") + " Truth");
+  EXPECT_EQ(layout.exit_code, 0) << layout.out << layout.err;
+}
+
+TEST(SynthCli, RefusesANonEmptyFolderAndBadOptions) {
+  TempDir dir;
+  fs::create_directories(dir.file("full"));
+  { std::ofstream(dir.file("full/keep.txt")) << "mine"; }
+  const CommandResult refused = synth_materials(dir.file("full"));
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("not empty"), std::string::npos) << refused.err;
+  EXPECT_EQ(slurp(dir.file("full/keep.txt")), "mine");
+  EXPECT_EQ(run_haptex({"synth", "materials", "-o", dir.file("x"), "--size", "big"}).exit_code, 2);
+  EXPECT_EQ(run_haptex({"synth", "materials", "-o", dir.file("x"), "-n", "0"}).exit_code, 2);
+  const CommandResult no_models = run_haptex({"synth", "hatt", "--models", dir.file("full"), "-o", dir.file("y")});
+  EXPECT_EQ(no_models.exit_code, 2);
+  EXPECT_NE(no_models.err.find("no Models_<Material>.xml"), std::string::npos) << no_models.err;
+}
+
+TEST(SynthCli, HattModelsAndPhotographsBecomeRecordingsAndPresses) {
+  const std::string data = shared_data_dir();
+  if (data.empty()) GTEST_SKIP() << "../shared/data is absent: the published HaTT models and images are needed";
+  TempDir dir;  // two materials' models and photographs, copied to a scratch folder (never into the repo)
+  fs::create_directories(dir.file("models"));
+  fs::create_directories(dir.file("images"));
+  for (const char* material : {"Book", "Cork"}) {
+    fs::copy_file(data + "/hatt/models/Models_" + material + ".xml", dir.file("models/Models_" + std::string(material) + ".xml"));
+    fs::copy_file(data + "/hatt/images/" + material + "_square.jpg", dir.file("images/" + std::string(material) + "_square.jpg"));
+  }
+  const std::string out = dir.file("out");
+  const CommandResult made = run_haptex({"synth", "hatt", "--models", dir.file("models"), "--images", dir.file("images"),
+                                         "-o", out, "--seconds", "1", "--json"});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  const nlohmann::json summary = nlohmann::json::parse(made.out);
+  EXPECT_EQ(summary["recordings"], 4);
+  EXPECT_EQ(summary["presses"], 10);
+  EXPECT_TRUE(fs::exists(out + "/recordings/book_1.xml"));
+  EXPECT_TRUE(fs::exists(out + "/gelsight/Cork/press_4.json"));
+  const CommandResult converted = run_haptex({"convert", "hatt", out + "/recordings", "-o", dir.file("r.h5")});
+  EXPECT_EQ(converted.exit_code, 0) << converted.err;
+}
+
+}  // namespace
+}  // namespace haptex::test
