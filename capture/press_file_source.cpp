@@ -71,7 +71,7 @@ class PressFileSource : public FrameSource {
 
  private:
   cv::Mat decode(const std::vector<std::uint8_t>& bytes) const {
-    if (bytes.empty()) return {};
+    if (bytes.empty() || (encoding_ == "jpeg" && !is_complete_jpeg(bytes))) return {};
     cv::Mat image;
     try {
       image = cv::imdecode(bytes, cv::IMREAD_COLOR);

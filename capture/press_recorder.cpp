@@ -80,7 +80,9 @@ std::string error_text(std::exception_ptr error) {
 std::string capture_loop(V4l2Stream& stream, FrameQueue<TakeFrame>& queue, const Worker& worker,
                          const RecorderOptions& options, const std::atomic<bool>* stop) {
   const Clock::time_point start = Clock::now();
-  Clock::time_point last_frame = start;
+  // Time without a frame, counted in poll timeouts (each one waited that long) rather than read
+  // from the clock, so a stall means the same to a fake camera whose time is simulated.
+  double quiet_seconds = 0;
   std::int64_t index = 0;
   for (;;) {
     const Clock::time_point now = Clock::now();
@@ -91,10 +93,11 @@ std::string capture_loop(V4l2Stream& stream, FrameQueue<TakeFrame>& queue, const
     switch (stream.next(frame)) {
       case StreamStatus::frame:
         queue.push({std::move(frame), index++, stream.stats().error_buffers, stream.stats().poll_timeouts});
-        last_frame = now;
+        quiet_seconds = 0;
         break;
       case StreamStatus::timeout:
-        if (Clock::now() - last_frame > std::chrono::duration<double>(options.stall_seconds)) return "stalled";
+        quiet_seconds += stream.poll_timeout_ms() / 1000.0;
+        if (quiet_seconds >= options.stall_seconds) return "stalled";
         break;
       case StreamStatus::disconnected: return "disconnected";
     }

@@ -34,14 +34,29 @@ int jpeg_reduction(cv::Size frame) {
 }
 
 cv::Mat scoring_image(const cv::Mat& frame) {
-  if (frame.channels() == 1) return to_scoring(frame, frame.size());
-  cv::Mat grey;
-  cv::cvtColor(frame, grey, frame.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
+  cv::Mat grey = frame;
+  if (frame.channels() != 1) cv::cvtColor(frame, grey, frame.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
+  // The same two steps as reduced JPEG decoding (r x r blocks first, then the rest), so a frame
+  // scores the same whichever way it was decoded.
+  const int r = jpeg_reduction(frame.size());
+  if (r > 1) {
+    cv::Mat reduced;
+    cv::resize(grey, reduced, {(frame.cols + r - 1) / r, (frame.rows + r - 1) / r}, 0, 0, cv::INTER_AREA);
+    grey = reduced;
+  }
   return to_scoring(grey, frame.size());
 }
 
+bool is_complete_jpeg(std::span<const std::uint8_t> jpeg) {
+  if (jpeg.size() < 4 || jpeg[0] != 0xFF || jpeg[1] != 0xD8) return false;
+  const std::size_t tail = std::min<std::size_t>(jpeg.size(), 4096);
+  for (std::size_t i = jpeg.size() - 1; i + tail > jpeg.size() && i > 0; --i)
+    if (jpeg[i - 1] == 0xFF && jpeg[i] == 0xD9) return true;
+  return false;
+}
+
 cv::Mat scoring_image_from_jpeg(std::span<const std::uint8_t> jpeg, cv::Size frame) {
-  if (jpeg.size() < 4) return {};
+  if (!is_complete_jpeg(jpeg)) return {};
   const int r = jpeg_reduction(frame);
   const int flag = r == 8 ? cv::IMREAD_REDUCED_GRAYSCALE_8
                  : r == 4 ? cv::IMREAD_REDUCED_GRAYSCALE_4

@@ -1,7 +1,7 @@
 #pragma once
 // The small grey image contact scores are computed on: the frame's grey levels averaged over
 // f x f pixel blocks, f chosen so the image is about 160 pixels wide (320 x 240 -> 160 x 120,
-// 960 x 720 -> 160 x 120, 3280 x 2464 -> 164 x 123). Averaging blocks divides the sensor noise by f
+// 960 x 720 -> 160 x 120, 3280 x 2464 -> 156 x 117). Averaging blocks divides the sensor noise by f
 // while a press, which covers thousands of pixels, survives intact; and scoring 20 000 pixels instead
 // of 8 million is what lets the recorder score every frame live.
 //
@@ -20,6 +20,10 @@ cv::Mat scoring_image(const cv::Mat& frame);
 // From MJPG bytes of a frame of size `frame`. Returns an empty Mat when the bytes do not decode
 // to an image of that size (a corrupt or truncated payload).
 cv::Mat scoring_image_from_jpeg(std::span<const std::uint8_t> jpeg, cv::Size frame);
+// A whole JPEG starts with SOI (FF D8) and ends with EOI (FF D9), perhaps followed by padding some
+// cameras add. A cut-off frame lacks EOI; libjpeg would still "decode" it, the missing part grey,
+// and that would score as contact.
+bool is_complete_jpeg(std::span<const std::uint8_t> jpeg);
 // From packed YUYV (4:2:2) bytes: the Y samples are the grey image. Empty Mat on a size mismatch.
 cv::Mat scoring_image_from_yuyv(std::span<const std::uint8_t> yuyv, cv::Size frame);
 // The DCT scaling (1, 2, 4 or 8) used for a frame of this size.

@@ -42,6 +42,7 @@ cv::Mat TakeProcessor::scoring(const Frame& frame) const {
 cv::Mat TakeProcessor::decode_full(const Frame& frame) const {
   cv::Mat bgr;
   if (session_.format.fourcc == V4L2_PIX_FMT_MJPEG) {
+    if (!is_complete_jpeg(frame.bytes)) return {};
     try {
       bgr = cv::imdecode(frame.bytes, cv::IMREAD_COLOR);
     } catch (const cv::Exception&) {
