@@ -30,3 +30,21 @@ for name in ("BM_ParseHattXml_10s", "BM_ConvertXmlToHdf5_10s"):
     print(f"{name}: {seconds(name)*1e3:.1f} ms per 10 s recording, {b['bytes_per_second']/1e6:.1f} MB/s of XML, {b['items_per_second']/1e6:.2f} M samples/s (x 9 channels)")
 print(f"DFT321 of 10 s: {seconds('BM_Dft321_10s')*1e3:.2f} ms;  amplitude spectrum of one window: {seconds('BM_AmplitudeSpectrum_1000')*1e6:.2f} us")
 PY
+
+# Synthetic data: piecewise AR rendering on one core, and the default 8 materials on all cores.
+$one_core "$build/bench/bench_synth" --benchmark_format=json --benchmark_out="$out/synth.json" --benchmark_out_format=json >/dev/null 2>&1 || true
+synth_dir=$(mktemp -d)
+start=$(date +%s.%N)
+"$build/haptex" synth materials -o "$synth_dir/out" -q
+end=$(date +%s.%N)
+rm -rf "$synth_dir"
+/usr/bin/python3 - "$out" "$start" "$end" <<'PY'
+import json, sys
+out, start, end = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+bench = {b["name"].split("/")[0]: b for b in json.load(open(f"{out}/synth.json"))["benchmarks"]}
+for name in ("BM_PiecewiseArRendering", "BM_PiecewiseArRenderingHattBook"):
+    b = bench.get(name)
+    if b and "items_per_second" in b:
+        print(f"{name}: {b['items_per_second']/1e6:.2f} M samples/s on one core")
+print(f"haptex synth materials (default 8 materials, 2 x 10 s recordings and 5 presses each): {end - start:.1f} s on all cores")
+PY

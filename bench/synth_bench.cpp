@@ -3,8 +3,11 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <numbers>
 
+#include "convert/hatt_model_reader.hpp"
 #include "core/ar/lsf.hpp"
 #include "core/ar/texture_renderer.hpp"
 #include "synth/height_field.hpp"
@@ -45,6 +48,21 @@ void BM_PiecewiseArRendering(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * std::int64_t(strokes.speed.size()));
 }
 BENCHMARK(BM_PiecewiseArRendering)->Unit(benchmark::kMillisecond);
+
+// The same on a published HaTT model (Book, order 20), when ../shared/data is there.
+void BM_PiecewiseArRenderingHattBook(benchmark::State& state) {
+  const char* env = std::getenv("HAPTEX_SHARED_DATA");
+  const std::string path = std::string(env ? env : "../shared/data") + "/hatt/models/Models_Book.xml";
+  if (!std::filesystem::exists(path)) {
+    state.SkipWithError("../shared/data/hatt/models is absent (set HAPTEX_SHARED_DATA)");
+    return;
+  }
+  const auto strokes = haptex::synth::generate_strokes({200, 4}, {1.0, 10000}, 1);
+  haptex::ar::TextureRenderer renderer(haptex::convert::load_hatt_model(path), 1);
+  for (auto _ : state) benchmark::DoNotOptimize(renderer.render(strokes.speed, strokes.force));
+  state.SetItemsProcessed(state.iterations() * std::int64_t(strokes.speed.size()));
+}
+BENCHMARK(BM_PiecewiseArRenderingHattBook)->Unit(benchmark::kMillisecond);
 
 void BM_HeightField1024(benchmark::State& state) {
   const auto spec = haptex::synth::material_spec(4, 0);
