@@ -54,7 +54,7 @@ def check_dataset(obj, row, problems):
         problems.append(f"{obj.name}: units {obj.attrs.get('units')!r}, expected {row['units']!r}")
     # Symbolic extents: N is the recording's `samples` attribute; other letters are the length of
     # the sibling dataset they abbreviate (S: speeds, F: forces).
-    siblings = {"S": "speeds", "F": "forces"}
+    siblings = {"S": "speeds", "F": "forces", "M": "materials", "W": "start"}
     def extent(d):
         if d == "N":
             return int(obj.parent.attrs.get("samples", -1))
