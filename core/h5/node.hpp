@@ -101,6 +101,9 @@ class Group : public Node {
     return write_array<T>(name, std::span<const T>(data), Shape{data.size()}, options);
   }
   Dataset write_strings(std::string_view name, const std::vector<std::string>& values);
+  // Copies source's member `name` (a group with everything below it, or a dataset, with attributes)
+  // into this group as `new_name`; the source may be in another file.
+  void copy_from(const Group& source, std::string_view name, std::string_view new_name);
 
  private:
   std::string child_path(std::string_view name) const;

@@ -292,3 +292,28 @@ TEST(H5, KilledWriterNeverLeavesHalfFile) {
 
 }  // namespace
 }  // namespace haptex::h5
+
+namespace haptex::h5 {
+namespace {
+
+TEST(H5, CopiesGroupsBetweenFiles) {
+  test::TempDir dir;
+  {
+    AtomicFile out(dir.file("src.h5"), false);
+    Group g = out.root().create_group("rec");
+    g.set_attr("rate", 10000.0);
+    g.create_group("inner").write("x", std::vector<double>{1, 2, 3}).set_attr("units", "N");
+    out.commit();
+  }
+  const File source = File::open(dir.file("src.h5"));
+  AtomicFile out(dir.file("dst.h5"), false);
+  out.root().create_group("materials").copy_from(source.root(), "rec", "0");
+  out.commit();
+  const Group copied = File::open(dir.file("dst.h5")).root().open_group("materials").open_group("0");
+  EXPECT_EQ(copied.attr_double("rate"), 10000.0);
+  EXPECT_EQ(copied.open_group("inner").open_dataset("x").read<double>(), (std::vector<double>{1, 2, 3}));
+  EXPECT_EQ(copied.open_group("inner").open_dataset("x").attr_string("units"), "N");
+}
+
+}  // namespace
+}  // namespace haptex::h5
