@@ -7,6 +7,7 @@ std::unique_ptr<Command> make_convert_command();
 std::unique_ptr<Command> make_info_command();
 std::unique_ptr<Command> make_capture_command();
 std::unique_ptr<Command> make_synth_command();
+std::unique_ptr<Command> make_align_command();
 
 std::vector<std::unique_ptr<Command>> all_commands() {
   std::vector<std::unique_ptr<Command>> commands;
@@ -14,6 +15,7 @@ std::vector<std::unique_ptr<Command>> all_commands() {
   commands.push_back(make_info_command());
   commands.push_back(make_capture_command());
   commands.push_back(make_synth_command());
+  commands.push_back(make_align_command());
   return commands;
 }
 

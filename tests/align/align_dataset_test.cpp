@@ -1,0 +1,203 @@
+#include "align/align_dataset.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <opencv2/imgproc.hpp>
+
+#include "align/window_table.hpp"
+#include "capture/gelsight_writer.hpp"
+#include "convert/convert_recordings.hpp"
+#include "core/error.hpp"
+#include "core/h5/file.hpp"
+#include "tests/support/sample_recording.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::align {
+namespace {
+
+using test::TempDir;
+
+capture::GelsightPress tiny_press(int size, int seed) {
+  capture::GelsightPress p;
+  p.source_file = "press.mkv";
+  p.source_sha256 = std::string(64, 'a');
+  p.reference = cv::Mat(size, size, CV_8UC3, cv::Scalar(100, 110, 120));
+  p.peak = p.reference.clone();
+  cv::circle(p.peak, {size / 2, size / 2}, size / 4, cv::Scalar(150 + seed, 90, 60), -1);
+  for (int i = 0; i < 12; ++i) p.frames.push_back(p.peak.clone()), p.frame_indices.push_back(20 + i);
+  p.peak_index = 25;
+  p.frame_start = 15;
+  p.frame_end = 35;
+  p.contact_first = 18;
+  p.contact_last = 32;
+  p.contrast.assign(21, 1.0f);
+  p.peak_score = 5;
+  return p;
+}
+
+struct Inputs {
+  TempDir dir;
+  std::string recordings = dir.file("recordings.h5"), gelsight = dir.file("gelsight.h5"), dataset = dir.file("dataset.h5");
+};
+
+// Recordings of Book (2), "Sandpaper_100" (1) and Felt (1); presses of Book, "sandpaper 100" and Glass.
+void make_inputs(Inputs& in, int odd_press_size = 0) {
+  std::filesystem::create_directory(in.dir.file("xml"));
+  auto xml = [&](const std::string& file, const std::string& material, std::uint64_t seed) {
+    test::SampleRecordingSpec spec;
+    spec.material = material;
+    spec.seed = seed;
+    spec.seconds = 0.5;
+    test::write_text_file(in.dir.file("xml/" + file), test::sample_recording_xml(spec));
+  };
+  xml("book_0.xml", "Book", 1);
+  xml("book_1.xml", "Book", 2);
+  xml("sand.xml", "Sandpaper_100", 3);
+  xml("felt.xml", "Felt", 4);
+  convert::convert_recordings({in.dir.file("xml")}, in.recordings, {});
+  capture::GelsightWriter writer(in.gelsight, false, "test");
+  for (int j = 0; j < 5; ++j) {
+    writer.add_press("Book", tiny_press(j == 4 && odd_press_size ? odd_press_size : 32, j));
+    writer.add_press("sandpaper 100", tiny_press(32, j));
+    writer.add_press("Glass", tiny_press(32, j));
+  }
+  writer.commit();
+}
+
+AlignOptions options_for(const Inputs& in) {
+  AlignOptions o;
+  o.recordings = in.recordings;
+  o.gelsight = in.gelsight;
+  o.output = in.dataset;
+  return o;
+}
+
+std::string error_of(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input) << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << "no error";
+  return "";
+}
+
+TEST(AlignDataset, JoinsMaterialsByNormalisedNameAndListsTheRest) {
+  Inputs in;
+  make_inputs(in);
+  const AlignResult r = align_dataset(options_for(in));
+  ASSERT_EQ(r.match.pairs.size(), 2u);
+  EXPECT_EQ(r.match.pairs[0].id, "book");
+  EXPECT_EQ(r.match.pairs[1].id, "sandpaper_100");
+  EXPECT_EQ(r.match.pairs[1].gelsight.name, "sandpaper 100");
+  ASSERT_EQ(r.match.only_recordings.size(), 1u);
+  EXPECT_EQ(r.match.only_recordings[0].name, "Felt");
+  ASSERT_EQ(r.match.only_gelsight.size(), 1u);
+  EXPECT_EQ(r.match.only_gelsight[0].name, "Glass");
+  EXPECT_EQ(r.recordings, 3u);
+  EXPECT_EQ(r.presses, 10u);
+  // 5000 samples: starts 9, 109, ..., 3909 (t + 1000 <= 5000): 40 per recording.
+  EXPECT_EQ(r.windows, 120u);
+
+  const h5::Group root = h5::File::open(in.dataset).root();
+  EXPECT_EQ(root.attr_string("haptex_format"), "dataset/1");
+  EXPECT_EQ(root.attr_string("recordings_sha256").size(), 64u);
+  const h5::Group book = root.open_group("materials").open_group("book");
+  EXPECT_EQ(book.open_group("recordings").children(), (std::vector<std::string>{"0", "1"}));
+  EXPECT_EQ(book.open_group("presses").children().size(), 5u);
+  EXPECT_TRUE(book.open_group("recordings").open_group("1").has_dataset("accel_xyz"));
+  EXPECT_EQ(root.open_group("windows").open_dataset("materials").read_strings(),
+            (std::vector<std::string>{"book", "sandpaper_100"}));
+}
+
+TEST(AlignDataset, WindowsHoldTheActionAndTheSpectrumOfTheNext100Ms) {
+  Inputs in;
+  make_inputs(in);
+  align_dataset(options_for(in));
+  const h5::Group root = h5::File::open(in.dataset).root();
+  const h5::Group w = root.open_group("windows");
+  const auto start = w.open_dataset("start").read<std::int64_t>();
+  const auto material = w.open_dataset("material").read<std::int32_t>();
+  const auto recording = w.open_dataset("recording").read<std::int32_t>();
+  const auto action = w.open_dataset("action").read<float>();
+  const auto target = w.open_dataset("target").read<float>();
+  const std::size_t i = 57;  // book, recording 1, the 18th window
+  ASSERT_EQ(material[i], 0);
+  ASSERT_EQ(recording[i], 1);
+  const std::int64_t t = start[i];
+  EXPECT_EQ(t, 9 + 17 * 100);
+  const h5::Group rec = root.open_group("materials").open_group("book").open_group("recordings").open_group("1");
+  const auto force = rec.open_dataset("force_normal_lp").read<float>();
+  const auto speed = rec.open_dataset("speed_lp").read<float>();
+  const auto accel = rec.open_dataset("accel").read<float>();
+  for (int k = 0; k < 10; ++k) {
+    EXPECT_EQ(action[i * 20 + std::size_t(k)], force[std::size_t(t - 9 + k)]);
+    EXPECT_EQ(action[i * 20 + 10 + std::size_t(k)], speed[std::size_t(t - 9 + k)]);
+  }
+  // The target by the definition, a direct DFT sum: 2 |X_k| / N, k = 1..100, of accel[t, t + 1000).
+  for (int k = 1; k <= 100; k += 11) {
+    std::complex<double> sum = 0;
+    for (int n = 0; n < 1000; ++n)
+      sum += double(accel[std::size_t(t + n)]) * std::polar(1.0, -2 * std::numbers::pi * k * n / 1000.0);
+    EXPECT_NEAR(target[i * 100 + std::size_t(k - 1)], 2 * std::abs(sum) / 1000, 1e-5 + 1e-5 * std::abs(sum) / 500) << k;
+  }
+}
+
+TEST(AlignDataset, NameMapJoinsOtherNamesAndRefusesTwoToOne) {
+  Inputs in;
+  make_inputs(in);
+  test::write_text_file(in.dir.file("names.json"), R"({"Glass": "Felt"})");
+  AlignOptions o = options_for(in);
+  o.names_file = in.dir.file("names.json");
+  const AlignResult r = align_dataset(o);
+  EXPECT_EQ(r.match.pairs.size(), 3u);
+  EXPECT_TRUE(r.match.only_gelsight.empty());
+
+  test::write_text_file(in.dir.file("twice.json"), R"({"Glass": "Book"})");
+  o.names_file = in.dir.file("twice.json");
+  o.overwrite = true;
+  const std::string message = error_of([&] { align_dataset(o); });
+  EXPECT_NE(message.find("joined with two gelsight materials"), std::string::npos) << message;
+
+  test::write_text_file(in.dir.file("typo.json"), R"({"Glas": "Felt"})");
+  o.names_file = in.dir.file("typo.json");
+  EXPECT_NE(error_of([&] { align_dataset(o); }).find("no such material in the gelsight file"), std::string::npos);
+}
+
+TEST(AlignDataset, RefusesPressesOfDifferentSizesWithinAMaterial) {
+  Inputs in;
+  make_inputs(in, 40);
+  const std::string message = error_of([&] { align_dataset(options_for(in)); });
+  EXPECT_NE(message.find("/materials/book/presses/4/peak"), std::string::npos) << message;
+  EXPECT_FALSE(std::filesystem::exists(in.dataset));
+}
+
+TEST(AlignDataset, RefusesAnotherSampleRateAndSwappedFiles) {
+  Inputs in;
+  make_inputs(in);
+  {
+    h5::File file = h5::File::open(in.recordings, true);
+    file.root().open_group("materials").open_group("book").open_group("recordings").open_group("0").set_attr("sample_rate_hz", 5000.0);
+  }
+  const std::string message = error_of([&] { align_dataset(options_for(in)); });
+  EXPECT_NE(message.find("/materials/book/recordings/0"), std::string::npos) << message;
+  EXPECT_NE(message.find("5000"), std::string::npos) << message;
+  AlignOptions swapped = options_for(in);
+  std::swap(swapped.recordings, swapped.gelsight);
+  EXPECT_NE(error_of([&] { align_dataset(swapped); }).find("not recordings/1"), std::string::npos);
+}
+
+TEST(WindowTable, StartsLeaveRoomForActionAndTarget) {
+  EXPECT_EQ(window_starts(1008, 100).size(), 0u);
+  EXPECT_EQ(window_starts(1009, 100), (std::vector<std::int64_t>{9}));
+  EXPECT_EQ(window_starts(1300, 100), (std::vector<std::int64_t>{9, 109, 209}));
+  EXPECT_EQ(window_first_sample(9), 0);
+  EXPECT_EQ(window_end_sample(9), 1009);
+}
+
+}  // namespace
+}  // namespace haptex::align
