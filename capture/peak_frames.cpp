@@ -24,15 +24,12 @@ class LeadingReference {
   bool complete() const { return done_; }
   bool collecting() const { return !done_; }
 
-  // Returns false when the frame is a black start-up frame (not part of the reference).
-  bool add(std::int64_t index, const cv::Mat& scoring, const cv::Mat& full, SourceScores& out) {
-    if (small_.empty() && cv::mean(scoring)[0] < kBlackLevel) return false;
-    if (sum_.empty()) sum_ = cv::Mat::zeros(full.size(), CV_64FC3);
-    cv::accumulate(full, sum_);
+  void add(std::int64_t index, const cv::Mat& scoring, const cv::Mat& full, SourceScores& out) {
+    if (sum_.empty()) sum_ = cv::Mat::zeros(full.size(), CV_16UC3);  // 255 x 250 frames fits
+    cv::add(sum_, full, sum_, cv::noArray(), CV_16UC3);
     small_.push_back(scoring);
     indices_.push_back(index);
     if (int(small_.size()) == settings_.reference_frames) finish(out);
-    return true;
   }
 
   void require_complete() const {
@@ -130,15 +127,21 @@ SourceScores score_source(FrameSource& source, const ExtractSettings& settings) 
   out.contact = given_reference(source, settings, out);
   LeadingReference leading(settings, source.path());
   const bool from_leading = !out.contact;
+  bool started = false;  // past the black frames sensors send after stream start
   source.scan(
       [&](std::int64_t index, const cv::Mat& scoring, const cv::Mat& full) {
         out.scores.push_back(kNaN);
+        if (!scoring.empty() && !started && cv::mean(scoring)[0] < kBlackLevel) {
+          ++out.black_frames;
+          return;
+        }
+        started = started || !scoring.empty();
         if (scoring.empty()) {
           ++out.unreadable_frames;
         } else if (!from_leading || leading.complete()) {
           out.scores.back() = out.contact->score(scoring);
-        } else if (!leading.add(index, scoring, full, out)) {
-          ++out.black_frames;
+        } else {
+          leading.add(index, scoring, full, out);
         }
       },
       [&](std::int64_t) { return from_leading && leading.collecting(); });

@@ -1,4 +1,6 @@
 // Video files through OpenCV's FFmpeg backend (MJPG/MPEG-4 AVI, FFV1 Matroska, H.264 MP4 ...).
+#include <cstdlib>
+#include <vector>
 #include <opencv2/videoio.hpp>
 
 #include "capture/frame_source.hpp"
@@ -27,14 +29,21 @@ class VideoSource : public FrameSource {
   void scan(const Visitor& visit, const std::function<bool(std::int64_t)>&) override {
     cv::VideoCapture video = open();
     cv::Mat frame;
+    cache_.clear();
+    cached_ = true;
     for (std::int64_t i = 0; video.read(frame); ++i) {
       check_size(frame, i);
       visit(i, scoring_image(frame), frame);
+      keep(frame);
     }
   }
 
   void read(const std::vector<std::int64_t>& indices,
             const std::function<void(std::int64_t, const cv::Mat&)>& deliver) override {
+    if (cached_) {
+      for (std::int64_t i : indices) deliver(i, cache_.at(std::size_t(i)));
+      return;
+    }
     cv::VideoCapture video = open();
     std::size_t next = 0;
     cv::Mat frame;
@@ -54,10 +63,15 @@ class VideoSource : public FrameSource {
 
  private:
   cv::VideoCapture open() const {
+    // FFmpeg logs decoding problems of damaged videos straight to stderr; libraries here never print
+    // (damage shows as frames that do not decode). OpenCV reads this once, when FFmpeg is first used;
+    // a user's own setting wins.
+    setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);  // AV_LOG_QUIET
     cv::VideoCapture video;
+    // FFmpeg only: other backends (GStreamer) print their own warnings on failure, and libraries
+    // here never print.
     try {
       video.open(path_, cv::CAP_FFMPEG);
-      if (!video.isOpened()) video.open(path_, cv::CAP_ANY);
     } catch (const cv::Exception&) {
     }
     if (!video.isOpened())
@@ -66,15 +80,30 @@ class VideoSource : public FrameSource {
     return video;
   }
 
+  // Decoding lossless video (FFV1) costs more than anything else extraction does, so a video that
+  // fits in kCacheBytes is decoded once and its frames kept; a longer one is read a second time.
+  void keep(const cv::Mat& frame) {
+    if (!cached_) return;
+    if ((cache_.size() + 1) * frame.total() * frame.elemSize() > kCacheBytes) {
+      cache_.clear();
+      cached_ = false;
+      return;
+    }
+    cache_.push_back(frame.clone());
+  }
+
   void check_size(const cv::Mat& frame, std::int64_t index) const {
     if (frame.size() != size_ || frame.type() != CV_8UC3)
       throw input_error(path_, "frame " + std::to_string(index),
                         "frame size or type changes within the video", "Re-export the video with one frame size");
   }
 
+  static constexpr std::size_t kCacheBytes = std::size_t(512) << 20;
   std::string path_;
   cv::Size size_;
   double fps_ = 0;
+  std::vector<cv::Mat> cache_;
+  bool cached_ = false;
 };
 
 }  // namespace

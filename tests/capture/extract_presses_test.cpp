@@ -1,0 +1,185 @@
+// capture extract: videos and press files -> the gelsight file and contact sheets, or nothing at all.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+
+#include "capture/capture_inputs.hpp"
+#include "capture/extract_presses.hpp"
+#include "capture/press_recorder.hpp"
+#include "core/error.hpp"
+#include "core/h5/file.hpp"
+#include "tests/capture/fake_setup.hpp"
+#include "tests/capture/press_videos.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::capture {
+namespace {
+
+namespace fs = std::filesystem;
+using fixtures::quick_presses;
+
+class Extract : public ::testing::Test {
+ protected:
+  std::string video(const std::string& material, const std::string& name, int presses, int frames = 60) {
+    fs::create_directories(dir_.path() / "videos" / material);
+    const std::string path = (dir_.path() / "videos" / material / name).string();
+    fixtures::write_press_video(path, quick_presses(presses), frames);
+    return path;
+  }
+  std::string out(const std::string& name = "gelsight.h5") const { return dir_.file(name); }
+  void expect_nothing_written() const {
+    EXPECT_FALSE(fs::exists(out()));
+    EXPECT_FALSE(fs::exists(out() + ".partial"));
+    EXPECT_FALSE(fs::exists(dir_.file("gelsight_sheets")));
+    EXPECT_FALSE(fs::exists(dir_.file("gelsight_sheets.partial")));
+  }
+  haptex::test::TempDir dir_;
+};
+
+TEST_F(Extract, AFolderOfMaterialFoldersGivesStablePressNumbers) {
+  video("Cork", "press_10.mkv", 1);
+  video("Cork", "press_2.mkv", 2, 75);
+  video("Brick 2", "press_0.mkv", 1);
+  const ExtractResult r = extract_presses({dir_.file("videos")}, out(), {});
+  ASSERT_EQ(r.presses.size(), 4u);
+  EXPECT_EQ(r.sources, 3u);
+  // Materials in folder order; files by number: press_2 before press_10.
+  EXPECT_EQ(r.presses[0].material, "Brick 2");
+  EXPECT_EQ(r.presses[0].material_id, "brick_2");
+  EXPECT_EQ(r.presses[1].material, "Cork");
+  EXPECT_NE(r.presses[1].source.find("press_2.mkv"), std::string::npos);
+  EXPECT_EQ(r.presses[2].press_in_source, 1);
+  EXPECT_NE(r.presses[3].source.find("press_10.mkv"), std::string::npos);
+  EXPECT_EQ(r.presses[3].press, 2);
+  h5::File f = h5::File::open(out());
+  EXPECT_EQ(f.root().attr_string("haptex_format"), "gelsight/1");
+  const h5::Group cork = f.root().open_group("materials").open_group("cork");
+  EXPECT_EQ(cork.attr_string("name"), "Cork");
+  EXPECT_EQ(cork.open_group("presses").children(), (std::vector<std::string>{"0", "1", "2"}));
+  for (const auto& p : r.presses) EXPECT_TRUE(fs::exists(dir_.path() / p.contact_sheet)) << p.contact_sheet;
+}
+
+TEST_F(Extract, EachPressHoldsReferencePeakTwelveFramesAndScores) {
+  const std::string path = video("Cork", "press_0.mkv", 1);
+  const ExtractResult r = extract_presses({path}, out(), {});
+  ASSERT_EQ(r.presses.size(), 1u);
+  h5::File f = h5::File::open(out());
+  const h5::Group g = f.root().open_group("materials").open_group("cork").open_group("presses").open_group("0");
+  EXPECT_EQ(g.attr_string("source_file"), path);
+  EXPECT_EQ(g.attr_string("source_sha256").size(), 64u);
+  const std::int64_t start = g.attr_int("frame_start"), end = g.attr_int("frame_end");
+  const auto contrast = g.open_dataset("contrast").read<float>();
+  EXPECT_EQ(std::int64_t(contrast.size()), end - start + 1);
+  EXPECT_EQ(g.attr_int("samples"), std::int64_t(contrast.size()));
+  const auto peak_index = g.open_dataset("peak_index");
+  EXPECT_TRUE(peak_index.shape().empty()) << "a scalar";
+  const std::int64_t peak = peak_index.read<std::int64_t>()[0];
+  EXPECT_GE(peak, g.attr_int("contact_first"));
+  EXPECT_LE(peak, g.attr_int("contact_last"));
+  EXPECT_FLOAT_EQ(contrast[std::size_t(peak - start)], float(g.attr_double("peak_score")));
+  EXPECT_EQ(g.open_dataset("frames").shape(), (h5::Shape{12, 120, 160, 3}));
+  EXPECT_EQ(g.open_dataset("peak").shape(), (h5::Shape{120, 160, 3}));
+  EXPECT_EQ(g.open_dataset("reference").shape(), (h5::Shape{120, 160, 3}));
+  EXPECT_EQ(g.open_dataset("peak").attr_string("channel_order"), "RGB");
+  // The peak is one of the 12 frames, bit for bit.
+  const auto indices = g.open_dataset("frame_indices").read<std::int64_t>();
+  const auto frames = g.open_dataset("frames").read<std::uint8_t>();
+  const auto peak_rgb = g.open_dataset("peak").read<std::uint8_t>();
+  const auto at = std::find(indices.begin(), indices.end(), peak) - indices.begin();
+  ASSERT_LT(at, 12);
+  const std::size_t image = 120 * 160 * 3;
+  EXPECT_TRUE(std::equal(peak_rgb.begin(), peak_rgb.end(), frames.begin() + std::ptrdiff_t(std::size_t(at) * image)));
+}
+
+TEST_F(Extract, PressFilesFromTheRecorderNameTheirMaterial) {
+  FakeCamera camera(fixtures::small_camera());
+  SessionRequest request;
+  request.node = "/dev/video0";
+  request.output_dir = dir_.file("session");
+  RecorderOptions options;
+  options.material = "Sandpaper 100";
+  options.presses = 2;
+  record_session(camera, request, options);
+  const ExtractResult r = extract_presses({dir_.file("session")}, out(), {});
+  ASSERT_EQ(r.presses.size(), 2u);
+  EXPECT_EQ(r.presses[0].material, "Sandpaper 100") << "from the file, not the folder 'session'";
+  h5::File f = h5::File::open(out());
+  const h5::Group g = f.root().open_group("materials").open_group("sandpaper_100").open_group("presses").open_group("1");
+  EXPECT_NE(g.attr_string("reference_source").find("stored in the press file"), std::string::npos);
+  EXPECT_EQ(g.open_dataset("frames").shape()[0], 12u);
+}
+
+TEST_F(Extract, NoPressAnywhereIsAFailureThatWritesNothing) {
+  const std::string still = video("Glass", "still.mkv", 0, 30);
+  try {
+    extract_presses({still}, out(), {});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::failed);
+    EXPECT_NE(std::string(e.what()).find("no press found"), std::string::npos) << e.what();
+  }
+  expect_nothing_written();
+}
+
+TEST_F(Extract, AnUnreadableInputLeavesNothingBehind) {
+  const std::string good = video("Cork", "press_0.mkv", 1);
+  std::ofstream(dir_.file("videos/Cork/press_1.mkv")) << "not a video";
+  try {
+    extract_presses({dir_.file("videos")}, out(), {});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("press_1.mkv"), std::string::npos) << e.what();
+  }
+  expect_nothing_written();
+}
+
+TEST_F(Extract, RefusesToOverwriteWithoutForce) {
+  const std::string path = video("Cork", "press_0.mkv", 1);
+  extract_presses({path}, out(), {});
+  EXPECT_THROW(extract_presses({path}, out(), {}), Error);
+  ExtractOptions force;
+  force.overwrite = true;
+  EXPECT_NO_THROW(extract_presses({path}, out(), force));
+}
+
+TEST_F(Extract, AGivenReferenceImageReplacesTheLeadingFrames) {
+  const std::string path = video("Cork", "press_0.mkv", 1);
+  const FakeScene scene(V4L2_PIX_FMT_MJPEG, 160, 120, quick_presses(1));
+  cv::imwrite(dir_.file("ref.png"), scene.image(0, 0));
+  ExtractOptions options;
+  options.reference_path = dir_.file("ref.png");
+  options.sheets = false;
+  const ExtractResult r = extract_presses({path}, out(), options);
+  ASSERT_EQ(r.presses.size(), 1u);
+  EXPECT_TRUE(r.sheets_dir.empty());
+  h5::File f = h5::File::open(out());
+  const h5::Group g = f.root().open_group("materials").open_group("cork").open_group("presses").open_group("0");
+  EXPECT_EQ(g.attr_string("reference_source"), "image " + dir_.file("ref.png"));
+  EXPECT_FALSE(g.has_attr("contact_sheet"));
+}
+
+TEST(CaptureInputs, NumbersInFileNamesCompareByValue) {
+  EXPECT_TRUE(natural_less("press_2.mkv", "press_10.mkv"));
+  EXPECT_FALSE(natural_less("press_10.mkv", "press_2.mkv"));
+  EXPECT_TRUE(natural_less("press_02.mkv", "press_3.mkv"));
+  EXPECT_TRUE(natural_less("a.mkv", "b.mkv"));
+  EXPECT_FALSE(natural_less("a.mkv", "a.mkv"));
+}
+
+TEST(CaptureInputs, RefusesMissingPathsAndEmptyFolders) {
+  haptex::test::TempDir dir;
+  EXPECT_THROW(expand_capture_inputs({dir.file("nowhere")}, std::nullopt), Error);
+  std::ofstream(dir.file("notes.txt")) << "x";
+  try {
+    expand_capture_inputs({dir.path().string()}, std::nullopt);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("holds no video"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace haptex::capture
