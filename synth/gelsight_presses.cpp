@@ -6,7 +6,7 @@
 #include <random>
 
 #include "core/error.hpp"
-#include "synth/seeds.hpp"
+#include "core/random_seeds.hpp"
 
 namespace haptex::synth {
 namespace {

@@ -3,7 +3,7 @@
 #include "core/ar/texture_renderer.hpp"
 #include "core/naming.hpp"
 #include "synth/recording_assembly.hpp"
-#include "synth/seeds.hpp"
+#include "core/random_seeds.hpp"
 #include "synth/stroke_generator.hpp"
 
 namespace haptex::synth {

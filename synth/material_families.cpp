@@ -5,7 +5,7 @@
 #include <numbers>
 #include <random>
 
-#include "synth/seeds.hpp"
+#include "core/random_seeds.hpp"
 
 namespace haptex::synth {
 namespace {

@@ -8,7 +8,7 @@
 #include "core/error.hpp"
 #include "synth/gelsight_camera.hpp"
 #include "synth/gelsight_renderer.hpp"
-#include "synth/seeds.hpp"
+#include "core/random_seeds.hpp"
 
 namespace haptex::synth {
 namespace {

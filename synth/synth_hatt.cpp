@@ -8,7 +8,7 @@
 #include "synth/hatt_recordings.hpp"
 #include "synth/photo_press.hpp"
 #include "synth/recorded_data_xml.hpp"
-#include "synth/seeds.hpp"
+#include "core/random_seeds.hpp"
 #include "synth/synth_output.hpp"
 #include "synth/synth_runs.hpp"
 

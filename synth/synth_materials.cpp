@@ -13,7 +13,7 @@
 #include "synth/probe_vibration.hpp"
 #include "synth/recorded_data_xml.hpp"
 #include "synth/recording_assembly.hpp"
-#include "synth/seeds.hpp"
+#include "core/random_seeds.hpp"
 #include "synth/synth_output.hpp"
 #include "synth/synth_runs.hpp"
 #include "synth/truth_spectra.hpp"

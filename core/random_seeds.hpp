@@ -1,9 +1,9 @@
 #pragma once
-// Independent, reproducible random streams for each material, recording and press from one user seed.
+// Independent, reproducible random streams (per material, recording, press, split try) from one user seed.
 #include <cstdint>
 #include <string_view>
 
-namespace haptex::synth {
+namespace haptex {
 
 // SplitMix64 over the combined inputs: well-mixed seeds, the same on every platform.
 constexpr std::uint64_t derive_seed(std::uint64_t base, std::uint64_t a, std::uint64_t b = 0, std::uint64_t c = 0) {
@@ -24,4 +24,4 @@ constexpr std::uint64_t name_seed(std::string_view name) {
   return h;
 }
 
-}  // namespace haptex::synth
+}  // namespace haptex
