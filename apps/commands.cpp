@@ -5,9 +5,11 @@ namespace haptex::apps {
 
 std::unique_ptr<Command> make_convert_command();
 std::unique_ptr<Command> make_info_command();
+std::unique_ptr<Command> make_qa_command();
 std::unique_ptr<Command> make_capture_command();
 std::unique_ptr<Command> make_synth_command();
 std::unique_ptr<Command> make_align_command();
+std::unique_ptr<Command> make_split_command();
 
 std::vector<std::unique_ptr<Command>> all_commands() {
   std::vector<std::unique_ptr<Command>> commands;
@@ -16,6 +18,8 @@ std::vector<std::unique_ptr<Command>> all_commands() {
   commands.push_back(make_capture_command());
   commands.push_back(make_synth_command());
   commands.push_back(make_align_command());
+  commands.push_back(make_split_command());
+  commands.push_back(make_qa_command());
   return commands;
 }
 

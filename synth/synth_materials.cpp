@@ -1,9 +1,7 @@
-#include <cstdio>
 #include <filesystem>
 #include <mutex>
 #include <nlohmann/json.hpp>
 
-#include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/json/schema.hpp"
 #include "core/naming.hpp"
@@ -50,14 +48,7 @@ void write_manifest(const std::string& out, const SynthMaterialsOptions& o, cons
                         {"limits", {{"max_speed_mm_s", kLimits.max_speed_mm_s}, {"max_force_n", kLimits.max_force_n}}},
                         {"materials", nlohmann::json::array()}};
   for (const auto& spec : specs) doc["materials"].push_back(recipe_json(spec));
-  json::validate(doc, "synth-materials.schema.json", "materials.json (internal)");
-  const std::string path = (std::filesystem::path(out) / "materials.json").string();
-  PartialFile partial(path);
-  const std::string text = doc.dump(2) + "\n";
-  FILE* file = std::fopen(partial.path().c_str(), "wb");
-  if (!file || std::fwrite(text.data(), 1, text.size(), file) != text.size() || std::fclose(file) != 0)
-    throw failure(partial.path() + ": write failed");
-  partial.commit();
+  json::write_file(doc, "synth-materials.schema.json", (std::filesystem::path(out) / "materials.json").string());
 }
 
 // One material: surface, presses, recordings; returns its truth spectra.

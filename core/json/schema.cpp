@@ -1,5 +1,6 @@
 #include "core/json/schema.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -12,6 +13,7 @@
 #include <valijson/validation_results.hpp>
 #include <valijson/validator.hpp>
 
+#include "core/durable_file.hpp"
 #include "core/embedded.hpp"
 #include "core/error.hpp"
 
@@ -66,6 +68,21 @@ void validate(const nlohmann::json& doc, std::string_view schema_name, const std
   if (where.empty()) where = "(top level)";
   const std::string reason = error.description;
   throw input_error(file, where, reason, "See schemas/" + std::string(schema_name) + " for the expected form");
+}
+
+void write_file(const nlohmann::json& doc, std::string_view schema_name, const std::string& path) {
+  try {
+    validate(doc, schema_name, path);
+  } catch (const Error& e) {
+    throw failure(std::string("internal: the document to write does not follow its schema: ") + e.what());
+  }
+  PartialFile partial(path);
+  const std::string text = doc.dump(2) + "\n";
+  std::FILE* file = std::fopen(partial.path().c_str(), "wb");
+  const bool written = file && std::fwrite(text.data(), 1, text.size(), file) == text.size();
+  if (file && std::fclose(file) != 0) throw failure(partial.path() + ": write failed (disk full?)");
+  if (!written) throw failure(partial.path() + ": write failed (disk full?)");
+  partial.commit();
 }
 
 }  // namespace haptex::json

@@ -14,4 +14,8 @@ nlohmann::json read_file(const std::string& path);
 // the reason, when doc does not satisfy schemas/<schema_name>.
 void validate(const nlohmann::json& doc, std::string_view schema_name, const std::string& file);
 
+// Validates doc against schemas/<schema_name> (a failure there is a bug: Kind::failed), then writes
+// it indented, atomically (NAME.partial, fsync, rename).
+void write_file(const nlohmann::json& doc, std::string_view schema_name, const std::string& path);
+
 }  // namespace haptex::json

@@ -5,13 +5,11 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
-#include <opencv2/imgproc.hpp>
 
 #include "align/window_table.hpp"
-#include "capture/gelsight_writer.hpp"
-#include "convert/convert_recordings.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
+#include "tests/support/pipeline_fixture.hpp"
 #include "tests/support/sample_recording.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -20,52 +18,9 @@ namespace {
 
 using test::TempDir;
 
-capture::GelsightPress tiny_press(int size, int seed) {
-  capture::GelsightPress p;
-  p.source_file = "press.mkv";
-  p.source_sha256 = std::string(64, 'a');
-  p.reference = cv::Mat(size, size, CV_8UC3, cv::Scalar(100, 110, 120));
-  p.peak = p.reference.clone();
-  cv::circle(p.peak, {size / 2, size / 2}, size / 4, cv::Scalar(150 + seed, 90, 60), -1);
-  for (int i = 0; i < 12; ++i) p.frames.push_back(p.peak.clone()), p.frame_indices.push_back(20 + i);
-  p.peak_index = 25;
-  p.frame_start = 15;
-  p.frame_end = 35;
-  p.contact_first = 18;
-  p.contact_last = 32;
-  p.contrast.assign(21, 1.0f);
-  p.peak_score = 5;
-  return p;
-}
+using Inputs = test::PipelineFiles;
 
-struct Inputs {
-  TempDir dir;
-  std::string recordings = dir.file("recordings.h5"), gelsight = dir.file("gelsight.h5"), dataset = dir.file("dataset.h5");
-};
-
-// Recordings of Book (2), "Sandpaper_100" (1) and Felt (1); presses of Book, "sandpaper 100" and Glass.
-void make_inputs(Inputs& in, int odd_press_size = 0) {
-  std::filesystem::create_directory(in.dir.file("xml"));
-  auto xml = [&](const std::string& file, const std::string& material, std::uint64_t seed) {
-    test::SampleRecordingSpec spec;
-    spec.material = material;
-    spec.seed = seed;
-    spec.seconds = 0.5;
-    test::write_text_file(in.dir.file("xml/" + file), test::sample_recording_xml(spec));
-  };
-  xml("book_0.xml", "Book", 1);
-  xml("book_1.xml", "Book", 2);
-  xml("sand.xml", "Sandpaper_100", 3);
-  xml("felt.xml", "Felt", 4);
-  convert::convert_recordings({in.dir.file("xml")}, in.recordings, {});
-  capture::GelsightWriter writer(in.gelsight, false, "test");
-  for (int j = 0; j < 5; ++j) {
-    writer.add_press("Book", tiny_press(j == 4 && odd_press_size ? odd_press_size : 32, j));
-    writer.add_press("sandpaper 100", tiny_press(32, j));
-    writer.add_press("Glass", tiny_press(32, j));
-  }
-  writer.commit();
-}
+void make_inputs(Inputs& in, int odd_press_size = 0) { test::make_pipeline_inputs(in, {0.5, odd_press_size}); }
 
 AlignOptions options_for(const Inputs& in) {
   AlignOptions o;

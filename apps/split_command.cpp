@@ -1,0 +1,80 @@
+// haptex split dataset.h5 -o split.json [--sections 25] [--val 3] [--test 3] [--seed 0] [--min-coverage 0.9]
+#include <algorithm>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include "apps/command.hpp"
+#include "core/durable_file.hpp"
+#include "core/json/schema.hpp"
+#include "split/split_manifest.hpp"
+#include "split/split_plots.hpp"
+
+namespace haptex::apps {
+namespace {
+
+class SplitCommand : public Command {
+ public:
+  std::string name() const override { return "split"; }
+  std::string summary() const override { return "Cut leakage-free train/val/test sets whose force-speed ranges overlap"; }
+
+  void declare(CLI::App& app) override {
+    app.add_option("dataset", dataset_, "Dataset file (haptex align)")->required();
+    app.add_option("-o,--output", output_, "Split manifest to write (JSON)")->required();
+    app.add_option("--sections", options_.sections, "Sections per recording")->capture_default_str()->check(CLI::Range(3, 10000));
+    app.add_option("--val", options_.val, "Validation sections")->capture_default_str()->check(CLI::Range(1, 10000));
+    app.add_option("--test", options_.test, "Test sections")->capture_default_str()->check(CLI::Range(1, 10000));
+    app.add_option("--seed", options_.seed, "Random seed")->capture_default_str();
+    app.add_option("--min-coverage", options_.min_coverage, "Least share of val/test windows inside the training hull")
+        ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+    app.add_option("--tries", options_.tries, "Assignments tried per material")->capture_default_str()->check(CLI::Range(1, 1000000));
+    app.add_flag("--no-plots", no_plots_, "Do not write the per-material plots");
+    app.add_flag("--force", force_, "Replace the output file if it exists");
+  }
+
+  int run(const GlobalOptions& global) override {
+    check_output_path(output_, force_);
+    const auto windows = split::read_dataset_windows(dataset_);
+    const auto splits = split::search_split(windows, options_);
+    const std::string source = "haptex split " + dataset_ + " -o " + output_ + " --sections " + std::to_string(options_.sections) +
+                               " --val " + std::to_string(options_.val) + " --test " + std::to_string(options_.test) +
+                               " --seed " + std::to_string(options_.seed);
+    json::write_file(split::manifest_json(dataset_, options_, splits, source), "split.schema.json", output_);
+    split::PlotResult plots;
+    if (!no_plots_) {
+      const std::filesystem::path dir = std::filesystem::path(output_).replace_extension(".plots");
+      plots = split::write_split_plots(dataset_, windows, splits, options_.sections, dir.string());
+    }
+    if (global.json) {
+      std::cout << json::read_file(output_).dump(2) << "\n";
+      return 0;
+    }
+    if (!global.quiet) print(splits, plots);
+    return 0;
+  }
+
+ private:
+  void print(const std::vector<split::MaterialSplit>& splits, const split::PlotResult& plots) const {
+    std::vector<double> worst;
+    for (const auto& s : splits) worst.push_back(s.worst());
+    std::sort(worst.begin(), worst.end());
+    std::cout << "wrote " << output_ << ": " << splits.size() << " materials; worst-case coverage min "
+              << std::setprecision(3) << worst.front() << ", median " << worst[worst.size() / 2] << ", max " << worst.back() << "\n";
+    for (const auto& s : splits)
+      std::cout << "  " << std::left << std::setw(24) << s.id << std::right << " windows " << s.train_windows << "/"
+                << s.val_windows << "/" << s.test_windows << "  coverage val " << std::setprecision(3) << s.val_coverage
+                << " test " << s.test_coverage << "\n";
+    if (!plots.images.empty()) std::cout << plots.images.size() << " plots in " << std::filesystem::path(plots.images[0]).parent_path().string() << "\n";
+    if (!plots.note.empty()) std::cout << "note: " << plots.note << "\n";
+  }
+
+  std::string dataset_, output_;
+  split::SplitOptions options_;
+  bool no_plots_ = false, force_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_split_command() { return std::make_unique<SplitCommand>(); }
+
+}  // namespace haptex::apps

@@ -1,0 +1,91 @@
+#include "split/split_plots.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "align/window_table.hpp"
+#include "core/error.hpp"
+#include "core/h5/file.hpp"
+#include "split/sections.hpp"
+
+namespace haptex::split {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kSetNames[] = {"train", "val", "test"};
+constexpr int kTraceStep = 10;  // plot every 10th acceleration sample: 1 kHz is plenty for a trace
+
+bool gnuplot_available() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
+
+void write_points(const fs::path& path, const MaterialWindows& m, const MaterialSplit& s, std::size_t sections) {
+  std::ofstream out(path);
+  out << "set,speed_mm_s,force_n\n";
+  for (std::size_t i = 0; i < m.start.size(); ++i) {
+    const std::int64_t n = m.recording_samples.at(std::size_t(m.recording[i]));
+    const int section = section_of(align::window_first_sample(m.start[i]), align::window_end_sample(m.start[i]), n, sections);
+    const int set = section < 0 ? -1 : set_of_section(s.sections, section);
+    if (set >= 0) out << kSetNames[set] << "," << m.speed[i] << "," << m.force[i] << "\n";
+  }
+}
+
+void write_trace(const fs::path& path, const std::vector<float>& accel) {
+  std::ofstream out(path);
+  out << "time_s,accel_m_s2\n";
+  for (std::size_t i = 0; i < accel.size(); i += kTraceStep) out << double(i) / 10000.0 << "," << accel[i] << "\n";
+}
+
+void write_sections(const fs::path& path, const MaterialSplit& s, std::int64_t samples, std::size_t sections) {
+  std::ofstream out(path);
+  out << "begin_s,end_s,set\n";
+  for (std::size_t k = 0; k < sections; ++k)
+    out << double(section_begin(k, samples, sections)) / 10000.0 << ","
+        << double(section_begin(k + 1, samples, sections)) / 10000.0 << ","
+        << kSetNames[set_of_section(s.sections, int(k))] << "\n";
+}
+
+void write_script(const fs::path& script, const fs::path& base, const std::string& title) {
+  std::ofstream out(script);
+  const std::string b = base.string();
+  out << "set terminal pngcairo size 1400,520 font ',10'\n"
+      << "set output '" << b << ".png'\n"
+      << "set datafile separator ','\n"
+      << "set multiplot layout 1,2 title '" << title << "'\n"
+      << "set key outside top center horizontal\n"
+      << "set xlabel 'speed (mm/s)'; set ylabel 'normal force (N)'\n"
+      << "plot for [s in 'train val test'] '< grep ^'.s.', " << b << "_points.csv' using 2:3 with points pt 7 ps 0.3 title s\n"
+      << "set xlabel 'time (s)'; set ylabel 'acceleration (m/s^2)'\n"
+      << "set style fill transparent solid 0.25 noborder\n"
+      << "plot for [s in 'train val test'] '< grep '.s.'$ " << b << "_sections.csv' using 1:(-1e9):2:(1e9) with boxxy title s, \\\n"
+      << "     '" << b << "_trace.csv' every ::1 using 1:2 with lines lc rgb 'black' lw 0.5 notitle\n"
+      << "unset multiplot\n";
+}
+
+}  // namespace
+
+PlotResult write_split_plots(const std::string& dataset_path, const std::vector<MaterialWindows>& windows,
+                             const std::vector<MaterialSplit>& splits, std::size_t sections, const std::string& directory) {
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec) throw input_error(directory, "", "cannot create the plot folder (" + ec.message() + ")", "Choose a writable place");
+  const h5::Group materials = h5::File::open(dataset_path).root().open_group("materials");
+  const bool draw = gnuplot_available();
+  PlotResult result;
+  for (std::size_t m = 0; m < windows.size(); ++m) {
+    const fs::path base = fs::path(directory) / windows[m].id;
+    const h5::Group recording = materials.open_group(windows[m].id).open_group("recordings").open_group("0");
+    const std::vector<float> accel = recording.open_dataset("accel").read<float>();
+    write_points(base.string() + "_points.csv", windows[m], splits[m], sections);
+    write_trace(base.string() + "_trace.csv", accel);
+    write_sections(base.string() + "_sections.csv", splits[m], std::int64_t(accel.size()), sections);
+    write_script(base.string() + ".gnuplot", base, windows[m].name + ": train, validation and test (recording 0)");
+    if (draw && std::system(("gnuplot '" + base.string() + ".gnuplot' > /dev/null 2>&1").c_str()) == 0)
+      result.images.push_back(base.string() + ".png");
+  }
+  if (!draw) result.note = "gnuplot is not installed: wrote the CSV data and gnuplot scripts to " + directory + " only";
+  else if (result.images.size() < windows.size()) result.note = "gnuplot failed on some plots; their CSV data and scripts are in " + directory;
+  return result;
+}
+
+}  // namespace haptex::split

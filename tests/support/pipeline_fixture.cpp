@@ -1,0 +1,66 @@
+#include "tests/support/pipeline_fixture.hpp"
+
+#include <filesystem>
+#include <opencv2/imgproc.hpp>
+
+#include "align/align_dataset.hpp"
+#include "capture/gelsight_writer.hpp"
+#include "convert/convert_recordings.hpp"
+#include "tests/support/sample_recording.hpp"
+
+namespace haptex::test {
+namespace {
+
+capture::GelsightPress tiny_press(int size, int seed) {
+  capture::GelsightPress p;
+  p.source_file = "press.mkv";
+  p.source_sha256 = std::string(64, 'a');
+  p.reference = cv::Mat(size, size, CV_8UC3, cv::Scalar(100, 110, 120));
+  p.peak = p.reference.clone();
+  cv::circle(p.peak, {size / 2, size / 2}, size / 4, cv::Scalar(150 + seed, 90, 60), -1);
+  for (int i = 0; i < 12; ++i) p.frames.push_back(p.peak.clone()), p.frame_indices.push_back(20 + i);
+  p.peak_index = 25;
+  p.frame_start = 15;
+  p.frame_end = 35;
+  p.contact_first = 18;
+  p.contact_last = 32;
+  p.contrast.assign(21, 1.0f);
+  p.peak_score = 5;
+  return p;
+}
+
+}  // namespace
+
+void make_pipeline_inputs(PipelineFiles& in, const PipelineSpec& spec) {
+  std::filesystem::create_directory(in.dir.file("xml"));
+  auto xml = [&](const std::string& file, const std::string& material, std::uint64_t seed) {
+    SampleRecordingSpec s;
+    s.material = material;
+    s.seed = seed;
+    s.seconds = spec.seconds;
+    write_text_file(in.dir.file("xml/" + file), sample_recording_xml(s));
+  };
+  xml("book_0.xml", "Book", 1);
+  xml("book_1.xml", "Book", 2);
+  xml("sand.xml", "Sandpaper_100", 3);
+  xml("felt.xml", "Felt", 4);
+  convert::convert_recordings({in.dir.file("xml")}, in.recordings, {});
+  capture::GelsightWriter writer(in.gelsight, false, "test");
+  for (int j = 0; j < 5; ++j) {
+    writer.add_press("Book", tiny_press(j == 4 && spec.odd_press_size ? spec.odd_press_size : 32, j));
+    writer.add_press("sandpaper 100", tiny_press(32, j));
+    writer.add_press("Glass", tiny_press(32, j));
+  }
+  writer.commit();
+}
+
+void make_pipeline_dataset(PipelineFiles& files, const PipelineSpec& spec) {
+  make_pipeline_inputs(files, spec);
+  align::AlignOptions o;
+  o.recordings = files.recordings;
+  o.gelsight = files.gelsight;
+  o.output = files.dataset;
+  align::align_dataset(o);
+}
+
+}  // namespace haptex::test
