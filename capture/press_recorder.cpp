@@ -119,22 +119,37 @@ void check_recorder_options(const RecorderOptions& o) {
   if (o.seconds < 0) refuse("--seconds", "must not be negative", "Give a time limit in seconds, or 0 for none");
 }
 
-void prepare_session_dir(const std::string& dir, bool overwrite) {
+std::vector<fs::path> session_files(const std::string& dir) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return found;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (is_session_file(entry.path())) found.push_back(entry.path());
+  return found;
+}
+
+void check_session_dir(const std::string& dir, bool overwrite) {
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     throw input_error(dir, "", "exists and is not a folder", "Give a folder for the session with -o");
+  // The nearest existing folder must be writable: the session folder is made inside it.
+  fs::path existing = fs::absolute(dir);
+  while (!fs::exists(existing, ec) && existing.has_parent_path() && existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (::access(existing.c_str(), W_OK) != 0)
+    throw input_error(dir, "", existing.string() + " is not writable", "Choose a folder you can write to with -o");
+  const auto existing_files = session_files(dir);
+  if (!existing_files.empty() && !overwrite)
+    throw input_error(dir, "", "already holds a capture session (" + existing_files.front().filename().string() + ")",
+                      "Record into a new folder with -o, or pass --force to replace the old session");
+}
+
+void prepare_session_dir(const std::string& dir, bool overwrite) {
+  check_session_dir(dir, overwrite);
+  std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw input_error(dir, "", "cannot create the session folder: " + ec.message(), "Choose a folder you can write to with -o");
-  if (::access(dir.c_str(), W_OK) != 0)
-    throw input_error(dir, "", "the session folder is not writable", "Choose a folder you can write to with -o");
-  std::vector<fs::path> existing;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (is_session_file(entry.path())) existing.push_back(entry.path());
-  if (existing.empty()) return;
-  if (!overwrite)
-    throw input_error(dir, "", "already holds a capture session (" + existing.front().filename().string() + ")",
-                      "Record into a new folder with -o, or pass --force to replace the old session");
-  for (const auto& p : existing) fs::remove(p);
+  for (const auto& p : session_files(dir)) fs::remove(p);
 }
 
 RecordingResult record_take(V4l2Stream& stream, const SessionDescription& session, const std::string& output_dir,
@@ -188,7 +203,7 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
 RecordingResult record_session(KernelInterface& kernel, const SessionRequest& request, const RecorderOptions& options,
                                const std::atomic<bool>* stop, const Progress& progress) {
   check_recorder_options(options);
-  prepare_session_dir(request.output_dir, request.overwrite);
+  check_session_dir(request.output_dir, request.overwrite);  // refused before the device is touched
   V4l2Device device(kernel, request.node);
   const StreamFormat format = negotiate_format(device, request.format);
   if (format.fourcc != V4L2_PIX_FMT_MJPEG && format.fourcc != V4L2_PIX_FMT_YUYV)
@@ -208,6 +223,7 @@ RecordingResult record_session(KernelInterface& kernel, const SessionRequest& re
   session.post_frames = options.post_frames;
   V4l2Stream stream(device, format, request.buffers);
   session.buffers = stream.buffer_count();
+  prepare_session_dir(request.output_dir, request.overwrite);  // only now, so a refused device leaves nothing
   return record_take(stream, session, request.output_dir, options, stop, progress);
 }
 

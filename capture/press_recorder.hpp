@@ -53,7 +53,9 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
                             const RecorderOptions& options, const std::atomic<bool>* stop = nullptr,
                             const Progress& progress = {});
 
-// Creates the folder; refuses one that already holds a session unless overwrite (which removes it).
+// Refuses a folder that cannot be made or already holds a session (unless overwrite), touching nothing.
+void check_session_dir(const std::string& dir, bool overwrite);
+// Creates the folder and, with overwrite, removes the old session's files.
 void prepare_session_dir(const std::string& dir, bool overwrite);
 void check_recorder_options(const RecorderOptions& options);
 

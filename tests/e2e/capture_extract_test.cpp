@@ -1,0 +1,139 @@
+// `haptex capture extract` as a user runs it: press videos (as `haptex synth` writes them) and press
+// files into the gelsight file, checked with h5py against schemas/hdf5-layout.md; bad input refused
+// with exit code 2, and nothing left behind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <regex>
+
+#include "tests/capture/fake_setup.hpp"
+#include "tests/capture/press_videos.hpp"
+#include "tests/support/run_haptex.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ExtractCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    for (const char* material : {"Brick 2", "Cork"}) {
+      fs::create_directories(dir_.path() / "gelsight" / material);
+      for (int j = 0; j < 2; ++j)
+        capture::fixtures::write_press_video(
+            (dir_.path() / "gelsight" / material / ("press_" + std::to_string(j) + ".mkv")).string(),
+            capture::fixtures::quick_presses(1), 50);
+    }
+  }
+  std::string out() const { return dir_.file("gelsight.h5"); }
+  void expect_nothing_written() const {
+    EXPECT_FALSE(fs::exists(out()));
+    EXPECT_FALSE(fs::exists(out() + ".partial"));
+    EXPECT_FALSE(fs::exists(dir_.file("gelsight_sheets")));
+    EXPECT_FALSE(fs::exists(dir_.file("gelsight_sheets.partial")));
+  }
+  // check_layout.py on a copy of the layout whose H and W are this file's frame size, and whose
+  // variable-length dtype has h5py's name (the script takes extents and dtypes literally).
+  CommandResult check_layout(const std::string& file, const std::string& section, int height, int width) const {
+    std::ifstream in(std::string(HAPTEX_SCHEMA_DIR) + "/hdf5-layout.md");
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    text = std::regex_replace(text, std::regex("\\(H, W, 3\\)"), "(" + std::to_string(height) + ", " + std::to_string(width) + ", 3)");
+    text = std::regex_replace(text, std::regex("\\(12, H, W, 3\\)"), "(12, " + std::to_string(height) + ", " + std::to_string(width) + ", 3)");
+    text = std::regex_replace(text, std::regex("\\| vlen \\|"), "| object |");
+    std::ofstream(dir_.file("layout.md")) << text;
+    const std::string script = std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/check_layout.py";
+    return run_shell("/usr/bin/python3 " + shell_quote(script) + " " + shell_quote(dir_.file("layout.md")) + " " +
+                     shell_quote(file) + " " + shell_quote(section));
+  }
+  TempDir dir_;
+};
+
+TEST_F(ExtractCli, AFolderOfMaterialsBecomesTheGelsightFile) {
+  const CommandResult r = run_haptex({"capture", "extract", dir_.file("gelsight"), "-o", out()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("wrote " + out() + ": 4 presses of 2 materials from 4 files"), std::string::npos) << r.out;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_TRUE(fs::exists(dir_.file("gelsight_sheets/brick_2_press_1.png")));
+  const CommandResult info = run_haptex({"info", out()});
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_NE(info.out.find("gelsight/1"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("brick_2 (Brick 2)"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("presses: 2"), std::string::npos) << info.out;
+}
+
+TEST_F(ExtractCli, JsonListsEveryPress) {
+  const CommandResult r = run_haptex({"capture", "extract", dir_.file("gelsight/Cork"), "-o", out(), "--json", "--no-sheets"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  ASSERT_EQ(doc["presses"].size(), 2u);
+  EXPECT_EQ(doc["presses"][1]["material"], "Cork");
+  EXPECT_EQ(doc["presses"][1]["press"], 1);
+  EXPECT_EQ(doc["sheets"], "");
+  EXPECT_FALSE(fs::exists(dir_.file("gelsight_sheets")));
+}
+
+TEST_F(ExtractCli, H5pyReadsTheDocumentedLayout) {
+  if (run_shell("/usr/bin/python3 -c 'import h5py'").exit_code != 0)
+    GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  ASSERT_EQ(run_haptex({"capture", "extract", dir_.file("gelsight"), "-o", out()}).exit_code, 0);
+  const CommandResult gelsight = check_layout(out(), "GelSight file", 120, 160);
+  EXPECT_EQ(gelsight.exit_code, 0) << gelsight.out << gelsight.err;
+  EXPECT_NE(gelsight.out.find("layout ok"), std::string::npos) << gelsight.out << gelsight.err;
+
+  const std::string session = dir_.file("session");
+  ASSERT_EQ(run_haptex({"capture", "record", "--device", "fake:size=320x240,lockstep", "--material", "Cork",
+                        "--presses", "1", "-o", session})
+                .exit_code,
+            0);
+  const CommandResult press = check_layout(session + "/press_0.h5", "Press file", 240, 320);
+  EXPECT_EQ(press.exit_code, 0) << press.out << press.err;
+  // The checker must catch a file that breaks the layout.
+  fs::copy_file(out(), dir_.file("broken.h5"));
+  ASSERT_EQ(run_shell("/usr/bin/python3 -c \"import h5py; f = h5py.File('" + dir_.file("broken.h5") +
+                      "', 'a'); del f['materials/cork/presses/1/peak_index']\"")
+                .exit_code,
+            0);
+  const CommandResult broken = check_layout(dir_.file("broken.h5"), "GelSight file", 120, 160);
+  EXPECT_NE(broken.exit_code, 0);
+  EXPECT_NE(broken.out.find("missing: /materials/cork/presses/1/peak_index"), std::string::npos) << broken.out;
+}
+
+TEST_F(ExtractCli, NoPressAnywhereExitsOneAndWritesNothing) {
+  fs::create_directories(dir_.path() / "still" / "Glass");
+  auto schedule = capture::fixtures::quick_presses(0);
+  capture::fixtures::write_press_video(dir_.file("still/Glass/still.mkv"), schedule, 30);
+  const CommandResult r = run_haptex({"capture", "extract", dir_.file("still"), "-o", out()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("no press found"), std::string::npos) << r.err;
+  expect_nothing_written();
+}
+
+TEST_F(ExtractCli, BadInputIsRefusedWithOneMessageAndNothingWritten) {
+  const auto refused = [&](std::vector<std::string> args, const std::vector<std::string>& parts) {
+    args.insert(args.begin(), {"capture", "extract"});
+    const CommandResult r = run_haptex(args);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    for (const auto& part : parts) EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one clear message: " << r.err;
+    expect_nothing_written();
+  };
+  refused({dir_.file("nowhere"), "-o", out()}, {"nowhere: no such file or directory"});
+  std::ofstream(dir_.file("gelsight/Cork/press_2.mkv")) << "truncated";
+  refused({dir_.file("gelsight"), "-o", out()}, {"press_2.mkv", "OpenCV cannot open this as a video"});
+  fs::remove(dir_.file("gelsight/Cork/press_2.mkv"));
+  cv::imwrite(dir_.file("ref.png"), cv::Mat(10, 10, CV_8UC3, cv::Scalar::all(100)));
+  refused({dir_.file("gelsight"), "-o", out(), "--reference", dir_.file("ref.png")}, {"ref.png", "10x10", "160x120"});
+  refused({dir_.file("gelsight"), "-o", dir_.file("no/such/dir/g.h5")}, {"does not exist"});
+  std::ofstream(out()) << "old";
+  const CommandResult r = run_haptex({"capture", "extract", dir_.file("gelsight"), "-o", out()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("already exists"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace haptex::test

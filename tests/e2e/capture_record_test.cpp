@@ -1,0 +1,149 @@
+// `haptex capture record` with the fake camera (--device fake:...), as a user runs it: presses into
+// files, Ctrl-C, an unplugged sensor, and bad input refused with exit code 2 and nothing written.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "core/h5/file.hpp"
+#include "core/json/schema.hpp"
+#include "tests/support/run_haptex.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kFake = "fake:size=320x240,lockstep";
+
+class RecordCli : public ::testing::Test {
+ protected:
+  CommandResult record(const std::string& device, std::vector<std::string> extra = {}) {
+    std::vector<std::string> args = {"capture", "record", "--device", device, "--material", "Brick 2", "-o", session_};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_haptex(args);
+  }
+  nlohmann::json manifest() const { return nlohmann::json::parse(std::ifstream(session_ + "/session.json")); }
+  void expect_refused(const CommandResult& r, const std::vector<std::string>& parts) const {
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    for (const auto& part : parts) EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one clear message: " << r.err;
+    EXPECT_FALSE(fs::exists(session_ + "/session.json"));
+  }
+  TempDir dir_;
+  std::string session_ = dir_.file("brick");
+};
+
+TEST_F(RecordCli, RecordsPressesIntoFilesAndAManifest) {
+  const CommandResult r = record(kFake, {"--presses", "2"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("recorded 2 presses of Brick 2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("MJPG 320x240 at 30 fps"), std::string::npos) << r.out;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_TRUE(fs::exists(session_ + "/press_0.h5"));
+  EXPECT_TRUE(fs::exists(session_ + "/press_1.h5"));
+  const nlohmann::json m = manifest();
+  EXPECT_NO_THROW(json::validate(m, "capture-session.schema.json", "session.json"));
+  EXPECT_EQ(m["material_id"], "brick_2");
+  EXPECT_EQ(m["presses"].size(), 2u);
+}
+
+TEST_F(RecordCli, JsonOutputIsTheManifest) {
+  const CommandResult r = record(kFake, {"--presses", "1", "--json", "--control", "exposure_absolute=200"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  EXPECT_NO_THROW(json::validate(doc, "capture-session.schema.json", "stdout"));
+  bool found = false;
+  for (const auto& c : doc["controls"]["locked"])
+    if (c["name"] == "exposure_time_absolute") found = c["value"] == 200 && c["requested"] == true;
+  EXPECT_TRUE(found) << doc["controls"].dump();
+}
+
+TEST_F(RecordCli, AnUnpluggedSensorKeepsWhatWasTakenAndExitsOne) {
+  const CommandResult r = record(kFake + ",disconnect=70", {"--presses", "5"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("was disconnected after 70 frames"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("presses saved in"), std::string::npos) << r.err;
+  const nlohmann::json m = manifest();
+  EXPECT_EQ(m["ended_by"], "disconnected");
+  ASSERT_GE(m["presses"].size(), 1u);
+  for (const auto& p : m["presses"]) EXPECT_TRUE(fs::exists(session_ + "/" + p["file"].get<std::string>()));
+}
+
+TEST_F(RecordCli, CtrlCClosesTheCurrentPressFileCleanly) {
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    execl(HAPTEX_BINARY, HAPTEX_BINARY, "capture", "record", "--device", "fake:size=320x240", "--material", "Cork",
+          "--presses", "100", "-o", session_.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // In real time, a press starts every 1.5 s after the first second; interrupt during the second press.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!fs::exists(session_ + "/press_1.h5.partial") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(fs::exists(session_ + "/press_1.h5.partial")) << "the second press never started";
+  kill(child, SIGINT);
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_FALSE(fs::exists(session_ + "/press_1.h5.partial"));
+  ASSERT_TRUE(fs::exists(session_ + "/press_1.h5"));
+  EXPECT_EQ(h5::File::open(session_ + "/press_1.h5").root().attr_string("ended_by"), "interrupted");
+  const nlohmann::json m = manifest();
+  EXPECT_EQ(m["ended_by"], "interrupted");
+  EXPECT_EQ(m["presses"].size(), 2u);
+}
+
+TEST_F(RecordCli, RefusesTheMetadataNode) {
+  expect_refused(record("fake:lockstep,metadata"), {"/dev/video1", "metadata node"});
+  EXPECT_FALSE(fs::exists(session_)) << "nothing was created";
+}
+
+TEST_F(RecordCli, RefusesAMissingNode) {
+  expect_refused(record("/dev/video99"), {"/dev/video99: no such video device", "haptex capture devices"});
+}
+
+TEST_F(RecordCli, RefusesAFormatTheSensorLacks) {
+  expect_refused(record(kFake, {"--size", "640x480"}), {"640x480 is not offered in MJPG (offered: 320x240)", "--size"});
+  expect_refused(record(kFake, {"--fps", "60"}), {"60 fps is not offered", "--fps"});
+}
+
+TEST_F(RecordCli, RefusesUnknownControlsAndOutOfRangeValues) {
+  expect_refused(record(kFake, {"--control", "exposure_magic=3"}), {"unknown control name"});
+  expect_refused(record(kFake, {"--control", "gain=1000"}), {"gain", "outside the control's range 0..100"});
+}
+
+TEST_F(RecordCli, RefusesAFolderHoldingASession) {
+  ASSERT_EQ(record(kFake, {"--presses", "1"}).exit_code, 0);
+  const auto before = fs::last_write_time(session_ + "/press_0.h5");
+  const CommandResult r = record(kFake, {"--presses", "1"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("already holds a capture session"), std::string::npos) << r.err;
+  EXPECT_EQ(fs::last_write_time(session_ + "/press_0.h5"), before);
+  EXPECT_EQ(record(kFake, {"--presses", "1", "--force"}).exit_code, 0);
+}
+
+TEST_F(RecordCli, NeedsExactlyOneWayToNameTheSensor) {
+  CommandResult r = run_haptex({"capture", "record", "--material", "Cork", "-o", session_});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--device /dev/videoN or --serial S"), std::string::npos) << r.err;
+  r = run_haptex({"capture", "record", "--device", kFake, "--serial", "X", "--material", "Cork", "-o", session_});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  r = run_haptex({"capture", "record", "--serial", "NOPE-0000", "--material", "Cork", "-o", session_});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no connected tactile sensor has this serial"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace haptex::test
