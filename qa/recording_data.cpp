@@ -1,0 +1,99 @@
+#include "qa/recording_data.hpp"
+
+#include "core/error.hpp"
+#include "qa/thresholds.hpp"
+
+namespace haptex::qa {
+namespace {
+
+template <typename T>
+std::optional<T> optional_attr(const h5::Node& node, const char* name) {
+  if (!node.has_attr(name)) return std::nullopt;
+  try {
+    if constexpr (std::is_same_v<T, double>) return node.attr_double(name);
+    else if constexpr (std::is_same_v<T, std::int64_t>) return node.attr_int(name);
+    else return node.attr_string(name);
+  } catch (const Error&) {
+    return std::nullopt;  // wrong type: layout.dtype reports it
+  }
+}
+
+Signal read_signal(const h5::Group& group, const std::string& name, std::size_t columns,
+                   std::optional<std::size_t> rows) {
+  Signal s;
+  s.columns = columns;
+  if (!group.has_dataset(name)) {
+    s.problem = "missing";
+    return s;
+  }
+  const h5::Dataset d = group.open_dataset(name);
+  const h5::Shape shape = d.shape();
+  const bool shape_ok = columns == 1 ? shape.size() == 1 : shape.size() == 2 && shape[1] == columns;
+  if (!shape_ok || (rows && shape[0] != *rows)) {
+    s.problem = "unexpected shape";
+    return s;
+  }
+  const std::string dtype = d.dtype();
+  if (dtype.rfind("float", 0) != 0 && dtype.rfind("int", 0) != 0 && dtype.rfind("uint", 0) != 0) {
+    s.problem = "not numeric (" + dtype + ")";
+    return s;
+  }
+  s.rows = shape[0];
+  s.values = d.read<double>();
+  return s;
+}
+
+}  // namespace
+
+const std::vector<SignalSpec> kSignalSpecs = {
+    {"accel", 1, false},       {"accel_xyz", 3, false},        {"force_normal", 1, false},
+    {"force_normal_lp", 1, false}, {"speed", 1, false},        {"speed_lp", 1, false},
+    {"force_tangential", 1, true}, {"position", 3, true},
+};
+
+std::vector<double> Signal::column(std::size_t c) const {
+  std::vector<double> out(rows);
+  for (std::size_t i = 0; i < rows; ++i) out[i] = values[i * columns + c];
+  return out;
+}
+
+double LoadedRecording::analysis_rate() const {
+  return sample_rate_hz && *sample_rate_hz > 0 ? *sample_rate_hz : kSampleRateHz;
+}
+
+std::vector<std::string> recording_paths(const h5::Group& root) {
+  std::vector<std::string> paths;
+  if (!root.has_group("materials")) return paths;
+  const h5::Group materials = root.open_group("materials");
+  for (const auto& id : materials.children()) {
+    if (!materials.has_group(id)) continue;
+    const h5::Group material = materials.open_group(id);
+    if (!material.has_group("recordings")) continue;
+    const h5::Group recordings = material.open_group("recordings");
+    for (const auto& k : recordings.children())
+      if (recordings.has_group(k)) paths.push_back("/materials/" + id + "/recordings/" + k);
+  }
+  return paths;
+}
+
+LoadedRecording load_recording(const h5::Group& root, const std::string& path) {
+  const h5::Group group = root.open_group(path.substr(1));
+  LoadedRecording r;
+  r.path = path;
+  r.material = path.substr(11, path.find('/', 11) - 11);
+  r.sample_rate_hz = optional_attr<double>(group, "sample_rate_hz");
+  r.duration_s = optional_attr<double>(group, "duration_s");
+  r.samples = optional_attr<std::int64_t>(group, "samples");
+  r.source_sha256 = optional_attr<std::string>(group, "source_sha256");
+  // Rows: the recording's `samples`; without it, whatever `accel` has (layout.required reports it).
+  std::optional<std::size_t> rows;
+  if (r.samples && *r.samples >= 0) rows = std::size_t(*r.samples);
+  for (const auto& spec : kSignalSpecs) {
+    Signal s = read_signal(group, spec.name, spec.columns, rows);
+    if (!rows && s.ok()) rows = s.rows;
+    r.signals.emplace(spec.name, std::move(s));
+  }
+  return r;
+}
+
+}  // namespace haptex::qa

@@ -1,0 +1,90 @@
+#pragma once
+// Every threshold `haptex qa` applies, with the reason for its value. docs/qa.md quotes them.
+#include <cstddef>
+
+namespace haptex::qa {
+
+// ---- recordings (DESIGN.md section 3)
+
+// The only rate the model, the filters and the window table are defined for.
+inline constexpr double kSampleRateHz = 10000.0;
+// One model window: 10 action samples ending at t plus 1000 target samples from t: [t - 9, t + 1000).
+inline constexpr std::size_t kWindowSpan = 1009;
+// `haptex split` cuts every recording into 25 sections (DESIGN.md section 6); a window must fit in one.
+inline constexpr std::size_t kDefaultSections = 25;
+// A recording shorter than this cannot hold a single window in one of the 25 sections.
+inline constexpr std::size_t kShortRecordingSamples = kDefaultSections * kWindowSpan;
+
+// Clipping: an accelerometer driven past its range repeats its rail value. A flat top is a run of at
+// least this many identical samples at the channel's maximum or minimum; free vibration at 10 kHz
+// reaches its extreme in one or two samples.
+inline constexpr std::size_t kClipRunSamples = 3;
+// ... and the channel is clipped when more than this share of its samples sit in flat tops
+// (0.1%: 10 samples per second of recording, many separate rail hits, not one coincidence).
+inline constexpr double kClipMaxShare = 0.001;
+
+// Normal force of a hand-held tool stroke: HaTT strokes stay under about 5 N. Below -0.5 N is a load
+// cell offset or sign error; above 20 N is a units mistake (gram-force, kN) more than a stroke; a
+// recording that never exceeds 0.05 N never touched the surface.
+inline constexpr double kForceMinN = -0.5;
+inline constexpr double kForceMaxN = 20.0;
+inline constexpr double kForcePeakAtLeastN = 0.05;
+// Tangential speed is a magnitude: below -1 mm/s is a sign error; HaTT strokes stay under about
+// 600 mm/s and 2000 mm/s is beyond any hand stroke; a peak under 5 mm/s means no stroke (or m/s).
+inline constexpr double kSpeedMinMmS = -1.0;
+inline constexpr double kSpeedMaxMmS = 2000.0;
+inline constexpr double kSpeedPeakAtLeastMmS = 5.0;
+
+// Acceleration above 100 Hz is what the model predicts (its bins reach 1000 Hz). The band 100-1000 Hz
+// must hold at least 1% of the acceleration's power (texture vibration puts tens of percent there) and
+// at least 0.001 m/s^2 RMS (a MEMS accelerometer's noise floor alone gives ~0.01 m/s^2).
+inline constexpr double kAccelBandLowHz = 100.0;
+inline constexpr double kAccelBandHighHz = 1000.0;
+inline constexpr double kAccelBandMinShare = 0.01;
+inline constexpr double kAccelBandMinRms = 0.001;
+
+// Low-pass filtering (4th-order Butterworth at 20 Hz, zero phase): above 40 Hz it removes at least
+// 48 dB of power (|H|^4 <= 1.5e-5 at 40 Hz, far less higher up). The low-passed signal's power above
+// 40 Hz must be at most 1e-5 of its own power (mean removed).
+inline constexpr double kFilterCheckHz = 40.0;
+inline constexpr double kLowpassMaxShare = 1e-5;
+// The raw signals must keep what the filter removes: a measured force or speed has sensor noise and
+// vibration ripple above 40 Hz of at least 1e-8 of its power (a 0.1 N rms force with 10 uN of noise,
+// far below any load cell's; the 20 Hz filter leaves ~1e-10);
+// a raw signal with less was low-passed itself.
+inline constexpr double kRawMinShare = 1e-8;
+
+// ---- GelSight presses
+
+// The reference must show no contact: its contact score against the median of all references of the
+// same size (same sensor) stays under the press's own contact trigger (stored as `trigger`).
+// At least this many presses are needed for a meaningful median.
+inline constexpr std::size_t kMinReferencesForMedian = 3;
+// The peak frame, scored against the reference with the press's pixel threshold, must reach this
+// many times the press's contact trigger (the trigger is 3 x the noise of the no-contact frames).
+inline constexpr double kPeakOverTrigger = 2.0;
+// A frame is saturated when more than 2% of its pixels have a channel at 255 (overexposed LEDs
+// flatten the shading that encodes the surface).
+inline constexpr int kSaturatedLevel = 255;
+inline constexpr double kSaturatedMaxShare = 0.02;
+// A frame is blurred when the variance of its grey Laplacian is under half the median over the
+// file's no-contact references of the same size (same optics): contact only adds edges, so a sharp
+// press frame never falls that low; motion blur or a lost focus does.
+inline constexpr double kBlurMinRatio = 0.5;
+// Presses per material: 3 train, 1 val, 1 test (DESIGN.md section 6).
+inline constexpr std::size_t kPressesPerMaterial = 5;
+
+// ---- dataset and split
+
+inline constexpr std::size_t kActionSamples = 10;
+inline constexpr std::size_t kTargetSamples = 1000;
+inline constexpr std::size_t kTargetBins = 100;
+// Cached action and target values are float32 copies of float64 computations: they must agree to
+// 1e-4 of the largest value of the recording's signal (float32 rounding is 6e-8).
+inline constexpr double kCacheTolerance = 1e-4;
+// Val and test windows are checked for coverage against the manifest's own min_coverage; the
+// coverage the manifest records must match the recomputed one to this much (the split tool and qa
+// may break ties on the hull's edge differently).
+inline constexpr double kCoverageRecordedTolerance = 0.02;
+
+}  // namespace haptex::qa

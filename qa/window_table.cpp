@@ -1,0 +1,88 @@
+#include "qa/window_table.hpp"
+
+#include "core/error.hpp"
+
+namespace haptex::qa {
+namespace {
+
+template <typename T>
+bool read_column(const h5::Group& windows, const char* name, std::vector<T>& out, std::string& problem) {
+  if (!windows.has_dataset(name)) {
+    problem = "/windows/" + std::string(name) + " is missing";
+    return false;
+  }
+  const h5::Dataset d = windows.open_dataset(name);
+  if (d.shape().size() != 1 || d.dtype() == "string") {
+    problem = "/windows/" + std::string(name) + " is not a column of numbers";
+    return false;
+  }
+  out = d.read<T>();
+  return true;
+}
+
+bool read_matrix(const h5::Group& windows, const char* name, std::size_t rows, std::vector<float>& out,
+                 std::size_t& width) {
+  if (!windows.has_dataset(name)) return false;
+  const h5::Dataset d = windows.open_dataset(name);
+  const h5::Shape shape = d.shape();
+  if (shape.size() != 2 || shape[0] != rows || d.dtype().rfind("float", 0) != 0) return false;
+  width = shape[1];
+  out = d.read<float>();
+  return true;
+}
+
+std::optional<std::int64_t> int_attr(const h5::Node& node, const char* name) {
+  if (!node.has_attr(name)) return std::nullopt;
+  try {
+    return node.attr_int(name);
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+std::optional<WindowTable> load_window_table(const h5::Group& root, std::string& problem) {
+  if (!root.has_group("windows")) {
+    problem = "/windows is missing";
+    return std::nullopt;
+  }
+  const h5::Group windows = root.open_group("windows");
+  WindowTable t;
+  if (!windows.has_dataset("materials") || windows.open_dataset("materials").dtype() != "string") {
+    problem = "/windows/materials is missing or not strings";
+    return std::nullopt;
+  }
+  t.materials = windows.open_dataset("materials").read_strings();
+  if (!read_column(windows, "material", t.material, problem) || !read_column(windows, "recording", t.recording, problem) ||
+      !read_column(windows, "start", t.start, problem))
+    return std::nullopt;
+  if (t.material.size() != t.start.size() || t.recording.size() != t.start.size()) {
+    problem = "/windows/material, recording and start differ in length";
+    return std::nullopt;
+  }
+  const auto stride = int_attr(windows, "stride"), action = int_attr(windows, "action_samples"),
+             window = int_attr(windows, "window_samples");
+  if (!stride || !action || !window || *stride <= 0 || *action <= 0 || *window <= 0) {
+    problem = "/windows has no positive integer stride, action_samples and window_samples attributes";
+    return std::nullopt;
+  }
+  t.stride = *stride;
+  t.action_samples = *action;
+  t.window_samples = *window;
+  if (!read_matrix(windows, "action", t.size(), t.action, t.action_width)) t.action.clear(), t.action_width = 0;
+  if (!read_matrix(windows, "target", t.size(), t.target, t.target_width)) t.target.clear(), t.target_width = 0;
+  return t;
+}
+
+std::optional<std::int64_t> recording_samples(const h5::Group& root, const std::string& material, std::int32_t recording) {
+  const std::string path = "materials/" + material + "/recordings/" + std::to_string(recording);
+  if (material.empty() || material.find('/') != std::string::npos || recording < 0 || !root.has_group("materials") ||
+      !root.open_group("materials").has_group(material) ||
+      !root.open_group("materials/" + material).has_group("recordings") ||
+      !root.open_group("materials/" + material + "/recordings").has_group(std::to_string(recording)))
+    return std::nullopt;
+  return int_attr(root.open_group(path), "samples");
+}
+
+}  // namespace haptex::qa

@@ -1,0 +1,34 @@
+#pragma once
+// The /windows table of a dataset file (schemas/hdf5-layout.md "Dataset file"): which material,
+// recording and start sample each model window has, with its cached action and target.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/h5/node.hpp"
+
+namespace haptex::qa {
+
+struct WindowTable {
+  std::vector<std::string> materials;    // material ids, indexed by `material`
+  std::vector<std::int32_t> material, recording;
+  std::vector<std::int64_t> start;
+  std::vector<float> action;             // W x action_width (empty when unreadable)
+  std::vector<float> target;             // W x target_width (empty when unreadable)
+  std::size_t action_width = 0, target_width = 0;
+  std::int64_t stride = 0, action_samples = 0, window_samples = 0;
+
+  std::size_t size() const { return start.size(); }
+  // The first and one-past-last sample window w uses: [t - (action_samples - 1), t + window_samples).
+  std::int64_t first_sample(std::size_t w) const { return start[w] - (action_samples - 1); }
+  std::int64_t end_sample(std::size_t w) const { return start[w] + window_samples; }
+};
+
+// The table, or nullopt with `problem` saying what is missing or inconsistent (layout.* reports it).
+std::optional<WindowTable> load_window_table(const h5::Group& root, std::string& problem);
+
+// The `samples` attribute of /materials/{id}/recordings/{k}, when that recording exists.
+std::optional<std::int64_t> recording_samples(const h5::Group& root, const std::string& material, std::int32_t recording);
+
+}  // namespace haptex::qa

@@ -1,0 +1,37 @@
+// The good files the pipeline makes pass every check (the mutation tests start from them).
+#include <gtest/gtest.h>
+
+#include "qa/run_qa.hpp"
+#include "tests/qa/qa_fixture.hpp"
+
+namespace haptex::test {
+namespace {
+
+void expect_clean(const qa::Report& report, qa::FileKind kind, std::size_t checks) {
+  EXPECT_EQ(report.kind, kind);
+  EXPECT_EQ(report.verdict(), "clean") << describe(report);
+  EXPECT_EQ(report.checks.size(), checks);
+  for (const auto& c : report.checks) {
+    EXPECT_EQ(c.status, qa::Status::pass) << c.id << ": " << c.message;
+    std::cout << "    " << c.id << ": " << c.message << "\n";
+  }
+}
+
+TEST(GoodFiles, RecordingsPassEveryCheck) {
+  expect_clean(qa::run_qa({qa_files().recordings, {}}), qa::FileKind::recordings, 15);
+}
+
+TEST(GoodFiles, GelsightPassesEveryCheck) {
+  expect_clean(qa::run_qa({qa_files().gelsight, {}}), qa::FileKind::gelsight, 10);
+}
+
+TEST(GoodFiles, DatasetWithItsSplitPassesEveryCheck) {
+  expect_clean(qa::run_qa({qa_files().dataset, qa_files().split}), qa::FileKind::dataset, 4 + 11 + 6 + 2 + 9);
+}
+
+TEST(GoodFiles, SplitManifestAloneFindsItsDataset) {
+  expect_clean(qa::run_qa({qa_files().split, {}}), qa::FileKind::split, 9);
+}
+
+}  // namespace
+}  // namespace haptex::test
