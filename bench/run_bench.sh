@@ -48,3 +48,34 @@ for name in ("BM_PiecewiseArRendering", "BM_PiecewiseArRenderingHattBook"):
         print(f"{name}: {b['items_per_second']/1e6:.2f} M samples/s on one core")
 print(f"haptex synth materials (default 8 materials, 2 x 10 s recordings and 5 presses each): {end - start:.1f} s on all cores")
 PY
+
+# capture: contact scoring and press-file extraction on one core, the same JPEGs through a plain
+# python3-opencv loop (absdiff, threshold, sum), and the recorder's 60 s keep-up runs on the fake camera.
+"$build/bench/bench_capture" --export-frames "$out/capture_frames"
+$one_core "$build/bench/bench_capture" --benchmark_format=json --benchmark_out="$out/capture.json" --benchmark_out_format=json >/dev/null
+$one_core /usr/bin/python3 "$(dirname "$0")/opencv_peak_loop.py" "$out/capture_frames" > "$out/opencv_loop.json"
+for mode in size=3280x2464 size=960x720,fps=30; do
+  rm -rf "$out/capture_keepup"
+  "$build/haptex" capture record --device "fake:$mode" --material Bench --presses 100000 --seconds 60 \
+    -o "$out/capture_keepup" --json > "$out/keepup_${mode%%,*}.json"
+done
+rm -rf "$out/capture_keepup" "$out/capture_frames"
+/usr/bin/python3 - "$out" <<'PY'
+import json, sys
+out = sys.argv[1]
+bench = {b["name"].replace("/real_time", ""): b for b in json.load(open(f"{out}/capture.json"))["benchmarks"]}
+py = json.load(open(f"{out}/opencv_loop.json"))
+for w, h in ((960, 720), (3280, 2464)):
+    ours_raw = bench[f"BM_ScoreDecodedFrame/{w}/{h}"]["items_per_second"]
+    ours_jpg = bench[f"BM_ScoreMjpgFrame/{w}/{h}"]["items_per_second"]
+    theirs = py[f"{w}x{h}"]
+    print(f"contact score {w}x{h}, one core: decoded frames {ours_raw:.0f} fps (python3-opencv loop {theirs['decoded_fps']:.0f}, "
+          f"x{ours_raw / theirs['decoded_fps']:.1f}); MJPG {ours_jpg:.0f} fps (python {theirs['mjpg_fps']:.0f}, x{ours_jpg / theirs['mjpg_fps']:.1f})")
+    print(f"  whole extraction of a recorded MJPG press file {w}x{h}: {bench[f'BM_ExtractPressFile/{w}/{h}']['items_per_second']:.1f} frames/s")
+for mode in ("size=3280x2464", "size=960x720"):
+    m = json.load(open(f"{out}/keepup_{mode}.json"))
+    t, s = m["totals"], m["stream"]
+    print(f"recorder keep-up, fake {s['fourcc']} {s['width']}x{s['height']} at {s['granted_fps']:g} fps for {t['wall_seconds']:.0f} s: "
+          f"{t['frames']} frames, {t['dropped_frames']} dropped, {len(m['presses'])} presses, CPU {100 * t['cpu_seconds'] / t['wall_seconds']:.0f}% "
+          f"of one core (fake camera included), deepest queue {t['max_queue_depth']} frames")
+PY
