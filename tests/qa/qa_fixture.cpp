@@ -189,4 +189,12 @@ std::string describe(const qa::Report& report) {
   return text.empty() ? "  (no check failed)\n" : text;
 }
 
+void expect_only(const qa::Report& report, const std::string& id) {
+  EXPECT_EQ(failed_ids(report), std::set<std::string>{id}) << "failed checks:\n" << describe(report);
+  const qa::CheckResult* check = report.find(id);
+  ASSERT_NE(check, nullptr) << id << " did not run";
+  EXPECT_FALSE(check->where.empty()) << id << " names no place";
+  EXPECT_FALSE(check->hint.empty());
+}
+
 }  // namespace haptex::test

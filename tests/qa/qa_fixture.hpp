@@ -25,3 +25,10 @@ std::set<std::string> failed_ids(const qa::Report& report);
 std::string describe(const qa::Report& report);  // every failed check with its message, for test output
 
 }  // namespace haptex::test
+
+namespace haptex::test {
+
+// Expects exactly one failed check, `id` (and prints every failure otherwise).
+void expect_only(const qa::Report& report, const std::string& id);
+
+}  // namespace haptex::test

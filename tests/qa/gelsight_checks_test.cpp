@@ -1,0 +1,138 @@
+// Each GelSight check fires, alone, on a copy of the good gelsight file with one defect.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "capture/image_datasets.hpp"
+#include "qa/run_qa.hpp"
+#include "tests/qa/mutations.hpp"
+#include "tests/qa/qa_fixture.hpp"
+
+namespace haptex::test {
+namespace {
+
+const std::string kPress = "materials/sandpaper_1/presses/0";
+
+class GelsightMutation : public ::testing::Test {
+ protected:
+  qa::Report qa() const { return qa::run_qa({file_, {}}); }
+  TempDir dir_;
+  std::string file_ = copy_into(dir_, qa_files().gelsight, "gelsight.h5");
+};
+
+// Every frame of an N x H x W x 3 stack through `change` (RGB in, RGB out).
+void change_frames(Edit& e, const std::string& path, const std::function<void(cv::Mat&)>& change) {
+  const h5::Shape shape = e.dataset(path).shape();
+  e.change_bytes(path, [&](std::vector<std::uint8_t>& bytes) {
+    const std::size_t frame = shape[1] * shape[2] * 3;
+    for (std::size_t i = 0; i < shape[0]; ++i) {
+      cv::Mat image(static_cast<int>(shape[1]), static_cast<int>(shape[2]), CV_8UC3, bytes.data() + i * frame);
+      change(image);
+    }
+  });
+}
+
+void replace_image(Edit& e, const std::string& path, const cv::Mat& bgr) {
+  const auto slash = path.rfind('/');
+  h5::Group g = e.group(path.substr(0, slash));
+  e.remove(path);
+  capture::write_image(g, path.substr(slash + 1), bgr, "replaced by a qa test");
+}
+
+cv::Mat image_at(const Edit& e, const std::string& path) { return capture::read_image(e.dataset(path)); }
+
+TEST_F(GelsightMutation, MissingContrastIsLayoutRequired) {
+  Edit(file_).remove(kPress + "/contrast");
+  expect_only(qa(), "layout.required");
+}
+
+TEST_F(GelsightMutation, FramesOfAnotherSizeThanTheAttributesIsLayoutShape) {
+  Edit(file_).group(kPress).set_attr("width", std::int64_t(320));
+  const qa::Report r = qa();
+  expect_only(r, "layout.shape");
+  EXPECT_NE(r.find("layout.shape")->message.find("= (H, W, 3)"), std::string::npos) << r.find("layout.shape")->message;
+}
+
+TEST_F(GelsightMutation, ReferenceTakenDuringContactIsGelsightReference) {
+  {
+    Edit e(file_);
+    // Another press's peak frame as this press's "no-contact" reference.
+    replace_image(e, kPress + "/reference", image_at(e, "materials/sandpaper_1/presses/1/peak"));
+  }
+  const qa::Report r = qa();
+  expect_only(r, "gelsight.reference");
+  EXPECT_NE(r.find("gelsight.reference")->message.find("it shows contact"), std::string::npos);
+}
+
+TEST_F(GelsightMutation, PeakWithoutContactIsGelsightPeakScore) {
+  {
+    Edit e(file_);
+    replace_image(e, kPress + "/peak", image_at(e, kPress + "/reference"));
+  }
+  const qa::Report r = qa();
+  expect_only(r, "gelsight.peak_score");
+  EXPECT_EQ(r.find("gelsight.peak_score")->where, std::vector<std::string>{"/" + kPress + "/peak"});
+}
+
+TEST_F(GelsightMutation, OverexposedFramesAreGelsightSaturation) {
+  {
+    Edit e(file_);
+    // An LED hot spot: a tenth of every frame at full white.
+    change_frames(e, kPress + "/frames", [](cv::Mat& rgb) { cv::circle(rgb, {30, 30}, 25, cv::Scalar(255, 255, 255), -1); });
+  }
+  const qa::Report r = qa();
+  expect_only(r, "gelsight.saturation");
+  EXPECT_EQ(r.find("gelsight.saturation")->where.size(), 12u);
+}
+
+TEST_F(GelsightMutation, BlurredFramesAreGelsightBlurAWarning) {
+  {
+    Edit e(file_);
+    change_frames(e, kPress + "/frames", [](cv::Mat& rgb) { cv::GaussianBlur(rgb, rgb, {0, 0}, 2.0); });
+  }
+  const qa::Report r = qa();
+  expect_only(r, "gelsight.blur");
+  EXPECT_EQ(r.verdict(), "warnings");
+}
+
+TEST_F(GelsightMutation, OnePressAtHalfSizeIsGelsightResolution) {
+  {
+    Edit e(file_);
+    const std::string press = "materials/woven_1/presses/4";
+    auto half = [](const cv::Mat& m) {
+      cv::Mat out;
+      cv::resize(m, out, {m.cols / 2, m.rows / 2}, 0, 0, cv::INTER_AREA);
+      return out;
+    };
+    const cv::Mat reference = half(image_at(e, press + "/reference")), peak = half(image_at(e, press + "/peak"));
+    const h5::Shape shape = e.dataset(press + "/frames").shape();
+    std::vector<cv::Mat> frames;
+    change_frames(e, press + "/frames", [&](cv::Mat& rgb) {
+      cv::Mat bgr;
+      cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+      frames.push_back(half(bgr));
+    });
+    replace_image(e, press + "/reference", reference);
+    replace_image(e, press + "/peak", peak);
+    e.remove(press + "/frames");
+    h5::Group g = e.group(press);
+    capture::write_image_stack(g, "frames", frames, "resized by a qa test");
+    g.set_attr("width", std::int64_t(reference.cols));
+    g.set_attr("height", std::int64_t(reference.rows));
+    ASSERT_EQ(shape[0], frames.size());
+  }
+  const qa::Report r = qa();
+  expect_only(r, "gelsight.resolution");
+  EXPECT_NE(r.find("gelsight.resolution")->message.find("160x120 (4), 80x60 (1)"), std::string::npos)
+      << r.find("gelsight.resolution")->message;
+}
+
+TEST_F(GelsightMutation, FourPressesAreGelsightPressCount) {
+  Edit(file_).remove("materials/woven_1/presses/4");
+  const qa::Report r = qa();
+  expect_only(r, "gelsight.press_count");
+  EXPECT_NE(r.find("gelsight.press_count")->message.find("4 presses, at least 5"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace haptex::test

@@ -1,0 +1,64 @@
+#include "tests/qa/mutations.hpp"
+
+#include <fstream>
+#include <stdexcept>
+
+namespace haptex::test {
+
+h5::Group Edit::group(const std::string& path) const { return path.empty() ? root() : root().open_group(path); }
+
+h5::Dataset Edit::dataset(const std::string& path) const {
+  const auto slash = path.rfind('/');
+  return group(slash == std::string::npos ? "" : path.substr(0, slash)).open_dataset(path.substr(slash + 1));
+}
+
+void Edit::remove(const std::string& path) {
+  const auto at = path.find('@');
+  if (at != std::string::npos) {
+    const std::string owner = path.substr(0, at).empty() ? "/" : "/" + path.substr(0, at);
+    if (H5Adelete_by_name(root().id(), owner.c_str(), path.substr(at + 1).c_str(), H5P_DEFAULT) < 0)
+      throw std::runtime_error("cannot delete attribute " + path);
+    return;
+  }
+  if (H5Ldelete(root().id(), ("/" + path).c_str(), H5P_DEFAULT) < 0) throw std::runtime_error("cannot delete " + path);
+}
+
+void Edit::copy(const std::string& from, const std::string& to) {
+  if (H5Ocopy(root().id(), ("/" + from).c_str(), root().id(), ("/" + to).c_str(), H5P_DEFAULT, H5P_DEFAULT) < 0)
+    throw std::runtime_error("cannot copy " + from + " to " + to);
+}
+
+void Edit::change_floats(const std::string& path, const std::function<void(std::vector<float>&)>& change) {
+  const h5::Dataset d = dataset(path);
+  std::vector<float> values = d.read<float>();
+  change(values);
+  if (H5Dwrite(d.id(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+    throw std::runtime_error("cannot write " + path);
+}
+
+void Edit::change_bytes(const std::string& path, const std::function<void(std::vector<std::uint8_t>&)>& change) {
+  const h5::Dataset d = dataset(path);
+  std::vector<std::uint8_t> values = d.read<std::uint8_t>();
+  change(values);
+  if (H5Dwrite(d.id(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+    throw std::runtime_error("cannot write " + path);
+}
+
+std::vector<std::pair<std::string, std::string>> Edit::string_attrs(const h5::Dataset& d) const {
+  std::vector<std::pair<std::string, std::string>> attrs;
+  for (const auto& name : d.attr_names()) attrs.emplace_back(name, d.attr_string(name));
+  return attrs;
+}
+
+void Edit::restore(h5::Dataset d, const std::vector<std::pair<std::string, std::string>>& attrs) const {
+  for (const auto& [name, value] : attrs) d.set_attr(name, value);
+}
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+void write_json(const std::string& path, const nlohmann::json& doc) { std::ofstream(path) << doc.dump(2); }
+
+}  // namespace haptex::test

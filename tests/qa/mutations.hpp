@@ -1,0 +1,49 @@
+#pragma once
+// Small edits of a copied haptex file through core/h5 (plus the two HDF5 calls core/h5 has no
+// wrapper for: deleting and copying objects), and of a copied split manifest.
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/h5/file.hpp"
+
+namespace haptex::test {
+
+// Opens a file for writing; everything is flushed when the object goes.
+class Edit {
+ public:
+  explicit Edit(const std::string& path) : file_(h5::File::open(path, true)) {}
+  ~Edit() { file_.close(); }
+  h5::Group root() const { return file_.root(); }
+  h5::Group group(const std::string& path) const;  // path without the leading '/'
+  h5::Dataset dataset(const std::string& path) const;
+
+  void remove(const std::string& path);                    // unlinks a group, dataset or attribute ("a/b@name")
+  void copy(const std::string& from, const std::string& to);  // a group or dataset, with everything in it
+  // Reads a numeric dataset as float (or uint8), lets `change` edit the values, writes them back in place.
+  void change_floats(const std::string& path, const std::function<void(std::vector<float>&)>& change);
+  void change_bytes(const std::string& path, const std::function<void(std::vector<std::uint8_t>&)>& change);
+  // Replaces a dataset by new values and shape (and dtype T), keeping its string attributes.
+  template <typename T>
+  void replace(const std::string& path, const std::vector<T>& values, const h5::Shape& shape);
+
+ private:
+  std::vector<std::pair<std::string, std::string>> string_attrs(const h5::Dataset& d) const;
+  void restore(h5::Dataset d, const std::vector<std::pair<std::string, std::string>>& attrs) const;
+  h5::File file_;
+};
+
+template <typename T>
+void Edit::replace(const std::string& path, const std::vector<T>& values, const h5::Shape& shape) {
+  const auto attrs = string_attrs(dataset(path));
+  remove(path);
+  const auto slash = path.rfind('/');
+  h5::Group parent = group(path.substr(0, slash));
+  restore(parent.write_array<T>(path.substr(slash + 1), values, shape), attrs);
+}
+
+nlohmann::json read_json(const std::string& path);
+void write_json(const std::string& path, const nlohmann::json& doc);
+
+}  // namespace haptex::test

@@ -1,0 +1,229 @@
+// Each recording check fires, alone, on a copy of the good recordings file with one defect.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/signal/butterworth.hpp"
+#include "core/signal/sosfilt.hpp"
+#include "qa/run_qa.hpp"
+#include "tests/qa/mutations.hpp"
+#include "tests/qa/qa_fixture.hpp"
+
+namespace haptex::test {
+namespace {
+
+const std::string kRecording = "materials/sandpaper_1/recordings/0";
+const std::string kOther = "materials/woven_1/recordings/0";
+
+class RecordingsMutation : public ::testing::Test {
+ protected:
+  qa::Report qa() const { return qa::run_qa({file_, {}}); }
+  TempDir dir_;  // before file_: members are made in this order
+  std::string file_ = copy_into(dir_, qa_files().recordings, "recordings.h5");
+};
+
+TEST_F(RecordingsMutation, MissingDatasetIsLayoutRequired) {
+  Edit(file_).remove(kRecording + "/speed_lp");
+  const qa::Report r = qa();
+  expect_only(r, "layout.required");
+  EXPECT_NE(r.find("layout.required")->message.find("/" + kRecording + "/speed_lp: missing"), std::string::npos)
+      << r.find("layout.required")->message;
+  // The filter check could not look at it, and says so.
+  EXPECT_NE(r.find("filter.lowpass")->message.find("not checked"), std::string::npos);
+}
+
+TEST_F(RecordingsMutation, MissingRootAttributeIsLayoutRequired) {
+  Edit(file_).remove("@created_utc");
+  expect_only(qa(), "layout.required");
+}
+
+TEST_F(RecordingsMutation, Float64AccelerationIsLayoutDtype) {
+  {
+    Edit e(file_);
+    const auto accel = e.dataset(kRecording + "/accel").read<double>();
+    e.replace<double>(kRecording + "/accel", accel, {accel.size()});
+  }
+  const qa::Report r = qa();
+  expect_only(r, "layout.dtype");
+  EXPECT_NE(r.find("layout.dtype")->message.find("dtype float64, expected float32"), std::string::npos);
+}
+
+TEST_F(RecordingsMutation, IntegerSampleRateAttributeIsLayoutDtype) {
+  Edit(file_).group(kRecording).set_attr("sample_rate_hz", std::int64_t(10000));
+  expect_only(qa(), "layout.dtype");
+}
+
+TEST_F(RecordingsMutation, TwoColumnPositionIsLayoutShape) {
+  {
+    Edit e(file_);
+    const auto position = e.dataset(kRecording + "/position").read<float>();
+    std::vector<float> xy;
+    for (std::size_t i = 0; i < position.size(); i += 3) xy.insert(xy.end(), {position[i], position[i + 1]});
+    e.replace<float>(kRecording + "/position", xy, {xy.size() / 2, 2});
+  }
+  const qa::Report r = qa();
+  expect_only(r, "layout.shape");
+  EXPECT_NE(r.find("layout.shape")->message.find("expected (30000, 3) = (N, 3)"), std::string::npos)
+      << r.find("layout.shape")->message;
+}
+
+TEST_F(RecordingsMutation, AccelerationInGIsLayoutUnits) {
+  Edit(file_).dataset(kRecording + "/accel").set_attr("units", "g");
+  const qa::Report r = qa();
+  expect_only(r, "layout.units");
+  EXPECT_NE(r.find("layout.units")->message.find("units 'g', expected 'm/s^2'"), std::string::npos);
+}
+
+TEST_F(RecordingsMutation, NaNInOneAxisIsSignalNan) {
+  Edit(file_).change_floats(kRecording + "/accel_xyz", [](std::vector<float>& v) { v[3 * 100 + 1] = NAN; });
+  const qa::Report r = qa();
+  expect_only(r, "signal.nan");
+  EXPECT_NE(r.find("signal.nan")->message.find("accel_xyz has 1 NaN/Inf values, the first at sample 100"),
+            std::string::npos)
+      << r.find("signal.nan")->message;
+}
+
+TEST_F(RecordingsMutation, InfInForceIsSignalNan) {
+  Edit(file_).change_floats(kRecording + "/force_tangential", [](std::vector<float>& v) { v[7] = INFINITY; });
+  expect_only(qa(), "signal.nan");
+}
+
+TEST_F(RecordingsMutation, FiveKilohertzIsSignalSampleRate) {
+  {
+    Edit e(file_);
+    h5::Group g = e.group(kRecording);
+    g.set_attr("sample_rate_hz", 5000.0);
+    g.set_attr("duration_s", double(g.attr_int("samples")) / 5000.0);  // consistent with its own rate
+  }
+  expect_only(qa(), "signal.sample_rate");
+}
+
+TEST_F(RecordingsMutation, WrongDurationIsSignalDuration) {
+  Edit(file_).group(kRecording).set_attr("duration_s", 6.0);
+  const qa::Report r = qa();
+  expect_only(r, "signal.duration");
+  EXPECT_NE(r.find("signal.duration")->message.find("30000 samples at 10000 Hz last 3 s"), std::string::npos)
+      << r.find("signal.duration")->message;
+}
+
+TEST_F(RecordingsMutation, TwoSecondRecordingIsSignalShortAWarning) {
+  constexpr std::size_t kKeep = 20000;
+  {
+    Edit e(file_);
+    h5::Group g = e.group(kRecording);
+    for (const auto& name : g.children()) {
+      const h5::Dataset d = g.open_dataset(name);
+      h5::Shape shape = d.shape();
+      const std::size_t columns = shape.size() == 2 ? shape[1] : 1;
+      std::vector<float> values = d.read<float>();
+      values.resize(kKeep * columns);
+      shape[0] = kKeep;
+      e.replace<float>(kRecording + "/" + name, values, shape);
+    }
+    g.set_attr("samples", std::int64_t(kKeep));
+    g.set_attr("duration_s", double(kKeep) / 10000.0);
+  }
+  const qa::Report r = qa();
+  expect_only(r, "signal.short");
+  EXPECT_EQ(r.find("signal.short")->severity, qa::Severity::warning);
+  EXPECT_EQ(r.verdict(), "warnings");
+  EXPECT_EQ(r.errors(), 0);
+}
+
+TEST_F(RecordingsMutation, RailedAxisIsSignalClipping) {
+  Edit(file_).change_floats(kRecording + "/accel_xyz", [](std::vector<float>& v) {
+    float peak = 0;
+    for (std::size_t i = 0; i < v.size(); i += 3) peak = std::max(peak, std::abs(v[i]));
+    const float rail = 0.3f * peak;  // an accelerometer range far too small for the stroke
+    for (std::size_t i = 0; i < v.size(); i += 3) v[i] = std::clamp(v[i], -rail, rail);
+  });
+  const qa::Report r = qa();
+  expect_only(r, "signal.clipping");
+  EXPECT_NE(r.find("signal.clipping")->message.find("accel_xyz[:, 0]"), std::string::npos) << r.find("signal.clipping")->message;
+}
+
+TEST_F(RecordingsMutation, ForceInGramsIsSignalForceRange) {
+  {
+    Edit e(file_);
+    for (const char* name : {"/force_normal", "/force_normal_lp"})
+      e.change_floats(kRecording + name, [](std::vector<float>& v) {
+        for (float& x : v) x *= 1000 / 9.81f;
+      });
+  }
+  const qa::Report r = qa();
+  expect_only(r, "signal.force_range");
+  EXPECT_NE(r.find("signal.force_range")->message.find("above 20 N"), std::string::npos);
+}
+
+TEST_F(RecordingsMutation, SpeedInMetresPerSecondIsSignalSpeedRange) {
+  {
+    Edit e(file_);
+    for (const char* name : {"/speed", "/speed_lp"})
+      e.change_floats(kRecording + name, [](std::vector<float>& v) {
+        for (float& x : v) x /= 1000;
+      });
+  }
+  const qa::Report r = qa();
+  expect_only(r, "signal.speed_range");
+  EXPECT_NE(r.find("signal.speed_range")->message.find("never reaching 5 mm/s"), std::string::npos);
+}
+
+TEST_F(RecordingsMutation, AccelerationLowPassedAt50HzIsSignalAccelSpectrum) {
+  Edit(file_).change_floats(kRecording + "/accel", [](std::vector<float>& v) {
+    const auto sos = signal::butter_lowpass_hz(4, 50, 10000);
+    const auto filtered = signal::sosfiltfilt(sos, std::vector<double>(v.begin(), v.end()));
+    std::copy(filtered.begin(), filtered.end(), v.begin());
+  });
+  expect_only(qa(), "signal.accel_spectrum");
+}
+
+TEST_F(RecordingsMutation, UnfilteredLowPassIsFilterLowpass) {
+  {
+    Edit e(file_);
+    const auto raw = e.dataset(kRecording + "/force_normal").read<float>();
+    e.change_floats(kRecording + "/force_normal_lp", [&](std::vector<float>& v) { v = raw; });
+  }
+  const qa::Report r = qa();
+  expect_only(r, "filter.lowpass");
+  EXPECT_NE(r.find("filter.lowpass")->message.find("force_normal_lp"), std::string::npos);
+}
+
+TEST_F(RecordingsMutation, LowPassedRawSpeedIsFilterRaw) {
+  {
+    Edit e(file_);
+    const auto lp = e.dataset(kRecording + "/speed_lp").read<float>();
+    e.change_floats(kRecording + "/speed", [&](std::vector<float>& v) { v = lp; });
+  }
+  const qa::Report r = qa();
+  expect_only(r, "filter.raw");
+  EXPECT_NE(r.find("filter.raw")->message.find("/speed: only"), std::string::npos) << r.find("filter.raw")->message;
+}
+
+TEST_F(RecordingsMutation, CopiedRecordingIsRecordingsDuplicate) {
+  Edit(file_).copy(kRecording, "materials/woven_1/recordings/1");
+  const qa::Report r = qa();
+  expect_only(r, "recordings.duplicate");
+  EXPECT_NE(r.find("recordings.duplicate")->message.find("the same source file"), std::string::npos);
+}
+
+TEST_F(RecordingsMutation, SameSourceHashIsRecordingsDuplicate) {
+  {
+    Edit e(file_);
+    e.group(kOther).set_attr("source_sha256", e.group(kRecording).attr_string("source_sha256"));
+  }
+  expect_only(qa(), "recordings.duplicate");
+}
+
+TEST_F(RecordingsMutation, SameSamplesUnderAnotherSourceIsRecordingsDuplicate) {
+  {
+    Edit e(file_);
+    e.copy(kRecording, "materials/woven_1/recordings/1");
+    e.group("materials/woven_1/recordings/1").set_attr("source_sha256", std::string(64, 'f'));
+  }
+  const qa::Report r = qa();
+  expect_only(r, "recordings.duplicate");
+  EXPECT_NE(r.find("recordings.duplicate")->message.find("the same acceleration samples"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace haptex::test
