@@ -25,6 +25,11 @@ class CaptureExtract : public CaptureSubcommand {
     app->add_option("--frames-per-press", options_.settings.frames_per_press, "The peak and its neighbours kept")
         ->capture_default_str()
         ->check(CLI::Range(1, 100));
+    app->add_option("--pixel-threshold", pixel_floor_,
+                    "Least per-pixel change that counts, in grey levels (default: 6 for lossy sources, 1 for lossless)")
+        ->check(CLI::PositiveNumber);
+    app->add_option("--trigger", trigger_floor_, "Least contact score that starts a press (default: 0.25 lossy, 0.02 lossless)")
+        ->check(CLI::PositiveNumber);
     app->add_option("--sheets", options_.sheets_dir, "Folder for the contact sheets (default: <output>_sheets)");
     app->add_flag("--no-sheets", no_sheets_, "Write no contact sheets");
     app->add_flag("--force", options_.overwrite, "Replace the output file and sheets folder if they exist");
@@ -34,6 +39,8 @@ class CaptureExtract : public CaptureSubcommand {
   int run(const GlobalOptions& global) override {
     if (!reference_.empty()) options_.reference_path = reference_;
     if (!material_.empty()) options_.material = material_;
+    if (pixel_floor_ > 0) options_.settings.pixel_floor = pixel_floor_;
+    if (trigger_floor_ > 0) options_.settings.trigger_floor = trigger_floor_;
     options_.sheets = !no_sheets_;
     options_.provenance = "haptex capture extract -o " + output_;
     for (const auto& input : inputs_) options_.provenance += " " + input;
@@ -78,6 +85,7 @@ class CaptureExtract : public CaptureSubcommand {
   std::vector<std::string> inputs_;
   std::string output_, reference_, material_;
   bool no_sheets_ = false;
+  float pixel_floor_ = 0, trigger_floor_ = 0;  // 0: the source's defaults
   capture::ExtractOptions options_;
 };
 

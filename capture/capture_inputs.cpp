@@ -16,25 +16,43 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-std::vector<std::string> sorted_entries(const std::string& dir, bool directories) {
-  std::vector<std::string> out;
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    const std::string p = entry.path().string();
-    if (directories ? entry.is_directory() : entry.is_regular_file() && (is_video_name(p) || is_press_file_name(p)))
-      out.push_back(p);
-  }
-  std::sort(out.begin(), out.end(), [](const std::string& a, const std::string& b) {
+void sort_by_name(std::vector<std::string>& paths) {
+  std::sort(paths.begin(), paths.end(), [](const std::string& a, const std::string& b) {
     return natural_less(fs::path(a).filename().string(), fs::path(b).filename().string());
   });
+}
+
+bool is_source_file(const fs::directory_entry& entry) {
+  const std::string p = entry.path().string();
+  return entry.is_regular_file() && (is_video_name(p) || is_press_file_name(p));
+}
+
+// The sources directly in a folder: video and press files, and image-sequence folders.
+std::vector<std::string> sources_in(const std::string& dir) {
+  std::vector<std::string> out;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (is_source_file(entry) || (entry.is_directory() && is_image_sequence_dir(entry.path().string())))
+      out.push_back(entry.path().string());
+  sort_by_name(out);
+  return out;
+}
+
+std::vector<std::string> subfolders(const std::string& dir) {
+  std::vector<std::string> out;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.is_directory()) out.push_back(entry.path().string());
+  sort_by_name(out);
   return out;
 }
 
 CaptureInput input_for(const std::string& path, const std::string& material_name,
                        const std::optional<std::string>& material) {
+  std::error_code ec;
   const bool press = is_press_file_name(path);
-  CaptureInput in{path, material.value_or(press ? "" : material_name),
-                  press ? CaptureInput::Kind::press_file : CaptureInput::Kind::video};
-  return in;
+  const auto kind = press ? CaptureInput::Kind::press_file
+                  : fs::is_directory(path, ec) ? CaptureInput::Kind::image_sequence
+                                               : CaptureInput::Kind::video;
+  return CaptureInput{path, material.value_or(press ? "" : material_name), kind};
 }
 
 std::string directory_name(const std::string& path) {
@@ -79,27 +97,46 @@ bool is_press_file_name(const std::string& path) {
   return ext == ".h5" || ext == ".hdf5";
 }
 
+bool is_image_name(const std::string& path) {
+  static const char* const kImage[] = {".png", ".jpg", ".jpeg", ".bmp", ".tif", ".tiff"};
+  const std::string ext = lower_extension(path);
+  return std::any_of(std::begin(kImage), std::end(kImage), [&](const char* v) { return ext == v; });
+}
+
+bool is_image_sequence_dir(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_directory(path, ec)) return false;
+  int images = 0;
+  for (const auto& entry : fs::directory_iterator(path, ec))
+    if (entry.is_regular_file() && is_image_name(entry.path().string()) && ++images >= 2) return true;
+  return false;
+}
+
 std::vector<CaptureInput> expand_capture_inputs(const std::vector<std::string>& arguments,
                                                 const std::optional<std::string>& material) {
   std::vector<CaptureInput> out;
   for (const std::string& argument : arguments) {
     std::error_code ec;
-    if (fs::is_regular_file(argument, ec)) {
-      out.push_back(input_for(argument, directory_name(fs::path(argument).parent_path().string()), material));
+    if (fs::is_regular_file(argument, ec) || is_image_sequence_dir(argument)) {  // one source
+      fs::path p = fs::path(argument).lexically_normal();
+      if (p.filename().empty()) p = p.parent_path();  // "press_0/" names press_0
+      out.push_back(input_for(argument, directory_name(p.parent_path().string()), material));
       continue;
     }
     if (!fs::is_directory(argument, ec))
       throw input_error(argument, "", "no such file or directory", "Check the path");
-    const std::vector<std::string> files = sorted_entries(argument, false);
-    if (!files.empty()) {  // one material
-      for (const auto& f : files) out.push_back(input_for(f, directory_name(argument), material));
+    const std::vector<std::string> sources = sources_in(argument);
+    if (!sources.empty()) {  // one material
+      for (const auto& s : sources) out.push_back(input_for(s, directory_name(argument), material));
       continue;
     }
-    std::size_t before = out.size();
-    for (const auto& dir : sorted_entries(argument, true))
-      for (const auto& f : sorted_entries(dir, false)) out.push_back(input_for(f, directory_name(dir), material));
+    const std::size_t before = out.size();
+    for (const auto& dir : subfolders(argument))
+      for (const auto& s : sources_in(dir)) out.push_back(input_for(s, directory_name(dir), material));
     if (out.size() == before)
-      throw input_error(argument, "", "holds no video (.avi .mkv .mp4 ...) or press file (.h5), nor folders of them",
+      throw input_error(argument, "",
+                        "holds no video (.avi .mkv .mp4 ..., or a folder of frame images), press file (.h5), "
+                        "nor folders of them",
                         "Give a folder per material with its press videos or press files, or a folder of such folders");
   }
   return out;

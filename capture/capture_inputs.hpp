@@ -1,8 +1,9 @@
 #pragma once
-// What `capture extract` was given, as a list of (material, file). A directory whose files include
-// videos or press files is one material, named by the directory; a directory of such directories is
-// several. Files are taken in file-name order, numbers compared by value (press_2 before press_10),
-// so press numbers are stable however the file system lists them.
+// What `capture extract` was given, as a list of (material, source). A source is a press file, a
+// video file, or a folder of frame images (a PNG sequence, as `haptex synth` writes press videos). A
+// folder holding sources is one material, named by the folder; a folder of such folders is several.
+// Sources are taken in name order, numbers compared by value (press_2 before press_10), so press
+// numbers are stable however the file system lists them.
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,7 +11,7 @@
 namespace haptex::capture {
 
 struct CaptureInput {
-  enum class Kind { video, press_file };
+  enum class Kind { video, image_sequence, press_file };
   std::string path;
   std::string material;  // empty for press files without --material: the file names it
   Kind kind = Kind::video;
@@ -25,5 +26,8 @@ std::vector<CaptureInput> expand_capture_inputs(const std::vector<std::string>& 
 bool natural_less(const std::string& a, const std::string& b);
 bool is_video_name(const std::string& path);
 bool is_press_file_name(const std::string& path);
+bool is_image_name(const std::string& path);
+// A folder with frame images in it (at least two).
+bool is_image_sequence_dir(const std::string& path);
 
 }  // namespace haptex::capture

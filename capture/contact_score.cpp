@@ -9,8 +9,15 @@
 namespace haptex::capture {
 namespace {
 
+// The median of a continuous image; at most about 32 000 evenly spread pixels decide it, which
+// estimates a uniform shift as well as all 126 000 of a 410 x 308 image would, in a quarter of the time.
 float median_of(const cv::Mat& values) {
-  std::vector<float> v(values.begin<float>(), values.end<float>());
+  CV_Assert(values.isContinuous());
+  const std::size_t n = values.total(), stride = std::max<std::size_t>(1, n / 32768);
+  const float* p = values.ptr<float>();
+  std::vector<float> v;
+  v.reserve(n / stride + 1);
+  for (std::size_t i = 0; i < n; i += stride) v.push_back(p[i]);
   auto middle = v.begin() + std::ptrdiff_t(v.size() / 2);
   std::nth_element(v.begin(), middle, v.end());
   return *middle;
@@ -45,6 +52,15 @@ float contact_score(const cv::Mat& image, const cv::Mat& reference, float pixel_
   cv::subtract(d, cv::Scalar(pixel_threshold), d);
   cv::threshold(d, d, 0, 0, cv::THRESH_TOZERO);
   return float(cv::mean(d)[0]);
+}
+
+ScoreSettings score_settings_for(bool lossless) {
+  ScoreSettings s;
+  if (lossless) {
+    s.pixel_floor = 1.0f;
+    s.trigger_floor = 0.02f;
+  }
+  return s;
 }
 
 ContactReference ContactReference::from_frames(const std::vector<cv::Mat>& frames, const ScoreSettings& settings) {

@@ -7,7 +7,8 @@
 //   score = mean over pixels of max(0, |d'| - t)
 //
 // t, the per-pixel noise threshold, is 4 times the reference frames' temporal noise and at least
-// 6 grey levels, so noise adds (almost) nothing while a press adds its full depth times its area.
+// 6 grey levels (compression artefacts and sensor noise a single reference image cannot show), so
+// noise adds (almost) nothing while a press adds its full depth times its area.
 // The score is in grey levels: the mean excess over the noise threshold.
 #include <vector>
 
@@ -21,6 +22,13 @@ struct ScoreSettings {
   float trigger_floor = 0.25f;     // the contact trigger never below this (score units)
   float trigger_multiplier = 3.0f; // trigger = max(trigger_floor, trigger_multiplier * worst reference frame's score)
 };
+
+// The floors for a source. Lossy compression (MJPG, MPEG-4, JPEG images) changes no-contact frames by
+// a few grey levels, and a single reference image cannot show how much, so lossy sources keep the
+// floors above (checked on the real captures in ../shared/data). Lossless sources (PNG frames, FFV1,
+// raw YUYV) with a measured reference change only by their noise, which the noise term covers: their
+// floors are 1 grey level and a trigger of 0.02, so faint presses of clean (synthetic) sensors count.
+ScoreSettings score_settings_for(bool lossless);
 
 float contact_score(const cv::Mat& scoring_image, const cv::Mat& reference, float pixel_threshold);
 

@@ -74,7 +74,9 @@ class Extraction {
   }
 
   void add(const CaptureInput& input) {
-    const auto source = input.kind == CaptureInput::Kind::press_file ? open_press_file(input.path) : open_video(input.path);
+    const auto source = input.kind == CaptureInput::Kind::press_file       ? open_press_file(input.path)
+                        : input.kind == CaptureInput::Kind::image_sequence ? open_image_sequence(input.path)
+                                                                           : open_video(input.path);
     const std::string material = input.material.empty() ? source->material() : input.material;
     const SourceScores scores = score_source(*source, settings_);
     result_.frames_scored += std::int64_t(scores.scores.size());
@@ -83,7 +85,7 @@ class Extraction {
     segmenter.release = scores.contact->release();
     const auto plans = plan_presses(scores.scores, segmenter, settings_.frames_per_press, settings_.margin_frames);
     if (plans.empty()) result_.sources_without_press.push_back(input.path);
-    const std::string sha = plans.empty() ? "" : sha256_file(input.path);
+    const std::string sha = plans.empty() ? "" : source->sha256();
     read_press_frames(*source, plans, [&](const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak) {
       write_press(material, *source, scores, sha, plan, std::move(frames), peak);
     });

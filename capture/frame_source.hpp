@@ -1,6 +1,6 @@
 #pragma once
-// Where `capture extract` reads frames from: a video file (anything OpenCV's FFmpeg backend reads) or
-// a press file. Extraction reads a source twice: once for every frame's small scoring image, then
+// Where `capture extract` reads frames from: a video file (anything OpenCV's FFmpeg backend reads), a
+// folder of frame images (a PNG sequence), or a press file. Extraction reads a source twice: once for every frame's small scoring image, then
 // once more for the few full frames it keeps, so memory stays small however long the video is.
 #include <cstdint>
 #include <functional>
@@ -21,6 +21,10 @@ class FrameSource {
   virtual const std::string& path() const = 0;
   virtual cv::Size frame_size() const = 0;
   virtual double fps() const = 0;  // 0 when the source does not say
+  // True when frames reach us exactly as the sensor (or renderer) made them: no compression artefacts.
+  virtual bool lossless() const = 0;
+  // SHA-256 of the source's bytes (for a folder of images: of the images' bytes in frame order).
+  virtual std::string sha256() const = 0;
 
   // Calls visit(index, scoring image, full frame) for every frame in order. The scoring image is
   // empty for a frame that does not decode. `full` is the decoded BGR frame when decoding it was
@@ -44,6 +48,9 @@ class FrameSource {
 
 // Throws haptex::Error (bad_input) naming the file when OpenCV cannot open it or it has no frames.
 std::unique_ptr<FrameSource> open_video(const std::string& path);
+// The images of a folder, in name order (numbers compared by value), as the frames of a video.
+// Throws haptex::Error (bad_input) naming the folder or image when one does not read or sizes differ.
+std::unique_ptr<FrameSource> open_image_sequence(const std::string& folder);
 // Throws haptex::Error (bad_input) naming the file and object when it is not a press file.
 std::unique_ptr<FrameSource> open_press_file(const std::string& path);
 

@@ -19,7 +19,8 @@ constexpr double kBlackLevel = 10.0;
 // Collects the leading no-contact frames into the reference, scoring them once it is complete.
 class LeadingReference {
  public:
-  LeadingReference(const ExtractSettings& settings, const std::string& path) : settings_(settings), path_(path) {}
+  LeadingReference(const ExtractSettings& settings, const ScoreSettings& score, const std::string& path)
+      : settings_(settings), score_(score), path_(path) {}
 
   bool complete() const { return done_; }
   bool collecting() const { return !done_; }
@@ -43,8 +44,8 @@ class LeadingReference {
  private:
   void finish(SourceScores& out) {
     done_ = true;
-    const ContactReference contact = ContactReference::from_frames(small_, settings_.score);
-    if (contact.worst_reference_score() > settings_.score.trigger_floor)
+    const ContactReference contact = ContactReference::from_frames(small_, score_);
+    if (contact.worst_reference_score() > score_.trigger_floor)
       throw input_error(path_, "frames " + std::to_string(indices_.front()) + "-" + std::to_string(indices_.back()),
                         "the first " + std::to_string(small_.size()) +
                             " frames are not a steady no-contact stretch (they differ from their mean by a score of " +
@@ -59,6 +60,7 @@ class LeadingReference {
   }
 
   const ExtractSettings& settings_;
+  ScoreSettings score_;
   std::string path_;
   cv::Mat sum_;
   std::vector<cv::Mat> small_;
@@ -77,7 +79,11 @@ std::optional<ContactReference> given_reference(FrameSource& source, const Extra
                         "Give a no-contact image taken with the same sensor and size");
     out.reference = settings.reference_image;
     out.reference_note = "image " + settings.reference_image_path;
-    return ContactReference::from_image(scoring_image(settings.reference_image), settings.score);
+    // A single image shows no noise: the lossy floors apply unless the user set others.
+    ScoreSettings floors = score_settings_for(false);
+    floors.pixel_floor = settings.pixel_floor.value_or(floors.pixel_floor);
+    floors.trigger_floor = settings.trigger_floor.value_or(floors.trigger_floor);
+    return ContactReference::from_image(scoring_image(settings.reference_image), floors);
   }
   if (const auto stored = source.stored_reference()) {
     out.reference = stored->image;
@@ -122,10 +128,18 @@ std::vector<std::int64_t> choose_window(const std::vector<float>& scores, std::i
 
 }  // namespace
 
+ScoreSettings score_settings(const FrameSource& source, const ExtractSettings& settings) {
+  ScoreSettings s = score_settings_for(source.lossless());
+  s.pixel_floor = settings.pixel_floor.value_or(s.pixel_floor);
+  s.trigger_floor = settings.trigger_floor.value_or(s.trigger_floor);
+  return s;
+}
+
 SourceScores score_source(FrameSource& source, const ExtractSettings& settings) {
   SourceScores out;
+  const ScoreSettings score = score_settings(source, settings);
   out.contact = given_reference(source, settings, out);
-  LeadingReference leading(settings, source.path());
+  LeadingReference leading(settings, score, source.path());
   const bool from_leading = !out.contact;
   bool started = false;  // past the black frames sensors send after stream start
   source.scan(

@@ -20,7 +20,8 @@ struct ExtractSettings {
   int reference_frames = 10;   // leading no-contact frames averaged into the reference
   int frames_per_press = 12;   // the peak and its neighbours
   int margin_frames = 10;      // frames before and after the contact kept in each press's score curve
-  ScoreSettings score;
+  // Floors of the score (contact_score.hpp); unset: score_settings_for(the source is lossless).
+  std::optional<float> pixel_floor, trigger_floor;
   SegmenterSettings segmenter; // its trigger and release come from the reference
   cv::Mat reference_image;     // BGR; when given it replaces the leading frames and stored references
   std::string reference_image_path;
@@ -33,6 +34,9 @@ struct SourceScores {
   std::string reference_note; // where the reference came from, for the file's attributes
   std::int64_t black_frames = 0, unreadable_frames = 0;
 };
+
+// The score settings for a source: its defaults (lossy or lossless) and the overrides.
+ScoreSettings score_settings(const FrameSource& source, const ExtractSettings& settings);
 
 // First pass. Throws haptex::Error (bad_input) naming the source when it is too short, when its
 // leading frames are not a steady no-contact stretch, or when a given reference has another size.

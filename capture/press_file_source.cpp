@@ -6,6 +6,7 @@
 #include "capture/scoring_image.hpp"
 #include "capture/vlen_bytes.hpp"
 #include "core/error.hpp"
+#include "core/sha256.hpp"
 #include "core/h5/file.hpp"
 
 namespace haptex::capture {
@@ -37,6 +38,8 @@ class PressFileSource : public FrameSource {
   }
 
   const std::string& path() const override { return path_; }
+  std::string sha256() const override { return sha256_file(path_); }
+  bool lossless() const override { return encoding_ == "png"; }
   cv::Size frame_size() const override { return size_; }
   double fps() const override { return fps_; }
   std::optional<StoredReference> stored_reference() const override { return reference_; }

@@ -8,43 +8,35 @@
 namespace haptex::capture {
 namespace {
 
-constexpr int kScoringWidth = 160;
+constexpr int kMinimumWidth = 160;
 
-int block_factor(cv::Size frame) { return std::max(1, int(std::lround(double(frame.width) / kScoringWidth))); }
-
-cv::Mat to_scoring(const cv::Mat& grey, cv::Size frame) {
-  cv::Mat small, out;
-  const cv::Size size = scoring_size(frame);
-  if (grey.size() == size) small = grey;
-  else cv::resize(grey, small, size, 0, 0, cv::INTER_AREA);
-  small.convertTo(out, CV_32F);
+cv::Mat to_float(const cv::Mat& grey) {
+  cv::Mat out;
+  grey.convertTo(out, CV_32F);
   return out;
 }
 
 }  // namespace
 
-cv::Size scoring_size(cv::Size frame) {
-  const int f = block_factor(frame);
-  return {std::max(1, frame.width / f), std::max(1, frame.height / f)};
+int jpeg_reduction(cv::Size frame) {
+  const int f = std::max(1, int(std::lround(double(frame.width) / kMinimumWidth)));
+  return f >= 8 ? 8 : f >= 4 ? 4 : f >= 2 ? 2 : 1;
 }
 
-int jpeg_reduction(cv::Size frame) {
-  const int f = block_factor(frame);
-  return f >= 8 ? 8 : f >= 4 ? 4 : f >= 2 ? 2 : 1;
+cv::Size scoring_size(cv::Size frame) {
+  // DCT scaling rounds up: 3280 / 8 -> 410.
+  const int r = jpeg_reduction(frame);
+  return {(frame.width + r - 1) / r, (frame.height + r - 1) / r};
 }
 
 cv::Mat scoring_image(const cv::Mat& frame) {
   cv::Mat grey = frame;
   if (frame.channels() != 1) cv::cvtColor(frame, grey, frame.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
-  // The same two steps as reduced JPEG decoding (r x r blocks first, then the rest), so a frame
-  // scores the same whichever way it was decoded.
-  const int r = jpeg_reduction(frame.size());
-  if (r > 1) {
-    cv::Mat reduced;
-    cv::resize(grey, reduced, {(frame.cols + r - 1) / r, (frame.rows + r - 1) / r}, 0, 0, cv::INTER_AREA);
-    grey = reduced;
-  }
-  return to_scoring(grey, frame.size());
+  const cv::Size size = scoring_size(frame.size());
+  if (grey.size() == size) return to_float(grey);
+  cv::Mat reduced;
+  cv::resize(grey, reduced, size, 0, 0, cv::INTER_AREA);
+  return to_float(reduced);
 }
 
 bool is_complete_jpeg(std::span<const std::uint8_t> jpeg) {
@@ -69,10 +61,8 @@ cv::Mat scoring_image_from_jpeg(std::span<const std::uint8_t> jpeg, cv::Size fra
   } catch (const cv::Exception&) {
     return {};
   }
-  // DCT scaling rounds up: 3280 / 8 -> 410.
-  const cv::Size expected((frame.width + r - 1) / r, (frame.height + r - 1) / r);
-  if (grey.empty() || grey.size() != expected) return {};
-  return to_scoring(grey, frame);
+  if (grey.empty() || grey.size() != scoring_size(frame)) return {};
+  return to_float(grey);
 }
 
 cv::Mat scoring_image_from_yuyv(std::span<const std::uint8_t> yuyv, cv::Size frame) {
@@ -80,7 +70,7 @@ cv::Mat scoring_image_from_yuyv(std::span<const std::uint8_t> yuyv, cv::Size fra
   const cv::Mat packed(frame.height, frame.width, CV_8UC2, const_cast<std::uint8_t*>(yuyv.data()));
   cv::Mat grey;
   cv::extractChannel(packed, grey, 0);
-  return to_scoring(grey, frame);
+  return scoring_image(grey);
 }
 
 }  // namespace haptex::capture

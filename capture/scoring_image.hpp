@@ -1,12 +1,13 @@
 #pragma once
-// The small grey image contact scores are computed on: the frame's grey levels averaged over
-// f x f pixel blocks, f chosen so the image is about 160 pixels wide (320 x 240 -> 160 x 120,
-// 960 x 720 -> 160 x 120, 3280 x 2464 -> 156 x 117). Averaging blocks divides the sensor noise by f
-// while a press, which covers thousands of pixels, survives intact; and scoring 20 000 pixels instead
-// of 8 million is what lets the recorder score every frame live.
+// The grey image contact scores are computed on: the frame's grey levels averaged over r x r pixel
+// blocks, r = 2, 4 or 8 (the largest that leaves the image at least about 160 pixels wide):
+// 320 x 240 -> 160 x 120, 960 x 720 -> 240 x 180, 3280 x 2464 -> 410 x 308. Averaging blocks divides
+// the sensor noise by r and makes scoring cheap enough to score every frame live, while keeping the
+// texture a press imprints on the gel (a coarser image would average a sandpaper's grains away).
 //
-// MJPG frames are decoded straight to a 2x, 4x or 8x smaller grey image (libjpeg's DCT scaling,
-// OpenCV's IMREAD_REDUCED_GRAYSCALE_*), which costs a fraction of a full decode.
+// MJPG frames are decoded straight to this size (libjpeg's DCT scaling, OpenCV's
+// IMREAD_REDUCED_GRAYSCALE_*), which costs a fraction of a full decode; decoded frames are averaged
+// over the same blocks, so both paths give (almost) the same image.
 #include <cstdint>
 #include <span>
 
@@ -26,7 +27,7 @@ cv::Mat scoring_image_from_jpeg(std::span<const std::uint8_t> jpeg, cv::Size fra
 bool is_complete_jpeg(std::span<const std::uint8_t> jpeg);
 // From packed YUYV (4:2:2) bytes: the Y samples are the grey image. Empty Mat on a size mismatch.
 cv::Mat scoring_image_from_yuyv(std::span<const std::uint8_t> yuyv, cv::Size frame);
-// The DCT scaling (1, 2, 4 or 8) used for a frame of this size.
+// r: the block size (1, 2, 4 or 8) used for a frame of this size.
 int jpeg_reduction(cv::Size frame);
 
 }  // namespace haptex::capture

@@ -28,6 +28,7 @@ TakeProcessor::TakeProcessor(const SessionDescription& session, std::string outp
       options_(options),
       progress_(std::move(progress)),
       size_(int(session.format.width), int(session.format.height)),
+      score_(score_settings_for(session.format.fourcc != V4L2_PIX_FMT_MJPEG)),
       drops_(session.format.period_ns()) {}
 
 TakeProcessor::~TakeProcessor() = default;
@@ -82,8 +83,8 @@ void TakeProcessor::collect_reference(const TakeFrame& frame, const cv::Mat& sma
   reference_small_.push_back(small);
   if (int(reference_small_.size()) < options_.reference_frames) return;
 
-  ContactReference candidate = ContactReference::from_frames(reference_small_, options_.score);
-  if (candidate.worst_reference_score() > options_.score.trigger_floor) {
+  ContactReference candidate = ContactReference::from_frames(reference_small_, score_);
+  if (candidate.worst_reference_score() > score_.trigger_floor) {
     if (++reference_restarts_ > kMaxReferenceRestarts)
       throw failure(session_.identity.path + ": the sensor image did not settle into a steady no-contact reference; "
                     "keep the sensor untouched for the first seconds of the take");

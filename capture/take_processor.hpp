@@ -31,7 +31,6 @@ struct RecorderOptions {
   int pre_frames = 10;         // kept before each contact
   int post_frames = 10;        // kept after each release
   double stall_seconds = 2.0;  // no frame for this long ends the take
-  ScoreSettings score;
   SegmenterSettings segmenter;  // trigger and release come from the reference
 };
 
@@ -78,6 +77,7 @@ class TakeProcessor {
   RecorderOptions options_;
   Progress progress_;
   cv::Size size_;
+  ScoreSettings score_;  // MJPG is lossy, raw YUYV lossless (score_settings_for)
 
   // Reference collection.
   std::vector<cv::Mat> reference_small_;

@@ -6,6 +6,7 @@
 #include "capture/frame_source.hpp"
 #include "capture/scoring_image.hpp"
 #include "core/error.hpp"
+#include "core/sha256.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -20,9 +21,17 @@ class VideoSource : public FrameSource {
                         "Check it plays (ffprobe " + path_ + "); re-export it as FFV1 .mkv or MJPG .avi");
     size_ = first.size();
     fps_ = video.get(cv::CAP_PROP_FPS);
+    fourcc_ = std::uint32_t(video.get(cv::CAP_PROP_FOURCC));
   }
 
   const std::string& path() const override { return path_; }
+  std::string sha256() const override { return sha256_file(path_); }
+  bool lossless() const override {
+    // FFV1, HuffYUV, PNG-in-AVI and uncompressed video.
+    for (const char* codec : {"FFV1", "FFVH", "HFYU", "png ", "MPNG", "UYVY", "YUY2", "I420", "Y800", "RGBA", "BGRA"})
+      if (fourcc_ == std::uint32_t(cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]))) return true;
+    return fourcc_ == 0;
+  }
   cv::Size frame_size() const override { return size_; }
   double fps() const override { return fps_ > 0 && fps_ < 1000 ? fps_ : 0.0; }
 
@@ -102,6 +111,7 @@ class VideoSource : public FrameSource {
   std::string path_;
   cv::Size size_;
   double fps_ = 0;
+  std::uint32_t fourcc_ = 0;
   std::vector<cv::Mat> cache_;
   bool cached_ = false;
 };

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <opencv2/imgcodecs.hpp>
 
 #include "capture/capture_inputs.hpp"
@@ -159,6 +160,57 @@ TEST_F(Extract, AGivenReferenceImageReplacesTheLeadingFrames) {
   const h5::Group g = f.root().open_group("materials").open_group("cork").open_group("presses").open_group("0");
   EXPECT_EQ(g.attr_string("reference_source"), "image " + dir_.file("ref.png"));
   EXPECT_FALSE(g.has_attr("contact_sheet"));
+}
+
+// A press video as a folder of PNG frames, as `haptex synth` writes them.
+void write_png_sequence(const fs::path& folder, int presses, int frames, const std::string& ext = ".png") {
+  fs::create_directories(folder);
+  const FakeScene scene(V4L2_PIX_FMT_MJPEG, 160, 120, quick_presses(presses));
+  for (int i = 0; i < frames; ++i) {
+    const int level = int(std::lround(scene.depth(std::uint64_t(i)) * FakeScene::kDepthLevels));
+    const cv::Mat frame = scene.black(std::uint64_t(i)) ? cv::Mat::zeros(120, 160, CV_8UC3) : scene.image(level, i % 2);
+    cv::imwrite((folder / ("frame_" + std::to_string(1000 + i).substr(1) + ext)).string(), frame);
+  }
+}
+
+TEST_F(Extract, FoldersOfFrameImagesAreVideos) {
+  write_png_sequence(dir_.path() / "gelsight" / "Woven 1" / "press_0", 1, 50);
+  write_png_sequence(dir_.path() / "gelsight" / "Woven 1" / "press_1", 1, 50);
+  std::ofstream(dir_.file("gelsight/Woven 1/press_0.json")) << "{}";  // sidecars are ignored
+  const ExtractResult r = extract_presses({dir_.file("gelsight")}, out(), {});
+  ASSERT_EQ(r.presses.size(), 2u);
+  EXPECT_EQ(r.presses[1].material, "Woven 1");
+  EXPECT_EQ(r.presses[1].press, 1);
+  const FakeScene scene(V4L2_PIX_FMT_MJPEG, 16, 16, quick_presses(1));
+  EXPECT_EQ(scene.depth(std::uint64_t(r.presses[0].peak_index)), 1.0) << "the peak is a frame at full depth";
+  // One sequence folder given directly: its material is the folder above it.
+  ExtractOptions force;
+  force.overwrite = true;
+  const ExtractResult one = extract_presses({dir_.file("gelsight/Woven 1/press_1/")}, out(), force);
+  ASSERT_EQ(one.presses.size(), 1u);
+  EXPECT_EQ(one.presses[0].material, "Woven 1");
+  h5::File f = h5::File::open(out());
+  EXPECT_EQ(f.root().open_group("materials/woven_1/presses/0").attr_string("source_sha256").size(), 64u);
+}
+
+TEST_F(Extract, LosslessSourcesGetLowerFloorsThanLossyOnes) {
+  write_png_sequence(dir_.path() / "png", 1, 12);
+  write_png_sequence(dir_.path() / "jpg", 1, 12, ".jpg");
+  const auto png = open_image_sequence(dir_.file("png"));
+  const auto jpg = open_image_sequence(dir_.file("jpg"));
+  EXPECT_TRUE(png->lossless());
+  EXPECT_FALSE(jpg->lossless());
+  EXPECT_FLOAT_EQ(score_settings(*png, {}).pixel_floor, 1.0f);
+  EXPECT_FLOAT_EQ(score_settings(*png, {}).trigger_floor, 0.02f);
+  EXPECT_FLOAT_EQ(score_settings(*jpg, {}).pixel_floor, 6.0f);
+  EXPECT_FLOAT_EQ(score_settings(*jpg, {}).trigger_floor, 0.25f);
+  ExtractSettings chosen;
+  chosen.pixel_floor = 3.0f;
+  EXPECT_FLOAT_EQ(score_settings(*png, chosen).pixel_floor, 3.0f);
+  EXPECT_TRUE(open_video(video("Cork", "press_0.mkv", 1))->lossless()) << "FFV1";
+  const std::string mjpg = dir_.file("mjpg.avi");
+  fixtures::write_press_video(mjpg, quick_presses(1), 12, 160, 120, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'));
+  EXPECT_FALSE(open_video(mjpg)->lossless());
 }
 
 TEST(CaptureInputs, NumbersInFileNamesCompareByValue) {

@@ -77,6 +77,8 @@ class MemorySource : public FrameSource {
   const std::string& path() const override { return path_; }
   cv::Size frame_size() const override { return {32, 24}; }
   double fps() const override { return 30; }
+  std::string sha256() const override { return {}; }
+  bool lossless() const override { return true; }
   void scan(const Visitor&, const std::function<bool(std::int64_t)>&) override {}
   void read(const std::vector<std::int64_t>& indices,
             const std::function<void(std::int64_t, const cv::Mat&)>& deliver) override {

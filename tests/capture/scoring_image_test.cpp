@@ -15,11 +15,11 @@ cv::Mat gel(int width, int height) {
   return scene.image(4, 0);
 }
 
-TEST(ScoringImage, IsAbout160PixelsWide) {
+TEST(ScoringImage, AveragesTwoFourOrEightPixelBlocksLeavingAtLeast160Columns) {
   EXPECT_EQ(scoring_size({320, 240}), cv::Size(160, 120));
-  EXPECT_EQ(scoring_size({960, 720}), cv::Size(160, 120));
-  EXPECT_EQ(scoring_size({3280, 2464}), cv::Size(156, 117));
-  EXPECT_EQ(scoring_size({427, 320}), cv::Size(142, 106));
+  EXPECT_EQ(scoring_size({960, 720}), cv::Size(240, 180));
+  EXPECT_EQ(scoring_size({3280, 2464}), cv::Size(410, 308));
+  EXPECT_EQ(scoring_size({427, 320}), cv::Size(214, 160));
   EXPECT_EQ(scoring_size({100, 80}), cv::Size(100, 80));
   EXPECT_EQ(jpeg_reduction({3280, 2464}), 8);
   EXPECT_EQ(jpeg_reduction({960, 720}), 4);

@@ -103,6 +103,27 @@ TEST_F(ExtractCli, H5pyReadsTheDocumentedLayout) {
   EXPECT_NE(broken.out.find("missing: /materials/cork/presses/1/peak_index"), std::string::npos) << broken.out;
 }
 
+// What `make demo` does: haptex synth writes press videos with their true peaks in sidecars.
+TEST_F(ExtractCli, FindsThePeaksOfSynthPressVideos) {
+  const std::string synth = dir_.file("synth");
+  const CommandResult made = run_haptex({"synth", "materials", "-n", "2", "--recordings", "1", "--presses", "3",
+                                         "--seconds", "0.2", "--size", "320x240", "-o", synth});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  const CommandResult r = run_haptex({"capture", "extract", synth + "/gelsight", "-o", out(), "--json", "--no-sheets"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  ASSERT_EQ(doc["presses"].size(), 6u) << r.out;
+  for (const auto& p : doc["presses"]) {
+    const fs::path press = fs::path(p["source"].get<std::string>());
+    const nlohmann::json truth = nlohmann::json::parse(std::ifstream(press.string() + ".json"));
+    EXPECT_EQ(p["press_in_source"], 0);
+    EXPECT_EQ(p["material"], truth["material"]);
+    EXPECT_NEAR(p["peak_index"].get<double>(), truth["peak_frame"].get<double>(), 1.0) << press;
+    EXPECT_LE(p["contact_first"].get<int>(), truth["peak_frame"].get<int>());
+    EXPECT_GE(p["contact_last"].get<int>(), truth["peak_frame"].get<int>());
+  }
+}
+
 TEST_F(ExtractCli, NoPressAnywhereExitsOneAndWritesNothing) {
   fs::create_directories(dir_.path() / "still" / "Glass");
   auto schedule = capture::fixtures::quick_presses(0);
