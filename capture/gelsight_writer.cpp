@@ -22,7 +22,7 @@ void set_press_attributes(h5::Group& g, const GelsightPress& p) {
   g.set_attr("channel_order", "RGB");
   if (p.fps > 0) g.set_attr("fps", p.fps);
   g.set_attr("reference_source", p.reference_note);
-  g.set_attr("score_method", "mean over a ~160-pixel-wide grey image of max(0, |d - median(d)| - pixel_threshold), "
+  g.set_attr("score_method", "mean over the grey image averaged in 2, 4 or 8 pixel blocks of max(0, |d - median(d)| - pixel_threshold), "
                              "d = frame - reference (docs/capture.md)");
   g.set_attr("noise", double(p.noise));
   g.set_attr("pixel_threshold", double(p.pixel_threshold));
