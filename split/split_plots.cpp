@@ -45,7 +45,12 @@ void write_sections(const fs::path& path, const MaterialSplit& s, std::int64_t s
         << kSetNames[set_of_section(s.sections, int(k))] << "\n";
 }
 
-void write_script(const fs::path& script, const fs::path& base, const std::string& title) {
+constexpr const char* kSetColours[] = {"#9400d3", "#009e73", "#56b4e9"};
+
+// Sections become shaded rectangles spanning the plot's height (graph coordinates), so the trace's
+// scale does not matter; three empty plots give the legend its colours.
+void write_script(const fs::path& script, const fs::path& base, const std::string& title, const MaterialSplit& s,
+                  std::int64_t samples, std::size_t sections) {
   std::ofstream out(script);
   const std::string b = base.string();
   out << "set terminal pngcairo size 1400,520 font ',10'\n"
@@ -54,12 +59,20 @@ void write_script(const fs::path& script, const fs::path& base, const std::strin
       << "set multiplot layout 1,2 title '" << title << "'\n"
       << "set key outside top center horizontal\n"
       << "set xlabel 'speed (mm/s)'; set ylabel 'normal force (N)'\n"
-      << "plot for [s in 'train val test'] '< grep ^'.s.', " << b << "_points.csv' using 2:3 with points pt 7 ps 0.3 title s\n"
-      << "set xlabel 'time (s)'; set ylabel 'acceleration (m/s^2)'\n"
-      << "set style fill transparent solid 0.25 noborder\n"
-      << "plot for [s in 'train val test'] '< grep '.s.'$ " << b << "_sections.csv' using 1:(-1e9):2:(1e9) with boxxy title s, \\\n"
-      << "     '" << b << "_trace.csv' every ::1 using 1:2 with lines lc rgb 'black' lw 0.5 notitle\n"
-      << "unset multiplot\n";
+      << "plot for [i=1:3] '< grep ^'.word('train val test', i).', " << b
+      << "_points.csv' using 2:3 with points pt 7 ps 0.3 lc rgb word('" << kSetColours[0] << " " << kSetColours[1] << " "
+      << kSetColours[2] << "', i) title word('train val test', i)\n";
+  for (std::size_t k = 0; k < sections; ++k) {
+    const int set = set_of_section(s.sections, int(k));
+    out << "set object " << k + 1 << " rect from " << double(section_begin(k, samples, sections)) / 10000.0
+        << ", graph 0 to " << double(section_begin(k + 1, samples, sections)) / 10000.0 << ", graph 1 fc rgb '"
+        << kSetColours[set] << "' fs transparent solid 0.25 noborder behind\n";
+  }
+  out << "set xlabel 'time (s)'; set ylabel 'acceleration (m/s^2)'\n"
+      << "plot '" << b << "_trace.csv' every ::1 using 1:2 with lines lc rgb 'black' lw 0.5 notitle";
+  for (int set = 0; set < 3; ++set)
+    out << ", NaN with boxes fs solid 0.25 lc rgb '" << kSetColours[set] << "' title '" << kSetNames[set] << "'";
+  out << "\nunset multiplot\n";
 }
 
 }  // namespace
@@ -79,7 +92,8 @@ PlotResult write_split_plots(const std::string& dataset_path, const std::vector<
     write_points(base.string() + "_points.csv", windows[m], splits[m], sections);
     write_trace(base.string() + "_trace.csv", accel);
     write_sections(base.string() + "_sections.csv", splits[m], std::int64_t(accel.size()), sections);
-    write_script(base.string() + ".gnuplot", base, windows[m].name + ": train, validation and test (recording 0)");
+    write_script(base.string() + ".gnuplot", base, windows[m].name + ": train, validation and test (recording 0)",
+                 splits[m], std::int64_t(accel.size()), sections);
     if (draw && std::system(("gnuplot '" + base.string() + ".gnuplot' > /dev/null 2>&1").c_str()) == 0)
       result.images.push_back(base.string() + ".png");
   }
