@@ -34,11 +34,15 @@ build: deps $(BUILD)/CMakeCache.txt
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) --timeout 600
 
+# The whole data pipeline on the built-in synthetic materials, ending with the QA verdict.
 demo: build
 	@rm -rf $(DEMO) && mkdir -p $(DEMO)
 	$(HAPTEX) synth materials -o $(DEMO)/synth
+	$(HAPTEX) capture extract $(DEMO)/synth/gelsight -o $(DEMO)/gelsight.h5
 	$(HAPTEX) convert hatt $(DEMO)/synth/recordings -o $(DEMO)/recordings.h5
-	$(HAPTEX) info $(DEMO)/recordings.h5
+	$(HAPTEX) align --recordings $(DEMO)/recordings.h5 --gelsight $(DEMO)/gelsight.h5 -o $(DEMO)/dataset.h5
+	$(HAPTEX) split $(DEMO)/dataset.h5 -o $(DEMO)/split.json
+	$(HAPTEX) qa $(DEMO)/dataset.h5 --split $(DEMO)/split.json
 
 bench:
 	$(MAKE) deps EXTRA_PACKAGES="$(BENCH_PACKAGES)"
