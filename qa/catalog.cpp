@@ -95,7 +95,7 @@ const std::vector<CheckInfo>& all_checks() {
        "Run haptex split with another --seed or more --sections, or record the material over a wider range"},
       {"split.coverage_recorded", warning, "the manifest's coverage figures match the recomputed ones within 0.02",
        "Run haptex split again on this dataset file"},
-      {"split.presses", error, "every material has 3 train, 1 val and 1 test press, distinct and present",
+      {"split.presses", error, "every material has at least 3 train, 1 val and 1 test press, distinct and in the dataset",
        "Capture at least 5 presses per material and run haptex split again"},
   };
   return checks;

@@ -13,6 +13,7 @@
 #include "capture/image_datasets.hpp"
 #include "capture/scoring_image.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "qa/checkers.hpp"
 #include "qa/thresholds.hpp"
 
@@ -80,30 +81,80 @@ std::optional<double> number_attr(const h5::Group& g, const char* name) {
   }
 }
 
+// What the checks need of one press, measured as it is read: its images are not kept, so a file of
+// thousands of full-size frames is checked in the memory of one press.
 struct Press {
   std::string path, material;
-  std::optional<cv::Mat> reference, peak;
-  std::vector<cv::Mat> frames;
   std::optional<double> trigger, pixel_threshold;
+  bool has_reference = false, has_peak = false;
+  cv::Size reference_size, peak_size, frames_size;
+  bool sizes_agree = false;
+  cv::Mat reference_scoring;            // CV_32F scoring image of the reference
+  double reference_sharpness = 0;       // variance of its Laplacian
+  std::optional<double> peak_score;     // the peak against the reference, recomputed
+  struct Image {
+    std::string where;
+    cv::Size size;
+    double sharpness = 0, saturated = 0;
+  };
+  std::vector<Image> images;            // the peak and every frame
 };
 
-bool same_sizes(const Press& p, cv::Size& size) {
+Press summarize_press(const h5::Group& g, std::string path, std::string material) {
+  Press p;
+  p.path = std::move(path);
+  p.material = std::move(material);
+  p.trigger = number_attr(g, "trigger");
+  p.pixel_threshold = number_attr(g, "pixel_threshold");
+  const std::optional<cv::Mat> reference = read_single(g, "reference"), peak = read_single(g, "peak");
+  const std::vector<cv::Mat> frames = read_stack(g, "frames");
   std::vector<cv::Size> sizes;
-  if (p.reference) sizes.push_back(p.reference->size());
-  if (p.peak) sizes.push_back(p.peak->size());
-  if (!p.frames.empty()) sizes.push_back(p.frames.front().size());
-  if (sizes.empty()) return false;
-  size = sizes.front();
-  return std::all_of(sizes.begin(), sizes.end(), [&](cv::Size s) { return s == size; });
+  if (reference) {
+    p.has_reference = true;
+    p.reference_size = reference->size();
+    p.reference_scoring = capture::scoring_image(*reference);
+    p.reference_sharpness = laplacian_variance(*reference);
+    sizes.push_back(p.reference_size);
+  }
+  std::vector<const cv::Mat*> images;
+  if (peak) {
+    p.has_peak = true;
+    p.peak_size = peak->size();
+    sizes.push_back(p.peak_size);
+    images.push_back(&*peak);
+    p.images.push_back({p.path + "/peak", p.peak_size, 0, 0});
+    if (reference && p.pixel_threshold && reference->size() == peak->size())
+      p.peak_score = capture::contact_score(capture::scoring_image(*peak), p.reference_scoring, float(*p.pixel_threshold));
+  }
+  if (!frames.empty()) {
+    p.frames_size = frames.front().size();
+    sizes.push_back(p.frames_size);
+  }
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    images.push_back(&frames[i]);
+    p.images.push_back({p.path + "/frames[" + std::to_string(i) + "]", frames[i].size(), 0, 0});
+  }
+  p.sizes_agree = !sizes.empty() && std::all_of(sizes.begin(), sizes.end(), [&](cv::Size s) { return s == sizes.front(); });
+  parallel_for(images.size(), [&](std::size_t i) {
+    p.images[i].sharpness = laplacian_variance(*images[i]);
+    p.images[i].saturated = saturated_share(*images[i]);
+  });
+  return p;
 }
 
+cv::Size press_size(const Press& p) {
+  return p.has_reference ? p.reference_size : p.has_peak ? p.peak_size : p.frames_size;
+}
+
+std::pair<int, int> key_of(cv::Size s) { return {s.width, s.height}; }
+
 // Per-pixel median of scoring images of one size.
-cv::Mat median_image(const std::vector<cv::Mat>& images) {
-  cv::Mat out(images.front().size(), CV_32F);
+cv::Mat median_image(const std::vector<const cv::Mat*>& images) {
+  cv::Mat out(images.front()->size(), CV_32F);
   std::vector<float> values(images.size());
   for (int y = 0; y < out.rows; ++y)
     for (int x = 0; x < out.cols; ++x) {
-      for (std::size_t i = 0; i < images.size(); ++i) values[i] = images[i].at<float>(y, x);
+      for (std::size_t i = 0; i < images.size(); ++i) values[i] = images[i]->at<float>(y, x);
       std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
       out.at<float>(y, x) = values[values.size() / 2];
     }
@@ -123,7 +174,7 @@ std::vector<CheckResult> check_gelsight(const h5::Group& root) {
       resolution("gelsight.resolution", "materials"), press_count("gelsight.press_count", "materials");
 
   std::vector<Press> presses;
-  std::map<std::string, std::size_t> per_material;  // presses per material id, in file order
+  std::map<std::string, std::size_t> per_material;  // presses per material id
   if (root.has_group("materials")) {
     const h5::Group materials = root.open_group("materials");
     for (const auto& id : materials.children()) {
@@ -134,10 +185,7 @@ std::vector<CheckResult> check_gelsight(const h5::Group& root) {
       const h5::Group group = material.open_group("presses");
       for (const auto& j : group.children()) {
         if (!group.has_group(j)) continue;
-        const h5::Group g = group.open_group(j);
-        Press p{"/materials/" + id + "/presses/" + j, id, read_single(g, "reference"), read_single(g, "peak"),
-                read_stack(g, "frames"), number_attr(g, "trigger"), number_attr(g, "pixel_threshold")};
-        presses.push_back(std::move(p));
+        presses.push_back(summarize_press(group.open_group(j), "/materials/" + id + "/presses/" + j, id));
         ++per_material[id];
       }
     }
@@ -149,52 +197,51 @@ std::vector<CheckResult> check_gelsight(const h5::Group& root) {
       press_count.fail("/materials/" + id + "/presses", std::to_string(count) + " presses, at least " +
                                                             std::to_string(kPressesPerMaterial) + " needed (3 train, 1 val, 1 test)");
     else press_count.pass();
-    std::map<std::string, std::vector<std::string>> by_size;  // "WxH" -> presses
-    bool mixed_inside = false;
-    std::string mixed_where;
+    std::map<std::string, std::size_t> by_size;  // "WxH" -> presses
+    std::string mixed_inside;
     for (const auto& p : presses) {
       if (p.material != id) continue;
-      cv::Size size;
-      if (!same_sizes(p, size)) {
-        if (size.width > 0 && !mixed_inside) mixed_inside = true, mixed_where = p.path;
-        if (size.width == 0) continue;
+      if (!p.sizes_agree && (p.has_reference || p.has_peak || p.frames_size.width > 0)) {
+        if (mixed_inside.empty()) mixed_inside = p.path;
+        continue;
       }
-      by_size[size_text(size)].push_back(p.path);
+      if (p.sizes_agree) ++by_size[size_text(press_size(p))];
     }
-    if (mixed_inside) resolution.fail(mixed_where, "reference, peak and frames differ in size");
+    if (!mixed_inside.empty()) resolution.fail(mixed_inside, "reference, peak and frames differ in size");
     else if (by_size.size() > 1) {
       std::string sizes;
-      for (const auto& [s, paths] : by_size) sizes += (sizes.empty() ? "" : ", ") + s + " (" + std::to_string(paths.size()) + ")";
+      for (const auto& [s, n] : by_size) sizes += (sizes.empty() ? "" : ", ") + s + " (" + std::to_string(n) + ")";
       resolution.fail("/materials/" + id + "/presses", "presses of several sizes: " + sizes);
     } else if (by_size.empty()) resolution.skip("/materials/" + id + ": no readable press images");
     else resolution.pass();
   }
 
-  // Baselines per image size: the median no-contact reference and its Laplacian variance.
-  std::map<std::pair<int, int>, std::vector<cv::Mat>> references;
-  std::map<std::pair<int, int>, std::vector<double>> reference_sharpness;
+  // Baselines per image size (one sensor mode): the median no-contact reference and its sharpness.
+  std::map<std::pair<int, int>, std::vector<const cv::Mat*>> references;
+  std::map<std::pair<int, int>, std::vector<double>> sharpness;
   for (const auto& p : presses)
-    if (p.reference) {
-      const std::pair key{p.reference->cols, p.reference->rows};
-      references[key].push_back(capture::scoring_image(*p.reference));
-      reference_sharpness[key].push_back(laplacian_variance(*p.reference));
+    if (p.has_reference) {
+      references[key_of(p.reference_size)].push_back(&p.reference_scoring);
+      sharpness[key_of(p.reference_size)].push_back(p.reference_sharpness);
     }
   std::map<std::pair<int, int>, cv::Mat> median_reference;
   for (const auto& [key, images] : references)
     if (images.size() >= kMinReferencesForMedian) median_reference[key] = median_image(images);
+  std::map<std::pair<int, int>, double> median_sharpness;
+  for (const auto& [key, values] : sharpness) median_sharpness[key] = median(values);
 
   double worst_reference = 0, worst_peak = INFINITY, worst_saturation = 0, worst_blur = INFINITY;
   for (const auto& p : presses) {
-    const bool thresholds = p.trigger && p.pixel_threshold;
+    const bool thresholds = p.trigger && p.pixel_threshold && *p.trigger > 0;
     // Reference: no contact against the median reference of its size.
-    if (!p.reference) reference.skip(p.path + ": no readable reference");
-    else if (!thresholds) reference.skip(p.path + ": no trigger/pixel_threshold attributes");
+    if (!p.has_reference) reference.skip(p.path + ": no readable reference");
+    else if (!thresholds) reference.skip(p.path + ": no positive trigger and pixel_threshold attributes");
     else {
-      const auto it = median_reference.find({p.reference->cols, p.reference->rows});
+      const auto it = median_reference.find(key_of(p.reference_size));
       if (it == median_reference.end())
         reference.skip(p.path + ": fewer than " + std::to_string(kMinReferencesForMedian) + " references of its size to compare with");
       else {
-        const double score = capture::contact_score(capture::scoring_image(*p.reference), it->second, float(*p.pixel_threshold));
+        const double score = capture::contact_score(p.reference_scoring, it->second, float(*p.pixel_threshold));
         worst_reference = std::max(worst_reference, score / *p.trigger);
         if (score > *p.trigger)
           reference.fail(p.path + "/reference", "scores " + number(score) + " against the median reference, above the press's "
@@ -203,43 +250,35 @@ std::vector<CheckResult> check_gelsight(const h5::Group& root) {
       }
     }
     // Peak score, recomputed from the stored frames.
-    if (!p.reference || !p.peak) peak_score.skip(p.path + ": no readable reference or peak");
-    else if (!thresholds) peak_score.skip(p.path + ": no trigger/pixel_threshold attributes");
-    else if (p.reference->size() != p.peak->size()) peak_score.skip(p.path + ": reference and peak differ in size");
+    if (!p.peak_score) peak_score.skip(p.path + ": no readable reference and peak of one size, or no pixel_threshold");
+    else if (!thresholds) peak_score.skip(p.path + ": no positive trigger attribute");
     else {
-      const double score = capture::contact_score(capture::scoring_image(*p.peak), capture::scoring_image(*p.reference),
-                                                  float(*p.pixel_threshold));
-      worst_peak = std::min(worst_peak, score / *p.trigger);
-      if (score < kPeakOverTrigger * *p.trigger)
-        peak_score.fail(p.path + "/peak", "scores " + number(score) + " against the reference, under " +
+      worst_peak = std::min(worst_peak, *p.peak_score / *p.trigger);
+      if (*p.peak_score < kPeakOverTrigger * *p.trigger)
+        peak_score.fail(p.path + "/peak", "scores " + number(*p.peak_score) + " against the reference, under " +
                                               number(kPeakOverTrigger) + " x the contact trigger " + number(*p.trigger));
       else peak_score.pass();
     }
     // Saturation and blur of the peak and its frames.
-    std::vector<std::pair<std::string, const cv::Mat*>> images;
-    if (p.peak) images.emplace_back(p.path + "/peak", &*p.peak);
-    for (std::size_t i = 0; i < p.frames.size(); ++i)
-      images.emplace_back(p.path + "/frames[" + std::to_string(i) + "]", &p.frames[i]);
-    if (images.empty()) {
+    if (p.images.empty()) {
       saturation.skip(p.path + ": no readable peak or frames");
       blur.skip(p.path + ": no readable peak or frames");
     }
-    for (const auto& [where, image] : images) {
-      const double share = saturated_share(*image);
-      worst_saturation = std::max(worst_saturation, share);
-      if (share > kSaturatedMaxShare)
-        saturation.fail(where, number(100 * share) + "% of the pixels saturated (at most " + number(100 * kSaturatedMaxShare) + "%)");
+    for (const auto& image : p.images) {
+      worst_saturation = std::max(worst_saturation, image.saturated);
+      if (image.saturated > kSaturatedMaxShare)
+        saturation.fail(image.where, number(100 * image.saturated) + "% of the pixels saturated (at most " +
+                                         number(100 * kSaturatedMaxShare) + "%)");
       else saturation.pass();
-      const auto sharp = reference_sharpness.find({image->cols, image->rows});
-      if (sharp == reference_sharpness.end()) {
-        blur.skip(where + ": no reference of its size");
+      const auto baseline = median_sharpness.find(key_of(image.size));
+      if (baseline == median_sharpness.end() || baseline->second <= 0) {
+        blur.skip(image.where + ": no textured reference of its size");
         continue;
       }
-      const double baseline = median(sharp->second), v = laplacian_variance(*image);
-      worst_blur = std::min(worst_blur, v / baseline);
-      if (v < kBlurMinRatio * baseline)
-        blur.fail(where, "variance of the Laplacian " + number(v) + ", under " + number(kBlurMinRatio) +
-                             " x the no-contact references' " + number(baseline) + ": blurred");
+      worst_blur = std::min(worst_blur, image.sharpness / baseline->second);
+      if (image.sharpness < kBlurMinRatio * baseline->second)
+        blur.fail(image.where, "variance of the Laplacian " + number(image.sharpness) + ", under " + number(kBlurMinRatio) +
+                                   " x the no-contact references' " + number(baseline->second) + ": blurred");
       else blur.pass();
     }
   }

@@ -256,6 +256,13 @@ TEST_F(SplitMutation, TwoTrainingPressesAreSplitPresses) {
   EXPECT_NE(r.find("split.presses")->message.find("2 train presses"), std::string::npos);
 }
 
+TEST_F(SplitMutation, PressInTwoSetsIsSplitPresses) {
+  edit([](nlohmann::json& d) { d["materials"][0]["presses"]["train"].push_back(d["materials"][0]["presses"]["val"][0]); });
+  const qa::Report r = qa();
+  expect_only(r, "split.presses");
+  EXPECT_NE(r.find("split.presses")->message.find("is in two sets"), std::string::npos) << r.find("split.presses")->message;
+}
+
 TEST_F(SplitMutation, PressMissingFromTheDatasetIsSplitPresses) {
   edit([](nlohmann::json& d) { d["materials"][1]["presses"]["test"][0] = 7; });
   const qa::Report r = qa();
