@@ -106,7 +106,11 @@ double FakeScene::depth(std::uint64_t frame) const {
   return 0.0;
 }
 
-cv::Mat FakeScene::image(int level, int noise) const { return SceneImages(width_, height_, seed_).render(level, noise); }
+cv::Mat FakeScene::image(int level, int noise) const { return render_gel(width_, height_, level, noise, seed_); }
+
+cv::Mat render_gel(int width, int height, int level, int noise_pattern, std::uint64_t seed) {
+  return SceneImages(width, height, seed).render(level, noise_pattern);
+}
 
 std::vector<std::uint8_t> FakeScene::encode(const cv::Mat& bgr) const {
   if (fourcc_ == V4L2_PIX_FMT_YUYV) return bgr_to_yuyv(bgr);

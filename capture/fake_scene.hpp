@@ -49,6 +49,10 @@ class FakeScene {
   std::vector<std::vector<std::uint8_t>> payloads_;
 };
 
+// One frame of the scene, BGR: the gel pressed to depth level 0..kDepthLevels, with noise pattern 0 or 1.
+// Renders from scratch; FakeScene keeps the encoded payloads instead.
+cv::Mat render_gel(int width, int height, int level, int noise_pattern, std::uint64_t seed = 1);
+
 // Packs a BGR image as YUYV (4:2:2) the way UVC cameras send it.
 std::vector<std::uint8_t> bgr_to_yuyv(const cv::Mat& bgr);
 

@@ -10,10 +10,7 @@
 namespace haptex::capture {
 namespace {
 
-cv::Mat gel(int width, int height) {
-  FakeScene scene(V4L2_PIX_FMT_MJPEG, width, height, PressSchedule{});
-  return scene.image(4, 0);
-}
+cv::Mat gel(int width, int height) { return render_gel(width, height, 4, 0); }
 
 TEST(ScoringImage, AveragesTwoFourOrEightPixelBlocksLeavingAtLeast160Columns) {
   EXPECT_EQ(scoring_size({320, 240}), cv::Size(160, 120));

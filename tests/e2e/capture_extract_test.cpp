@@ -27,7 +27,7 @@ class ExtractCli : public ::testing::Test {
       for (int j = 0; j < 2; ++j)
         capture::fixtures::write_press_video(
             (dir_.path() / "gelsight" / material / ("press_" + std::to_string(j) + ".mkv")).string(),
-            capture::fixtures::quick_presses(1), 50);
+            capture::fixtures::quick_presses(1), 45);
     }
   }
   std::string out() const { return dir_.file("gelsight.h5"); }
@@ -106,13 +106,14 @@ TEST_F(ExtractCli, H5pyReadsTheDocumentedLayout) {
 // What `make demo` does: haptex synth writes press videos with their true peaks in sidecars.
 TEST_F(ExtractCli, FindsThePeaksOfSynthPressVideos) {
   const std::string synth = dir_.file("synth");
-  const CommandResult made = run_haptex({"synth", "materials", "-n", "2", "--recordings", "1", "--presses", "3",
+  // One material: the first of the demo set is a polished one, whose presses are the faintest.
+  const CommandResult made = run_haptex({"synth", "materials", "-n", "1", "--recordings", "1", "--presses", "2",
                                          "--seconds", "0.2", "--size", "320x240", "-o", synth});
   ASSERT_EQ(made.exit_code, 0) << made.err;
   const CommandResult r = run_haptex({"capture", "extract", synth + "/gelsight", "-o", out(), "--json", "--no-sheets"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json doc = nlohmann::json::parse(r.out);
-  ASSERT_EQ(doc["presses"].size(), 6u) << r.out;
+  ASSERT_EQ(doc["presses"].size(), 2u) << r.out;
   for (const auto& p : doc["presses"]) {
     const fs::path press = fs::path(p["source"].get<std::string>());
     const nlohmann::json truth = nlohmann::json::parse(std::ifstream(press.string() + ".json"));

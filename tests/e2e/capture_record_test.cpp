@@ -83,11 +83,11 @@ TEST_F(RecordCli, CtrlCClosesTheCurrentPressFileCleanly) {
   if (child == 0) {
     freopen("/dev/null", "w", stdout);
     freopen("/dev/null", "w", stderr);
-    execl(HAPTEX_BINARY, HAPTEX_BINARY, "capture", "record", "--device", "fake:size=320x240", "--material", "Cork",
+    execl(HAPTEX_BINARY, HAPTEX_BINARY, "capture", "record", "--device", "fake:size=320x240,speed=2", "--material", "Cork",
           "--presses", "100", "-o", session_.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
-  // In real time, a press starts every 1.5 s after the first second; interrupt during the second press.
+  // In (twice) real time, as from a sensor; interrupt during the second press.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
   while (!fs::exists(session_ + "/press_1.h5.partial") && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
