@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "capture/extract_presses.hpp"
 #include "capture/press_recorder.hpp"
 #include "capture/vlen_bytes.hpp"
 #include "core/error.hpp"
@@ -126,6 +127,12 @@ TEST_F(Recorder, YuyvFramesAreStoredAsLosslessPng) {
   cv::Mat expected;
   cv::cvtColor(cv::Mat(240, 320, CV_8UC2, const_cast<std::uint8_t*>(yuyv.data())), expected, cv::COLOR_YUV2BGR_YUYV);
   EXPECT_EQ(cv::norm(image, expected, cv::NORM_INF), 0.0);
+  // And extraction reads them back: a lossless source, scored with the session's stored reference.
+  ExtractOptions extract;
+  extract.sheets = false;
+  const ExtractResult x = extract_presses({file("press_0.h5")}, dir_.file("g.h5"), extract);
+  ASSERT_EQ(x.presses.size(), 1u);
+  EXPECT_EQ(x.presses[0].peak_index, r.presses[0].peak_frame - r.presses[0].take_first_frame);
 }
 
 TEST_F(Recorder, ADisconnectDuringAPressKeepsEveryFrameTaken) {
