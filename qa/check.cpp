@@ -41,7 +41,10 @@ CheckResult CheckTally::result() const {
     if (failures_.size() > 1) r.message += " (and " + std::to_string(failures_.size() - 1) + " more)";
     for (std::size_t i = 0; i < failures_.size() && i < kMaxWhere; ++i) r.where.push_back(failures_[i].first);
   } else if (passed_ > 0) {
-    r.message = std::to_string(passed_) + " " + items_ + (pass_message_.empty() ? " checked" : ": " + pass_message_);
+    // "1 recording", "2 recordings" (one-word nouns; longer phrases stay as written).
+    const bool singular = passed_ == 1 && items_.back() == 's' && items_.find(' ') == std::string::npos;
+    const std::string items = singular ? items_.substr(0, items_.size() - 1) : items_;
+    r.message = std::to_string(passed_) + " " + items + (pass_message_.empty() ? " checked" : ": " + pass_message_);
     r.message += skipped;
   } else {
     r.status = Status::skip;

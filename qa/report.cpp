@@ -24,10 +24,10 @@ const CheckResult* Report::find(std::string_view id) const {
   return it == checks.end() ? nullptr : &*it;
 }
 
-nlohmann::json to_json(const Report& report) {
-  nlohmann::json checks = nlohmann::json::array();
+nlohmann::ordered_json to_json(const Report& report) {
+  nlohmann::ordered_json checks = nlohmann::ordered_json::array();
   for (const auto& c : report.checks) {
-    nlohmann::json item = {{"id", c.id},
+    nlohmann::ordered_json item = {{"id", c.id},
                            {"severity", std::string(to_string(c.severity))},
                            {"status", std::string(to_string(c.status))},
                            {"message", c.message},
@@ -35,10 +35,12 @@ nlohmann::json to_json(const Report& report) {
     if (!c.where.empty()) item["where"] = c.where;
     checks.push_back(std::move(item));
   }
-  nlohmann::json doc = {{"file", report.file},         {"kind", std::string(to_string(report.kind))},
-                        {"checks", checks},            {"errors", report.errors()},
-                        {"warnings", report.warnings()}, {"verdict", report.verdict()}};
+  nlohmann::ordered_json doc = {{"file", report.file}, {"kind", std::string(to_string(report.kind))}};
   if (report.split) doc["split"] = *report.split;
+  doc["checks"] = checks;
+  doc["errors"] = report.errors();
+  doc["warnings"] = report.warnings();
+  doc["verdict"] = report.verdict();
   return doc;
 }
 

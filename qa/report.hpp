@@ -24,6 +24,7 @@ struct Report {
   const CheckResult* find(std::string_view id) const;
 };
 
-nlohmann::json to_json(const Report& report);
+// Keys in the schema's order (id, severity, status, message, hint, where), for people reading it.
+nlohmann::ordered_json to_json(const Report& report);
 
 }  // namespace haptex::qa

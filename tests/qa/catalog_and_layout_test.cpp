@@ -6,7 +6,11 @@
 #include <regex>
 #include <set>
 
+#include <nlohmann/json.hpp>
+
 #include "core/error.hpp"
+#include "core/h5/file.hpp"
+#include "core/json/schema.hpp"
 #include "qa/catalog.hpp"
 #include "qa/layout_spec.hpp"
 #include "qa/report.hpp"
@@ -48,6 +52,28 @@ TEST(Catalog, ReportsListEveryApplicableCheckOnceInCatalogOrder) {
   for (const auto& c : qa::all_checks()) catalog.emplace_back(c.id);
   EXPECT_EQ(reported, catalog);  // a dataset with its split runs every check there is
   EXPECT_THROW(qa::check_info("signal.nope"), Error);
+}
+
+TEST(Catalog, JsonReportFollowsItsSchema) {
+  TempDir dir;
+  const std::string copy = copy_into(dir, qa_files().recordings, "r.h5");
+  h5::File::open(copy, true).root().open_group("materials/woven_1/recordings/0").set_attr("duration_s", 6.0);
+  const qa::Report r = qa::run_qa({copy, {}});
+  const nlohmann::json doc = nlohmann::json::parse(qa::to_json(r).dump());
+  EXPECT_NO_THROW(json::validate(doc, "qa-report.schema.json", "report"));
+  EXPECT_EQ(doc["verdict"], "errors");
+  EXPECT_EQ(doc["errors"], 1);
+  EXPECT_FALSE(doc.contains("split"));
+  bool found = false;
+  for (const auto& c : doc["checks"])
+    if (c["id"] == "signal.duration") {
+      found = true;
+      EXPECT_EQ(c["status"], "fail");
+      EXPECT_EQ(c["where"], nlohmann::json::array({"/materials/woven_1/recordings/0"}));
+    } else {
+      EXPECT_FALSE(c.contains("where")) << c.dump();
+    }
+  EXPECT_TRUE(found);
 }
 
 TEST(Layout, SectionsOfEveryFormatQaChecks) {
