@@ -59,7 +59,7 @@ const std::vector<CheckInfo>& all_checks() {
       {"gelsight.reference", error,
        "each reference scores under its press's contact trigger against the median reference of its size",
        "Extract again with --reference pointing at a no-contact image, or start the press videos untouched"},
-      {"gelsight.peak_score", error, "the peak frame scores at least 2x the press's contact trigger against the reference",
+      {"gelsight.peak_score", error, "the peak frame scores at least 1.5 x the press's contact trigger against the reference",
        "Press harder or longer, or re-extract; this press barely differs from the no-contact reference"},
       {"gelsight.saturation", error, "at most 2% of the pixels of the peak and its frames have a channel at 255",
        "Lower the sensor's exposure or LED current (capture --exposure) and capture the press again"},

@@ -1,0 +1,82 @@
+// The GelSight thresholds against real sensor captures (../shared/data/gelsight; skipped when absent):
+// real presses pass every per-press check, so the thresholds are not tuned to synthetic frames only.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+
+#include "capture/contact_score.hpp"
+#include "capture/gelsight_writer.hpp"
+#include "capture/scoring_image.hpp"
+#include "qa/run_qa.hpp"
+#include "tests/qa/qa_fixture.hpp"
+#include "tests/support/npy.hpp"
+
+namespace haptex::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Still images as presses: the no-contact image as every press's reference, each contact image as
+// the peak and its frames, thresholds as capture derives them from a single no-contact image.
+std::string gelsight_file(const TempDir& dir, const std::string& material, const fs::path& reference_path,
+                          const std::vector<fs::path>& presses) {
+  const cv::Mat reference = cv::imread(reference_path.string(), cv::IMREAD_COLOR);
+  const auto contact = capture::ContactReference::from_image(capture::scoring_image(reference));
+  const std::string out = dir.file(material + ".h5");
+  capture::GelsightWriter writer(out, false, "qa real-capture test");
+  for (const auto& path : presses) {
+    capture::GelsightPress p;
+    p.source_file = path.string();
+    p.source_sha256 = std::string(64, '0');
+    p.reference = reference;
+    p.peak = cv::imread(path.string(), cv::IMREAD_COLOR);
+    p.frames.assign(12, p.peak);
+    p.frame_indices.assign(12, 0);
+    p.contrast = {contact.score(capture::scoring_image(p.peak))};
+    p.peak_score = p.contrast[0];
+    p.reference_note = "image " + reference_path.string();
+    p.noise = contact.noise();
+    p.pixel_threshold = contact.pixel_threshold();
+    p.trigger = contact.trigger();
+    p.release = contact.release();
+    writer.add_press(material, p);
+  }
+  writer.commit();
+  return out;
+}
+
+void expect_press_checks_pass(const qa::Report& r) {
+  for (const char* id : {"gelsight.reference", "gelsight.peak_score", "gelsight.saturation", "gelsight.blur",
+                         "gelsight.resolution", "layout.required", "layout.dtype", "layout.shape"}) {
+    ASSERT_NE(r.find(id), nullptr) << id;
+    EXPECT_EQ(r.find(id)->status, qa::Status::pass) << id << ": " << r.find(id)->message;
+  }
+}
+
+TEST(RealCaptures, GelSlimBallPressesPass) {
+  const fs::path dir = fs::path(shared_data_dir()) / "gelsight" / "gelslim4";
+  if (shared_data_dir().empty() || !fs::exists(dir / "ref.jpg")) GTEST_SKIP() << "../shared/data/gelsight/gelslim4 is absent";
+  std::vector<fs::path> presses;
+  for (const auto& f : fs::directory_iterator(dir))
+    if (f.path().filename().string().rfind("sample_", 0) == 0) presses.push_back(f.path());
+  std::sort(presses.begin(), presses.end());
+  ASSERT_GE(presses.size(), 5u);
+  TempDir tmp;
+  const qa::Report r = qa::run_qa({gelsight_file(tmp, "Ball", dir / "ref.jpg", presses), {}});
+  expect_press_checks_pass(r);
+  EXPECT_EQ(r.verdict(), "clean") << describe(r);
+}
+
+TEST(RealCaptures, GelSightMiniPressesPassAndThreeAreTooFew) {
+  const fs::path dir = fs::path(shared_data_dir()) / "gelsight" / "gs_sdk_gsmini";
+  if (shared_data_dir().empty() || !fs::exists(dir / "background.png")) GTEST_SKIP() << "../shared/data/gelsight/gs_sdk_gsmini is absent";
+  TempDir tmp;
+  const qa::Report r =
+      qa::run_qa({gelsight_file(tmp, "Objects", dir / "background.png", {dir / "bead.png", dir / "key.png", dir / "seed.png"}), {}});
+  expect_press_checks_pass(r);
+  expect_only(r, "gelsight.press_count");
+}
+
+}  // namespace
+}  // namespace haptex::test
