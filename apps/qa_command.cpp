@@ -28,26 +28,34 @@ class QaCommand : public Command {
   }
 
  private:
+  // The table: every check, or with -q only the failed ones; a failed check's fix under it, and with
+  // -v every place it failed.
   static void print(const qa::Report& r, const GlobalOptions& global) {
     if (!global.quiet) {
       std::cout << "haptex qa " << r.file << " (" << qa::to_string(r.kind) << ")";
       if (r.split) std::cout << " with " << *r.split;
       std::cout << "\n\n";
-      std::size_t width = 2;
-      for (const auto& c : r.checks) width = std::max(width, c.id.size());
-      std::cout << std::left << std::setw(int(width) + 2) << "ID" << std::setw(10) << "SEVERITY" << std::setw(8)
-                << "STATUS" << "MESSAGE\n";
-      for (const auto& c : r.checks) {
-        std::cout << std::setw(int(width) + 2) << c.id << std::setw(10) << qa::to_string(c.severity) << std::setw(8)
-                  << qa::to_string(c.status) << c.message << "\n";
-        if (c.status == qa::Status::fail) {
-          std::cout << std::string(width + 20, ' ') << "fix: " << c.hint << "\n";
-          if (global.verbose)
-            for (const auto& w : c.where) std::cout << std::string(width + 20, ' ') << "at " << w << "\n";
-        }
-      }
-      std::cout << std::right << "\n";
     }
+    std::size_t width = 2;
+    for (const auto& c : r.checks) width = std::max(width, c.id.size());
+    const std::string indent(width + 20, ' ');
+    bool header = false;
+    for (const auto& c : r.checks) {
+      if (global.quiet && c.status != qa::Status::fail) continue;
+      if (!header) {
+        std::cout << std::left << std::setw(int(width) + 2) << "ID" << std::setw(10) << "SEVERITY" << std::setw(8)
+                  << "STATUS" << "MESSAGE\n";
+        header = true;
+      }
+      std::cout << std::left << std::setw(int(width) + 2) << c.id << std::setw(10) << qa::to_string(c.severity)
+                << std::setw(8) << qa::to_string(c.status) << c.message << "\n";
+      if (c.status == qa::Status::fail) {
+        std::cout << indent << "fix: " << c.hint << "\n";
+        if (global.verbose)
+          for (const auto& w : c.where) std::cout << indent << "at " << w << "\n";
+      }
+    }
+    if (header) std::cout << std::right << "\n";
     std::cout << "verdict: " << r.verdict() << " (" << r.errors() << " error" << (r.errors() == 1 ? "" : "s") << ", "
               << r.warnings() << " warning" << (r.warnings() == 1 ? "" : "s") << " in " << r.checks.size()
               << " checks)\n";

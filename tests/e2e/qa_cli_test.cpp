@@ -91,6 +91,12 @@ TEST_F(QaCli, AnErrorExitsOneAndShowsTheFix) {
   EXPECT_NE(r.out.find("at /materials/book/recordings/0/accel"), std::string::npos) << r.out;  // -v lists places
   EXPECT_NE(r.out.find("verdict: errors (1 error, 0 warnings"), std::string::npos) << r.out;
 
+  const CommandResult quiet = run_haptex({"qa", copy, "-q"});  // only what failed, and the verdict
+  EXPECT_EQ(quiet.exit_code, 1);
+  EXPECT_NE(quiet.out.find("layout.units"), std::string::npos) << quiet.out;
+  EXPECT_EQ(quiet.out.find("signal.nan"), std::string::npos) << quiet.out;
+  EXPECT_NE(quiet.out.find("verdict: errors"), std::string::npos) << quiet.out;
+
   const nlohmann::json doc = report(run_haptex({"qa", copy, "--json"}));
   EXPECT_EQ(doc["verdict"], "errors");
   EXPECT_EQ(status_of(doc, "layout.units"), "fail");
