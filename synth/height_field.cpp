@@ -1,5 +1,6 @@
 #include "synth/height_field.hpp"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <opencv2/core.hpp>
@@ -100,12 +101,26 @@ HeightField from_mat(const cv::Mat& field, double period) {
 
 float HeightField::at(int ix, int iy) const { return height_mm[std::size_t(wrap(iy, n)) * std::size_t(n) + std::size_t(wrap(ix, n))]; }
 
+// Cubic B-spline weights of the four samples around fraction t: the interpolant is twice
+// continuously differentiable, so a probe path's second differences carry the surface's curvature,
+// not kinks where the path crosses grid lines (as bilinear sampling would).
+static std::array<double, 4> bspline_weights(double t) {
+  const double t2 = t * t, t3 = t2 * t, u = 1 - t;
+  return {u * u * u / 6, (3 * t3 - 6 * t2 + 4) / 6, (-3 * t3 + 3 * t2 + 3 * t + 1) / 6, t3 / 6};
+}
+
 double HeightField::sample(double x_mm, double y_mm) const {
   const double fx = x_mm / pixel_mm(), fy = y_mm / pixel_mm();
   const double x0 = std::floor(fx), y0 = std::floor(fy);
-  const double tx = fx - x0, ty = fy - y0;
+  const auto wx = bspline_weights(fx - x0), wy = bspline_weights(fy - y0);
   const int ix = int(std::fmod(x0, n)), iy = int(std::fmod(y0, n));
-  return (1 - ty) * ((1 - tx) * at(ix, iy) + tx * at(ix + 1, iy)) + ty * ((1 - tx) * at(ix, iy + 1) + tx * at(ix + 1, iy + 1));
+  double sum = 0;
+  for (int j = 0; j < 4; ++j) {
+    double row = 0;
+    for (int i = 0; i < 4; ++i) row += wx[std::size_t(i)] * at(ix - 1 + i, iy - 1 + j);
+    sum += wy[std::size_t(j)] * row;
+  }
+  return sum;
 }
 
 double HeightField::rms_mm() const {

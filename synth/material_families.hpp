@@ -12,7 +12,7 @@ namespace haptex::synth {
 struct MaterialSpec {
   std::string name;         // "Woven 2"
   SurfaceRecipe surface;
-  double resonance_hz = 250;  // contact resonance at 1 N; it rises with force (Hertzian stiffness ~ F^(1/3))
+  double resonance_hz = 250;  // contact resonance at 1 N; rises as F^(1/6) (Hertzian stiffness ~ F^(1/3))
   double damping = 0.15;
   std::uint64_t seed = 0;     // of this material's surface, presses and recordings
 };

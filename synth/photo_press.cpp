@@ -1,5 +1,7 @@
 #include "synth/photo_press.hpp"
 
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <cstdlib>
 #include <opencv2/imgcodecs.hpp>
@@ -21,6 +23,23 @@ bool far_from_all(const cv::Point& corner, const std::vector<cv::Rect>& crops, i
   return std::all_of(crops.begin(), crops.end(), [&](const cv::Rect& c) {
     return std::max(std::abs(c.x - corner.x), std::abs(c.y - corner.y)) >= separation;
   });
+}
+
+// A GelSight shows a surface's micro-relief at high contrast even where a photograph of it is nearly
+// uniform (plain paper): a crop whose grey variation is under this many levels is stretched to it
+// about its mean, so every press shows its contact.
+constexpr double kMinReliefContrast = 8.0;
+
+cv::Mat with_relief_contrast(const cv::Mat& crop) {
+  cv::Mat grey;
+  cv::cvtColor(crop, grey, cv::COLOR_BGR2GRAY);
+  cv::Scalar mean, deviation;
+  cv::meanStdDev(grey, mean, deviation);
+  if (deviation[0] >= kMinReliefContrast) return crop;
+  const double gain = kMinReliefContrast / std::max(deviation[0], 0.5);
+  const cv::Scalar colour_mean = cv::mean(crop);
+  cv::Mat stretched = (crop - colour_mean) * gain + colour_mean;
+  return stretched;
 }
 
 // The light reaching the camera at contact weight w: the flat gel fading into the photograph.
@@ -73,6 +92,7 @@ std::vector<PressSidecar> write_photo_presses(const std::string& image_path, con
     const cv::Rect& rect = crops[std::size_t(j)];
     cv::Mat crop;
     photo(rect).convertTo(crop, CV_32FC3);
+    crop = with_relief_contrast(crop);
     const PressTimeline timeline = make_press_timeline(derive_seed(seed, 0x9407, std::uint64_t(j)), options.timeline);
     const std::uint64_t noise_seed = derive_seed(seed, 0x4015e, std::uint64_t(j));
     PressVideoWriter writer(out_directory, j);

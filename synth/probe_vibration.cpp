@@ -17,7 +17,8 @@ constexpr double kGain = 0.1;            // tip/handle mass ratio: how much of t
 ProbeVibration::ProbeVibration(const HeightField& tip_field, const MaterialSpec& spec) : field_(tip_field), spec_(spec) {}
 
 double ProbeVibration::resonance_hz(double force_n) const {
-  return spec_.resonance_hz * std::cbrt(std::max(force_n, 0.05) / kReferenceForce);
+  // Hertzian contact: stiffness grows as F^(1/3), so the resonance sqrt(k/m) as F^(1/6).
+  return spec_.resonance_hz * std::pow(std::max(force_n, 0.05) / kReferenceForce, 1.0 / 6.0);
 }
 
 std::vector<double> ProbeVibration::along_path(std::span<const double> x_mm, std::span<const double> y_mm,

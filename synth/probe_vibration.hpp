@@ -18,6 +18,7 @@ class ProbeVibration {
  public:
   // tip_field: the surface smoothed for the tip (smoothed_for_tip).
   ProbeVibration(const HeightField& tip_field, const MaterialSpec& spec);
+  ProbeVibration(HeightField&&, const MaterialSpec&) = delete;  // keeps a reference: the field must outlive it
 
   // Vibration (m/s^2) along a path sampled at fs, with normal force per sample. Noise-free.
   std::vector<double> along_path(std::span<const double> x_mm, std::span<const double> y_mm,

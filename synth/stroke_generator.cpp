@@ -58,7 +58,9 @@ struct Stroke {
   }
   double force_at(double t) const {
     const double glide = smoothstep(t / (0.7 * seconds));
-    const double wander = 1 + 0.04 * std::sin(2 * std::numbers::pi * 0.7 * wander_hz * t + 2 * wander_phase);
+    // Zero at t = 0, so the force flows on from the previous stroke without a step.
+    const double wander = 1 + 0.04 * (std::sin(2 * std::numbers::pi * 0.7 * wander_hz * t + 2 * wander_phase) -
+                                      std::sin(2 * wander_phase));
     return (from_force + (target_force - from_force) * glide) * wander;
   }
 };

@@ -13,6 +13,7 @@ namespace {
 
 constexpr double kFs = 10000;
 constexpr std::size_t kSettle = 1000;  // samples for the resonance to forget its start
+constexpr std::size_t kWindowsPerStroke = 4;  // consecutive windows along each straight stroke
 
 std::vector<double> linear_grid(double low, double high, int count) {
   std::vector<double> values;
@@ -24,7 +25,7 @@ std::vector<double> linear_grid(double low, double high, int count) {
 void mean_spectrum(const ProbeVibration& probe, double speed, double force, int strokes, std::mt19937_64& rng,
                    double* out) {
   std::uniform_real_distribution<double> unit(0, 1);
-  const std::size_t n = kSettle + signal::kWindowSamples;
+  const std::size_t n = kSettle + kWindowsPerStroke * signal::kWindowSamples;
   std::vector<double> x(n), y(n), f(n, force), spectrum(signal::kSpectrumBins);
   std::fill(out, out + signal::kSpectrumBins, 0.0);
   for (int s = 0; s < strokes; ++s) {
@@ -34,8 +35,11 @@ void mean_spectrum(const ProbeVibration& probe, double speed, double force, int 
       y[i] = y0 + speed * std::sin(angle) * double(i) / kFs;
     }
     const std::vector<double> vibration = probe.along_path(x, y, f, kFs);
-    signal::amplitude_spectrum(std::span(vibration).subspan(kSettle, signal::kWindowSamples), spectrum);
-    for (std::size_t k = 0; k < spectrum.size(); ++k) out[k] += spectrum[k] / strokes;
+    for (std::size_t w = 0; w < kWindowsPerStroke; ++w) {
+      signal::amplitude_spectrum(std::span(vibration).subspan(kSettle + w * signal::kWindowSamples, signal::kWindowSamples),
+                                 spectrum);
+      for (std::size_t k = 0; k < spectrum.size(); ++k) out[k] += spectrum[k] / double(strokes * kWindowsPerStroke);
+    }
   }
 }
 

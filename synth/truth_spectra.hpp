@@ -1,7 +1,7 @@
 #pragma once
 // The ground truth a predictor can be scored against: for each material, the noise-free expected
 // amplitude spectrum (DESIGN.md section 3: 100 bins, 10..1000 Hz, of 1000-sample windows) on a grid
-// of constant forces and speeds, averaged over straight strokes in many directions and places.
+// of constant forces and speeds, averaged over 64 windows of straight strokes in many directions and places.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,7 +21,7 @@ struct TruthGrid {
 };
 
 struct TruthOptions {
-  int speeds = 10, forces = 8, strokes_per_point = 16;
+  int speeds = 10, forces = 8, strokes_per_point = 16;  // x 4 windows each: 64 windows per point
 };
 
 TruthGrid expected_spectra(const ProbeVibration& probe, const StrokeLimits& limits, std::uint64_t seed,

@@ -71,10 +71,18 @@ TEST(GelSightRenderer, SurfaceUnderSamplesThePeriodicField) {
   double highest = 0;
   cv::minMaxLoc(surface, nullptr, &highest);
   EXPECT_EQ(highest, 0);
-  // Up to the constant shift, the surface is the field sampled at each pixel's position.
-  const double shift = surface.at<float>(0, 0) - field.sample(pose.x_mm, pose.y_mm);
+  // Up to the constant shift, the surface is the field sampled (bilinearly, as warpAffine does) at
+  // each pixel's position, wrapping around the field's edges.
+  const auto bilinear = [&](double x_mm, double y_mm) {
+    const double fx = x_mm / field.pixel_mm(), fy = y_mm / field.pixel_mm();
+    const int ix = int(std::floor(fx)), iy = int(std::floor(fy));
+    const double tx = fx - ix, ty = fy - iy;
+    return (1 - ty) * ((1 - tx) * field.at(ix, iy) + tx * field.at(ix + 1, iy)) +
+           ty * ((1 - tx) * field.at(ix, iy + 1) + tx * field.at(ix + 1, iy + 1));
+  };
+  const double shift = surface.at<float>(0, 0) - bilinear(pose.x_mm, pose.y_mm);
   for (auto [u, v] : {std::pair{17, 3}, {100, 90}, {239, 179}, {50, 170}}) {
-    const double expected = field.sample(pose.x_mm + u * renderer.pixel_mm(), pose.y_mm + v * renderer.pixel_mm());
+    const double expected = bilinear(pose.x_mm + u * renderer.pixel_mm(), pose.y_mm + v * renderer.pixel_mm());
     // 1e-4 mm is 1 % of the RMS height: warpAffine interpolates at 1/32-pixel steps.
     EXPECT_NEAR(surface.at<float>(v, u) - shift, expected, 1e-4) << u << ", " << v;
   }

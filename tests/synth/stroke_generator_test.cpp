@@ -49,6 +49,9 @@ TEST(StrokeGenerator, StrokesTurnWithADwellAtLowSpeed) {
   double worst = 0;
   for (std::size_t i = 1; i < s.speed.size(); ++i) worst = std::max(worst, std::abs(s.speed[i] - s.speed[i - 1]));
   EXPECT_LT(worst, 1.0);
+  double force_step = 0;  // a hand's force changes smoothly too, across strokes included
+  for (std::size_t i = 1; i < s.force.size(); ++i) force_step = std::max(force_step, std::abs(s.force[i] - s.force[i - 1]));
+  EXPECT_LT(force_step, 0.01);
 }
 
 TEST(StrokeGenerator, PositionFollowsTheSpeed) {
