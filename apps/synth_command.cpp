@@ -12,11 +12,25 @@ namespace haptex::apps {
 namespace {
 
 std::pair<int, int> parse_size(const std::string& text) {
-  int width = 0, height = 0;
+  int width = 0, height = 0, used = 0;
   char x = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d", &width, &x, &height) != 3 || x != 'x' || width < 64 || height < 48)
-    throw input_error("--size", text, "not a frame size", "Write WIDTHxHEIGHT, at least 64x48, e.g. 960x720");
+  const bool parsed = std::sscanf(text.c_str(), "%d%c%d%n", &width, &x, &height, &used) == 3 && x == 'x' &&
+                      used == int(text.size());
+  if (!parsed || width < 64 || height < 48 || width > 4096 || height > 4096)
+    throw input_error("--size", text, "not a frame size from 64x48 to 4096x4096", "Write WIDTHxHEIGHT, e.g. 960x720");
   return {width, height};
+}
+
+// The command line, as `source` provenance: enough to make the same output again. Where the output
+// goes is left out, so the same run written elsewhere gives the same bytes.
+std::string command_line(const CLI::App& app) {
+  std::string line = "haptex synth " + app.get_name();
+  for (const CLI::Option* option : app.get_options())
+    if (option->count() > 0 && option->get_name() != "--help" && option->get_name() != "--output" &&
+        option->get_name() != "--force")
+      for (const std::string& value : option->results())
+        line += " " + option->get_name() + (option->get_expected_max() == 0 ? "" : " " + value);
+  return line;
 }
 
 class SynthCommand : public Command {
@@ -52,14 +66,12 @@ class SynthCommand : public Command {
     synth::SynthSummary summary;
     std::string out;
     if (hatt_->parsed()) {
-      hatt_options_.provenance = "haptex synth hatt --models " + hatt_options_.models_dir + " --seed " +
-                                 std::to_string(hatt_options_.seed);
+      hatt_options_.provenance = command_line(*hatt_);
       summary = synth::synth_hatt(hatt_options_, terminal_progress(global, "synth hatt"));
       out = hatt_options_.out;
     } else {
       std::tie(materials_options_.width, materials_options_.height) = parse_size(size_);
-      materials_options_.provenance = "haptex synth materials -n " + std::to_string(materials_options_.count) +
-                                      " --seed " + std::to_string(materials_options_.seed);
+      materials_options_.provenance = command_line(*materials_);
       summary = synth::synth_materials(materials_options_, terminal_progress(global, "synth materials"));
       out = materials_options_.out;
     }

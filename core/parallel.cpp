@@ -1,5 +1,7 @@
 #include "core/parallel.hpp"
 
+#include <sched.h>
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -10,7 +12,13 @@
 namespace haptex {
 
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& work, unsigned threads) {
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  if (threads == 0) {
+    // The cores this process may run on (taskset, container limits), not all the machine has.
+    cpu_set_t allowed;
+    threads = sched_getaffinity(0, sizeof allowed, &allowed) == 0 ? unsigned(CPU_COUNT(&allowed))
+                                                                  : std::thread::hardware_concurrency();
+    threads = std::max(1u, threads);
+  }
   threads = unsigned(std::min<std::size_t>(threads, count));
   std::atomic<std::size_t> next{0};
   std::exception_ptr first_error;

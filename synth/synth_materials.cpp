@@ -77,18 +77,21 @@ MaterialTruth synthesize_material(const MaterialSpec& spec, const SynthMaterials
 
 SynthSummary synth_materials(const SynthMaterialsOptions& o, const Progress& progress) {
   if (o.count < 1) throw input_error("-n", "", "needs at least one material", "Pass -n 1 or more");
-  prepare_output_directory(o.out, o.overwrite);
+  OutputFolder folder(o.out, o.overwrite);
+  SynthMaterialsOptions staged = o;
+  staged.out = folder.path();
   const std::vector<MaterialSpec> specs = material_specs(o.count, o.seed);
   std::vector<MaterialTruth> truths(specs.size());
   std::mutex mutex;
   std::size_t done = 0;
   parallel_for(specs.size(), [&](std::size_t i) {
-    truths[i] = synthesize_material(specs[i], o);
+    truths[i] = synthesize_material(specs[i], staged);
     std::lock_guard lock(mutex);
     if (progress) progress(++done, specs.size(), specs[i].name);
   });
-  write_truth_file((std::filesystem::path(o.out) / "truth.h5").string(), truths, o.provenance);
-  write_manifest(o.out, o, specs);
+  write_truth_file((std::filesystem::path(staged.out) / "truth.h5").string(), truths, o.provenance);
+  write_manifest(staged.out, o, specs);
+  folder.commit();
 
   SynthSummary summary;
   for (const auto& spec : specs) summary.materials.push_back(spec.name);

@@ -8,16 +8,30 @@
 namespace haptex::synth {
 namespace fs = std::filesystem;
 
-void prepare_output_directory(const std::string& out, bool overwrite) {
+OutputFolder::OutputFolder(std::string out, bool overwrite) : out_(std::move(out)), staging_(out_ + ".partial") {
   std::error_code ec;
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec))
-    throw input_error(out, "", "exists and is not a directory", "Choose a folder with -o");
-  if (fs::is_directory(out, ec) && !fs::is_empty(out, ec) && !overwrite)
-    throw input_error(out, "", "the output folder is not empty", "Choose a new folder with -o, or pass --force");
-  for (const char* sub : {"", "recordings", "gelsight"}) {
-    fs::create_directories(fs::path(out) / sub, ec);
-    if (ec) throw input_error(out, "", "cannot create the output folder (" + ec.message() + ")", "Choose a writable place with -o");
+  if (fs::exists(out_, ec) && !fs::is_directory(out_, ec))
+    throw input_error(out_, "", "exists and is not a directory", "Choose a folder with -o");
+  if (fs::is_directory(out_, ec) && !fs::is_empty(out_, ec) && !overwrite)
+    throw input_error(out_, "", "the output folder is not empty", "Choose a new folder with -o, or pass --force to replace it");
+  fs::remove_all(staging_, ec);  // the leftovers of a killed run
+  for (const char* sub : {"recordings", "gelsight"}) {
+    fs::create_directories(fs::path(staging_) / sub, ec);
+    if (ec) throw input_error(out_, "", "cannot create the output folder (" + ec.message() + ")", "Choose a writable place with -o");
   }
+}
+
+OutputFolder::~OutputFolder() {
+  std::error_code ec;
+  if (!committed_) fs::remove_all(staging_, ec);
+}
+
+void OutputFolder::commit() {
+  std::error_code ec;
+  fs::remove_all(out_, ec);
+  fs::rename(staging_, out_, ec);
+  if (ec) throw failure(staging_ + ": cannot rename to " + out_ + " (" + ec.message() + ")");
+  committed_ = true;
 }
 
 std::string recording_path(const std::string& out, const std::string& material, int index) {

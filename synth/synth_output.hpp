@@ -8,8 +8,23 @@
 
 namespace haptex::synth {
 
-// Creates OUT and its subfolders. Refuses (bad input) a non-empty OUT unless overwrite.
-void prepare_output_directory(const std::string& out, bool overwrite);
+// Everything is written into OUT.partial/ and renamed to OUT by commit(), so a failure half way
+// leaves no OUT (and removes OUT.partial). A non-empty OUT is refused (bad input) unless overwrite,
+// which replaces it whole on commit: nothing of an earlier run survives next to the new one.
+class OutputFolder {
+ public:
+  OutputFolder(std::string out, bool overwrite);
+  ~OutputFolder();
+  OutputFolder(const OutputFolder&) = delete;
+  OutputFolder& operator=(const OutputFolder&) = delete;
+
+  const std::string& path() const { return staging_; }  // where to write until commit()
+  void commit();
+
+ private:
+  std::string out_, staging_;
+  bool committed_ = false;
+};
 
 std::string recording_path(const std::string& out, const std::string& material, int index);
 std::string gelsight_directory(const std::string& out, const std::string& material);

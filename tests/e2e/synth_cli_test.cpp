@@ -90,10 +90,44 @@ TEST(SynthCli, RefusesANonEmptyFolderAndBadOptions) {
   EXPECT_NE(refused.err.find("not empty"), std::string::npos) << refused.err;
   EXPECT_EQ(slurp(dir.file("full/keep.txt")), "mine");
   EXPECT_EQ(run_haptex({"synth", "materials", "-o", dir.file("x"), "--size", "big"}).exit_code, 2);
+  EXPECT_EQ(run_haptex({"synth", "materials", "-o", dir.file("x"), "--size", "160x120junk"}).exit_code, 2);
+  EXPECT_EQ(run_haptex({"synth", "materials", "-o", dir.file("x"), "--size", "60000x45000"}).exit_code, 2);
   EXPECT_EQ(run_haptex({"synth", "materials", "-o", dir.file("x"), "-n", "0"}).exit_code, 2);
   const CommandResult no_models = run_haptex({"synth", "hatt", "--models", dir.file("full"), "-o", dir.file("y")});
   EXPECT_EQ(no_models.exit_code, 2);
   EXPECT_NE(no_models.err.find("no Models_<Material>.xml"), std::string::npos) << no_models.err;
+}
+
+TEST(SynthCli, ForceReplacesTheWholeFolder) {
+  TempDir dir;
+  ASSERT_EQ(synth_materials(dir.file("out")).exit_code, 0);
+  const CommandResult again = run_haptex({"synth", "materials", "-n", "1", "-o", dir.file("out"), "--force", "--size", "160x120",
+                                          "--presses", "1", "--recordings", "1", "--seconds", "0.5"});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_FALSE(fs::exists(dir.file("out/recordings/sandpaper_1_0.xml"))) << "a material of the earlier run survived";
+  EXPECT_FALSE(fs::exists(dir.file("out/gelsight/Sandpaper 1")));
+  EXPECT_TRUE(fs::exists(dir.file("out/recordings/polished_1_0.xml")));
+  EXPECT_FALSE(fs::exists(dir.file("out.partial")));
+}
+
+TEST(SynthCli, AFailureHalfWayLeavesNoOutput) {
+  const std::string data = shared_data_dir();
+  if (data.empty()) GTEST_SKIP() << "../shared/data is absent: a published HaTT model is needed";
+  TempDir dir;
+  fs::create_directories(dir.file("models"));
+  fs::create_directories(dir.file("images"));
+  fs::copy_file(data + "/hatt/models/Models_Book.xml", dir.file("models/Models_Book.xml"));
+  { std::ofstream(dir.file("images/Book_square.jpg")) << "not a jpeg"; }
+  const CommandResult r = run_haptex({"synth", "hatt", "--models", dir.file("models"), "--images", dir.file("images"),
+                                      "-o", dir.file("out"), "--seconds", "0.5"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("Book_square.jpg"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.file("out")));
+  EXPECT_FALSE(fs::exists(dir.file("out.partial")));
+  const CommandResult no_images = run_haptex({"synth", "hatt", "--models", dir.file("models"), "--images", dir.file("nowhere"),
+                                              "-o", dir.file("out2")});
+  EXPECT_EQ(no_images.exit_code, 2);
+  EXPECT_NE(no_images.err.find("not a folder"), std::string::npos) << no_images.err;
 }
 
 TEST(SynthCli, HattModelsAndPhotographsBecomeRecordingsAndPresses) {
