@@ -8,7 +8,7 @@ PACKAGES   := build-essential cmake pkg-config \
               libfftw3-dev libpugixml-dev nlohmann-json3-dev libvalijson-dev libboost-math-dev \
               libcli11-dev libsndfile1-dev gnuplot-nox libgtest-dev libgmock-dev libbenchmark-dev \
               python3-h5py python3-numpy
-BENCH_PACKAGES := python3-scipy hyperfine
+BENCH_PACKAGES := python3-scipy python3-opencv hyperfine
 HAPTEX     := $(BUILD)/haptex
 DEMO       := $(BUILD)/demo
 
