@@ -1,5 +1,7 @@
 #include "qa/check.hpp"
 
+#include <sstream>
+
 #include "qa/catalog.hpp"
 
 namespace haptex::qa {
@@ -58,6 +60,13 @@ CheckResult make_result(std::string_view id, Status status, std::string message,
   const CheckInfo& info = check_info(id);
   return CheckResult{std::string(id), info.severity, status, std::move(message), std::string(info.hint),
                      std::move(where)};
+}
+
+std::string number(double value, int precision) {
+  std::ostringstream out;
+  out.precision(precision);
+  out << value;
+  return out.str();
 }
 
 }  // namespace haptex::qa

@@ -46,4 +46,7 @@ class CheckTally {
 CheckResult make_result(std::string_view id, Status status, std::string message,
                         std::vector<std::string> where = {});
 
+// A figure for a message, with `precision` significant digits.
+std::string number(double value, int precision = 3);
+
 }  // namespace haptex::qa

@@ -16,13 +16,6 @@
 namespace haptex::qa {
 namespace {
 
-std::string number(double value, int precision = 3) {
-  std::ostringstream out;
-  out.precision(precision);
-  out << value;
-  return out.str();
-}
-
 std::string window_where(const WindowTable& t, std::size_t w) {
   const auto m = t.material[w];
   const std::string id = m >= 0 && std::size_t(m) < t.materials.size() ? t.materials[std::size_t(m)] : "#" + std::to_string(m);

@@ -20,13 +20,6 @@
 namespace haptex::qa {
 namespace {
 
-std::string number(double value, int precision = 3) {
-  std::ostringstream out;
-  out.precision(precision);
-  out << value;
-  return out.str();
-}
-
 std::string size_text(cv::Size s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }
 
 double laplacian_variance(const cv::Mat& bgr) {

@@ -10,13 +10,6 @@
 namespace haptex::qa {
 namespace {
 
-std::string number(double value, int precision = 4) {
-  std::ostringstream out;
-  out.precision(precision);
-  out << value;
-  return out.str();
-}
-
 // Samples sitting in flat tops: runs of >= kClipRunSamples identical values at the maximum or minimum.
 std::size_t flat_top_samples(const std::vector<double>& x) {
   if (x.empty()) return 0;
@@ -54,11 +47,11 @@ void check_range(CheckTally& tally, const LoadedRecording& r, const char* name, 
   }
   seen_lo = std::min(seen_lo, lo);
   seen_hi = std::max(seen_hi, hi);
-  const std::string range = "ranges " + number(lo) + " .. " + number(hi) + " " + units;
-  if (lo < low) tally.fail(r.path + "/" + name, range + ", below " + number(low) + " " + units);
-  else if (hi > high) tally.fail(r.path + "/" + name, range + ", above " + number(high) + " " + units);
+  const std::string range = "ranges " + number(lo, 4) + " .. " + number(hi, 4) + " " + units;
+  if (lo < low) tally.fail(r.path + "/" + name, range + ", below " + number(low, 4) + " " + units);
+  else if (hi > high) tally.fail(r.path + "/" + name, range + ", above " + number(high, 4) + " " + units);
   else if (hi < peak_at_least)
-    tally.fail(r.path + "/" + name, range + ", never reaching " + number(peak_at_least) + " " + units);
+    tally.fail(r.path + "/" + name, range + ", never reaching " + number(peak_at_least, 4) + " " + units);
   else tally.pass();
 }
 
@@ -86,7 +79,7 @@ void SignalChecks::add(const LoadedRecording& r) {
       const std::size_t index = std::size_t(it - s.values.begin());
       const auto count = std::count_if(s.values.begin(), s.values.end(), [](double v) { return !std::isfinite(v); });
       bad = name + " has " + std::to_string(count) + " NaN/Inf values, the first at sample " +
-            std::to_string(index / s.columns) + " (" + number(*it) + ")";
+            std::to_string(index / s.columns) + " (" + number(*it, 4) + ")";
     }
   }
   if (!bad.empty()) nan_.fail(r.path, bad);
@@ -133,7 +126,7 @@ void SignalChecks::add(const LoadedRecording& r) {
       clipping_.fail(r.path + "/" + name.substr(0, name.find('[')),
                      name + ": " + std::to_string(flat) + " of " + std::to_string(x.size()) +
                          " samples in flat tops at its extremes (" + number(100.0 * double(flat) / double(x.size()), 3) +
-                         "%, at most " + number(100 * kClipMaxShare) + "%)");
+                         "%, at most " + number(100 * kClipMaxShare, 4) + "%)");
     else clipping_.pass();
   }
 
@@ -150,8 +143,8 @@ void SignalChecks::add(const LoadedRecording& r) {
     if (!std::isfinite(p.total)) spectrum_.skip(r.path + "/accel is not finite");
     else if (p.share() < kAccelBandMinShare || rms < kAccelBandMinRms)
       spectrum_.fail(r.path + "/accel", "100-1000 Hz holds " + number(100 * p.share(), 3) + "% of the power (" +
-                                            number(rms, 3) + " m/s^2 RMS); at least " + number(100 * kAccelBandMinShare) +
-                                            "% and " + number(kAccelBandMinRms) + " m/s^2 expected");
+                                            number(rms, 3) + " m/s^2 RMS); at least " + number(100 * kAccelBandMinShare, 4) +
+                                            "% and " + number(kAccelBandMinRms, 4) + " m/s^2 expected");
     else spectrum_.pass();
   }
 }
@@ -159,8 +152,8 @@ void SignalChecks::add(const LoadedRecording& r) {
 std::vector<CheckResult> SignalChecks::results() const {
   CheckTally clipping = clipping_, force = force_, speed = speed_, spectrum = spectrum_;
   clipping.set_pass_message("at most " + number(100 * worst_clip_share_, 3) + "% of any channel's samples in flat tops");
-  force.set_pass_message("force_normal ranges " + number(force_lo_) + " .. " + number(force_hi_) + " N");
-  speed.set_pass_message("speed ranges " + number(speed_lo_) + " .. " + number(speed_hi_) + " mm/s");
+  force.set_pass_message("force_normal ranges " + number(force_lo_, 4) + " .. " + number(force_hi_, 4) + " N");
+  speed.set_pass_message("speed ranges " + number(speed_lo_, 4) + " .. " + number(speed_hi_, 4) + " mm/s");
   spectrum.set_pass_message("100-1000 Hz holds at least " + number(100 * lowest_band_share_, 3) + "% of the power");
   return {nan_.result(),      rate_.result(),  duration_.result(), short_.result(),
           clipping.result(),  force.result(),  speed.result(),     spectrum.result()};

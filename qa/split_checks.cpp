@@ -19,13 +19,6 @@
 namespace haptex::qa {
 namespace {
 
-std::string number(double value, int precision = 3) {
-  std::ostringstream out;
-  out.precision(precision);
-  out << value;
-  return out.str();
-}
-
 std::string list_text(const std::vector<std::int64_t>& v) {
   std::string text;
   for (auto x : v) text += (text.empty() ? "" : ", ") + std::to_string(x);
