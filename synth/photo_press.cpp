@@ -30,6 +30,10 @@ bool far_from_all(const cv::Point& corner, const std::vector<cv::Rect>& crops, i
 // about its mean, so every press shows its contact.
 constexpr double kMinReliefContrast = 8.0;
 
+// A GelSight's camera is exposed for the lit gel: a photograph's blacks and whites land inside
+// its range, not clipped (a white fleece would otherwise saturate the sensor).
+cv::Mat in_gel_range(const cv::Mat& crop) { return crop * 0.8 + cv::Scalar::all(24); }
+
 cv::Mat with_relief_contrast(const cv::Mat& crop) {
   cv::Mat grey;
   cv::cvtColor(crop, grey, cv::COLOR_BGR2GRAY);
@@ -92,7 +96,7 @@ std::vector<PressSidecar> write_photo_presses(const std::string& image_path, con
     const cv::Rect& rect = crops[std::size_t(j)];
     cv::Mat crop;
     photo(rect).convertTo(crop, CV_32FC3);
-    crop = with_relief_contrast(crop);
+    crop = with_relief_contrast(in_gel_range(crop));
     const PressTimeline timeline = make_press_timeline(derive_seed(seed, 0x9407, std::uint64_t(j)), options.timeline);
     const std::uint64_t noise_seed = derive_seed(seed, 0x4015e, std::uint64_t(j));
     PressVideoWriter writer(out_directory, j);
