@@ -21,16 +21,16 @@ std::string directory_of(const std::string& path) {
   return parent.empty() ? "." : parent.string();
 }
 
+}  // namespace
+
 void fsync_path(const std::string& path, int flags) {
-  int fd = ::open(path.c_str(), flags);
+  int fd = ::open(path.c_str(), flags | O_CLOEXEC);
   if (fd < 0) throw failure(path + ": cannot open to sync it to disk: " + std::strerror(errno));
   const int status = ::fsync(fd);
   const int saved = errno;
   ::close(fd);
   if (status != 0) throw failure(path + ": fsync failed: " + std::strerror(saved));
 }
-
-}  // namespace
 
 void check_output_path(const std::string& path, bool overwrite) {
   const std::string dir = directory_of(path);

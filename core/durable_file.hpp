@@ -8,6 +8,8 @@ namespace haptex {
 // Checks that path can be created: its directory exists and is writable, and it does not exist
 // (or, with overwrite, is a regular file). Throws haptex::Error (bad_input) saying which and what to do.
 void check_output_path(const std::string& path, bool overwrite);
+// fsync one file or (with O_DIRECTORY in flags) directory; throws haptex::Error (failed) naming it.
+void fsync_path(const std::string& path, int flags);
 // fsync `from`, rename it to `to`, fsync the directory.
 void durable_rename(const std::string& from, const std::string& to);
 

@@ -24,4 +24,11 @@ constexpr std::uint64_t name_seed(std::string_view name) {
   return h;
 }
 
+// A uniform draw in [0, 1) from 53 bits of the engine: unlike std::uniform_real_distribution,
+// whose algorithm the standard leaves open, the same on every standard library.
+template <typename Engine>
+double unit_draw(Engine& engine) {
+  return double(engine() >> 11) * 0x1.0p-53;
+}
+
 }  // namespace haptex

@@ -11,7 +11,7 @@
 namespace haptex::synth {
 namespace {
 
-double unit(std::mt19937_64& engine) { return double(engine() >> 11) * 0x1.0p-53; }  // [0, 1), portable
+double unit(std::mt19937_64& engine) { return unit_draw(engine); }
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/random_seeds.hpp"
 
 namespace haptex::synth {
 namespace {
@@ -15,7 +16,7 @@ namespace {
 // so a seed means the same press with every standard library.
 struct Draw {
   std::mt19937_64 engine;
-  double unit() { return double(engine() >> 11) * 0x1.0p-53; }  // [0, 1)
+  double unit() { return unit_draw(engine); }  // [0, 1)
   double between(double lo, double hi) { return lo + (hi - lo) * unit(); }
   int integer(int lo, int hi) { return lo + int(engine() % std::uint64_t(hi - lo + 1)); }  // [lo, hi]
 };

@@ -56,15 +56,6 @@ void write_file(const std::string& path, const void* data, std::size_t size) {
   if (::close(fd) != 0) throw failure(path + ": write failed: " + std::strerror(errno));
 }
 
-void fsync_path(const std::string& path, int flags) {
-  const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
-  if (fd < 0) throw failure(path + ": cannot open to sync it: " + std::strerror(errno));
-  const int status = ::fsync(fd);
-  const int saved = errno;
-  ::close(fd);
-  if (status != 0) throw failure(path + ": fsync failed: " + std::strerror(saved));
-}
-
 double rounded(double value, double step) { return std::round(value / step) * step; }
 
 nlohmann::ordered_json to_json(const PressSidecar& s) {
