@@ -10,9 +10,16 @@
 #include "core/h5/node.hpp"
 #include "qa/check.hpp"
 #include "qa/recording_data.hpp"
-#include "qa/split_manifest.hpp"
+#include "split/manifest_reader.hpp"
 
 namespace haptex::qa {
+
+// The split manifest reader lives in split/ (train and evaluate read manifests too).
+using split::kSetNames;
+using split::SplitManifest;
+using split::SplitManifestDocument;
+using split::SplitMaterial;
+using split::SplitSet;
 
 // layout.*: the file against the tables of schemas/hdf5-layout.md for its haptex_format.
 std::vector<CheckResult> check_layout(const h5::Group& root, const std::string& format);

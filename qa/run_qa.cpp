@@ -7,7 +7,7 @@
 #include "core/h5/file.hpp"
 #include "qa/checkers.hpp"
 #include "qa/layout_spec.hpp"
-#include "qa/split_manifest.hpp"
+#include "split/manifest_reader.hpp"
 
 namespace haptex::qa {
 namespace {
@@ -51,7 +51,7 @@ Report check_hdf5(const QaOptions& options) {
   if (report.kind != FileKind::gelsight) append(report.checks, check_recordings(root));
   if (report.kind != FileKind::recordings) append(report.checks, check_gelsight(root));
   if (report.kind == FileKind::dataset) append(report.checks, check_dataset(root));
-  if (options.split) append(report.checks, check_split(read_split_manifest(*options.split), options.file));
+  if (options.split) append(report.checks, check_split(split::read_split_manifest(*options.split), options.file));
   return report;
 }
 
@@ -73,9 +73,9 @@ Report run_qa(const QaOptions& options) {
   if (first != '{')
     throw input_error(options.file, "", "neither an HDF5 file nor a JSON split manifest",
                       "Give a recordings, gelsight or dataset file, or a split manifest");
-  const SplitManifestDocument manifest = read_split_manifest(options.file);
+  const SplitManifestDocument manifest = split::read_split_manifest(options.file);
   Report report{options.file, FileKind::split, std::nullopt, {}};
-  append(report.checks, check_split(manifest, locate_dataset(manifest)));
+  append(report.checks, check_split(manifest, split::locate_dataset(manifest)));
   return report;
 }
 

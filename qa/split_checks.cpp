@@ -100,7 +100,7 @@ std::vector<CheckResult> check_split(const SplitManifestDocument& doc, const std
       t->skip("the manifest does not follow split.schema.json");
     return results();
   }
-  const SplitManifest m = parse_split_manifest(doc.json);
+  const SplitManifest m = split::parse_split_manifest(doc.json);
 
   // The dataset file, when at hand.
   std::optional<h5::File> file;

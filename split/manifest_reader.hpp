@@ -1,5 +1,5 @@
 #pragma once
-// A split manifest (schemas/split.schema.json) as `haptex qa` reads it: the raw JSON document for the
+// A split manifest (schemas/split.schema.json) as qa, train and evaluate read it: the raw JSON document for the
 // schema check, and its fields once the schema holds.
 #include <array>
 #include <cstdint>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace haptex::qa {
+namespace haptex::split {
 
 enum class SplitSet { train = 0, val = 1, test = 2 };
 inline constexpr std::array<const char*, 3> kSetNames = {"train", "val", "test"};

@@ -1,10 +1,10 @@
-#include "qa/split_manifest.hpp"
+#include "split/manifest_reader.hpp"
 
 #include <filesystem>
 
 #include "core/json/schema.hpp"
 
-namespace haptex::qa {
+namespace haptex::split {
 namespace fs = std::filesystem;
 
 SplitManifestDocument read_split_manifest(const std::string& path) { return {path, json::read_file(path)}; }
@@ -53,4 +53,4 @@ std::optional<std::string> locate_dataset(const SplitManifestDocument& manifest)
   return std::nullopt;
 }
 
-}  // namespace haptex::qa
+}  // namespace haptex::split
