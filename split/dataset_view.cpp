@@ -43,6 +43,7 @@ std::vector<MaterialWindows> read_dataset_windows(const std::string& path) {
       force += action[i * 2 * kSamples + k] / float(kSamples);
       speed += action[i * 2 * kSamples + kSamples + k] / float(kSamples);
     }
+    m.row.push_back(i);
     m.recording.push_back(recording[i]);
     m.start.push_back(start[i]);
     m.force.push_back(force);

@@ -10,6 +10,7 @@ namespace haptex::split {
 struct MaterialWindows {
   std::string id, name;
   std::vector<std::int64_t> recording_samples;  // by recording number
+  std::vector<std::size_t> row;                 // per window: its row in /windows
   std::vector<std::int32_t> recording;          // per window
   std::vector<std::int64_t> start;              // per window
   std::vector<float> speed, force;              // per window: the mean of its action samples

@@ -17,16 +17,6 @@ namespace {
 
 constexpr std::size_t kPresses = 5;  // 3 train, 1 val, 1 test (DESIGN.md section 6)
 
-// Each window's section, or -1 when it crosses a boundary.
-std::vector<int> window_sections(const MaterialWindows& m, std::size_t sections) {
-  std::vector<int> out(m.start.size());
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    const std::int64_t n = m.recording_samples.at(std::size_t(m.recording[i]));
-    out[i] = section_of(align::window_first_sample(m.start[i]), align::window_end_sample(m.start[i]), n, sections);
-  }
-  return out;
-}
-
 Sets random_sets(std::size_t count, std::size_t val, std::size_t test, std::mt19937_64& rng) {
   std::vector<int> order(count);
   std::iota(order.begin(), order.end(), 0);
@@ -84,6 +74,15 @@ std::string format_fraction(double x) {
 }
 
 }  // namespace
+
+std::vector<int> window_sections(const MaterialWindows& m, std::size_t sections) {
+  std::vector<int> out(m.start.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const std::int64_t n = m.recording_samples.at(std::size_t(m.recording[i]));
+    out[i] = section_of(align::window_first_sample(m.start[i]), align::window_end_sample(m.start[i]), n, sections);
+  }
+  return out;
+}
 
 int set_of_section(const Sets& s, int section) {
   if (std::binary_search(s.train.begin(), s.train.end(), section)) return 0;

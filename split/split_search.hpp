@@ -30,6 +30,9 @@ struct MaterialSplit {
   double worst() const { return std::min(val_coverage, test_coverage); }
 };
 
+// Each window's section, or -1 when it crosses a section boundary.
+std::vector<int> window_sections(const MaterialWindows& m, std::size_t sections);
+
 // Which set (0 train, 1 val, 2 test) each section is in, and -1 for windows crossing sections.
 int set_of_section(const Sets& sections, int section);
 

@@ -45,7 +45,7 @@ TEST(Catalog, EveryCheckIsDocumentedWithItsSeverityAndFix) {
 }
 
 TEST(Catalog, ReportsListEveryApplicableCheckOnceInCatalogOrder) {
-  const qa::Report r = qa::run_qa({qa_files().dataset, qa_files().split});
+  const qa::Report r = qa::run_qa({small_pipeline().dataset, small_pipeline().split});
   std::vector<std::string> reported;
   for (const auto& c : r.checks) reported.push_back(c.id);
   std::vector<std::string> catalog;
@@ -56,7 +56,7 @@ TEST(Catalog, ReportsListEveryApplicableCheckOnceInCatalogOrder) {
 
 TEST(Catalog, JsonReportFollowsItsSchema) {
   TempDir dir;
-  const std::string copy = copy_into(dir, qa_files().recordings, "r.h5");
+  const std::string copy = copy_into(dir, small_pipeline().recordings, "r.h5");
   h5::File::open(copy, true).root().open_group("materials/woven_1/recordings/0").set_attr("duration_s", 6.0);
   const qa::Report r = qa::run_qa({copy, {}});
   const nlohmann::json doc = nlohmann::json::parse(qa::to_json(r).dump());

@@ -21,7 +21,7 @@ class DatasetMutation : public ::testing::Test {
  protected:
   qa::Report qa() const { return qa::run_qa({file_, {}}); }
   TempDir dir_;
-  std::string file_ = copy_into(dir_, qa_files().dataset, "dataset.h5");
+  std::string file_ = copy_into(dir_, small_pipeline().dataset, "dataset.h5");
 };
 
 TEST_F(DatasetMutation, MissingSourceHashIsLayoutRequired) {
@@ -89,7 +89,7 @@ TEST_F(DatasetMutation, ActionFromUnfilteredForceIsDatasetCache) {
 
 class SplitMutation : public ::testing::Test {
  protected:
-  qa::Report qa() const { return qa::run_qa({qa_files().dataset, manifest_}); }
+  qa::Report qa() const { return qa::run_qa({small_pipeline().dataset, manifest_}); }
   void edit(const std::function<void(nlohmann::json&)>& change) {
     nlohmann::json doc = read_json(manifest_);
     change(doc);
@@ -97,7 +97,7 @@ class SplitMutation : public ::testing::Test {
   }
   // New sections for material m, with its window counts and coverage recomputed as haptex split does.
   void resplit(nlohmann::json& doc, std::size_t m, const split::Sets& sets) {
-    static const std::vector<split::MaterialWindows> windows = split::read_dataset_windows(qa_files().dataset);
+    static const std::vector<split::MaterialWindows> windows = split::read_dataset_windows(small_pipeline().dataset);
     nlohmann::json& material = doc["materials"][m];
     const auto& w = *std::find_if(windows.begin(), windows.end(), [&](const auto& x) { return x.id == material["id"]; });
     const std::size_t sections = doc["parameters"]["sections"];
@@ -120,7 +120,7 @@ class SplitMutation : public ::testing::Test {
     doc["worst_coverage"] = worst;
   }
   TempDir dir_;
-  std::string manifest_ = copy_into(dir_, qa_files().split, "split.json");
+  std::string manifest_ = copy_into(dir_, small_pipeline().split, "split.json");
 };
 
 TEST_F(SplitMutation, TheManifestAloneIsCheckedWithTheDatasetItNames) {
@@ -216,7 +216,7 @@ TEST_F(SplitMutation, ValidationOutsideTheTrainingRangeIsSplitCoverage) {
   double val_coverage = 1;
   edit([&](nlohmann::json& d) {
     // Validation: the three sections with the fastest strokes, where training has nothing like them.
-    const auto windows = split::read_dataset_windows(qa_files().dataset);
+    const auto windows = split::read_dataset_windows(small_pipeline().dataset);
     const auto& w = windows.front();
     ASSERT_EQ(d["materials"][0]["id"], w.id);
     std::vector<double> speed(25, 0.0), count(25, 0.0);
@@ -273,7 +273,7 @@ TEST_F(SplitMutation, PressMissingFromTheDatasetIsSplitPresses) {
 TEST_F(SplitMutation, SplitOfAnotherDatasetFailsOnlyItsHashWhenTheTableMatches) {
   // A dataset rebuilt from the same inputs differs in bytes (created_utc), not in windows.
   TempDir other;
-  const std::string copy = copy_into(other, qa_files().dataset, "d.h5");
+  const std::string copy = copy_into(other, small_pipeline().dataset, "d.h5");
   Edit(copy).root().set_attr("created_utc", "2000-01-01T00:00:00Z");
   expect_only(qa::run_qa({copy, manifest_}), "split.hashes");
 }

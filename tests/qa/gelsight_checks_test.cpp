@@ -17,7 +17,7 @@ class GelsightMutation : public ::testing::Test {
  protected:
   qa::Report qa() const { return qa::run_qa({file_, {}}); }
   TempDir dir_;
-  std::string file_ = copy_into(dir_, qa_files().gelsight, "gelsight.h5");
+  std::string file_ = copy_into(dir_, small_pipeline().gelsight, "gelsight.h5");
 };
 
 // Every frame of an N x H x W x 3 stack through `change` (RGB in, RGB out).

@@ -18,19 +18,19 @@ void expect_clean(const qa::Report& report, qa::FileKind kind, std::size_t check
 }
 
 TEST(GoodFiles, RecordingsPassEveryCheck) {
-  expect_clean(qa::run_qa({qa_files().recordings, {}}), qa::FileKind::recordings, 15);
+  expect_clean(qa::run_qa({small_pipeline().recordings, {}}), qa::FileKind::recordings, 15);
 }
 
 TEST(GoodFiles, GelsightPassesEveryCheck) {
-  expect_clean(qa::run_qa({qa_files().gelsight, {}}), qa::FileKind::gelsight, 10);
+  expect_clean(qa::run_qa({small_pipeline().gelsight, {}}), qa::FileKind::gelsight, 10);
 }
 
 TEST(GoodFiles, DatasetWithItsSplitPassesEveryCheck) {
-  expect_clean(qa::run_qa({qa_files().dataset, qa_files().split}), qa::FileKind::dataset, 4 + 11 + 6 + 2 + 9);
+  expect_clean(qa::run_qa({small_pipeline().dataset, small_pipeline().split}), qa::FileKind::dataset, 4 + 11 + 6 + 2 + 9);
 }
 
 TEST(GoodFiles, SplitManifestAloneFindsItsDataset) {
-  expect_clean(qa::run_qa({qa_files().split, {}}), qa::FileKind::split, 9);
+  expect_clean(qa::run_qa({small_pipeline().split, {}}), qa::FileKind::split, 9);
 }
 
 }  // namespace

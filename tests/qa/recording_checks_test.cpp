@@ -19,7 +19,7 @@ class RecordingsMutation : public ::testing::Test {
  protected:
   qa::Report qa() const { return qa::run_qa({file_, {}}); }
   TempDir dir_;  // before file_: members are made in this order
-  std::string file_ = copy_into(dir_, qa_files().recordings, "recordings.h5");
+  std::string file_ = copy_into(dir_, small_pipeline().recordings, "recordings.h5");
 };
 
 TEST_F(RecordingsMutation, MissingDatasetIsLayoutRequired) {

@@ -1,0 +1,21 @@
+#pragma once
+// Good files from the real pipeline, made once per test program: haptex synth materials (2
+// materials, 5 presses, 3 s recordings, 160 x 120 frames), convert, capture extract, align and split.
+// Tests read them or copy a file and break one thing in the copy.
+#include <string>
+
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+
+struct SmallPipeline {
+  std::string recordings, gelsight, dataset, split;
+};
+
+// Builds the files on first use (each step through the haptex binary, as a user runs it).
+const SmallPipeline& small_pipeline();
+
+// A copy of `file` in a fresh folder owned by `dir`, named `name`.
+std::string copy_into(const TempDir& dir, const std::string& file, const std::string& name);
+
+}  // namespace haptex::test
