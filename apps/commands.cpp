@@ -10,6 +10,8 @@ std::unique_ptr<Command> make_capture_command();
 std::unique_ptr<Command> make_synth_command();
 std::unique_ptr<Command> make_align_command();
 std::unique_ptr<Command> make_split_command();
+std::unique_ptr<Command> make_train_command();
+std::unique_ptr<Command> make_predict_command();
 
 std::vector<std::unique_ptr<Command>> all_commands() {
   std::vector<std::unique_ptr<Command>> commands;
@@ -20,6 +22,8 @@ std::vector<std::unique_ptr<Command>> all_commands() {
   commands.push_back(make_align_command());
   commands.push_back(make_split_command());
   commands.push_back(make_qa_command());
+  commands.push_back(make_train_command());
+  commands.push_back(make_predict_command());
   return commands;
 }
 

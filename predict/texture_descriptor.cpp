@@ -107,4 +107,11 @@ std::vector<float> texture_descriptor(const cv::Mat& peak, const cv::Mat& refere
   return out;
 }
 
+cv::Mat self_reference(const cv::Mat& image) {
+  cv::Mat out;
+  const double sigma = std::max(image.rows, image.cols) / 16.0;
+  cv::GaussianBlur(image, out, {0, 0}, sigma, sigma, cv::BORDER_REFLECT);
+  return out;
+}
+
 }  // namespace haptex::predict

@@ -26,4 +26,9 @@ std::size_t descriptor_length(const TextureDescriptorSpec& spec = {});
 // they differ in size or are empty.
 std::vector<float> texture_descriptor(const cv::Mat& peak, const cv::Mat& reference, const TextureDescriptorSpec& spec = {});
 
+// A stand-in for the no-contact reference when a user has only the press image: the image blurred
+// at 1/16 of its size keeps the sensor's lighting and vignetting and drops the texture. The
+// descriptor's lowest radial bins are less reliable with it than with a real reference.
+cv::Mat self_reference(const cv::Mat& image);
+
 }  // namespace haptex::predict

@@ -1,0 +1,151 @@
+// haptex predict model.h5 (--image IMG [--reference REF] | --material ID) (--force F --speed V | --csv FILE) [--json]
+#include <cstdio>
+#include <iostream>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "apps/command.hpp"
+#include "core/error.hpp"
+#include "predict/model_file.hpp"
+#include "predict/predictor.hpp"
+#include "predict/trajectory.hpp"
+
+namespace haptex::apps {
+namespace {
+
+// RGB, as the dataset stores press images (OpenCV reads BGR).
+cv::Mat read_rgb(const std::string& path) {
+  cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
+  if (image.empty()) throw input_error(path, "", "not an image OpenCV can read", "Give a PNG or JPEG frame of the sensor");
+  cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
+  return image;
+}
+
+struct Query {
+  std::size_t sample = 0;
+  float force = 0, speed = 0;
+  bool out_of_range = false;
+  std::vector<float> spectrum;
+};
+
+class PredictCommand : public Command {
+ public:
+  std::string name() const override { return "predict"; }
+  std::string summary() const override { return "Predict the vibration spectrum for a texture image and a force and speed"; }
+
+  void declare(CLI::App& app) override {
+    app.add_option("model", model_path_, "Model file (haptex train)")->required()->check(CLI::ExistingFile);
+    auto* image = app.add_option("--image", image_, "GelSight press image (PNG/JPEG), unified models")->check(CLI::ExistingFile);
+    app.add_option("--reference", reference_, "The sensor's no-contact frame for --image")->check(CLI::ExistingFile)->needs(image);
+    auto* material = app.add_option("--material", material_, "A training material's id instead of an image")->excludes(image);
+    auto* force = app.add_option("--force", force_, "Normal force, N")->check(CLI::Range(0.0, 1e6));
+    auto* speed = app.add_option("--speed", speed_, "Tangential speed, mm/s")->check(CLI::Range(0.0, 1e9));
+    auto* csv = app.add_option("--csv", csv_, "Force/speed trajectory at 10 kHz: columns force, speed (time_s optional)")
+                    ->check(CLI::ExistingFile)->excludes(force)->excludes(speed);
+    app.add_option("--hop", hop_, "Samples between predictions along --csv (the model's window step)")->capture_default_str()->check(CLI::Range(1, 100000));
+    force->needs(speed);
+    speed->needs(force);
+    (void)material;
+    (void)csv;
+  }
+
+  int run(const GlobalOptions& global) override {
+    if (csv_.empty() && (force_ < 0 || speed_ < 0))
+      throw Error(Error::Kind::bad_input, "predict: give --force and --speed, or a trajectory with --csv");
+    if (image_.empty() && material_.empty()) throw Error(Error::Kind::bad_input, "predict: give --image (and --reference) or --material");
+    const predict::Model model = predict::read_model(model_path_);
+    predict::Predictor predictor(model);
+    const predict::TextureCode code = texture(predictor);
+    std::vector<Query> queries;
+    float action[predict::kActionValues];
+    if (csv_.empty()) {
+      std::fill(action, action + 10, float(force_));
+      std::fill(action + 10, action + 20, float(speed_));
+      queries.push_back(query(predictor, code, action, 0));
+    } else {
+      const predict::Trajectory t = predict::read_trajectory(csv_);
+      if (t.force.size() < 10) throw input_error(csv_, "", "fewer than 10 samples (1 ms)", "Give a longer trajectory");
+      for (std::size_t s = 9; s < t.force.size(); s += std::size_t(hop_)) {
+        predict::action_at(t, s, action);
+        queries.push_back(query(predictor, code, action, s));
+      }
+    }
+    if (global.json)
+      print_json(model, code, queries);
+    else if (!csv_.empty())
+      print_csv(queries);
+    else
+      print_table(queries.front(), global);
+    return 0;
+  }
+
+ private:
+  predict::TextureCode texture(const predict::Predictor& predictor) {
+    const predict::Model& model = predictor.model();
+    if (!material_.empty()) {
+      const int m = model.material_index(material_);
+      if (m < 0) throw input_error(model_path_, "/materials/ids", "no material '" + material_ + "'", "Use one of the ids haptex info lists");
+      return predictor.material_code(m);
+    }
+    if (model.variant != predict::Variant::unified)
+      throw input_error(model_path_, "/", "a per-material model has no texture encoder", "Give --material ID instead of --image");
+    const cv::Mat peak = read_rgb(image_);
+    const cv::Mat reference = reference_.empty() ? predict::self_reference(peak) : read_rgb(reference_);
+    if (reference.size() != peak.size())
+      throw input_error(reference_, "", "the reference is not the size of the image", "Give the no-contact frame of the same sensor");
+    descriptor_ = predict::texture_descriptor(peak, reference, model.descriptor);
+    return predictor.encode_descriptor(descriptor_);
+  }
+
+  static Query query(predict::Predictor& predictor, const predict::TextureCode& code, const float* action, std::size_t sample) {
+    Query q{sample, action[9], action[19], false, std::vector<float>(predict::kSpectrumBins)};
+    q.out_of_range = predictor.predict(code, std::span<const float>(action, predict::kActionValues), q.spectrum);
+    return q;
+  }
+
+  void print_table(const Query& q, const GlobalOptions& global) const {
+    if (q.out_of_range && !global.quiet)
+      std::cerr << "note: force " << q.force << " N or speed " << q.speed
+                << " mm/s lies outside the training range; the model saturated it to the nearest trained value\n";
+    if (reference_.empty() && !image_.empty() && !global.quiet)
+      std::cerr << "note: no --reference: the image's own blur stands in for the no-contact frame\n";
+    std::printf("frequency_hz,amplitude_m_s2\n");
+    for (std::size_t k = 0; k < q.spectrum.size(); ++k) std::printf("%zu,%.6g\n", 10 * (k + 1), double(q.spectrum[k]));
+  }
+
+  static void print_csv(const std::vector<Query>& queries) {
+    std::printf("sample,time_s,force_n,speed_mm_s,out_of_range");
+    for (int k = 1; k <= predict::kSpectrumBins; ++k) std::printf(",a_%dhz", 10 * k);
+    std::printf("\n");
+    for (const Query& q : queries) {
+      std::printf("%zu,%.4f,%.6g,%.6g,%d", q.sample, double(q.sample) * 1e-4, double(q.force), double(q.speed), q.out_of_range ? 1 : 0);
+      for (float a : q.spectrum) std::printf(",%.6g", double(a));
+      std::printf("\n");
+    }
+  }
+
+  void print_json(const predict::Model& model, const predict::TextureCode& code, const std::vector<Query>& queries) const {
+    nlohmann::json out = {{"model", model_path_}, {"variant", predict::variant_name(model.variant)},
+                          {"frequencies_hz", nlohmann::json::array()}, {"queries", nlohmann::json::array()}};
+    for (int k = 1; k <= predict::kSpectrumBins; ++k) out["frequencies_hz"].push_back(10 * k);
+    if (!material_.empty()) out["material"] = material_;
+    if (!image_.empty()) out["image"] = image_, out["reference"] = reference_.empty() ? nlohmann::json(nullptr) : nlohmann::json(reference_);
+    if (!descriptor_.empty()) out["descriptor"] = descriptor_;
+    if (code.latent.size()) out["latent"] = std::vector<float>(code.latent.data(), code.latent.data() + code.latent.size());
+    for (const Query& q : queries)
+      out["queries"].push_back({{"sample", q.sample}, {"force_n", q.force}, {"speed_mm_s", q.speed}, {"out_of_range", q.out_of_range},
+                                {"spectrum", q.spectrum}});
+    std::cout << out.dump(2) << "\n";
+  }
+
+  std::string model_path_, image_, reference_, material_, csv_;
+  double force_ = -1, speed_ = -1;
+  int hop_ = 100;
+  std::vector<float> descriptor_;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_predict_command() { return std::make_unique<PredictCommand>(); }
+
+}  // namespace haptex::apps

@@ -1,0 +1,133 @@
+// haptex train dataset.h5 --split split.json -o model.h5 [--per-material] [sizes] [--seed S] [--log FILE]
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include "apps/command.hpp"
+#include "apps/terminal_progress.hpp"
+#include "core/durable_file.hpp"
+#include "core/h5/file.hpp"
+#include "core/json/schema.hpp"
+#include "core/version.hpp"
+#include "predict/model_file.hpp"
+#include "predict/train.hpp"
+
+namespace haptex::apps {
+namespace {
+
+nlohmann::json epoch_json(const predict::EpochReport& r) {
+  nlohmann::json e = {{"stage", r.stage}, {"epoch", r.epoch}, {"train_loss", r.train_loss}, {"val_loss", r.val_loss},
+                      {"best", r.best}, {"seconds", r.seconds}};
+  if (r.val_accuracy >= 0) e["val_accuracy"] = r.val_accuracy;
+  return e;
+}
+
+std::size_t parameters(const predict::Model& m) {
+  std::size_t n = m.texture.layers.empty() ? 0 : m.texture.parameters() + m.classifier.parameters();
+  for (const auto& net : m.nets) n += net.action.parameters() + net.predictor.parameters();
+  return n;
+}
+
+class TrainCommand : public Command {
+ public:
+  std::string name() const override { return "train"; }
+  std::string summary() const override { return "Train the action-conditional spectrum model on a dataset and its split"; }
+
+  void declare(CLI::App& app) override {
+    app.add_option("dataset", dataset_, "Dataset file (haptex align)")->required();
+    app.add_option("--split", split_, "Split manifest (haptex split) made from this dataset")->required();
+    app.add_option("-o,--output", output_, "Model file to write (HDF5)")->required();
+    app.add_option("--log", log_, "Training log to write (JSON); default: the model's name with .training.json");
+    app.add_flag("--per-material", per_material_, "One action encoder and predictor per material, no texture encoder");
+    app.add_option("--latent", options_.latent, "Texture latent size")->capture_default_str()->check(CLI::Range(1, 4096));
+    app.add_option("--texture-hidden", options_.texture_hidden, "Texture encoder hidden units")->capture_default_str()->check(CLI::Range(1, 4096));
+    app.add_option("--action-hidden", options_.action_hidden, "Action encoder units per layer")->capture_default_str()->check(CLI::Range(1, 4096));
+    app.add_option("--action-layers", options_.action_layers, "Action encoder layers")->capture_default_str()->check(CLI::Range(1, 8));
+    app.add_option("--hidden", options_.predictor_hidden, "Predictor hidden units per layer")->capture_default_str()->check(CLI::Range(1, 4096));
+    app.add_option("--hidden-layers", options_.predictor_layers, "Predictor hidden layers")->capture_default_str()->check(CLI::Range(0, 8));
+    app.add_option("--epochs", options_.max_epochs, "Most epochs of stage 2 (unified)")->capture_default_str()->check(CLI::Range(1, 100000));
+    app.add_option("--patience", options_.patience, "Epochs without a better validation loss before stopping")->capture_default_str()->check(CLI::Range(1, 100000));
+    app.add_option("--batch", options_.batch, "Mini-batch size (unified)")->capture_default_str()->check(CLI::Range(1, 1 << 20));
+    app.add_option("--learning-rate", options_.learning_rate, "Adam's step size")->capture_default_str()->check(CLI::Range(1e-7, 1.0));
+    app.add_option("--seed", options_.seed, "Random seed (same seed, same weights)")->capture_default_str();
+    app.add_option("--threads", options_.threads, "Threads (0: every core); the weights do not depend on it")->capture_default_str();
+    app.add_flag("--force", force_, "Replace the output files if they exist");
+  }
+
+  int run(const GlobalOptions& global) override {
+    if (log_.empty()) log_ = std::filesystem::path(output_).replace_extension(".training.json").string();
+    check_output_path(output_, force_);
+    check_output_path(log_, force_);
+    options_.variant = per_material_ ? predict::Variant::per_material : predict::Variant::unified;
+    const auto start = std::chrono::steady_clock::now();
+    const split::DatasetSplit split = split::read_dataset_split(dataset_, split_);
+    const Progress loading = terminal_progress(global, "texture descriptors");
+    const predict::TrainingData data = predict::load_training_data(split, {}, [&](std::size_t done, std::size_t total) {
+      if (loading) loading(done, total, "presses");
+    });
+    nlohmann::json epochs = nlohmann::json::array();
+    const bool show = !global.quiet && !global.json && (global.verbose > 0 || isatty(STDERR_FILENO));
+    const predict::Model model = predict::train_model(data, options_, [&](const predict::EpochReport& r) {
+      epochs.push_back(epoch_json(r));
+      if (show) print_epoch(r);
+    });
+    predict::write_model(model, output_, force_, source());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const nlohmann::json log = {{"format", "training-log/1"}, {"haptex_version", kVersion}, {"created_utc", h5::utc_now_iso8601()},
+                                {"source", source()}, {"model", output_},
+                                {"dataset", {{"path", dataset_}, {"sha256", split.dataset_sha256}}},
+                                {"split", {{"path", split_}, {"sha256", split.manifest_sha256}}},
+                                {"options", options_.to_json()}, {"epochs", epochs}, {"metrics", model.metrics},
+                                {"parameters", parameters(model)}, {"seconds", seconds}};
+    json::write_file(log, "training-log.schema.json", log_);
+    if (global.json)
+      std::cout << log.dump(2) << "\n";
+    else if (!global.quiet)
+      print_summary(model, seconds);
+    return 0;
+  }
+
+ private:
+  std::string source() const {
+    return "haptex train " + dataset_ + " --split " + split_ + " -o " + output_ + (per_material_ ? " --per-material" : "") +
+           " --seed " + std::to_string(options_.seed);
+  }
+
+  static void print_epoch(const predict::EpochReport& r) {
+    if (r.val_accuracy >= 0)
+      std::fprintf(stderr, "%-10s epoch %3d/%d  train %.4f  val %.4f  val accuracy %.3f  %6.1f s%s\n", r.stage.c_str(), r.epoch,
+                   r.max_epochs, r.train_loss, r.val_loss, r.val_accuracy, r.seconds, r.best ? "  *" : "");
+    else
+      std::fprintf(stderr, "%-10s epoch %3d/%d  train %.5f  val %.5f m/s^2  %6.1f s%s\n", r.stage.c_str(), r.epoch, r.max_epochs,
+                   r.train_loss, r.val_loss, r.seconds, r.best ? "  *" : "");
+  }
+
+  void print_summary(const predict::Model& m, double seconds) const {
+    const auto& base = m.metrics["mean_spectrum_baseline"];
+    std::cout << "wrote " << output_ << " (" << predict::variant_name(m.variant) << ", " << m.material_ids.size() << " materials, "
+              << parameters(m) << " parameters) and " << log_ << " in " << std::fixed << std::setprecision(1) << seconds << " s\n";
+    if (m.metrics.contains("texture"))
+      std::cout << "texture encoder: material accuracy " << std::setprecision(3) << m.metrics["texture"]["train_accuracy"].get<double>()
+                << " on training images, " << m.metrics["texture"]["val_accuracy"].get<double>() << " on the validation presses\n";
+    if (m.variant == predict::Variant::unified)
+      std::cout << "spectrum: validation distance " << std::setprecision(5) << m.metrics["spectrum"]["val_distance"].get<double>()
+                << " m/s^2 after " << m.metrics["spectrum"]["best_epoch"].get<int>() << " epochs";
+    else
+      std::cout << "spectrum: " << m.nets.size() << " per-material models";
+    std::cout << "; mean-spectrum baseline " << std::setprecision(5) << base["val_distance"].get<double>() << " m/s^2\n";
+  }
+
+  std::string dataset_, split_, output_, log_;
+  predict::TrainOptions options_;
+  bool per_material_ = false, force_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_train_command() { return std::make_unique<TrainCommand>(); }
+
+}  // namespace haptex::apps

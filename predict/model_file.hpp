@@ -1,0 +1,22 @@
+#pragma once
+// The model file (haptex_format model/1; schemas/hdf5-layout.md): weights, normalisation
+// statistics, the texture descriptor's spec, the training options and metrics, and the hashes of
+// the dataset and split it was trained on. Plain float32 arrays and attributes, so numpy can run
+// the network from it.
+#include <string>
+
+#include "predict/model.hpp"
+
+namespace haptex::predict {
+
+inline constexpr const char* kModelFormat = "model/1";
+
+// Written to PATH.partial and renamed (core/h5/atomic_file.hpp). Throws haptex::Error (bad_input)
+// when the output exists and overwrite is false.
+void write_model(const Model& model, const std::string& path, bool overwrite, const std::string& source);
+
+// Throws haptex::Error (bad_input) naming the file and the object when it is not a model file or
+// its arrays disagree in size.
+Model read_model(const std::string& path);
+
+}  // namespace haptex::predict

@@ -1,0 +1,96 @@
+#include "predict/predictor.hpp"
+
+#include "core/error.hpp"
+#include "predict/spectrum_net.hpp"
+
+namespace haptex::predict {
+namespace {
+
+// One dense layer on a vector into a preallocated output.
+void apply(const DenseLayer& l, const Eigen::VectorXf& in, Eigen::VectorXf& out) {
+  out.noalias() = l.weight * in;
+  out += l.bias;
+  activate(l.activation, out);
+}
+
+}  // namespace
+
+Predictor::Predictor(const Model& model) : model_(model), action_(kActionValues) {
+  std::size_t widest = 0;
+  for (const SpectrumNet& net : model.nets) widest = std::max(widest, net.action.layers.size() + net.predictor.layers.size());
+  layer_.resize(widest);
+  // Sized for the first net; every net of a model has the same sizes.
+  const SpectrumNet& net = model.nets.at(0);
+  std::size_t k = 0;
+  for (const auto* mlp : {&net.action, &net.predictor})
+    for (const DenseLayer& l : mlp->layers) layer_[k++].resize(l.weight.rows());
+}
+
+TextureCode Predictor::encode(const cv::Mat& peak, const cv::Mat& reference) const {
+  if (model_.variant != Variant::unified)
+    throw failure("a per-material model has no texture encoder: choose the material instead of an image");
+  const std::vector<float> d = texture_descriptor(peak, reference, model_.descriptor);
+  return encode_descriptor(d);
+}
+
+TextureCode Predictor::encode_descriptor(std::span<const float> descriptor) const {
+  const Normalisation& n = model_.normalisation;
+  if (Eigen::Index(descriptor.size()) != n.descriptor_mean.size())
+    throw failure("encode: the descriptor has " + std::to_string(descriptor.size()) + " values, the model expects " +
+                  std::to_string(n.descriptor_mean.size()));
+  Eigen::MatrixXf x = Eigen::Map<const Eigen::VectorXf>(descriptor.data(), Eigen::Index(descriptor.size()));
+  x = (x - n.descriptor_mean).cwiseQuotient(n.descriptor_scale);
+  MlpTrace trace;
+  forward(model_.texture, x, trace);
+  return encode_latent(trace.out.back().col(0));
+}
+
+TextureCode Predictor::encode_latent(const Eigen::VectorXf& latent) const {
+  const DenseLayer& first = model_.nets.at(0).predictor.layers.front();
+  TextureCode code;
+  code.latent = latent;
+  code.first_layer = first.weight.leftCols(latent.size()) * latent + first.bias;
+  return code;
+}
+
+TextureCode Predictor::material_code(int material) const {
+  if (material < 0 || std::size_t(material) >= model_.material_ids.size())
+    throw failure("material_code: no material " + std::to_string(material) + " in the model");
+  if (model_.variant == Variant::unified) return encode_latent(model_.material_latents.col(material));
+  TextureCode code;
+  code.net = material;
+  code.first_layer = model_.nets.at(std::size_t(material)).predictor.layers.front().bias;
+  return code;
+}
+
+bool Predictor::predict(const TextureCode& code, std::span<const float> action, std::span<float> spectrum) {
+  const Normalisation& n = model_.normalisation;
+  std::copy(action.begin(), action.end(), action_.data());
+  const bool saturated = saturate_action(n, std::span<float>(action_.data(), std::size_t(action_.size())));
+  action_ = (action_ - n.action_mean).cwiseQuotient(n.action_scale);
+
+  const SpectrumNet& net = model_.nets[std::size_t(code.net)];
+  std::size_t k = 0;
+  const Eigen::VectorXf* in = &action_;
+  for (const DenseLayer& l : net.action.layers) apply(l, *in, layer_[k]), in = &layer_[k++];
+  // The texture's share of the predictor's first layer was computed once, in the code.
+  const DenseLayer& first = net.predictor.layers.front();
+  layer_[k].noalias() = first.weight.rightCols(in->size()) * *in;
+  layer_[k] += code.first_layer;
+  activate(first.activation, layer_[k]);
+  in = &layer_[k++];
+  for (std::size_t i = 1; i < net.predictor.layers.size(); ++i) apply(net.predictor.layers[i], *in, layer_[k]), in = &layer_[k++];
+  Eigen::Map<Eigen::VectorXf>(spectrum.data(), Eigen::Index(spectrum.size())) = in->cwiseProduct(n.target_scale);
+  return saturated;
+}
+
+Eigen::MatrixXf Predictor::predict_batch(const TextureCode& code, const Eigen::MatrixXf& actions, std::size_t* out_of_range) const {
+  const Eigen::MatrixXf normalised = normalised_actions(model_.normalisation, actions, out_of_range);
+  const Eigen::MatrixXf latents = code.latent.size() ? Eigen::MatrixXf(code.latent.replicate(1, actions.cols()))
+                                                     : Eigen::MatrixXf(0, actions.cols());
+  SpectrumTrace trace;
+  return model_.normalisation.target_scale.asDiagonal() *
+         spectrum_forward(model_.nets[std::size_t(code.net)], latents, normalised, trace);
+}
+
+}  // namespace haptex::predict

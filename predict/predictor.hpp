@@ -1,0 +1,49 @@
+#pragma once
+// Inference: encode a texture once, then predict a spectrum per action (per millisecond in a
+// haptic loop). predict() does not allocate: every buffer is sized when the Predictor is made.
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+#include <span>
+#include <vector>
+
+#include "predict/model.hpp"
+
+namespace haptex::predict {
+
+struct TextureCode {
+  int net = 0;                  // which SpectrumNet predicts (per-material: the material)
+  Eigen::VectorXf latent;       // unified: the texture latent; per-material: empty
+  Eigen::VectorXf first_layer;  // the predictor's first layer applied to the latent, plus its bias
+};
+
+class Predictor {
+ public:
+  // Keeps a reference: the model must outlive the predictor.
+  explicit Predictor(const Model& model);
+
+  // Unified model: the code of a GelSight press (peak frame and no-contact reference, RGB as the
+  // dataset stores them, one size). Throws haptex::Error for the per-material variant.
+  TextureCode encode(const cv::Mat& peak, const cv::Mat& reference) const;
+  TextureCode encode_descriptor(std::span<const float> descriptor) const;
+  TextureCode encode_latent(const Eigen::VectorXf& latent) const;
+  // A training material's code: per-material, its own network; unified, its mean training latent.
+  TextureCode material_code(int material) const;
+
+  // action: kActionValues raw values (10 force in N, then 10 speed in mm/s, the last the newest);
+  // spectrum: kSpectrumBins amplitudes (m/s^2). Returns true when the action lay outside the
+  // training range and was saturated. Allocation-free.
+  bool predict(const TextureCode& code, std::span<const float> action, std::span<float> spectrum);
+
+  // Columns of raw actions -> columns of spectra; counts saturated columns in out_of_range.
+  Eigen::MatrixXf predict_batch(const TextureCode& code, const Eigen::MatrixXf& actions,
+                                std::size_t* out_of_range = nullptr) const;
+
+  const Model& model() const { return model_; }
+
+ private:
+  const Model& model_;
+  Eigen::VectorXf action_;
+  std::vector<Eigen::VectorXf> layer_;  // action encoder outputs, then predictor outputs
+};
+
+}  // namespace haptex::predict

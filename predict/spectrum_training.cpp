@@ -1,0 +1,115 @@
+#include "predict/spectrum_training.hpp"
+
+#include <chrono>
+#include <numeric>
+#include <random>
+
+#include "core/random_seeds.hpp"
+#include "predict/adam.hpp"
+#include "predict/chunked_batch.hpp"
+#include "predict/spectrum_net.hpp"
+
+namespace haptex::predict {
+namespace {
+
+// The inputs and targets of some columns. Training columns draw one of their material's training
+// image latents from (seed, epoch, column); validation columns take their material's validation presses in turn.
+struct Batch {
+  Eigen::MatrixXf latents, actions, targets;
+};
+
+Batch gather(const SpectrumProblem& p, const std::size_t* columns, std::size_t n, bool training, std::uint64_t draw_seed) {
+  Batch b;
+  const int latent = p.latent_size();
+  b.latents.resize(latent, Eigen::Index(n));
+  b.actions.resize(p.actions->rows(), Eigen::Index(n));
+  b.targets.resize(p.targets->rows(), Eigen::Index(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t c = columns[i];
+    b.actions.col(Eigen::Index(i)) = p.actions->col(Eigen::Index(c));
+    b.targets.col(Eigen::Index(i)) = p.targets->col(Eigen::Index(c));
+    if (!latent) continue;
+    const Eigen::MatrixXf& from = (training ? *p.train_latents : *p.val_latents)[std::size_t((*p.material)[c])];
+    const std::uint64_t pick = training ? derive_seed(draw_seed, c) % std::uint64_t(from.cols()) : c % std::uint64_t(from.cols());
+    b.latents.col(Eigen::Index(i)) = from.col(Eigen::Index(pick));
+  }
+  return b;
+}
+
+// Loss in units of the overall target scale, so that the learning rate does not depend on the
+// materials' vibration level: sum over bins of ((s_k o_k - y_k) / sigma)^2.
+float loss_unit(const SpectrumProblem& p) { return std::max(1e-12f, p.target_scale.squaredNorm() / float(p.target_scale.size())); }
+
+double batch_gradient(const SpectrumNet& net, const SpectrumProblem& p, const Batch& b, float scale, SpectrumGradient& g) {
+  SpectrumTrace trace;
+  const Eigen::MatrixXf& out = spectrum_forward(net, b.latents, b.actions, trace);
+  const Eigen::MatrixXf error = p.target_scale.asDiagonal() * out - b.targets;
+  const float unit = loss_unit(p);
+  Eigen::MatrixXf d = p.target_scale.asDiagonal() * error * (2.0f * scale / unit);
+  spectrum_backward(net, trace, std::move(d), g);
+  return error.colwise().norm().sum();  // reported in the validation's unit, not the loss's
+}
+
+}  // namespace
+
+double mean_distance(const SpectrumNet& net, const SpectrumProblem& p, const std::vector<std::size_t>& columns, bool training,
+                     unsigned threads) {
+  const std::size_t chunks = (columns.size() + kChunkColumns - 1) / kChunkColumns;
+  std::vector<double> sums(chunks, 0.0);
+  parallel_for(chunks, [&](std::size_t c) {
+    const std::size_t begin = c * kChunkColumns, n = std::min(columns.size(), begin + kChunkColumns) - begin;
+    const Batch b = gather(p, columns.data() + begin, n, training, 0);
+    SpectrumTrace trace;
+    const Eigen::MatrixXf predicted = p.target_scale.asDiagonal() * spectrum_forward(net, b.latents, b.actions, trace);
+    sums[c] = (predicted - b.targets).colwise().norm().sum();
+  }, threads);
+  return std::accumulate(sums.begin(), sums.end(), 0.0) / double(std::max<std::size_t>(1, columns.size()));
+}
+
+SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& o, const SpectrumSchedule& s,
+                                  const EpochCallback& progress) {
+  std::vector<int> action_sizes{int(p.actions->rows())}, predictor_sizes;
+  for (int i = 0; i < o.action_layers; ++i) action_sizes.push_back(o.action_hidden);
+  predictor_sizes.push_back(p.latent_size() + action_sizes.back());
+  for (int i = 0; i < o.predictor_layers; ++i) predictor_sizes.push_back(o.predictor_hidden);
+  predictor_sizes.push_back(int(p.targets->rows()));
+  const std::uint64_t seed = derive_seed(o.seed, 3, name_seed(s.stage));
+  SpectrumResult result;
+  result.net = {make_mlp(action_sizes, Activation::relu, Activation::relu, derive_seed(seed, 1)),
+                make_mlp(predictor_sizes, Activation::relu, Activation::softplus, derive_seed(seed, 2))};
+  SpectrumNet& net = result.net;
+  SpectrumNet best = net;
+  Adam adam_action(net.action, {o.learning_rate}), adam_predictor(net.predictor, {o.learning_rate});
+  SpectrumGradient total(net);
+  std::vector<SpectrumGradient> slots;
+  EarlyStopping stopping(s.patience);
+  std::vector<std::size_t> order = p.train;
+  const auto start = std::chrono::steady_clock::now();
+  for (int epoch = 1; epoch <= s.max_epochs && !stopping.stop(); ++epoch) {
+    const std::uint64_t epoch_seed = derive_seed(seed, 4, std::uint64_t(epoch));
+    std::mt19937_64 rng(epoch_seed);
+    std::shuffle(order.begin(), order.end(), rng);
+    double train_loss = 0;
+    for (std::size_t first = 0; first < order.size(); first += std::size_t(s.batch)) {
+      const std::size_t n = std::min(order.size() - first, std::size_t(s.batch));
+      train_loss += chunked_gradient<SpectrumGradient>(n, slots, total, s.threads, [&](std::size_t begin, std::size_t end, SpectrumGradient& g) {
+        return batch_gradient(net, p, gather(p, order.data() + first + begin, end - begin, true, epoch_seed), 1.0f / float(n), g);
+      });
+      adam_action.step(net.action, total.action);
+      adam_predictor.step(net.predictor, total.predictor);
+    }
+    const double val = mean_distance(net, p, p.val, false, s.threads);
+    EpochReport r{s.stage, epoch, s.max_epochs, train_loss / double(std::max<std::size_t>(1, order.size())), val, -1,
+                  stopping.improved(val), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+    if (r.best) best = net;
+    result.epochs = epoch;
+    if (progress) progress(r);
+  }
+  result.net = std::move(best);
+  result.best_epoch = stopping.best_epoch();
+  result.val_distance = stopping.best();
+  result.train_distance = mean_distance(result.net, p, p.train, true, s.threads);
+  return result;
+}
+
+}  // namespace haptex::predict

@@ -1,0 +1,48 @@
+#pragma once
+// Stage 2: the action encoder and predictor learn the target spectra (Euclidean loss) with Adam
+// on mini-batches, stopping early on the validation windows' loss. The texture encoder is frozen:
+// a training window sees the latent of a random augmented image of one of its material's training
+// presses (a new draw every epoch); a validation window sees its material's validation press.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "predict/model.hpp"
+#include "predict/train_options.hpp"
+
+namespace haptex::predict {
+
+struct SpectrumProblem {
+  const Eigen::MatrixXf* actions = nullptr;  // normalised, kActionValues x windows
+  const Eigen::MatrixXf* targets = nullptr;  // kSpectrumBins x windows
+  Eigen::VectorXf target_scale;              // per bin
+  std::vector<std::size_t> train, val;       // columns
+  // Unified only: each column's material, and per material the latents (columns) of its training
+  // images and of its validation presses.
+  const std::vector<int>* material = nullptr;
+  const std::vector<Eigen::MatrixXf>* train_latents = nullptr;
+  const std::vector<Eigen::MatrixXf>* val_latents = nullptr;
+  int latent_size() const { return train_latents ? int(train_latents->front().rows()) : 0; }
+};
+
+struct SpectrumSchedule {
+  int batch = 256, max_epochs = 60, patience = 8;
+  std::string stage = "spectrum";
+  unsigned threads = 0;
+};
+
+struct SpectrumResult {
+  SpectrumNet net;
+  int epochs = 0, best_epoch = 0;
+  double train_distance = 0, val_distance = 0;  // mean Euclidean distance (m/s^2) at the best epoch
+};
+
+SpectrumResult train_spectrum_net(const SpectrumProblem& problem, const TrainOptions& options,
+                                  const SpectrumSchedule& schedule, const EpochCallback& progress);
+
+// Mean Euclidean distance between the predicted and target spectra of `columns`, with training
+// image latents (training) or the validation presses' latents.
+double mean_distance(const SpectrumNet& net, const SpectrumProblem& problem, const std::vector<std::size_t>& columns,
+                     bool training, unsigned threads);
+
+}  // namespace haptex::predict

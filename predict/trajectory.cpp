@@ -1,0 +1,82 @@
+#include "predict/trajectory.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+
+namespace haptex::predict {
+namespace {
+
+constexpr double kSamplePeriod = 1e-4;  // 10 kHz
+
+std::vector<std::string> fields(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream in(line);
+  std::string field;
+  while (std::getline(in, field, ',')) {
+    while (!field.empty() && (field.back() == '\r' || field.back() == ' ')) field.pop_back();
+    while (!field.empty() && field.front() == ' ') field.erase(field.begin());
+    out.push_back(field);
+  }
+  return out;
+}
+
+int column(const std::vector<std::string>& header, std::initializer_list<const char*> names) {
+  for (std::size_t i = 0; i < header.size(); ++i)
+    for (const char* n : names)
+      if (header[i] == n) return int(i);
+  return -1;
+}
+
+}  // namespace
+
+Trajectory read_trajectory(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw input_error(path, "", "cannot open the trajectory", "Check the path");
+  std::string line;
+  if (!std::getline(in, line)) throw input_error(path, "line 1", "the file is empty", "Write a header: time_s,force,speed");
+  const std::vector<std::string> header = fields(line);
+  const int f = column(header, {"force", "force_n"}), s = column(header, {"speed", "speed_mm_s"}), t = column(header, {"time_s"});
+  if (f < 0 || s < 0)
+    throw input_error(path, "line 1", "the header names no force or no speed column", "Name the columns force (N) and speed (mm/s)");
+  Trajectory out;
+  double previous_time = NAN;
+  for (std::size_t number = 2; std::getline(in, line); ++number) {
+    if (line.empty() || line == "\r") continue;
+    const std::vector<std::string> v = fields(line);
+    const std::string where = "line " + std::to_string(number);
+    auto value = [&](int c, const char* what) {
+      try {
+        std::size_t used = 0;
+        const double x = std::stod(v.at(std::size_t(c)), &used);
+        if (used != v[std::size_t(c)].size() || !std::isfinite(x)) throw std::invalid_argument(what);
+        return x;
+      } catch (const std::exception&) {
+        throw input_error(path, where, std::string("no finite number in the ") + what + " column", "Fix or remove the line");
+      }
+    };
+    const double force = value(f, "force"), speed = value(s, "speed");
+    if (force < 0 || speed < 0) throw input_error(path, where, "negative force or speed", "Give magnitudes: force in N, speed in mm/s");
+    if (t >= 0) {
+      const double time = value(t, "time_s");
+      if (!std::isnan(previous_time) && std::abs(time - previous_time - kSamplePeriod) > 0.01 * kSamplePeriod)
+        throw input_error(path, where, "time_s does not step by 0.1 ms", "Resample the trajectory to 10 kHz");
+      previous_time = time;
+    }
+    out.force.push_back(float(force));
+    out.speed.push_back(float(speed));
+  }
+  if (out.force.empty()) throw input_error(path, "line 2", "no samples", "Add one row per 0.1 ms");
+  return out;
+}
+
+void action_at(const Trajectory& trajectory, std::size_t t, float* out) {
+  for (std::size_t k = 0; k < 10; ++k) {
+    out[k] = trajectory.force[t - 9 + k];
+    out[10 + k] = trajectory.speed[t - 9 + k];
+  }
+}
+
+}  // namespace haptex::predict

@@ -1,0 +1,21 @@
+#pragma once
+// A force/speed trajectory from a CSV file, as `haptex predict --csv` and `haptex render` read it:
+// a header naming the columns force (or force_n, N) and speed (or speed_mm_s, mm/s), optionally
+// time_s; one row per sample at 10 kHz.
+#include <string>
+#include <vector>
+
+namespace haptex::predict {
+
+struct Trajectory {
+  std::vector<float> force, speed;  // N, mm/s
+};
+
+// Throws haptex::Error (bad_input) naming the file and line: missing columns, non-numeric or
+// non-finite values, negative force or speed, a time_s step other than 0.1 ms, no rows.
+Trajectory read_trajectory(const std::string& path);
+
+// The 20 action values (10 force, then 10 speed) ending at sample t (t >= 9).
+void action_at(const Trajectory& trajectory, std::size_t t, float* out);
+
+}  // namespace haptex::predict
