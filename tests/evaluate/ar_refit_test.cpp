@@ -8,6 +8,7 @@
 #include <complex>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <numbers>
 #include <random>
 #include <set>
@@ -155,26 +156,22 @@ std::vector<TrainingPiece> test_pieces(const Recording& r) {
 class KnownRefit : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    known_ = new ar::PiecewiseArModel(known_model());
-    recording_ = new Recording(render_recording(*known_, 20.0, 0.05, 1.0, 17));
+    known_ = std::make_unique<ar::PiecewiseArModel>(known_model());
+    recording_ = std::make_unique<Recording>(render_recording(*known_, 20.0, 0.05, 1.0, 17));
     const auto start = std::chrono::steady_clock::now();
-    refit_ = new ArRefit(refit_piecewise_ar("Known", train_pieces(*recording_)));
+    refit_ = std::make_unique<ArRefit>(refit_piecewise_ar("Known", train_pieces(*recording_)));
     fit_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
   static void TearDownTestSuite() {
-    delete refit_;
-    delete recording_;
-    delete known_;
+    refit_.reset();
+    recording_.reset();
+    known_.reset();
   }
-  static ar::PiecewiseArModel* known_;
-  static Recording* recording_;
-  static ArRefit* refit_;
-  static double fit_ms_;
+  static inline std::unique_ptr<ar::PiecewiseArModel> known_;
+  static inline std::unique_ptr<Recording> recording_;
+  static inline std::unique_ptr<ArRefit> refit_;
+  static inline double fit_ms_ = 0.0;
 };
-ar::PiecewiseArModel* KnownRefit::known_ = nullptr;
-Recording* KnownRefit::recording_ = nullptr;
-ArRefit* KnownRefit::refit_ = nullptr;
-double KnownRefit::fit_ms_ = 0.0;
 
 TEST_F(KnownRefit, SpectraMatchTheKnownModelInside) {
   const ar::PiecewiseArModel refit(refit_->models);
