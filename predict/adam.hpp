@@ -13,6 +13,8 @@ class Adam {
   Adam(const Mlp& net, AdamOptions options);
   // One step against the mean gradient (the caller divides by the batch size).
   void step(Mlp& net, const MlpGradient& gradient);
+  float learning_rate() const { return options_.learning_rate; }
+  void set_learning_rate(float rate) { options_.learning_rate = rate; }
 
  private:
   AdamOptions options_;

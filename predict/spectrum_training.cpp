@@ -102,6 +102,8 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& 
     EpochReport r{s.stage, epoch, s.max_epochs, train_loss / double(std::max<std::size_t>(1, order.size())), val, -1,
                   stopping.improved(val), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
     if (r.best) best = net;
+    if (stopping.plateau())
+      for (Adam* adam : {&adam_action, &adam_predictor}) adam->set_learning_rate(adam->learning_rate() / 2);
     result.epochs = epoch;
     if (progress) progress(r);
   }

@@ -113,6 +113,7 @@ Mlp fit(const Labelled& train, const Labelled& val, const TrainOptions& o, std::
     EpochReport r{"texture", epoch, o.texture_max_epochs, train_loss / double(order.size()), v.loss, v.accuracy,
                   stopping.improved(v.loss), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
     if (r.best) best = net;
+    if (stopping.plateau()) adam.set_learning_rate(adam.learning_rate() / 2);
     if (progress) progress(r);
   }
   return best;

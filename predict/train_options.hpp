@@ -1,5 +1,6 @@
 #pragma once
 // What `haptex train` can be told, and what it reports after every epoch.
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -43,6 +44,8 @@ class EarlyStopping {
   explicit EarlyStopping(int patience) : patience_(patience) {}
   bool improved(double val_loss);  // records the epoch; true when it is the best so far
   bool stop() const { return since_best_ >= patience_; }
+  // Halve the learning rate after this many epochs without improvement (a plateau), again after as many more.
+  bool plateau() const { return since_best_ > 0 && since_best_ % std::max(1, patience_ / 3) == 0; }
   double best() const { return best_; }
   int best_epoch() const { return best_epoch_; }
 

@@ -1,0 +1,134 @@
+#include "predict/predictor.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#include "core/error.hpp"
+#include "predict/model_file.hpp"
+#include "predict/train.hpp"
+#include "tests/predict/synthetic_problem.hpp"
+#include "tests/support/temp_dir.hpp"
+
+// Counts heap allocations in this test program, to show that predict() makes none. glibc lets a
+// program interpose malloc; operator new and Eigen both end up here.
+namespace {
+std::atomic<long> g_allocations{0};
+}
+extern "C" void* __libc_malloc(std::size_t n);
+extern "C" void* malloc(std::size_t n) {
+  ++g_allocations;
+  return __libc_malloc(n);
+}
+
+namespace haptex::predict {
+namespace {
+
+const Model& trained(Variant variant) {
+  static const Model models[2] = {[] {
+                                    TrainOptions o;
+                                    o.latent = 8, o.texture_hidden = 16, o.max_epochs = 5, o.texture_max_epochs = 5;
+                                    return train_model(test::synthetic_problem(), o);
+                                  }(),
+                                  [] {
+                                    TrainOptions o;
+                                    o.variant = Variant::per_material, o.per_material_max_epochs = 5;
+                                    return train_model(test::synthetic_problem(), o);
+                                  }()};
+  return models[variant == Variant::unified ? 0 : 1];
+}
+
+std::vector<float> action(float force, float speed) {
+  std::vector<float> a(kActionValues, force);
+  std::fill(a.begin() + 10, a.end(), speed);
+  return a;
+}
+
+TEST(Predictor, SingleQueriesMatchTheBatchPathAndDoNotAllocate) {
+  {
+    const long before = g_allocations;
+    Eigen::VectorXf counted(100);
+    counted.setZero();
+    ASSERT_GT(g_allocations - before, 0) << "the allocation counter does not see Eigen's allocations";
+  }
+  for (Variant v : {Variant::unified, Variant::per_material}) {
+    Predictor p(trained(v));
+    const TextureCode code = p.material_code(1);
+    Eigen::MatrixXf actions(kActionValues, 3);
+    const float points[3][2] = {{0.5f, 50}, {1.5f, 150}, {2.5f, 280}};
+    for (int c = 0; c < 3; ++c) actions.col(c) = Eigen::Map<const Eigen::VectorXf>(action(points[c][0], points[c][1]).data(), kActionValues);
+    const Eigen::MatrixXf batch = p.predict_batch(code, actions);
+    std::vector<float> out(kSpectrumBins);
+    for (int c = 0; c < 3; ++c) {
+      const std::vector<float> a = action(points[c][0], points[c][1]);
+      const long before = g_allocations;
+      EXPECT_FALSE(p.predict(code, a, out));
+      EXPECT_EQ(g_allocations - before, 0) << "predict() allocated";
+      for (int k = 0; k < kSpectrumBins; ++k) EXPECT_NEAR(out[std::size_t(k)], batch(k, c), 1e-5f * (1 + std::abs(batch(k, c))));
+    }
+  }
+}
+
+// Outside the training range (and for garbage in), outputs stay finite and non-negative, and say so.
+TEST(Predictor, OutOfRangeInputsAreSaturatedAndFlagged) {
+  Predictor p(trained(Variant::unified));
+  const TextureCode code = p.material_code(0);
+  std::vector<float> out(kSpectrumBins), in_range(kSpectrumBins);
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const float cases[][2] = {{1e6f, 1e9f}, {0, 0}, {100, 1}, {nan, 100}, {1, inf}, {-5, -5}};
+  for (const auto& c : cases) {
+    EXPECT_TRUE(p.predict(code, action(c[0], c[1]), out)) << c[0] << " N, " << c[1] << " mm/s";
+    for (float a : out) {
+      EXPECT_TRUE(std::isfinite(a));
+      EXPECT_GE(a, 0.0f);
+    }
+  }
+  // Beyond the range the answer is the edge's answer.
+  const Normalisation& n = p.model().normalisation;
+  p.predict(code, action(n.force_max, n.speed_max), in_range);
+  p.predict(code, action(1e6f, 1e9f), out);
+  EXPECT_EQ(out, in_range);
+}
+
+TEST(ModelFile, RoundTripGivesIdenticalPredictions) {
+  const test::TempDir dir;
+  for (Variant v : {Variant::unified, Variant::per_material}) {
+    const std::string path = dir.file(variant_name(v) + ".h5");
+    write_model(trained(v), path, false, "test");
+    const Model back = read_model(path);
+    EXPECT_EQ(back.material_ids, trained(v).material_ids);
+    EXPECT_EQ(back.metrics, trained(v).metrics);
+    Predictor a(trained(v)), b(back);
+    std::vector<float> x(kSpectrumBins), y(kSpectrumBins);
+    for (int m = 0; m < 4; ++m) {
+      a.predict(a.material_code(m), action(1.0f + 0.3f * float(m), 120), x);
+      b.predict(b.material_code(m), action(1.0f + 0.3f * float(m), 120), y);
+      EXPECT_EQ(x, y);
+    }
+    EXPECT_THROW(write_model(trained(v), path, false, "test"), Error);  // exists, no overwrite
+  }
+}
+
+TEST(ModelFile, OtherFilesAreRefusedWithTheirName) {
+  const test::TempDir dir;
+  const std::string path = dir.file("not_a_model.h5");
+  write_model(trained(Variant::unified), path, false, "test");
+  {
+    // A model whose predictor no longer fits its action encoder.
+    Model broken = trained(Variant::unified);
+    broken.nets[0].predictor.layers[0].weight.conservativeResize(Eigen::NoChange, 5);
+    write_model(broken, dir.file("broken.h5"), false, "test");
+  }
+  try {
+    read_model(dir.file("broken.h5"));
+    FAIL() << "a broken model was read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.h5"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace haptex::predict

@@ -1,0 +1,111 @@
+#include "predict/train.hpp"
+
+#include <gtest/gtest.h>
+
+#include "predict/predictor.hpp"
+#include "tests/predict/synthetic_problem.hpp"
+
+namespace haptex::predict {
+namespace {
+
+TrainOptions small_options(Variant variant, unsigned threads = 0) {
+  TrainOptions o;
+  o.variant = variant;
+  o.latent = 8;
+  o.texture_hidden = 16;
+  o.predictor_hidden = 32;
+  o.batch = 64;
+  o.max_epochs = 150;
+  o.patience = 15;
+  o.texture_max_epochs = 30;
+  o.per_material_max_epochs = 60;
+  o.learning_rate = 3e-3f;
+  o.seed = 3;
+  o.threads = threads;
+  return o;
+}
+
+double val_distance(const Model& m) {
+  if (m.variant == Variant::unified) return m.metrics["spectrum"]["val_distance"];
+  double sum = 0;
+  for (const auto& [id, r] : m.metrics["spectrum"].items()) sum += r["val_distance"].get<double>();
+  return sum / double(m.metrics["spectrum"].size());
+}
+
+// Distance of the model's prediction for the test windows' true (noise-free) spectra: the model
+// should recover the law behind the noisy targets.
+double test_error_against_truth(const Model& m, const TrainingData& data) {
+  Predictor p(m);
+  double sum = 0, count = 0;
+  for (std::size_t i = 0; i < data.materials.size(); ++i) {
+    const TextureCode code = m.variant == Variant::unified ? p.encode_descriptor(data.materials[i].images[2][0]) : p.material_code(int(i));
+    for (std::size_t c : data.materials[i].rows[2]) {
+      std::vector<float> predicted(kSpectrumBins);
+      p.predict(code, std::span<const float>(data.action.col(Eigen::Index(c)).data(), kActionValues), predicted);
+      const std::vector<float> truth = test::synthetic_truth(int(i), data.action(9, Eigen::Index(c)), data.action(19, Eigen::Index(c)));
+      double d = 0;
+      for (int k = 0; k < kSpectrumBins; ++k) d += std::pow(predicted[std::size_t(k)] - truth[std::size_t(k)], 2);
+      sum += std::sqrt(d), ++count;
+    }
+  }
+  return sum / count;
+}
+
+TEST(Training, UnifiedModelLearnsTheMaterialsAndTheActions) {
+  const TrainingData data = test::synthetic_problem();
+  const Model m = train_model(data, small_options(Variant::unified));
+  EXPECT_DOUBLE_EQ(m.metrics["texture"]["val_accuracy"].get<double>(), 1.0);
+  const double baseline = m.metrics["mean_spectrum_baseline"]["val_distance"];
+  EXPECT_LT(val_distance(m), 0.6 * baseline) << "model " << val_distance(m) << " vs mean spectrum " << baseline;
+  // On the test presses and windows, against the noise-free law behind the noisy targets.
+  const double error = test_error_against_truth(m, data);
+  EXPECT_LT(error, 0.25 * baseline) << error;
+}
+
+TEST(Training, PerMaterialModelsLearnTheActions) {
+  const TrainingData data = test::synthetic_problem();
+  const Model m = train_model(data, small_options(Variant::per_material));
+  ASSERT_EQ(m.nets.size(), data.materials.size());
+  EXPECT_LT(val_distance(m), 0.6 * m.metrics["mean_spectrum_baseline"]["val_distance"].get<double>());
+  EXPECT_FALSE(m.metrics.contains("texture"));
+}
+
+bool same_weights(const Mlp& a, const Mlp& b) {
+  if (a.layers.size() != b.layers.size()) return false;
+  for (std::size_t i = 0; i < a.layers.size(); ++i)
+    if (a.layers[i].weight != b.layers[i].weight || a.layers[i].bias != b.layers[i].bias) return false;
+  return true;
+}
+
+// Same seed, same weights, bit for bit, whatever the number of threads; another seed, other weights.
+TEST(Training, SameSeedGivesIdenticalWeightsOnAnyThreadCount) {
+  test::SyntheticSpec spec;
+  spec.windows = 200;
+  const TrainingData data = test::synthetic_problem(spec);
+  TrainOptions o = small_options(Variant::unified, 1);
+  o.max_epochs = o.texture_max_epochs = 5;
+  const Model one = train_model(data, o);
+  o.threads = 3;
+  const Model three = train_model(data, o);
+  EXPECT_TRUE(same_weights(one.texture, three.texture));
+  EXPECT_TRUE(same_weights(one.nets[0].action, three.nets[0].action));
+  EXPECT_TRUE(same_weights(one.nets[0].predictor, three.nets[0].predictor));
+  o.seed = 4;
+  const Model other = train_model(data, o);
+  EXPECT_FALSE(same_weights(one.nets[0].predictor, other.nets[0].predictor));
+}
+
+TEST(Training, EarlyStoppingKeepsTheBestEpoch) {
+  EarlyStopping s(2);
+  EXPECT_TRUE(s.improved(3.0));
+  EXPECT_TRUE(s.improved(2.0));
+  EXPECT_FALSE(s.improved(2.5));
+  EXPECT_FALSE(s.stop());
+  EXPECT_FALSE(s.improved(2.0));
+  EXPECT_TRUE(s.stop());
+  EXPECT_EQ(s.best_epoch(), 2);
+  EXPECT_DOUBLE_EQ(s.best(), 2.0);
+}
+
+}  // namespace
+}  // namespace haptex::predict
