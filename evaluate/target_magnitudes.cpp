@@ -1,0 +1,77 @@
+#include "evaluate/target_magnitudes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace haptex::evaluate {
+namespace {
+
+using signal::kSpectrumBins;
+using signal::kWindowSamples;
+
+template <typename T>
+void convert_frame(std::span<const T> amplitudes, std::span<double> out) {
+  if (amplitudes.size() != kSpectrumBins || out.size() != kReconstructionBins)
+    throw failure("target magnitudes: a frame has " + std::to_string(amplitudes.size()) + " amplitudes and " +
+                  std::to_string(out.size()) + " output bins; expected " + std::to_string(kSpectrumBins) + " and " +
+                  std::to_string(kReconstructionBins));
+  const double scale = hann_rms_gain() * static_cast<double>(kWindowSamples) / 2.0;
+  std::fill(out.begin(), out.end(), 0.0);
+  for (std::size_t k = 0; k < kSpectrumBins; ++k) {
+    const double a = static_cast<double>(amplitudes[k]);
+    if (!(a >= 0.0 && std::isfinite(a)))
+      throw failure("target magnitudes: amplitude " + std::to_string(k + 1) + " is " + std::to_string(a) +
+                    "; amplitudes must be finite and non-negative");
+    out[k + 1] = scale * a;
+  }
+}
+
+template <typename T>
+MagnitudeFrames convert_frames(std::span<const T> amplitudes) {
+  if (amplitudes.size() % kSpectrumBins != 0)
+    throw failure("target magnitudes: " + std::to_string(amplitudes.size()) + " amplitudes are not whole frames of " +
+                  std::to_string(kSpectrumBins));
+  MagnitudeFrames out;
+  out.frames = amplitudes.size() / kSpectrumBins;
+  out.bins = kReconstructionBins;
+  out.values.resize(out.frames * out.bins);
+  for (std::size_t f = 0; f < out.frames; ++f)
+    convert_frame(amplitudes.subspan(f * kSpectrumBins, kSpectrumBins), out.row(f));
+  return out;
+}
+
+}  // namespace
+
+std::size_t covered_samples(std::size_t frames) {
+  return frames == 0 ? 0 : (frames - 1) * kReconstructionHop + kWindowSamples;
+}
+
+double synthesis_gain(std::span<const double> window, std::size_t n, std::size_t frames) {
+  // Frames m with m * hop <= n < m * hop + window, and m < frames.
+  const std::size_t last = std::min(n / kReconstructionHop, frames == 0 ? 0 : frames - 1);
+  const std::size_t first = n < window.size() ? 0 : (n - window.size()) / kReconstructionHop + 1;
+  double sum = 0.0;
+  for (std::size_t m = first; m <= last && frames > 0; ++m) {
+    const double w = window[n - m * kReconstructionHop];
+    sum += w * w;
+  }
+  return 1.0 / std::max(sum, kSynthesisWeightFloor);
+}
+
+// Over a whole period (periodic window), mean((1/2 - cos/2)^2) = 1/4 + 1/8: the cross term averages out.
+double hann_rms_gain() { return std::sqrt(3.0 / 8.0); }
+
+void target_magnitude_frame(std::span<const double> amplitudes, std::span<double> out) {
+  convert_frame(amplitudes, out);
+}
+void target_magnitude_frame(std::span<const float> amplitudes, std::span<double> out) {
+  convert_frame(amplitudes, out);
+}
+
+MagnitudeFrames target_magnitudes(std::span<const double> amplitudes) { return convert_frames(amplitudes); }
+MagnitudeFrames target_magnitudes(std::span<const float> amplitudes) { return convert_frames(amplitudes); }
+
+}  // namespace haptex::evaluate
