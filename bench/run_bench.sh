@@ -87,3 +87,37 @@ for mode in ("size=3280x2464", "size=960x720"):
           f"{t['frames']} frames, {t['dropped_frames']} dropped, {len(m['presses'])} presses, CPU {100 * t['cpu_seconds'] / t['wall_seconds']:.0f}% "
           f"of one core (fake camera included), deepest queue {t['max_queue_depth']} frames")
 PY
+
+# evaluate: spectral distance, Welch's test and phase reconstruction on one core, and torchaudio's
+# Griffin-Lim on the same 10 s texture signal, one thread (no torchaudio: a note, no ratio).
+$one_core "$build/bench/bench_evaluate" --benchmark_format=json --benchmark_out="$out/evaluate.json" --benchmark_out_format=json >/dev/null
+"$build/bench/bench_evaluate" --export-signal "$out/texture_10s.f64"
+$one_core /usr/bin/python3 "$(dirname "$0")/torchaudio_griffinlim.py" "$out/texture_10s.f64" > "$out/torchaudio.json" \
+  || echo '{"note": "bench/torchaudio_griffinlim.py failed; no comparison"}' > "$out/torchaudio.json"
+rm -f "$out/texture_10s.f64"
+/usr/bin/python3 - "$out" <<'PY'
+import json, sys
+out = sys.argv[1]
+bench = {b["name"]: b for b in json.load(open(f"{out}/evaluate.json"))["benchmarks"]}
+def seconds(b):
+    return b["real_time"] * {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b["time_unit"]]
+print(f"spectral distance of 10 s: {seconds(bench['BM_SpectralDistance_10s'])*1e3:.2f} ms;  "
+      f"Welch's t-test 1000 vs 1000: {seconds(bench['BM_WelchTest_1000_1000'])*1e6:.1f} us")
+print("fast Griffin-Lim on 10 s of texture (exact magnitudes), one core:")
+for name, b in bench.items():
+    if name.startswith("BM_GriffinLim_10s/"):
+        print(f"  {name[len('BM_GriffinLim_10s/'):]:<30} {seconds(b):7.3f} s  ({b['seconds_per_second']*1e3:.1f} ms per second of vibration)  SC {b['sc_db']:.2f} dB")
+print("online RTISI-LA, per 100-sample frame (10 ms of vibration):")
+for name, b in bench.items():
+    if name.startswith("BM_OnlineReconstruction_PerFrame/"):
+        print(f"  {name[len('BM_OnlineReconstruction_PerFrame/'):]:<30} {seconds(b)*1e6:7.1f} us  latency {b['latency_ms']:.0f} ms  SC {b['sc_db']:.2f} dB")
+ours = seconds(bench["BM_GriffinLim_10s/iterations:100/momentum_pct:99"])
+theirs = json.load(open(f"{out}/torchaudio.json"))
+if "float64" in theirs:
+    for precision in ("float64", "float32"):
+        t = theirs[precision]
+        print(f"Griffin-Lim 100 iterations, momentum 0.99, 10 s: haptex {ours:.3f} s   torchaudio {theirs['torchaudio']} {precision} "
+              f"{t['seconds']:.3f} s (SC {t['sc_db']:.2f} dB, centred frames)   torchaudio/haptex = {t['seconds']/ours:.2f}x")
+else:
+    print(f"Griffin-Lim 100 iterations, momentum 0.99, 10 s: haptex {ours:.3f} s   ({theirs.get('note', 'no torchaudio figures')})")
+PY
