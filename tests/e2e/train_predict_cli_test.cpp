@@ -1,0 +1,128 @@
+// haptex train and haptex predict as a user runs them, on the small pipeline's dataset and split.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/json/schema.hpp"
+#include "tests/support/run_haptex.hpp"
+#include "tests/support/small_pipeline.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+const std::vector<std::string> kQuick = {"--epochs", "4", "--latent", "8", "--hidden", "16"};
+
+std::vector<std::string> train_args(const std::string& split, const std::string& model) {
+  std::vector<std::string> args = {"train", small_pipeline().dataset, "--split", split, "-o", model};
+  args.insert(args.end(), kQuick.begin(), kQuick.end());
+  return args;
+}
+
+// One trained model for the predict tests, made on first use.
+const std::string& trained_model() {
+  static const TempDir dir;
+  static const std::string model = [] {
+    const std::string path = dir.file("model.h5");
+    const CommandResult r = run_haptex(train_args(small_pipeline().split, path));
+    if (r.exit_code != 0) throw std::runtime_error("haptex train failed: " + r.err);
+    return path;
+  }();
+  return model;
+}
+
+nlohmann::json edited_split(const std::function<void(nlohmann::json&)>& edit) {
+  nlohmann::json doc = json::read_file(small_pipeline().split);
+  edit(doc);
+  return doc;
+}
+
+std::string write_json(const TempDir& dir, const nlohmann::json& doc) {
+  const std::string path = dir.file("split.json");
+  std::ofstream(path) << doc.dump(2);
+  return path;
+}
+
+TEST(TrainCli, WritesTheModelAndAValidTrainingLog) {
+  const TempDir dir;
+  const CommandResult r = run_haptex(train_args(small_pipeline().split, dir.file("m.h5")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("wrote " + dir.file("m.h5")), std::string::npos) << r.out;
+  const nlohmann::json log = json::read_file(dir.file("m.training.json"));
+  EXPECT_NO_THROW(json::validate(log, "training-log.schema.json", "log"));
+  EXPECT_EQ(log["options"]["latent"], 8);
+  EXPECT_GE(log["epochs"].size(), 2u);
+  // A second run refuses to overwrite without --force, and leaves the first model alone.
+  const auto size = fs::file_size(dir.file("m.h5"));
+  const CommandResult again = run_haptex(train_args(small_pipeline().split, dir.file("m.h5")));
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_EQ(fs::file_size(dir.file("m.h5")), size);
+}
+
+TEST(TrainCli, RefusesASplitMadeFromAnotherDataset) {
+  const TempDir dir;
+  const std::string split = write_json(dir, edited_split([](nlohmann::json& d) { d["dataset"]["sha256"] = std::string(64, '0'); }));
+  const CommandResult r = run_haptex(train_args(split, dir.file("m.h5")));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(split), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("another dataset"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.file("m.h5")));
+  EXPECT_FALSE(fs::exists(dir.file("m.h5.partial")));
+}
+
+TEST(TrainCli, AMaterialWithoutValidationWindowsIsNamed) {
+  const TempDir dir;
+  std::string name;
+  const std::string split = write_json(dir, edited_split([&](nlohmann::json& d) {
+    auto& m = d["materials"][0];
+    name = m["name"];
+    for (const auto& s : m["sections"]["val"]) m["sections"]["train"].push_back(s);
+    m["sections"]["val"] = nlohmann::json::array();
+  }));
+  const CommandResult r = run_haptex(train_args(split, dir.file("m.h5")));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("'" + name + "' has no validation windows"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.file("m.h5")));
+}
+
+std::string first_material() { return json::read_file(small_pipeline().split)["materials"][0]["id"]; }
+
+TEST(PredictCli, PrintsOneHundredBinsAndFlagsOutOfRangeQueries) {
+  const std::string material = first_material();
+  const CommandResult r = run_haptex({"predict", trained_model(), "--material", material, "--force", "1", "--speed", "100", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json out = nlohmann::json::parse(r.out);
+  ASSERT_EQ(out["queries"].size(), 1u);
+  ASSERT_EQ(out["queries"][0]["spectrum"].size(), 100u);
+  for (double a : out["queries"][0]["spectrum"]) EXPECT_GE(a, 0.0);
+
+  const CommandResult far = run_haptex({"predict", trained_model(), "--material", material, "--force", "900", "--speed", "90000"});
+  ASSERT_EQ(far.exit_code, 0) << far.err;
+  EXPECT_NE(far.err.find("outside the training range"), std::string::npos) << far.err;
+  EXPECT_EQ(std::count(far.out.begin(), far.out.end(), '\n'), 101);  // header + 100 bins
+}
+
+TEST(PredictCli, FollowsATrajectoryAndRefusesABadOne) {
+  const TempDir dir;
+  {
+    std::ofstream csv(dir.file("traj.csv"));
+    csv << "time_s,force,speed\n";
+    for (int i = 0; i < 1000; ++i) csv << i * 1e-4 << "," << 1.0 + i * 1e-3 << "," << 50 + i * 0.1 << "\n";
+  }
+  const std::string material = first_material();
+  const CommandResult r = run_haptex({"predict", trained_model(), "--material", material, "--csv", dir.file("traj.csv")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1 + 10);  // header + samples 9, 109, ..., 909
+  {
+    std::ofstream csv(dir.file("bad.csv"));
+    csv << "time_s,force,speed\n0,1,50\n0.0001,x,50\n";
+  }
+  const CommandResult bad = run_haptex({"predict", trained_model(), "--material", material, "--csv", dir.file("bad.csv")});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find(dir.file("bad.csv") + ": line 3"), std::string::npos) << bad.err;
+}
+
+}  // namespace
+}  // namespace haptex::test
