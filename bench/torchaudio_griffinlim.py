@@ -8,7 +8,8 @@ iterations, momentum 0.99, random initial phase, output length fixed at 100000 s
 difference torchaudio does not let us remove: its frames are centred (reflect-padded by 500 samples
 at both ends, 1001 frames) where haptex's start at the signal (991 frames). The magnitudes are
 torchaudio's own STFT of the signal, so each method starts from exact magnitudes in its framing.
-Timed in float64 (as haptex computes) and float32 (torchaudio's default), best of 3.
+Timed in float64 (as haptex computes) and float32 (torchaudio's default): CPU time of the process
+(one thread, so it is the time on one core, robust to other load on the machine), best of 3.
 """
 import json
 import sys
@@ -47,10 +48,10 @@ def run(signal, dtype):
     best, y = float("inf"), None
     for _ in range(3):
         torch.manual_seed(0)
-        start = time.perf_counter()
+        start = time.process_time()
         with torch.no_grad():
             y = griffin_lim(s)
-        best = min(best, time.perf_counter() - start)
+        best = min(best, time.process_time() - start)
     return {"seconds": best, "sc_db": spectral_convergence_db(y, s, window), "frames": s.shape[-1]}
 
 
