@@ -65,11 +65,8 @@ void BM_GriffinLim_10s(benchmark::State& state) {
 }
 BENCHMARK(BM_GriffinLim_10s)
     ->ArgNames({"iterations", "momentum_pct"})
-    ->Args({0, 99})
-    ->Args({8, 99})
-    ->Args({32, 99})
-    ->Args({100, 99})
-    ->Args({100, 0})
+    ->ArgsProduct({{0, 8, 32, 100}, {99}})
+    ->Args({100, 0})  // plain Griffin-Lim
     ->Unit(benchmark::kMillisecond);
 
 // One whole stream through RTISI-LA, for its accuracy.
@@ -103,11 +100,7 @@ void BM_OnlineReconstruction_PerFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_OnlineReconstruction_PerFrame)
     ->ArgNames({"look_ahead", "iterations"})
-    ->Args({0, 4})
-    ->Args({1, 4})
-    ->Args({3, 4})
-    ->Args({5, 4})
-    ->Args({8, 4})
+    ->ArgsProduct({{0, 1, 3, 5, 8}, {4}})
     ->Unit(benchmark::kMicrosecond);
 
 int export_signal(const char* path) {
