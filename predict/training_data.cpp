@@ -77,7 +77,8 @@ Descriptors press_descriptors(const std::string& dataset_path, const std::string
   return out;
 }
 
-TrainingData load_training_data(const split::DatasetSplit& split, const TextureDescriptorSpec& spec, const LoadProgress& progress) {
+TrainingData load_training_data(const split::DatasetSplit& split, const TextureDescriptorSpec& spec, const LoadProgress& progress,
+                                bool augmented) {
   TrainingData data;
   data.dataset_sha256 = split.dataset_sha256;
   data.split_sha256 = split.manifest_sha256;
@@ -105,7 +106,8 @@ TrainingData load_training_data(const split::DatasetSplit& split, const TextureD
   std::size_t done = 0;
   parallel_for(jobs.size(), [&](std::size_t j) {
     const Job& job = jobs[j];
-    results[j] = press_descriptors(split.dataset_path, split.materials[job.material].id, job.press, job.set == split::kTrain, spec);
+    results[j] = press_descriptors(split.dataset_path, split.materials[job.material].id, job.press,
+                                   augmented && job.set == split::kTrain, spec);
     std::lock_guard lock(mutex);
     if (progress) progress(++done, jobs.size());
   });

@@ -34,8 +34,10 @@ using LoadProgress = std::function<void(std::size_t, std::size_t)>;
 
 // Throws haptex::Error (bad_input) naming the material and the file when a material has no
 // training or no validation windows, or a press the split names is missing from the dataset.
+// augmented: training presses give all their frames in all 8 augmentations (training); otherwise
+// every press gives its peak frame (evaluation).
 TrainingData load_training_data(const split::DatasetSplit& split, const TextureDescriptorSpec& spec,
-                                const LoadProgress& progress = {});
+                                const LoadProgress& progress = {}, bool augmented = true);
 
 // The descriptors of one press: training presses all frames in all 8 augmentations, other presses
 // their peak frame. Images are RGB uint8 as the dataset stores them.

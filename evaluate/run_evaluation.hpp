@@ -1,0 +1,40 @@
+#pragma once
+// `haptex evaluate`: the learned models against an AR baseline on every material's test sections
+// (Heravi et al. 2020, section V), in the spectral domain and as stitched time signals, with the
+// compute time of every method for the speed-vs-accuracy chart.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/progress.hpp"
+#include "evaluate/evaluation_results.hpp"
+#include "predict/model.hpp"
+#include "split/split_windows.hpp"
+
+namespace haptex::evaluate {
+
+enum class Baseline { ar_refit, hatt_published };
+enum class Reconstruction { fgla, online, none };
+
+struct EvaluationOptions {
+  Baseline baseline = Baseline::ar_refit;
+  std::string hatt_models;                              // directory of Models_<Material>.xml (hatt-published)
+  Reconstruction reconstruct = Reconstruction::fgla;    // the stitched-signal experiment's method
+  std::size_t repeats = 10;                             // baseline renderings (seeds) per test section
+  std::vector<std::size_t> fgla_iterations{0, 8, 32, 100};  // speed-vs-accuracy points; the largest is the experiment's
+  std::uint64_t seed = 0;
+  unsigned threads = 0;
+};
+
+struct ModelInput {
+  std::string path, label;  // label: how the report names it
+  predict::Model model;
+};
+
+// Throws haptex::Error (bad_input) when a model was trained on another dataset or split (hashes),
+// or does not know a material of the split; and as the baselines throw (a material whose training
+// sections are too short for the AR fit; no published model for a material).
+Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<ModelInput>& models,
+                          const EvaluationOptions& options, const Progress& progress = {});
+
+}  // namespace haptex::evaluate
