@@ -323,7 +323,7 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
       codes[i] = unified_codes(models[i], split);
       if (stitched < 0) stitched = int(i), e.latents = latent_map(models[i], codes[i], split);
     }
-  Context c{models, codes, o, {}, stitched};
+  Context c{models, codes, o, {}, {}, stitched};
   if (stitched >= 0 && o.reconstruct != Reconstruction::none) {
     for (std::size_t n : o.fgla_iterations) c.stitched_keys.push_back("fgla:" + std::to_string(n));
     c.stitched_keys.push_back("online");
