@@ -1,0 +1,25 @@
+#pragma once
+// For synthetic materials (haptex synth materials), the expected spectra are known: truth.h5 holds
+// each material's noise-free spectrum on a speed x force grid. This compares a model's predictions
+// there with them, and, for scale, a constant spectrum per material (the truth's own mean over the
+// grid: the best any action-blind predictor can do).
+#include <string>
+#include <vector>
+
+#include "predict/model.hpp"
+
+namespace haptex::evaluate {
+
+struct TruthComparison {
+  std::string id;
+  std::size_t points = 0;       // grid points inside the model's training force-speed range
+  double model = 0;             // mean Euclidean distance of the model's spectra to the truth, m/s^2
+  double constant = 0;          // the same for the truth's mean spectrum over those points
+  double truth_norm = 0;        // mean Euclidean norm of the true spectra, for scale
+};
+
+// Materials of truth.h5 the model knows; unified models use the material's mean training latent,
+// per-material models its own network. Throws haptex::Error (bad_input) when the file is not truth/1.
+std::vector<TruthComparison> compare_with_truth(const predict::Model& model, const std::string& truth_path);
+
+}  // namespace haptex::evaluate
