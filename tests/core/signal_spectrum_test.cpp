@@ -4,44 +4,12 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <new>
 #include <numbers>
 #include <vector>
 
 #include "core/error.hpp"
+#include "tests/support/allocation_counter.hpp"
 #include "tests/support/npy.hpp"
-
-// Counts allocations on this thread while a test asks for it. The replacement covers all of
-// test_core, but it is plain malloc/free, as libstdc++'s own is. Every unaligned form is replaced
-// so that new and delete always pair, also under AddressSanitizer.
-namespace {
-thread_local bool counting_allocations = false;
-thread_local std::size_t allocation_count = 0;
-
-void* counted_malloc(std::size_t size) noexcept {
-  if (counting_allocations) ++allocation_count;
-  return std::malloc(size == 0 ? 1 : size);
-}
-void* counted_new(std::size_t size) {
-  if (void* p = counted_malloc(size)) return p;
-  throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t size) { return counted_new(size); }
-void* operator new[](std::size_t size) { return counted_new(size); }
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return counted_malloc(size); }
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept { return counted_malloc(size); }
-// GCC cannot see that these deletes pair with the malloc-based news above.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
-#pragma GCC diagnostic pop
 
 namespace haptex::signal {
 namespace {
@@ -82,16 +50,15 @@ TEST(SignalSpectrum, NoAllocationAfterFirstCall) {
   const auto window = load_golden("signal/spectrum_window.npy").data;
   std::vector<double> out(kSpectrumBins);
   amplitude_spectrum(window, out, 1);  // plans the size and sizes the scratch buffer
-  allocation_count = 0;
-  counting_allocations = true;
-  for (int i = 0; i < 10; ++i) amplitude_spectrum(window, out, 1);
-  counting_allocations = false;
-  EXPECT_EQ(allocation_count, 0u);
+  {
+    const test::CountAllocations counter;
+    for (int i = 0; i < 10; ++i) amplitude_spectrum(window, out, 1);
+    EXPECT_EQ(counter.count(), 0u);
+  }
   // The counter works: the vector-returning form has to allocate its result.
-  counting_allocations = true;
+  const test::CountAllocations counter;
   const auto allocated = amplitude_spectrum(window);
-  counting_allocations = false;
-  EXPECT_GT(allocation_count, 0u);
+  EXPECT_GT(counter.count(), 0u);
   EXPECT_EQ(allocated, out);
 }
 

@@ -14,38 +14,9 @@
 #include "core/error.hpp"
 #include "evaluate/spectral_convergence.hpp"
 #include "tests/evaluate/texture_signal.hpp"
+#include "tests/support/allocation_counter.hpp"
 #include "tests/support/npy.hpp"
 
-// Counts allocations on this thread while a test asks for it (as tests/core/signal_spectrum_test
-// does for test_core). Plain malloc/free, as libstdc++'s own; every unaligned form is replaced so
-// that new and delete always pair.
-namespace {
-thread_local bool counting_allocations = false;
-thread_local std::size_t allocation_count = 0;
-
-void* counted_malloc(std::size_t size) noexcept {
-  if (counting_allocations) ++allocation_count;
-  return std::malloc(size == 0 ? 1 : size);
-}
-void* counted_new(std::size_t size) {
-  if (void* p = counted_malloc(size)) return p;
-  throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t size) { return counted_new(size); }
-void* operator new[](std::size_t size) { return counted_new(size); }
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return counted_malloc(size); }
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept { return counted_malloc(size); }
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
-#pragma GCC diagnostic pop
 
 namespace haptex::evaluate {
 namespace {
@@ -174,19 +145,18 @@ TEST(EvaluateOnlineReconstruction, FlushStartsANewStream) {
 TEST(EvaluateOnlineReconstruction, PushDoesNotAllocate) {
   const auto s = golden_s();
   OnlineReconstruction online(options(3, 4));
-  allocation_count = 0;
-  counting_allocations = true;
   std::size_t returned = 0;
-  for (std::size_t m = 0; m < s.frames; ++m) returned += online.push(s.row(m)).size();
-  returned += online.flush().size();
-  counting_allocations = false;
-  EXPECT_EQ(allocation_count, 0u);
+  {
+    const test::CountAllocations counter;
+    for (std::size_t m = 0; m < s.frames; ++m) returned += online.push(s.row(m)).size();
+    returned += online.flush().size();
+    EXPECT_EQ(counter.count(), 0u);
+  }
   EXPECT_EQ(returned, covered_samples(s.frames));
   // The counter works: constructing one allocates its buffers.
-  counting_allocations = true;
+  const test::CountAllocations counter;
   OnlineReconstruction another(options(3, 4));
-  counting_allocations = false;
-  EXPECT_GT(allocation_count, 0u);
+  EXPECT_GT(counter.count(), 0u);
 }
 
 TEST(EvaluateOnlineReconstruction, RejectsBadFrames) {

@@ -2,27 +2,15 @@
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 
 #include "core/error.hpp"
 #include "predict/model_file.hpp"
 #include "predict/train.hpp"
 #include "tests/predict/synthetic_problem.hpp"
+#include "tests/support/allocation_counter.hpp"
 #include "tests/support/temp_dir.hpp"
-
-// Counts heap allocations in this test program, to show that predict() makes none. glibc lets a
-// program interpose malloc; operator new and Eigen both end up here.
-namespace {
-std::atomic<long> g_allocations{0};
-}
-extern "C" void* __libc_malloc(std::size_t n);
-extern "C" void* malloc(std::size_t n) {
-  ++g_allocations;
-  return __libc_malloc(n);
-}
 
 namespace haptex::predict {
 namespace {
@@ -49,10 +37,10 @@ std::vector<float> action(float force, float speed) {
 
 TEST(Predictor, SingleQueriesMatchTheBatchPathAndDoNotAllocate) {
   {
-    const long before = g_allocations;
+    const test::CountAllocations counter;
     Eigen::VectorXf counted(100);
     counted.setZero();
-    ASSERT_GT(g_allocations - before, 0) << "the allocation counter does not see Eigen's allocations";
+    ASSERT_GT(counter.count(), 0u) << "the allocation counter does not see Eigen's allocations";
   }
   for (Variant v : {Variant::unified, Variant::per_material}) {
     Predictor p(trained(v));
@@ -64,9 +52,9 @@ TEST(Predictor, SingleQueriesMatchTheBatchPathAndDoNotAllocate) {
     std::vector<float> out(kSpectrumBins);
     for (int c = 0; c < 3; ++c) {
       const std::vector<float> a = action(points[c][0], points[c][1]);
-      const long before = g_allocations;
+      const test::CountAllocations counter;
       EXPECT_FALSE(p.predict(code, a, out));
-      EXPECT_EQ(g_allocations - before, 0) << "predict() allocated";
+      EXPECT_EQ(counter.count(), 0u) << "predict() allocated";
       for (int k = 0; k < kSpectrumBins; ++k) EXPECT_NEAR(out[std::size_t(k)], batch(k, c), 1e-5f * (1 + std::abs(batch(k, c))));
     }
   }
