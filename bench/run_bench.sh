@@ -121,3 +121,32 @@ if "float64" in theirs:
 else:
     print(f"Griffin-Lim 100 iterations, momentum 0.99, 10 s, CPU time: haptex {ours:.3f} s   ({theirs.get('note', 'no torchaudio figures')})")
 PY
+
+# predict: one query of the predictor (the haptic loop's per-millisecond call), predict_batch, encoding
+# a 960 x 720 press and the per-material variant's query, on one core; PyTorch's forward pass of the
+# same network and weights, one thread, batch 1 (no PyTorch: a note, no ratio). CPU times, as above.
+predict_model="$out/predict_model.h5"
+$one_core "$build/bench/bench_predict" --benchmark_out="$out/predict.json" --benchmark_out_format=json >/dev/null
+"$build/bench/bench_predict" --export-model "$predict_model"
+{ $one_core /usr/bin/python3 "$(dirname "$0")/torch_forward.py" "$predict_model" \
+    || echo '{"note": "bench/torch_forward.py failed; no comparison"}'; } > "$out/torch_forward.json"
+rm -f "$predict_model"
+/usr/bin/python3 - "$out/predict.json" "$out/torch_forward.json" <<'PY'
+import json, sys
+unit = {"ns": 1, "us": 1e3, "ms": 1e6, "s": 1e9}
+ns = {b["name"]: b["cpu_time"] * unit[b["time_unit"]] for b in json.load(open(sys.argv[1]))["benchmarks"]}
+torch = json.load(open(sys.argv[2]))
+single = ns["BM_PredictSingle"]
+print(f"predict, one query, default sizes, one core: unified {single:.0f} ns, per-material "
+      f"{ns['BM_PredictSinglePerMaterial']:.0f} ns (goal < 5000 ns)")
+print(f"predict_batch of 1000 queries: {1e6 / ns['BM_PredictBatch/1000']:.3f} M predictions/s "
+      f"({ns['BM_PredictBatch/1000'] / 1e3:.0f} us per batch)")
+print(f"encode a 960x720 press (texture descriptor + texture encoder): {ns['BM_Encode960x720'] / 1e6:.2f} ms")
+if "single_query_seconds" in torch:
+    theirs = torch["single_query_seconds"] * 1e9
+    print(f"one query: haptex {single:.0f} ns   PyTorch {torch['torch']} {theirs:.0f} ns (one thread, batch 1, same weights, "
+          f"latent part {torch['latent_part']}; concatenated {torch['single_query_seconds_concatenated'] * 1e9:.0f} ns)   "
+          f"torch/haptex = {theirs / single:.1f}x")
+else:
+    print(f"one query: haptex {single:.0f} ns   ({torch.get('note', 'no PyTorch figures')})")
+PY
