@@ -138,9 +138,24 @@ struct Context {
   int stitched_model = -1;                 // the first unified model, whose new-press spectra are stitched
 };
 
+// The material's mean spectrum over its training and validation sections: the action-blind
+// predictor a model of the actions has to beat.
+std::vector<double> mean_training_spectrum(const MaterialSignals& signals) {
+  std::vector<double> sum(predict::kSpectrumBins, 0.0);
+  std::size_t count = 0;
+  for (const SectionSignals& s : signals.training)
+    for (const auto& spectrum : grid_spectra(s.accel, section_grid(s.accel.size()))) {
+      for (std::size_t k = 0; k < sum.size(); ++k) sum[k] += spectrum[k];
+      ++count;
+    }
+  for (double& v : sum) v /= double(std::max<std::size_t>(1, count));
+  return sum;
+}
+
 MaterialRun run_material(std::size_t m, const MaterialSignals& signals, const Context& c, bool keep_example) {
   MaterialRun run;
   const ar::PiecewiseArModel baseline = baseline_model(signals, c.options);
+  const std::vector<double> mean_spectrum = mean_training_spectrum(signals);
   std::vector<predict::Predictor> predictors;
   for (const ModelInput& input : c.models) predictors.emplace_back(input.model);
   for (std::size_t s = 0; s < signals.test.size(); ++s) {
@@ -164,6 +179,7 @@ MaterialRun run_material(std::size_t m, const MaterialSignals& signals, const Co
       if (r == 0) first_render_spectra = spectra;
     }
     run.baseline.add(base);
+    run.methods["mean-spectrum"].add({distances(std::vector<std::vector<double>>(truth.size(), mean_spectrum), truth), 0, 0});
     std::vector<std::vector<double>> stitched_spectra;
     double stitched_predict_seconds = 0;
     for (std::size_t i = 0; i < c.models.size(); ++i) {
@@ -260,6 +276,7 @@ MaterialComparison compare(const MaterialSignals& m, const Scores& model, const 
 struct ExperimentSpec {
   std::string id, title, key;
   std::string model_label;
+  std::string baseline_key;  // empty: the AR baseline
 };
 
 std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& models, const Context& c) {
@@ -276,6 +293,15 @@ std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& mode
     }
     out.push_back({"unified-new-actions" + suffix, "Unified model on new actions, with the training presses' texture", "unified-new-actions" + tag, label});
     out.push_back({"unified-new-presses" + suffix, "Unified model on new actions and a new press (the test press)", "unified-new-presses" + tag, label});
+  }
+  // Against the action-blind predictor: does the model use the actions at all?
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    const bool unified = models[i].model.variant == predict::Variant::unified;
+    const std::string key = (unified ? "unified-new-presses:" : "per-material:") + std::to_string(i);
+    out.push_back({(unified ? "unified-new-presses" : "per-material") + std::string("-vs-mean-spectrum") +
+                       (count[models[i].model.variant] > 1 ? " (" + models[i].label + ")" : ""),
+                   "The same model against each material's mean training spectrum (the best action-blind predictor)", key,
+                   predict::variant_name(models[i].model.variant) + " model " + models[i].label, "mean-spectrum"});
   }
   if (c.stitched_model >= 0 && !c.stitched_key.empty()) {
     const std::string& key = c.stitched_key;
@@ -348,9 +374,14 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   }, o.threads);
 
   for (const ExperimentSpec& spec : experiment_specs(models, c)) {
-    Experiment x{spec.id, spec.title, spec.model_label, e.baseline + " (" + std::to_string(o.repeats) + " renderings per test section)", {}};
-    for (std::size_t m = 0; m < signals.size(); ++m)
-      if (!runs[m].baseline.windows.empty()) x.materials.push_back(compare(signals[m], runs[m].methods.at(spec.key), runs[m].baseline));
+    const std::string against = spec.baseline_key.empty() ? e.baseline + " (" + std::to_string(o.repeats) + " renderings per test section)"
+                                                          : "mean training spectrum per material";
+    Experiment x{spec.id, spec.title, spec.model_label, against, {}};
+    for (std::size_t m = 0; m < signals.size(); ++m) {
+      if (runs[m].baseline.windows.empty()) continue;
+      const Scores& versus = spec.baseline_key.empty() ? runs[m].baseline : runs[m].methods.at(spec.baseline_key);
+      x.materials.push_back(compare(signals[m], runs[m].methods.at(spec.key), versus));
+    }
     e.experiments.push_back(std::move(x));
   }
   Scores base;
@@ -362,7 +393,7 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   }
   e.speed.push_back({e.baseline, "order 14-20, 1 rendering", base.seconds / base.rendered_seconds, mean(base.windows)});
   for (const auto& [key, s] : totals)
-    e.speed.push_back({method_name(key), method_setting(key, models), s.seconds / s.rendered_seconds, mean(s.windows)});
+    if (key != "mean-spectrum") e.speed.push_back({method_name(key), method_setting(key, models), s.seconds / s.rendered_seconds, mean(s.windows)});
   e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return e;
 }
