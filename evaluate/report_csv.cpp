@@ -1,0 +1,132 @@
+#include "evaluate/report_csv.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "core/signal/spectrum.hpp"
+
+namespace haptex::evaluate {
+namespace {
+
+constexpr double kSampleRateHz = 10000.0;
+constexpr double kBinHz = kSampleRateHz / double(signal::kWindowSamples);  // bin k is k * 10 Hz
+
+std::string safe_stem(std::string_view id) {
+  std::string s(id);
+  for (char& c : s)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-')) c = '_';
+  return s.empty() ? "unnamed" : s;
+}
+
+std::string unique_name(const std::string& stem, std::set<std::string>& used) {
+  std::string name = stem;
+  for (int k = 2; !used.insert(name).second; ++k) name = stem + "-" + std::to_string(k);
+  return name;
+}
+
+// A CSV file built in memory and written, checked, by close().
+class CsvFile {
+ public:
+  CsvFile(std::string path, std::string_view header) : path_(std::move(path)) { out_ << header << '\n'; }
+  template <typename... Fields>
+  void row(const Fields&... fields) {
+    bool first = true;
+    ((out_ << (first ? "" : ",") << fields, first = false), ...);
+    out_ << '\n';
+  }
+  const std::string& close() {
+    write_text_file(path_, out_.str());
+    return path_;
+  }
+
+ private:
+  std::string path_;
+  std::ostringstream out_;
+};
+
+std::string cell(const std::vector<double>& v, std::size_t i) { return i < v.size() ? csv_number(v[i]) : ""; }
+
+// One row per index up to the longest of the three series; x(i) gives the first column.
+template <typename X>
+std::string write_series(const std::string& path, std::string_view header, X x, const std::vector<double>& truth,
+                         const std::vector<double>& model, const std::vector<double>& baseline) {
+  CsvFile out(path, header);
+  const std::size_t n = std::max({truth.size(), model.size(), baseline.size()});
+  for (std::size_t i = 0; i < n; ++i) out.row(csv_number(x(i)), cell(truth, i), cell(model, i), cell(baseline, i));
+  return out.close();
+}
+
+}  // namespace
+
+ReportLayout report_layout(const Evaluation& e) {
+  std::set<std::string> used{std::string(kSpeedStem), std::string(kLatentsStem), std::string(kExamplesStem)};
+  ReportLayout layout;
+  for (const Experiment& x : e.experiments) layout.experiments.push_back(unique_name("experiment-" + safe_stem(x.id), used));
+  for (const Example& x : e.examples) layout.examples.push_back(unique_name("example-" + safe_stem(x.id), used));
+  return layout;
+}
+
+void write_text_file(const std::string& path, std::string_view text) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw failure(path + ": cannot create the file");
+  out << text;
+  out.close();
+  if (!out) throw failure(path + ": write failed (disk full?)");
+}
+
+std::string csv_field(std::string_view text) {
+  if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string csv_number(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buffer[32];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, end);
+}
+
+std::vector<std::string> write_report_csvs(const Evaluation& e, const ReportLayout& layout, const std::string& directory) {
+  namespace fs = std::filesystem;
+  const auto path = [&](const std::string& name) { return (fs::path(directory) / name).string(); };
+  std::vector<std::string> written;
+  for (std::size_t i = 0; i < e.experiments.size(); ++i) {
+    CsvFile out(path(layout.experiments[i] + ".csv"), kExperimentColumns);
+    for (const MaterialComparison& m : e.experiments[i].materials)
+      out.row(csv_field(m.id), csv_field(m.name), m.windows, csv_number(m.model), csv_number(m.baseline),
+              csv_number(m.difference.q1), csv_number(m.difference.median), csv_number(m.difference.q3),
+              csv_number(m.test.t), csv_number(m.test.df), csv_number(m.test.p), m.test.n_a, m.test.n_b,
+              int(m.better()), int(m.significant()));
+    written.push_back(out.close());
+  }
+  CsvFile speed(path(std::string(kSpeedStem) + ".csv"), kSpeedColumns);
+  for (const SpeedPoint& s : e.speed)
+    speed.row(csv_field(s.method), csv_field(s.setting), csv_number(s.seconds_per_second), csv_number(s.distance));
+  written.push_back(speed.close());
+  CsvFile latents(path(std::string(kLatentsStem) + ".csv"), kLatentColumns);
+  for (const LatentPoint& p : e.latents)
+    latents.row(csv_field(p.id), csv_field(p.name), csv_field(p.kind), csv_number(p.x), csv_number(p.y));
+  written.push_back(latents.close());
+  for (std::size_t i = 0; i < e.examples.size(); ++i) {
+    const Example& x = e.examples[i];
+    written.push_back(write_series(path(layout.examples[i] + "-spectra.csv"), kSpectraColumns,
+                                   [](std::size_t k) { return double(k + 1) * kBinHz; }, x.truth_spectrum,
+                                   x.model_spectrum, x.baseline_spectrum));
+    written.push_back(write_series(path(layout.examples[i] + "-signals.csv"), kSignalColumns,
+                                   [](std::size_t k) { return double(k) / kSampleRateHz; }, x.truth_signal,
+                                   x.model_signal, x.baseline_signal));
+  }
+  return written;
+}
+
+}  // namespace haptex::evaluate

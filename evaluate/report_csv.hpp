@@ -1,0 +1,52 @@
+#pragma once
+// The data of an evaluation report as CSV files, and the names of all the report's files.
+//
+// CSV as RFC 4180 reads it: comma-separated, one header row, a field holding a comma, a double quote
+// or a line break is quoted ("Brick, 2" -> "\"Brick, 2\""), quotes doubled. Numbers are written in the
+// shortest form that reads back to the same double (std::to_chars); infinities and NaN as `inf`,
+// `-inf` and `nan`, which strtod, numpy.loadtxt and pandas.read_csv all read. Booleans are 1 or 0.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "evaluate/evaluation_results.hpp"
+
+namespace haptex::evaluate {
+
+// File names (without extension) inside the report folder, shared by the CSV, chart and markdown
+// writers. Experiment and example ids become file names with every character outside
+// [A-Za-z0-9._-] replaced by '_', made unique with a -2, -3 ... suffix.
+struct ReportLayout {
+  std::vector<std::string> experiments;  // per experiment: "experiment-<id>": .csv, .gnuplot, .png
+  std::vector<std::string> examples;     // per example: "example-<id>": -spectra.csv, -signals.csv
+};
+ReportLayout report_layout(const Evaluation& e);
+
+inline constexpr std::string_view kSpeedStem = "speed";        // speed.csv, .gnuplot, .png
+inline constexpr std::string_view kLatentsStem = "latents";    // latents.csv, .gnuplot, .png
+inline constexpr std::string_view kExamplesStem = "examples";  // examples.gnuplot, .png (Fig. 5)
+
+// Column headers, in order.
+inline constexpr std::string_view kExperimentColumns =
+    "material_id,name,windows,model_distance,baseline_distance,difference_q1,difference_median,difference_q3,"
+    "t,df,p,n_model,n_baseline,better,significant";
+inline constexpr std::string_view kSpeedColumns = "method,setting,seconds_per_second,distance";
+inline constexpr std::string_view kLatentColumns = "material_id,name,kind,x,y";
+inline constexpr std::string_view kSpectraColumns = "frequency_hz,truth,model,baseline";
+inline constexpr std::string_view kSignalColumns = "time_s,truth,model,baseline";
+
+// Writes text to path; throws haptex::Error (failed) naming it when it cannot (the report's files
+// are made atomic by their folder: see evaluate/report_writer.hpp).
+void write_text_file(const std::string& path, std::string_view text);
+
+std::string csv_field(std::string_view text);  // quoted when it has to be
+std::string csv_number(double x);              // shortest round-trip form; inf, -inf, nan
+
+// Writes every CSV of the report into directory (which exists): one per experiment (a row per
+// material), speed.csv, latents.csv, and two per example (the spectra of one test window: 10 Hz
+// steps from 10 Hz; the first samples of the stitched signals: time from 0 at 10 kHz; a shorter
+// series leaves its cells empty). Returns the paths written. Throws haptex::Error (failed) when a
+// file cannot be written.
+std::vector<std::string> write_report_csvs(const Evaluation& e, const ReportLayout& layout, const std::string& directory);
+
+}  // namespace haptex::evaluate

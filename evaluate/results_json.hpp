@@ -1,0 +1,38 @@
+#pragma once
+// An evaluation as JSON: results.json of the report, schemas/results.schema.json.
+//
+// JSON has no infinities or NaN. Every floating-point value is a number when finite and otherwise
+// one of the strings "inf", "-inf" or "nan" (so t = -infinity, which Welch's test gives for two
+// samples without spread, keeps its sign; see evaluate/welch_test.hpp).
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "evaluate/evaluation_results.hpp"
+#include "evaluate/report_csv.hpp"
+
+namespace haptex::evaluate {
+
+inline constexpr double kSignificanceLevel = 0.05;  // MaterialComparison::significant(): Welch, two-sided
+
+// What Heravi et al. (ICRA 2020) report for an experiment haptex repeats: the share of materials on
+// which their model was significantly better than the AR baseline.
+struct PaperFigure {
+  double share = 0;                      // of the materials
+  std::optional<std::size_t> count, of;  // when the paper gives the counts
+  std::string text;                      // "82 of 93 materials"
+};
+// unified-new-actions*: 82 of 93; stitched-*: 86 %. Other experiments: nothing.
+std::optional<PaperFigure> paper_figure(std::string_view experiment_id);
+
+// A double as JSON: the number, or "inf", "-inf", "nan".
+nlohmann::json json_number(double x);
+
+// The whole evaluation, stamped with haptex's version and created_utc, naming each part's CSV file
+// (layout); examples by name and size only, their data is in their CSVs. Follows
+// schemas/results.schema.json.
+nlohmann::json results_json(const Evaluation& e, const ReportLayout& layout, const std::string& created_utc);
+
+}  // namespace haptex::evaluate
