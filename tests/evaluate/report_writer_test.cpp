@@ -1,0 +1,469 @@
+#include "evaluate/report_writer.hpp"
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/json/schema.hpp"
+#include "evaluate/report_csv.hpp"
+#include "evaluate/report_markdown.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::evaluate {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+MaterialComparison material(const std::string& id, const std::string& name, double model, double baseline,
+                            Quartiles difference, double t, double p) {
+  MaterialComparison m{id, name, 120, model, baseline, difference, {}};
+  m.test = {t, 150.25, p, model, baseline, 120, 1200};
+  return m;
+}
+
+Example example(const std::string& id, const std::string& name, std::size_t model_samples) {
+  Example x{id, name, {}, {}, {}, {}, {}, {}};
+  for (int k = 0; k < 100; ++k) {
+    x.truth_spectrum.push_back(0.1 / (1 + k));
+    x.model_spectrum.push_back(0.11 / (1 + k));
+    x.baseline_spectrum.push_back(0.09 / (1 + k) + 0.001);
+  }
+  for (int i = 0; i < 500; ++i) {
+    x.truth_signal.push_back(std::sin(0.05 * i));
+    x.baseline_signal.push_back(0.8 * std::sin(0.05 * i + 0.3));
+  }
+  for (std::size_t i = 0; i < model_samples; ++i) x.model_signal.push_back(0.9 * std::cos(0.05 * double(i)));
+  return x;
+}
+
+// Five materials in the paper's experiment: better and significant (Book; Felt with t = -infinity),
+// significantly worse (Brick, 2), better and worse without significance; totals 3, 2, 1.
+Evaluation sample_evaluation() {
+  Evaluation e;
+  e.dataset = {"data/dataset.h5", std::string(64, 'a')};
+  e.split = {"data/split.json", std::string(64, 'b')};
+  e.models = {{"models/unified.h5", std::string(64, 'c')}, {"models/small.h5", std::string(64, 'd')}};
+  e.baseline = "ar-refit";
+  e.reconstruct = "fgla";
+  e.repeats = 10;
+  e.seconds = 123.456;
+  Experiment actions{"unified-new-actions", "Unified model on new actions", "unified model models/unified.h5", "ar-refit", {}};
+  actions.materials = {material("book", "Book", 0.5, 0.9, {0.1, 0.35, 0.6}, -8.25, 1e-6),
+                       material("brick_2", "Brick, 2", 1.1, 0.7, {-0.6, -0.4, -0.1}, 3.1, 0.0021),
+                       material("felt", "Felt", 0.2, 0.3, {0.1, 0.1, 0.1}, -kInf, 0.0),
+                       material("glass", "Glass \"smooth\"", 0.4, 0.42, {-0.2, 0.02, 0.25}, -0.9, 0.37),
+                       material("cork", "Cork", 0.61, 0.6, {-0.3, -0.01, 0.2}, 0.2, 0.84)};
+  Experiment stitched{"stitched-fgla", "Stitched signals, fast Griffin-Lim", "unified model", "ar-refit", {}};
+  stitched.materials = {material("book", "Book", 0.7, 0.9, {0.0, 0.2, 0.4}, -4.0, 0.0001),
+                        material("felt", "Felt", 0.35, 0.3, {-0.1, -0.05, 0.0}, 1.2, 0.23)};
+  Experiment per_material{"per-material (small.h5)", "Per-material models on new actions", "per-material", "ar-refit", {}};
+  per_material.materials = {material("book", "Book", 0.45, 0.9, {0.2, 0.45, 0.7}, -9.0, 2e-9)};
+  Experiment presses{"unified-new-presses", "Unified model on a new press", "unified model", "ar-refit", {}};
+  e.experiments = {actions, stitched, per_material, presses};
+  e.speed = {{"AR baseline", "ar-refit", 0.002, 0.9},       {"per-material", "small.h5, 64 hidden", 0.0005, 0.55},
+             {"unified", "unified.h5, 64 hidden", 0.0008, 0.5}, {"unified", "big.h5, 256 hidden", 0.003, 0.45},
+             {"unified + FGLA", "0 iterations", 0.0026, 0.8},  {"unified + FGLA", "8 iterations", 0.012, 0.7},
+             {"unified + FGLA", "32 iterations", 0.04, 0.65},  {"unified + FGLA", "100 iterations", 0.12, 0.6},
+             {"unified + online (RTISI-LA)", "look-ahead 3", 0.021, 0.66}};
+  e.examples = {example("book", "Book", 500), example("brick_2", "Brick, 2", 400), example("felt", "Felt", 500),
+                example("glass", "Glass \"smooth\"", 500)};
+  e.latents = {{"book", "Book", "training", 0.5, 0.25},     {"book", "Book", "test press", 0.45, 0.3},
+               {"brick_2", "Brick, 2", "training", -1.25, 0.5}, {"brick_2", "Brick, 2", "test press", -1.0, 0.375},
+               {"felt", "Felt", "training", 0.125, -2.0},   {"felt", "Felt", "test press", 0.2, -1.5}};
+  e.notes = {"material 'velvet' left out: its training sections are too short for the AR fit"};
+  return e;
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// RFC 4180: quoted fields may hold commas, doubled quotes and line breaks.
+std::vector<std::vector<std::string>> read_csv(const fs::path& path) {
+  const std::string text = read_text(path);
+  std::vector<std::vector<std::string>> rows(1);
+  std::string field;
+  bool quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') field += '"', ++i;
+      else if (c == '"') quoted = false;
+      else field += c;
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      rows.back().push_back(field), field.clear();
+    } else if (c == '\n') {
+      rows.back().push_back(field), field.clear();
+      rows.emplace_back();
+    } else {
+      field += c;
+    }
+  }
+  if (rows.back().empty()) rows.pop_back();
+  return rows;
+}
+
+double number(const std::string& text) {
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  EXPECT_TRUE(!text.empty() && *end == '\0') << "not a number: '" << text << "'";
+  return x;
+}
+
+std::vector<std::string> split_header(std::string_view columns) {
+  std::vector<std::string> out(1);
+  for (char c : columns) {
+    if (c == ',') out.emplace_back();
+    else out.back().push_back(c);
+  }
+  return out;
+}
+
+// The data rows of a CSV whose header must be `columns`.
+std::vector<std::vector<std::string>> read_table(const fs::path& path, std::string_view columns) {
+  std::vector<std::vector<std::string>> rows = read_csv(path);
+  if (rows.empty()) {
+    ADD_FAILURE() << path << " is empty";
+    return rows;
+  }
+  EXPECT_EQ(rows[0], split_header(columns)) << path;
+  rows.erase(rows.begin());
+  return rows;
+}
+
+// A row read back: its text fields, then its numbers, each exactly as written.
+void expect_row(const std::vector<std::string>& row, const std::vector<std::string>& text, const std::vector<double>& numbers) {
+  ASSERT_EQ(row.size(), text.size() + numbers.size());
+  for (std::size_t i = 0; i < text.size(); ++i) EXPECT_EQ(row[i], text[i]) << "field " << i;
+  for (std::size_t i = 0; i < numbers.size(); ++i) EXPECT_EQ(number(row[text.size() + i]), numbers[i]) << "field " << text.size() + i;
+}
+
+std::vector<std::string> partial_leftovers(const fs::path& dir) {
+  std::vector<std::string> found;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.path().string().ends_with(".partial")) found.push_back(entry.path().string());
+  return found;
+}
+
+// A folder holding one file, as an old report or a killed run leaves it.
+void make_folder_with(const std::string& dir, const std::string& file, const std::string& text) {
+  fs::create_directories(dir);
+  std::ofstream(dir + "/" + file) << text;
+}
+
+bool gnuplot_installed() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
+
+bool is_png(const fs::path& path) { return read_text(path).starts_with(std::string("\x89PNG\r\n\x1a\n", 8)); }
+
+Error::Kind kind_of_failure(const Evaluation& e, const std::string& dir, bool overwrite, std::string* message = nullptr) {
+  try {
+    write_report(e, dir, overwrite);
+  } catch (const Error& error) {
+    if (message) *message = error.what();
+    return error.kind();
+  }
+  ADD_FAILURE() << "write_report(" << dir << ") did not throw";
+  return Error::Kind::failed;
+}
+
+TEST(ReportWriter, WritesEveryFileOfTheReportAndNoPartial) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  const ReportFiles files = write_report(sample_evaluation(), dir, false);
+  EXPECT_EQ(files.directory, dir);
+  ASSERT_GE(files.files.size(), 2u);
+  EXPECT_EQ(files.files[0], dir + "/report.md");
+  EXPECT_EQ(files.files[1], dir + "/results.json");
+  for (const char* name : {"experiment-unified-new-actions.csv", "experiment-stitched-fgla.csv",
+                           "experiment-per-material__small.h5_.csv", "experiment-unified-new-presses.csv", "speed.csv",
+                           "latents.csv", "example-book-spectra.csv", "example-brick_2-signals.csv",
+                           "experiment-unified-new-actions.gnuplot", "examples.gnuplot", "latents.gnuplot", "speed.gnuplot"}) {
+    EXPECT_TRUE(fs::is_regular_file(fs::path(dir) / name)) << name;
+    EXPECT_NE(std::find(files.files.begin(), files.files.end(), dir + "/" + name), files.files.end()) << name;
+  }
+  EXPECT_FALSE(fs::exists(fs::path(dir) / "experiment-unified-new-presses.gnuplot")) << "no chart without materials";
+  for (const std::string& f : files.files) EXPECT_TRUE(fs::is_regular_file(f)) << f;
+  EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
+  EXPECT_FALSE(fs::exists(dir + ".partial"));
+}
+
+TEST(ReportWriter, ResultsJsonFollowsTheSchemaAndCountsTheTotals) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  const Evaluation e = sample_evaluation();
+  write_report(e, dir, false);
+  const std::string path = dir + "/results.json";
+  const nlohmann::json doc = json::read_file(path);
+  EXPECT_NO_THROW(json::validate(doc, "results.schema.json", path));
+  EXPECT_EQ(doc["format"], "results/1");
+  EXPECT_EQ(doc["inputs"]["dataset"]["sha256"], std::string(64, 'a'));
+  ASSERT_EQ(doc["experiments"].size(), 4u);
+  const nlohmann::json& actions = doc["experiments"][0];
+  EXPECT_EQ(actions["totals"]["materials"], 5);
+  EXPECT_EQ(actions["totals"]["better"], 3);
+  EXPECT_EQ(actions["totals"]["significantly_better"], 2);
+  EXPECT_EQ(actions["totals"]["significantly_worse"], 1);
+  for (std::size_t i = 0; i < e.experiments.size(); ++i) {
+    const nlohmann::json& totals = doc["experiments"][i]["totals"];
+    EXPECT_EQ(totals["better"], e.experiments[i].better()) << e.experiments[i].id;
+    EXPECT_EQ(totals["significantly_better"], e.experiments[i].significantly_better()) << e.experiments[i].id;
+    EXPECT_EQ(totals["significantly_worse"], e.experiments[i].significantly_worse()) << e.experiments[i].id;
+  }
+  EXPECT_EQ(actions["materials"][2]["test"]["t"], "-inf");
+  EXPECT_EQ(actions["materials"][2]["test"]["p"], 0.0);
+  EXPECT_EQ(actions["materials"][1]["name"], "Brick, 2");
+  EXPECT_EQ(actions["materials"][1]["significant"], true);
+  EXPECT_EQ(actions["materials"][1]["better"], false);
+  EXPECT_EQ(actions["paper"]["significantly_better"], 82);
+  EXPECT_EQ(actions["paper"]["materials"], 93);
+  EXPECT_EQ(doc["experiments"][1]["paper"]["share_significantly_better"], 0.86);
+  EXPECT_FALSE(doc["experiments"][2].contains("paper"));
+  EXPECT_EQ(doc["experiments"][2]["csv"], "experiment-per-material__small.h5_.csv");
+  EXPECT_EQ(doc["speed"].size(), e.speed.size());
+  EXPECT_EQ(doc["latents"][2]["x"], -1.25);
+  EXPECT_EQ(doc["examples"][1]["signals_csv"], "example-brick_2-signals.csv");
+
+  // The schema is not vacuous.
+  nlohmann::json bad = doc;
+  bad["experiments"][0]["totals"]["better"] = "3";
+  EXPECT_THROW(json::validate(bad, "results.schema.json", path), Error);
+  bad = doc;
+  bad["experiments"][0]["materials"][2]["test"]["t"] = "minus infinity";
+  EXPECT_THROW(json::validate(bad, "results.schema.json", path), Error);
+  bad = doc;
+  bad["inputs"]["split"]["sha256"] = "abc";
+  EXPECT_THROW(json::validate(bad, "results.schema.json", path), Error);
+}
+
+TEST(ReportWriter, CsvRowsReadBackToTheSameNumbers) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  const Evaluation e = sample_evaluation();
+  write_report(e, dir, false);
+
+  const fs::path experiment = fs::path(dir) / "experiment-unified-new-actions.csv";
+  EXPECT_NE(read_text(experiment).find("\"Brick, 2\""), std::string::npos);
+  EXPECT_NE(read_text(experiment).find("\"Glass \"\"smooth\"\"\""), std::string::npos);
+  const auto rows = read_table(experiment, kExperimentColumns);
+  ASSERT_EQ(rows.size(), 5u);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const MaterialComparison& m = e.experiments[0].materials[i];
+    expect_row(rows[i], {m.id, m.name},
+               {double(m.windows), m.model, m.baseline, m.difference.q1, m.difference.median, m.difference.q3, m.test.t,
+                m.test.df, m.test.p, double(m.test.n_a), double(m.test.n_b), double(m.better()), double(m.significant())});
+  }
+  EXPECT_EQ(rows[2][8], "-inf");
+  EXPECT_EQ(rows[1][13] + rows[1][14], "01") << "Brick, 2: worse, significant";
+
+  const auto speed = read_table(fs::path(dir) / "speed.csv", kSpeedColumns);
+  ASSERT_EQ(speed.size(), e.speed.size());
+  for (std::size_t i = 0; i < speed.size(); ++i)
+    expect_row(speed[i], {e.speed[i].method, e.speed[i].setting}, {e.speed[i].seconds_per_second, e.speed[i].distance});
+
+  const auto latents = read_table(fs::path(dir) / "latents.csv", kLatentColumns);
+  ASSERT_EQ(latents.size(), e.latents.size());
+  for (std::size_t i = 0; i < latents.size(); ++i)
+    expect_row(latents[i], {e.latents[i].id, e.latents[i].name, e.latents[i].kind}, {e.latents[i].x, e.latents[i].y});
+
+  const Example& brick = e.examples[1];
+  const auto spectra = read_table(fs::path(dir) / "example-brick_2-spectra.csv", kSpectraColumns);
+  ASSERT_EQ(spectra.size(), 100u);
+  for (std::size_t k = 0; k < spectra.size(); ++k)
+    expect_row(spectra[k], {}, {10.0 * double(k + 1), brick.truth_spectrum[k], brick.model_spectrum[k], brick.baseline_spectrum[k]});
+  const auto signals = read_table(fs::path(dir) / "example-brick_2-signals.csv", kSignalColumns);
+  ASSERT_EQ(signals.size(), 500u);
+  EXPECT_EQ(number(signals[1][0]), 1e-4);
+  EXPECT_EQ(number(signals[399][2]), brick.model_signal[399]);
+  EXPECT_EQ(signals[400][2], "") << "the model's signal is shorter: its cells stay empty";
+  EXPECT_EQ(number(signals[499][1]), brick.truth_signal[499]);
+  EXPECT_EQ(number(signals[499][3]), brick.baseline_signal[499]);
+}
+
+TEST(ReportWriter, MarkdownGivesTotalsPaperFiguresAndTables) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  const ReportFiles files = write_report(sample_evaluation(), dir, false);
+  const std::string md = read_text(dir + "/report.md");
+  EXPECT_NE(md.find("better on 3 of 5 materials, significantly on 2, significantly worse on 1"), std::string::npos);
+  EXPECT_NE(md.find("better on 1 of 2 materials, significantly on 1, significantly worse on 0"), std::string::npos);
+  EXPECT_NE(md.find("better on 1 of 1 material, significantly on 1, significantly worse on 0"), std::string::npos);
+  EXPECT_NE(md.find("82 of 93 materials (88 %)"), std::string::npos);
+  EXPECT_NE(md.find("86 % of materials"), std::string::npos);
+  EXPECT_NE(md.find("| 5 | 3 | 2 (40 %) | 1 |"), std::string::npos) << "totals row of unified-new-actions";
+  EXPECT_NE(md.find(std::string(64, 'a')), std::string::npos) << "the dataset's hash";
+  EXPECT_NE(md.find("`models/small.h5`"), std::string::npos);
+  EXPECT_NE(md.find("| Brick, 2 | 120 | 1.100 | 0.7000 | -0.6000 | -0.4000 | -0.1000 | 3.100 | 0.0021 | worse \\* |"),
+            std::string::npos);
+  EXPECT_NE(md.find("| Book | 120 | 0.5000 | 0.9000 | 0.1000 | 0.3500 | 0.6000 | -8.250 | 1.00e-06 | better \\* |"),
+            std::string::npos);
+  EXPECT_NE(md.find("| Felt | 120 | 0.2000 | 0.3000 | 0.1000 | 0.1000 | 0.1000 | -∞ | 0 | better \\* |"), std::string::npos);
+  EXPECT_NE(md.find("| Cork | 120 | 0.6100 | 0.6000 | -0.3000 | -0.01000 | 0.2000 | 0.2000 | 0.84 | worse |"),
+            std::string::npos);
+  EXPECT_NE(md.find("| unified + FGLA | 100 iterations | 120.0 ms | 0.6000 |"), std::string::npos);
+  EXPECT_NE(md.find("material 'velvet' left out"), std::string::npos) << "the evaluation's notes";
+  EXPECT_NE(md.find("Spectral distance"), std::string::npos);
+  EXPECT_NE(md.find("[results.json](results.json)"), std::string::npos);
+  if (files.note.empty()) {
+    for (const char* link : {"](experiment-unified-new-actions.png)", "](examples.png)", "](latents.png)", "](speed.png)"})
+      EXPECT_NE(md.find(link), std::string::npos) << link;
+  } else {
+    EXPECT_NE(md.find("Chart not drawn"), std::string::npos);
+  }
+}
+
+TEST(ReportWriter, ChartsAreValidPngsWhenGnuplotIsInstalled) {
+  if (!gnuplot_installed()) GTEST_SKIP() << "gnuplot is not installed";
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  const ReportFiles files = write_report(sample_evaluation(), dir, false);
+  EXPECT_EQ(files.note, "");
+  const std::vector<std::string> expected = {"experiment-unified-new-actions.png", "experiment-stitched-fgla.png",
+                                             "experiment-per-material__small.h5_.png", "examples.png", "latents.png",
+                                             "speed.png"};
+  EXPECT_EQ(files.charts.size(), expected.size());
+  for (const std::string& name : expected) {
+    EXPECT_TRUE(is_png(fs::path(dir) / name)) << name;
+    EXPECT_NE(std::find(files.charts.begin(), files.charts.end(), dir + "/" + name), files.charts.end()) << name;
+  }
+}
+
+// PATH without gnuplot for as long as it lives.
+class NoGnuplotOnPath {
+ public:
+  explicit NoGnuplotOnPath(const std::string& empty_dir) : saved_(std::getenv("PATH") ? std::getenv("PATH") : "") {
+    setenv("PATH", empty_dir.c_str(), 1);
+  }
+  ~NoGnuplotOnPath() { setenv("PATH", saved_.c_str(), 1); }
+
+ private:
+  std::string saved_;
+};
+
+TEST(ReportWriter, WithoutGnuplotTheScriptsAndANoteRemain) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  fs::create_directory(tmp.file("empty"));
+  ReportFiles files;
+  {
+    NoGnuplotOnPath guard(tmp.file("empty"));
+    files = write_report(sample_evaluation(), dir, false);
+  }
+  EXPECT_NE(files.note.find("gnuplot is not installed"), std::string::npos) << files.note;
+  EXPECT_TRUE(files.charts.empty());
+  EXPECT_TRUE(fs::is_regular_file(fs::path(dir) / "speed.gnuplot"));
+  EXPECT_FALSE(fs::exists(fs::path(dir) / "speed.png"));
+  const std::string md = read_text(dir + "/report.md");
+  EXPECT_NE(md.find("gnuplot is not installed"), std::string::npos);
+  EXPECT_NE(md.find("Chart not drawn"), std::string::npos);
+  EXPECT_EQ(md.find("](speed.png)"), std::string::npos);
+}
+
+TEST(ReportWriter, AnExistingFolderIsRefusedWithoutOverwriteAndKept) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  make_folder_with(dir, "old.txt", "the old report");
+  std::string message;
+  EXPECT_EQ(kind_of_failure(sample_evaluation(), dir, false, &message), Error::Kind::bad_input);
+  EXPECT_NE(message.find(dir), std::string::npos) << message;
+  EXPECT_NE(message.find("already exists"), std::string::npos) << message;
+  EXPECT_EQ(read_text(dir + "/old.txt"), "the old report");
+  EXPECT_FALSE(fs::exists(dir + "/report.md"));
+  EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
+  EXPECT_FALSE(fs::exists(dir + ".partial"));
+}
+
+TEST(ReportWriter, OverwriteReplacesTheOldReport) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  make_folder_with(dir, "old.txt", "the old report");
+  const ReportFiles files = write_report(sample_evaluation(), dir + "/", true);
+  EXPECT_EQ(files.directory, dir);
+  EXPECT_FALSE(fs::exists(dir + "/old.txt"));
+  EXPECT_TRUE(fs::is_regular_file(dir + "/report.md"));
+  EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
+  EXPECT_FALSE(fs::exists(dir + ".partial"));
+}
+
+TEST(ReportWriter, AFailureLeavesNoHalfReportAndKeepsTheOldOne) {
+  test::TempDir tmp;
+  Evaluation broken = sample_evaluation();
+  broken.models[1].sha256 = "not a hash";  // results.json fails its schema after the CSVs are written
+  const std::string fresh = tmp.file("fresh");
+  EXPECT_EQ(kind_of_failure(broken, fresh, false), Error::Kind::failed);
+  EXPECT_FALSE(fs::exists(fresh));
+  EXPECT_FALSE(fs::exists(fresh + ".partial"));
+
+  const std::string old = tmp.file("old");
+  make_folder_with(old, "old.txt", "the old report");
+  EXPECT_EQ(kind_of_failure(broken, old, true), Error::Kind::failed);
+  EXPECT_EQ(read_text(old + "/old.txt"), "the old report");
+  EXPECT_FALSE(fs::exists(old + "/report.md"));
+  EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
+}
+
+TEST(ReportWriter, TheLeftoversOfAKilledRunAreReplaced) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  make_folder_with(dir + ".partial/sub", "leftover.csv", "");
+  make_folder_with(dir + ".partial", "speed.csv", "half a file");
+  write_report(sample_evaluation(), dir, false);
+  EXPECT_FALSE(fs::exists(dir + "/sub"));
+  EXPECT_NE(read_text(dir + "/speed.csv"), "half a file");
+  EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
+}
+
+TEST(ReportWriter, AReportAnotherRunIsWritingIsRefusedAndLeftAlone) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  make_folder_with(dir + ".partial", "speed.csv", "being written");
+  const int fd = ::open((dir + ".partial").c_str(), O_RDONLY | O_DIRECTORY);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  std::string message;
+  EXPECT_EQ(kind_of_failure(sample_evaluation(), dir, false, &message), Error::Kind::bad_input);
+  EXPECT_NE(message.find("another haptex run"), std::string::npos) << message;
+  EXPECT_EQ(read_text(dir + ".partial/speed.csv"), "being written");
+  ::close(fd);
+}
+
+TEST(ReportWriter, NumbersAreFormattedForReading) {
+  EXPECT_EQ(format_number(123.456), "123.5");
+  EXPECT_EQ(format_number(0.5), "0.5000");
+  EXPECT_EQ(format_number(-0.0125), "-0.01250");
+  EXPECT_EQ(format_number(42), "42.00");
+  EXPECT_EQ(format_number(1234567.0), "1.235e+06");
+  EXPECT_EQ(format_number(0.000125), "1.250e-04");
+  EXPECT_EQ(format_number(0), "0");
+  EXPECT_EQ(format_number(-kInf), "-∞");
+  EXPECT_EQ(format_number(std::nan("")), "n/a");
+  EXPECT_EQ(format_p(1e-6), "1.00e-06");
+  EXPECT_EQ(format_p(0.0312), "0.0312");
+  EXPECT_EQ(format_p(0.5), "0.5");
+  EXPECT_EQ(format_p(0), "0");
+  EXPECT_EQ(csv_field("Brick, 2"), "\"Brick, 2\"");
+  EXPECT_EQ(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
+  EXPECT_EQ(csv_field("plain"), "plain");
+  EXPECT_EQ(csv_number(0.1), "0.1");
+  EXPECT_EQ(csv_number(kInf), "inf");
+}
+
+}  // namespace
+}  // namespace haptex::evaluate
