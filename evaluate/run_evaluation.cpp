@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "core/random_seeds.hpp"
+#include "core/sha256.hpp"
 #include "evaluate/ar_refit.hpp"
 #include "evaluate/griffin_lim.hpp"
 #include "evaluate/hatt_published.hpp"
@@ -288,11 +289,11 @@ std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& mode
     const std::string suffix = count[models[i].model.variant] > 1 ? " (" + models[i].label + ")" : "";
     const std::string label = predict::variant_name(models[i].model.variant) + " model " + models[i].label;
     if (models[i].model.variant == predict::Variant::per_material) {
-      out.push_back({"per-material" + suffix, "Per-material models on new actions (test sections of each material)", "per-material" + tag, label});
+      out.push_back({"per-material" + suffix, "Per-material models on new actions (test sections of each material)", "per-material" + tag, label, ""});
       continue;
     }
-    out.push_back({"unified-new-actions" + suffix, "Unified model on new actions, with the training presses' texture", "unified-new-actions" + tag, label});
-    out.push_back({"unified-new-presses" + suffix, "Unified model on new actions and a new press (the test press)", "unified-new-presses" + tag, label});
+    out.push_back({"unified-new-actions" + suffix, "Unified model on new actions, with the training presses' texture", "unified-new-actions" + tag, label, ""});
+    out.push_back({"unified-new-presses" + suffix, "Unified model on new actions and a new press (the test press)", "unified-new-presses" + tag, label, ""});
   }
   // Against the action-blind predictor: does the model use the actions at all?
   for (std::size_t i = 0; i < models.size(); ++i) {
@@ -308,7 +309,7 @@ std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& mode
     out.push_back({key == "online" ? "stitched-online" : "stitched-fgla",
                    "Stitched time signal: the unified model's spectra on new actions and a new press, turned into vibration by " +
                        (key == "online" ? std::string("the online method (RTISI-LA)") : "fast Griffin-Lim, " + key.substr(5) + " iterations"),
-                   key, "unified model " + models[std::size_t(c.stitched_model)].label});
+                   key, "unified model " + models[std::size_t(c.stitched_model)].label, ""});
   }
   return out;
 }
@@ -337,7 +338,7 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   Evaluation e;
   e.dataset = {split.dataset_path, split.dataset_sha256};
   e.split = {split.manifest_path, split.manifest_sha256};
-  for (const ModelInput& input : models) e.models.push_back({input.path, ""});
+  for (const ModelInput& input : models) e.models.push_back({input.path, sha256_file(input.path)});
   e.baseline = o.baseline == Baseline::ar_refit ? "ar-refit" : "hatt-published";
   e.reconstruct = o.reconstruct == Reconstruction::fgla ? "fgla" : o.reconstruct == Reconstruction::online ? "online" : "none";
   e.repeats = o.repeats;

@@ -1,0 +1,101 @@
+// haptex evaluate dataset.h5 --split split.json --model model.h5 [--model ...] [--baseline ar-refit|hatt-published]
+//                [--hatt-models DIR] [--reconstruct fgla|online|none] [--repeats 10] -o report/
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <map>
+
+#include "apps/command.hpp"
+#include "apps/terminal_progress.hpp"
+#include "core/error.hpp"
+#include "evaluate/report_writer.hpp"
+#include "evaluate/run_evaluation.hpp"
+#include "evaluate/truth_comparison.hpp"
+#include "predict/model_file.hpp"
+
+namespace haptex::apps {
+namespace {
+
+class EvaluateCommand : public Command {
+ public:
+  std::string name() const override { return "evaluate"; }
+  std::string summary() const override { return "Compare trained models with an AR baseline on the test sections; write a report"; }
+
+  void declare(CLI::App& app) override {
+    app.add_option("dataset", dataset_, "Dataset file (haptex align)")->required();
+    app.add_option("--split", split_, "Split manifest the models were trained with")->required();
+    app.add_option("--model", models_, "Model file (haptex train); repeat for several (unified sizes, per-material)")->required();
+    const std::map<std::string, evaluate::Baseline> baselines{{"ar-refit", evaluate::Baseline::ar_refit},
+                                                              {"hatt-published", evaluate::Baseline::hatt_published}};
+    app.add_option("--baseline", options_.baseline, "ar-refit (fitted here from train+val) or hatt-published (--hatt-models)")
+        ->transform(CLI::CheckedTransformer(baselines, CLI::ignore_case))->capture_default_str();
+    app.add_option("--hatt-models", options_.hatt_models, "Folder of the HaTT model XMLs for hatt-published")->check(CLI::ExistingDirectory);
+    const std::map<std::string, evaluate::Reconstruction> methods{
+        {"fgla", evaluate::Reconstruction::fgla}, {"online", evaluate::Reconstruction::online}, {"none", evaluate::Reconstruction::none}};
+    app.add_option("--reconstruct", options_.reconstruct, "Phase reconstruction of the stitched-signal experiment")
+        ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case))->capture_default_str();
+    app.add_option("--repeats", options_.repeats, "Baseline renderings (seeds) per test section")->capture_default_str()->check(CLI::Range(2, 1000));
+    app.add_option("--seed", options_.seed, "Random seed of the renderings and of FGLA's initial phase")->capture_default_str();
+    app.add_option("--threads", options_.threads, "Threads (0: every core)")->capture_default_str();
+    app.add_option("--truth", truth_, "truth.h5 of haptex synth materials: also compare with the noise-free spectra")
+        ->check(CLI::ExistingFile);
+    app.add_option("-o,--output", output_, "Report folder to write")->required();
+    app.add_flag("--force", force_, "Replace the report folder if it exists");
+  }
+
+  int run(const GlobalOptions& global) override {
+    if (options_.baseline == evaluate::Baseline::hatt_published && options_.hatt_models.empty())
+      throw Error(Error::Kind::bad_input, "evaluate: --baseline hatt-published needs --hatt-models DIR (the toolkit's Models_*.xml)");
+    if (std::filesystem::exists(output_) && !force_)
+      throw input_error(output_, "", "the report folder exists", "Choose another -o or add --force");
+    const split::DatasetSplit split = split::read_dataset_split(dataset_, split_);
+    std::vector<evaluate::ModelInput> models;
+    for (const std::string& path : models_)
+      models.push_back({path, std::filesystem::path(path).filename().string(), predict::read_model(path)});
+    evaluate::Evaluation e = evaluate::run_evaluation(split, models, options_, terminal_progress(global, "evaluate"));
+    if (!truth_.empty())
+      for (const evaluate::ModelInput& m : models) e.notes.push_back(truth_note(m));
+    const evaluate::ReportFiles files = evaluate::write_report(e, output_, force_);
+    if (global.json) {
+      std::cout << files.results_json_text << "\n";
+      return 0;
+    }
+    if (global.quiet) return 0;
+    std::cout << "wrote " << files.report << " (" << e.experiments.size() << " experiments, " << std::fixed << std::setprecision(1)
+              << e.seconds << " s)\n";
+    for (const evaluate::Experiment& x : e.experiments)
+      std::printf("  %s: better than the %s on %zu of %zu materials, significantly on %zu, significantly worse on %zu (mean distance %.4g vs %.4g m/s^2)\n",
+                  x.id.c_str(), x.baseline_label.substr(0, x.baseline_label.find(" (")).c_str(), x.better(), x.materials.size(),
+                  x.significantly_better(), x.significantly_worse(), x.mean_model(), x.mean_baseline());
+    if (!files.note.empty()) std::cout << "note: " << files.note << "\n";
+    return 0;
+  }
+
+ private:
+  std::string truth_note(const evaluate::ModelInput& m) const {
+    double model = 0, constant = 0, norm = 0;
+    std::size_t points = 0;
+    const auto found = evaluate::compare_with_truth(m.model, truth_);
+    for (const auto& c : found) model += c.model * double(c.points), constant += c.constant * double(c.points), norm += c.truth_norm * double(c.points), points += c.points;
+    if (points == 0) return m.label + ": no point of " + truth_ + " lies inside the training range";
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "%s against the noise-free spectra of %s (%zu materials, %zu speed-force points inside the training range): "
+                  "mean distance %.4g m/s^2; a constant spectrum per material (the truth's own mean) %.4g; mean true spectrum norm %.4g",
+                  m.label.c_str(), truth_.c_str(), found.size(), points, model / double(points), constant / double(points),
+                  norm / double(points));
+    return text;
+  }
+
+  std::string dataset_, split_, output_, truth_;
+  std::vector<std::string> models_;
+  evaluate::EvaluationOptions options_;
+  bool force_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_evaluate_command() { return std::make_unique<EvaluateCommand>(); }
+
+}  // namespace haptex::apps
