@@ -8,7 +8,7 @@ PACKAGES   := build-essential cmake pkg-config \
               libfftw3-dev libpugixml-dev nlohmann-json3-dev libvalijson-dev libboost-math-dev \
               libcli11-dev libsndfile1-dev gnuplot-nox libgtest-dev libgmock-dev libbenchmark-dev \
               python3-h5py python3-numpy
-BENCH_PACKAGES := python3-scipy python3-opencv hyperfine
+BENCH_PACKAGES := python3-scipy python3-opencv python3-torch python3-torchaudio hyperfine
 HAPTEX     := $(BUILD)/haptex
 DEMO       := $(BUILD)/demo
 
@@ -34,7 +34,7 @@ build: deps $(BUILD)/CMakeCache.txt
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) --timeout 600
 
-# The whole data pipeline on the built-in synthetic materials, ending with the QA verdict.
+# The whole pipeline on the built-in synthetic materials: data, checks, both models, the evaluation.
 demo: build
 	@rm -rf $(DEMO) && mkdir -p $(DEMO)
 	$(HAPTEX) synth materials -o $(DEMO)/synth
@@ -43,6 +43,11 @@ demo: build
 	$(HAPTEX) align --recordings $(DEMO)/recordings.h5 --gelsight $(DEMO)/gelsight.h5 -o $(DEMO)/dataset.h5
 	$(HAPTEX) split $(DEMO)/dataset.h5 -o $(DEMO)/split.json
 	$(HAPTEX) qa $(DEMO)/dataset.h5 --split $(DEMO)/split.json
+	$(HAPTEX) train $(DEMO)/dataset.h5 --split $(DEMO)/split.json -o $(DEMO)/model.h5
+	$(HAPTEX) train $(DEMO)/dataset.h5 --split $(DEMO)/split.json --per-material -o $(DEMO)/per_material.h5
+	$(HAPTEX) evaluate $(DEMO)/dataset.h5 --split $(DEMO)/split.json --model $(DEMO)/model.h5 --model $(DEMO)/per_material.h5 \
+	  --truth $(DEMO)/synth/truth.h5 -o $(DEMO)/report
+	@echo "make demo: done; the report is $(DEMO)/report/report.md"
 
 bench:
 	$(MAKE) deps EXTRA_PACKAGES="$(BENCH_PACKAGES)"
