@@ -13,6 +13,7 @@ std::unique_ptr<Command> make_split_command();
 std::unique_ptr<Command> make_train_command();
 std::unique_ptr<Command> make_predict_command();
 std::unique_ptr<Command> make_evaluate_command();
+std::unique_ptr<Command> make_render_command();
 
 std::vector<std::unique_ptr<Command>> all_commands() {
   std::vector<std::unique_ptr<Command>> commands;
@@ -26,6 +27,7 @@ std::vector<std::unique_ptr<Command>> all_commands() {
   commands.push_back(make_train_command());
   commands.push_back(make_predict_command());
   commands.push_back(make_evaluate_command());
+  commands.push_back(make_render_command());
   return commands;
 }
 

@@ -1,0 +1,185 @@
+// haptex render model.h5 (--image IMG [--reference REF] | --material ID) --trajectory traj.csv -o out.wav [--csv out.csv]
+//               [--reconstruct fgla|online] [--iterations N] [--look-ahead F] [--live] [--full-scale A] [--seed S] [--force]
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "apps/command.hpp"
+#include "core/durable_file.hpp"
+#include "core/error.hpp"
+#include "evaluate/vibration_render.hpp"
+#include "evaluate/wav_writer.hpp"
+#include "predict/model_file.hpp"
+
+namespace haptex::apps {
+namespace {
+
+class RenderCommand : public Command {
+ public:
+  std::string name() const override { return "render"; }
+  std::string summary() const override {
+    return "Render the vibration for a force/speed trajectory as a 10 kHz WAV (and CSV) for a voice-coil actuator";
+  }
+
+  void declare(CLI::App& app) override {
+    app.add_option("model", model_path_, "Model file (haptex train)")->required()->check(CLI::ExistingFile);
+    auto* image = app.add_option("--image", texture_.image, "GelSight press image (PNG/JPEG), unified models")->check(CLI::ExistingFile);
+    app.add_option("--reference", texture_.reference, "The sensor's no-contact frame for --image")->check(CLI::ExistingFile)->needs(image);
+    app.add_option("--material", texture_.material, "A training material's id instead of an image")->excludes(image);
+    app.add_option("--trajectory", trajectory_path_, "Force/speed trajectory at 10 kHz: columns force, speed (time_s optional)")
+        ->required()->check(CLI::ExistingFile);
+    app.add_option("-o,--output", output_, "WAV file to write (mono, 10 kHz, 24-bit PCM)")->required();
+    app.add_option("--csv", csv_, "Also write the vibration as CSV: time_s, force_n, speed_mm_s, accel_m_s2");
+    auto* reconstruct = app.add_option("--reconstruct", reconstruction_, "Phase reconstruction: fgla (offline fast Griffin-Lim) or online (RTISI-LA)")
+        ->capture_default_str()->check(CLI::IsMember({"fgla", "online"}));
+    app.add_option("--iterations", iterations_, "fgla: iterations (default 100; 0 keeps the random initial phase); online: passes per frame (default 4)")
+        ->check(CLI::Range(0, 100000));
+    app.add_option("--look-ahead", look_ahead_, "online: frames of look-ahead (latency 10 ms each)")->capture_default_str()->check(CLI::Range(0, 100));
+    app.add_flag("--live", live_, "Render as a live haptic loop plays it: online, one frame per 10 ms, output delayed by its latency")
+        ->excludes(reconstruct);
+    app.add_option("--full-scale", full_scale_, "m/s^2 at WAV full scale (default: the peak, rounded up to 3 digits)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--seed", seed_, "fgla: seed of the random initial phase")->capture_default_str();
+    app.add_flag("--force", force_, "Replace the output files if they exist");
+  }
+
+  int run(const GlobalOptions& global) override {
+    const evaluate::RenderOptions options = render_options();
+    if (texture_.image.empty() && texture_.material.empty())
+      throw Error(Error::Kind::bad_input, "render: give --image (and --reference) or --material");
+    check_output_path(output_, force_);
+    if (!csv_.empty()) {
+      if (csv_ == output_) throw Error(Error::Kind::bad_input, "render: --csv and -o name the same file " + csv_);
+      check_output_path(csv_, force_);
+    }
+    const predict::Trajectory trajectory = predict::read_trajectory(trajectory_path_);
+    if (trajectory.force.size() <= evaluate::kFirstActionSample)
+      throw input_error(trajectory_path_, "", "fewer than 10 samples (1 ms)", "Give a longer trajectory");
+    const predict::Model model = predict::read_model(model_path_);
+    const predict::TextureCode code = evaluate::choose_texture(predict::Predictor(model), model_path_, texture_);
+
+    const auto start = std::chrono::steady_clock::now();
+    const evaluate::Rendering rendering = evaluate::render_vibration(model, code, trajectory, options);
+    const double compute = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double sc = evaluate::rendered_convergence_db(rendering), distance = evaluate::rendered_distance(rendering);
+
+    evaluate::WavOptions wav;
+    wav.full_scale_m_s2 = full_scale_;
+    wav.overwrite = force_;
+    wav.title = texture_.material.empty() ? texture_.image : texture_.material;
+    wav.source = source(options);
+    const evaluate::WavSummary written = evaluate::write_wav(output_, rendering.signal, wav);
+    if (!csv_.empty()) evaluate::write_vibration_csv(csv_, trajectory, rendering.signal, force_);
+
+    const double seconds = double(rendering.signal.size()) / evaluate::kWavSampleRate;
+    const Report report{written, rendering, options, sc, distance, compute / seconds};
+    if (global.json)
+      print_json(report);
+    else if (!global.quiet)
+      print_summary(report);
+    if (!global.quiet && !global.json) print_notes(report);
+    return 0;
+  }
+
+ private:
+  struct Report {
+    const evaluate::WavSummary& wav;
+    const evaluate::Rendering& rendering;
+    const evaluate::RenderOptions& options;
+    double convergence_db, distance_m_s2, compute_per_second;
+  };
+
+  evaluate::RenderOptions render_options() const {
+    evaluate::RenderOptions o;
+    o.reconstruction = evaluate::parse_reconstruction(live_ ? "online" : reconstruction_);
+    o.as_played = live_;
+    o.fgla.seed = seed_;
+    if (iterations_ >= 0) o.fgla.iterations = std::size_t(iterations_);
+    o.online.look_ahead = std::size_t(look_ahead_);
+    if (iterations_ >= 0) o.online.iterations = std::size_t(iterations_);
+    if (o.reconstruction == evaluate::Reconstruction::online && iterations_ == 0)
+      throw Error(Error::Kind::bad_input, "render: the online reconstruction needs --iterations 1 or more (passes per frame)");
+    return o;
+  }
+
+  std::string method(const evaluate::RenderOptions& o) const {
+    if (o.reconstruction == evaluate::Reconstruction::fgla) return "fgla " + std::to_string(o.fgla.iterations) + " iterations";
+    return "online look-ahead " + std::to_string(o.online.look_ahead * 10) + " ms " + std::to_string(o.online.iterations) + " passes" +
+           (o.as_played ? " (live: delayed as played)" : " (latency compensated)");
+  }
+
+  std::string source(const evaluate::RenderOptions& o) const {
+    return "haptex render " + model_path_ + (texture_.material.empty() ? " --image " + texture_.image : " --material " + texture_.material) +
+           " --trajectory " + trajectory_path_ + ", " + method(o);
+  }
+
+  void print_summary(const Report& r) const {
+    const double seconds = double(r.wav.samples) / evaluate::kWavSampleRate;
+    const std::string sc = std::isnan(r.convergence_db) ? std::string("SC n/a (under 0.1 s)") : format("SC %.1f dB", r.convergence_db);
+    std::printf("wrote %s%s: %zu samples, %.3f s, peak %.4g m/s^2, full scale %.9g m/s^2 (24-bit PCM), %s, %s, %.3g s compute per s of vibration\n",
+                output_.c_str(), csv_.empty() ? "" : (" and " + csv_).c_str(), r.wav.samples, seconds, r.wav.peak_m_s2,
+                r.wav.full_scale_m_s2, method(r.options).c_str(), sc.c_str(), r.compute_per_second);
+  }
+
+  void print_notes(const Report& r) const {
+    const std::size_t frames = r.rendering.targets.frames;
+    if (r.rendering.saturated_frames > 0)
+      std::cerr << "note: " << r.rendering.saturated_frames << " of " << frames
+                << " frames had force or speed outside the training range; the model saturated them to the nearest trained value\n";
+    if (texture_.reference.empty() && !texture_.image.empty())
+      std::cerr << "note: no --reference: the image's own blur stands in for the no-contact frame\n";
+    if (r.options.reconstruction == evaluate::Reconstruction::online)
+      std::cerr << format("note: slowest frame (predict + reconstruct) %.3f ms of the 10 ms budget; latency %zu ms\n",
+                          r.rendering.slowest_frame_seconds * 1e3, r.rendering.latency_samples / 10);
+  }
+
+  void print_json(const Report& r) const {
+    nlohmann::json out = {{"output", output_},
+                          {"samples", r.wav.samples},
+                          {"seconds", double(r.wav.samples) / evaluate::kWavSampleRate},
+                          {"sample_rate_hz", evaluate::kWavSampleRate},
+                          {"format", "WAV PCM 24-bit mono"},
+                          {"peak_m_s2", r.wav.peak_m_s2},
+                          {"full_scale_m_s2", r.wav.full_scale_m_s2},
+                          {"reconstruction", evaluate::reconstruction_name(r.options.reconstruction)},
+                          {"live", r.options.as_played},
+                          {"first_frame_sample", r.rendering.first_frame_sample},
+                          {"frames", r.rendering.targets.frames},
+                          {"saturated_frames", r.rendering.saturated_frames},
+                          {"spectral_convergence_db", number_or_null(r.convergence_db)},
+                          {"spectral_distance_m_s2", number_or_null(r.distance_m_s2)},
+                          {"compute_seconds_per_second", r.compute_per_second}};
+    if (!csv_.empty()) out["csv"] = csv_;
+    if (r.options.reconstruction == evaluate::Reconstruction::fgla) {
+      out["iterations"] = r.options.fgla.iterations;
+    } else {
+      out["passes_per_frame"] = r.options.online.iterations;
+      out["latency_samples"] = r.rendering.latency_samples;
+      out["slowest_frame_seconds"] = r.rendering.slowest_frame_seconds;
+    }
+    std::cout << out.dump(2) << "\n";
+  }
+
+  static nlohmann::json number_or_null(double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); }
+
+  template <typename... Args>
+  static std::string format(const char* pattern, Args... args) {
+    char text[256];
+    std::snprintf(text, sizeof text, pattern, args...);
+    return text;
+  }
+
+  std::string model_path_, trajectory_path_, output_, csv_, reconstruction_ = "fgla";
+  evaluate::TextureChoice texture_;
+  int iterations_ = -1, look_ahead_ = 3;
+  bool live_ = false, force_ = false;
+  double full_scale_ = 0;
+  std::uint64_t seed_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_render_command() { return std::make_unique<RenderCommand>(); }
+
+}  // namespace haptex::apps

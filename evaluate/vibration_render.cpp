@@ -1,0 +1,193 @@
+#include "evaluate/vibration_render.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "core/durable_file.hpp"
+#include "core/error.hpp"
+#include "core/signal/spectrum.hpp"
+#include "evaluate/spectral_convergence.hpp"
+#include "evaluate/spectral_distance.hpp"
+
+namespace haptex::evaluate {
+namespace {
+
+constexpr std::size_t kHop = kReconstructionHop;
+
+void check_trajectory(const predict::Trajectory& t) {
+  if (t.force.size() != t.speed.size())
+    throw Error(Error::Kind::bad_input, "render: the trajectory has " + std::to_string(t.force.size()) + " force and " +
+                                            std::to_string(t.speed.size()) + " speed samples; they must pair up");
+  if (t.force.size() <= kFirstActionSample)
+    throw Error(Error::Kind::bad_input, "render: the trajectory has " + std::to_string(t.force.size()) +
+                                            " samples; a rendering needs at least 10 (1 ms of force and speed)");
+}
+
+// Copies samples that start at `position` of the output into `signal`, dropping those past its end.
+void place(std::span<const double> samples, std::size_t position, std::vector<double>& signal) {
+  for (std::size_t i = 0; i < samples.size() && position + i < signal.size(); ++i) signal[position + i] = samples[i];
+}
+
+// RGB, as the dataset stores press images (OpenCV reads BGR).
+cv::Mat read_rgb(const std::string& path) {
+  cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
+  if (image.empty()) throw input_error(path, "", "not an image OpenCV can read", "Give a PNG or JPEG frame of the sensor");
+  cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
+  return image;
+}
+
+void render_offline(const predict::Model& model, const predict::TextureCode& code, const predict::Trajectory& trajectory,
+                    const RenderOptions& options, Rendering& out) {
+  predict::Predictor predictor(model);
+  float action[predict::kActionValues];
+  for (std::size_t m = 0; m < out.targets.frames; ++m) {
+    predict::action_at(trajectory, kFirstActionSample + m * kHop, action);
+    const auto row = std::span(out.spectra).subspan(m * predict::kSpectrumBins, predict::kSpectrumBins);
+    if (predictor.predict(code, action, row)) ++out.saturated_frames;
+    target_magnitude_frame(std::span<const float>(row), out.targets.row(m));
+  }
+  const std::vector<double> x = griffin_lim(out.targets, out.signal.size() - out.first_frame_sample, options.fgla);
+  place(x, out.first_frame_sample, out.signal);
+}
+
+void render_online(const predict::Model& model, const predict::TextureCode& code, const predict::Trajectory& trajectory,
+                   const RenderOptions& options, Rendering& out) {
+  VibrationLoop loop(model, code, options.online);
+  out.latency_samples = loop.latency_samples();
+  if (options.as_played) out.first_frame_sample += out.latency_samples + 1;
+  float action[predict::kActionValues];
+  std::size_t position = out.first_frame_sample;  // where the next returned sample belongs
+  for (std::size_t m = 0; m < out.targets.frames; ++m) {
+    predict::action_at(trajectory, kFirstActionSample + m * kHop, action);
+    const auto start = std::chrono::steady_clock::now();
+    const std::span<const double> samples = loop.tick(action);
+    out.slowest_frame_seconds =
+        std::max(out.slowest_frame_seconds, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (loop.saturated()) ++out.saturated_frames;
+    std::copy(loop.magnitudes().begin(), loop.magnitudes().end(), out.targets.row(m).begin());
+    std::copy(loop.spectrum().begin(), loop.spectrum().end(), out.spectra.begin() + std::ptrdiff_t(m * predict::kSpectrumBins));
+    place(samples, position, out.signal);
+    position += samples.size();
+  }
+  place(loop.flush(), position, out.signal);
+}
+
+}  // namespace
+
+std::string reconstruction_name(Reconstruction reconstruction) {
+  return reconstruction == Reconstruction::fgla ? "fgla" : "online";
+}
+
+Reconstruction parse_reconstruction(const std::string& name) {
+  if (name == "fgla") return Reconstruction::fgla;
+  if (name == "online") return Reconstruction::online;
+  throw Error(Error::Kind::bad_input, "render: unknown reconstruction '" + name +
+                                          "'. Use fgla (offline fast Griffin-Lim) or online (RTISI-LA, as a live loop)");
+}
+
+std::size_t render_frames(std::size_t n) { return n <= kFirstActionSample ? 0 : (n - 1 - kFirstActionSample) / kHop + 1; }
+
+Rendering render_vibration(const predict::Model& model, const predict::TextureCode& code, const predict::Trajectory& trajectory,
+                           const RenderOptions& options) {
+  check_trajectory(trajectory);
+  Rendering out;
+  out.signal.assign(trajectory.force.size(), 0.0);
+  out.targets.frames = render_frames(trajectory.force.size());
+  out.targets.bins = kReconstructionBins;
+  out.targets.values.assign(out.targets.frames * kReconstructionBins, 0.0);
+  out.spectra.assign(out.targets.frames * predict::kSpectrumBins, 0.0f);
+  if (options.reconstruction == Reconstruction::fgla)
+    render_offline(model, code, trajectory, options, out);
+  else
+    render_online(model, code, trajectory, options, out);
+  return out;
+}
+
+std::size_t complete_frames(const Rendering& rendering) {
+  const std::size_t n = rendering.signal.size(), first = rendering.first_frame_sample;
+  if (n < first + signal::kWindowSamples) return 0;
+  return std::min(rendering.targets.frames, (n - first - signal::kWindowSamples) / kHop + 1);
+}
+
+double rendered_convergence_db(const Rendering& rendering) {
+  const std::size_t frames = complete_frames(rendering);
+  if (frames == 0) return std::numeric_limits<double>::quiet_NaN();
+  MagnitudeFrames s{frames, kReconstructionBins, {}};
+  const auto first = rendering.targets.values.begin();
+  s.values.assign(first, first + std::ptrdiff_t(frames * kReconstructionBins));
+  return spectral_convergence_db(std::span(rendering.signal).subspan(rendering.first_frame_sample), s);
+}
+
+void write_vibration_csv(const std::string& path, const predict::Trajectory& trajectory, std::span<const double> signal,
+                         bool overwrite) {
+  check_output_path(path, overwrite);
+  if (signal.size() != trajectory.force.size() || signal.size() != trajectory.speed.size())
+    throw failure(path + ": the signal has " + std::to_string(signal.size()) + " samples, the trajectory " +
+                  std::to_string(trajectory.force.size()) + "; they must match");
+  PartialFile partial(path);
+  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(partial.path().c_str(), "wb"), &std::fclose);
+  if (!file) throw failure(partial.path() + ": cannot open for writing");
+  bool written = std::fprintf(file.get(), "time_s,force_n,speed_mm_s,accel_m_s2\n") > 0;
+  for (std::size_t i = 0; i < signal.size() && written; ++i)
+    written = std::fprintf(file.get(), "%.4f,%.9g,%.9g,%.9g\n", double(i) * 1e-4, double(trajectory.force[i]),
+                           double(trajectory.speed[i]), signal[i]) > 0;
+  const bool closed = std::fclose(file.release()) == 0;
+  if (!written || !closed) throw failure(partial.path() + ": write failed (disk full?)");
+  partial.commit();
+}
+
+double rendered_distance(const Rendering& rendering) {
+  const std::size_t frames = complete_frames(rendering);
+  if (frames == 0) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> amplitudes(predict::kSpectrumBins), predicted(predict::kSpectrumBins);
+  double sum = 0;
+  for (std::size_t m = 0; m < frames; ++m) {
+    const auto window = std::span(rendering.signal).subspan(rendering.first_frame_sample + m * kHop, signal::kWindowSamples);
+    signal::amplitude_spectrum(window, amplitudes);
+    const auto row = rendering.spectra.begin() + std::ptrdiff_t(m * predict::kSpectrumBins);
+    std::copy(row, row + predict::kSpectrumBins, predicted.begin());
+    sum += spectrum_distance(amplitudes, predicted);
+  }
+  return sum / double(frames);
+}
+
+VibrationLoop::VibrationLoop(const predict::Model& model, const predict::TextureCode& code,
+                             const OnlineReconstructionOptions& options)
+    : predictor_(model),
+      code_(code),
+      reconstruction_(options),
+      spectrum_(predict::kSpectrumBins),
+      magnitudes_(kReconstructionBins) {}
+
+std::span<const double> VibrationLoop::tick(std::span<const float> action) {
+  saturated_ = predictor_.predict(code_, action, spectrum_);
+  target_magnitude_frame(std::span<const float>(spectrum_), magnitudes_);
+  return reconstruction_.push(magnitudes_);
+}
+
+predict::TextureCode choose_texture(const predict::Predictor& predictor, const std::string& model_path, const TextureChoice& choice) {
+  const predict::Model& model = predictor.model();
+  if (!choice.material.empty()) {
+    const int m = model.material_index(choice.material);
+    if (m < 0)
+      throw input_error(model_path, "/materials/ids", "no material '" + choice.material + "'", "Use one of the ids haptex info lists");
+    return predictor.material_code(m);
+  }
+  if (choice.image.empty())
+    throw Error(Error::Kind::bad_input, "give a press image (--image, with --reference) or a training material (--material)");
+  if (model.variant != predict::Variant::unified)
+    throw input_error(model_path, "/", "a per-material model has no texture encoder", "Give --material ID instead of --image");
+  const cv::Mat peak = read_rgb(choice.image);
+  const cv::Mat reference = choice.reference.empty() ? predict::self_reference(peak) : read_rgb(choice.reference);
+  if (reference.size() != peak.size())
+    throw input_error(choice.reference, "", "the reference is not the size of the image", "Give the no-contact frame of the same sensor");
+  return predictor.encode_descriptor(predict::texture_descriptor(peak, reference, model.descriptor));
+}
+
+}  // namespace haptex::evaluate

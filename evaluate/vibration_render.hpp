@@ -1,0 +1,129 @@
+#pragma once
+// Rendering a force/speed trajectory into vibration (issue 7): what `haptex render` writes to a WAV
+// for a voice-coil actuator, and what a 1 kHz haptic loop plays.
+//
+// Along a trajectory of N samples at 10 kHz, every 100 samples from t = 9 on (the first sample with
+// a whole 1 ms action behind it), the model predicts the 100-bin amplitude spectrum of the 100 ms
+// starting at t (predict::action_at, Predictor::predict). Frame m, for t_m = 9 + 100 m <= N - 1, is
+// converted to Hann-STFT magnitudes (target_magnitude_frame) and given a phase by
+//   - fgla: the offline fast Griffin-Lim over all frames at once (evaluate/griffin_lim.hpp), or
+//   - online: RTISI-LA, one frame pushed per 100 samples as a live loop would (VibrationLoop below,
+//     evaluate/online_reconstruction.hpp): nothing is allocated per frame.
+//
+// Timing. The returned signal has one sample per trajectory sample (m/s^2). Frame m starts at
+// sample first_frame_sample + 100 m: by default at t_m itself, where the model places the spectrum
+// it predicts, so samples 0..8 are silent and the first ~900 samples fade in (fewer frames overlap
+// there; evaluate/target_magnitudes.hpp, synthesis_gain). The online method's look-ahead (30 ms by
+// default) is compensated the same way: its samples are placed where they belong, not where they
+// came out, so fgla and online renderings line up with each other and with the trajectory. With
+// RenderOptions::as_played the online samples are instead placed where the live loop plays them:
+// the tick at t_m (when the action ending at t_m is known) plays its 100 samples from t_m + 1 on,
+// so everything comes latency_samples + 1 samples later.
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "evaluate/griffin_lim.hpp"
+#include "evaluate/online_reconstruction.hpp"
+#include "evaluate/target_magnitudes.hpp"
+#include "predict/predictor.hpp"
+#include "predict/trajectory.hpp"
+
+namespace haptex::evaluate {
+
+// The first trajectory sample with a whole action (10 samples) ending at it.
+inline constexpr std::size_t kFirstActionSample = predict::kActionValues / 2 - 1;  // 9
+
+enum class Reconstruction { fgla, online };
+std::string reconstruction_name(Reconstruction reconstruction);  // "fgla", "online"
+// Throws haptex::Error (bad_input) for another name.
+Reconstruction parse_reconstruction(const std::string& name);
+
+struct RenderOptions {
+  Reconstruction reconstruction = Reconstruction::fgla;
+  GriffinLimOptions fgla;              // 100 iterations, momentum 0.99, seeded random initial phase
+  OnlineReconstructionOptions online;  // look-ahead 3 frames (30 ms), 4 passes per frame
+  bool as_played = false;              // online only: place samples where a live loop plays them
+};
+
+struct Rendering {
+  std::vector<double> signal;       // m/s^2, one sample per trajectory sample
+  std::vector<float> spectra;       // frames x 100 predicted amplitudes (m/s^2, bins 10..1000 Hz), row-major
+  MagnitudeFrames targets;          // the predicted frames (x 501 Hann magnitudes), frame m from
+  std::size_t first_frame_sample = kFirstActionSample;  // <- this sample + 100 m of `signal`
+  std::size_t latency_samples = 0;  // online: look-ahead x 100 (compensated unless as_played); fgla: 0
+  std::size_t saturated_frames = 0; // frames whose action lay outside the training range (saturated)
+  double slowest_frame_seconds = 0; // online: the slowest predict + convert + push of one frame
+};
+
+// Number of frames along a trajectory of n samples: one per 100 samples from sample 9 on.
+std::size_t render_frames(std::size_t n);
+
+// Throws haptex::Error (bad_input) when the trajectory has fewer than 10 samples or its force and
+// speed columns differ in length, and for RenderOptions the reconstructions refuse.
+Rendering render_vibration(const predict::Model& model, const predict::TextureCode& code,
+                           const predict::Trajectory& trajectory, const RenderOptions& options = {});
+
+// Spectral convergence (evaluate/spectral_convergence.hpp) of the rendered signal against the
+// predicted frames that lie wholly inside it (complete_frames); NaN when none does (a trajectory
+// shorter than first_frame_sample + 1000 samples).
+std::size_t complete_frames(const Rendering& rendering);
+double rendered_convergence_db(const Rendering& rendering);
+// The evaluation's measure (evaluate/spectral_distance.hpp) on the same frames: the mean Euclidean
+// distance (m/s^2) between the 100-bin amplitude spectrum (rectangular window) of the rendered
+// samples each complete frame covers and the spectrum predicted for it; NaN when no frame is
+// complete. Read it against the spectra's own norm (on the synthetic test problem: FGLA 28 % of
+// it, online 39 %, the random initial phase 74 %).
+double rendered_distance(const Rendering& rendering);
+
+// The rendering as CSV, one row per sample: time_s,force_n,speed_mm_s,accel_m_s2 (the force and
+// speed columns make it a trajectory that haptex predict and render read back). Written to
+// PATH.partial, synced and renamed; throws haptex::Error (bad_input) naming the file when it exists
+// and overwrite is false, (failed) when the write fails.
+void write_vibration_csv(const std::string& path, const predict::Trajectory& trajectory, std::span<const double> signal,
+                         bool overwrite);
+
+// The live loop, one tick per 100 samples (10 ms): predict the spectrum for the action just
+// measured, convert it, push it through the online reconstruction and return the samples to play
+// next. Everything is sized at construction; tick() allocates nothing. Keeps a reference to the
+// model, which must outlive the loop.
+class VibrationLoop {
+ public:
+  VibrationLoop(const predict::Model& model, const predict::TextureCode& code, const OnlineReconstructionOptions& options = {});
+
+  std::size_t latency_samples() const { return reconstruction_.latency_samples(); }
+
+  // action: predict::kActionValues values (10 force in N, then 10 speed in mm/s, the newest last).
+  // Returns the next 100 samples (m/s^2) once look_ahead frames are queued; before that, nothing.
+  // The span stays valid until the next call.
+  std::span<const double> tick(std::span<const float> action);
+  // The last tick's action lay outside the training range and was saturated.
+  bool saturated() const { return saturated_; }
+  // The last tick's frame: 100 amplitudes (m/s^2) and 501 Hann magnitudes.
+  std::span<const float> spectrum() const { return spectrum_; }
+  std::span<const double> magnitudes() const { return magnitudes_; }
+  // Ends the stream: the samples still held (OnlineReconstruction::flush).
+  std::span<const double> flush() { return reconstruction_.flush(); }
+
+ private:
+  predict::Predictor predictor_;
+  predict::TextureCode code_;
+  OnlineReconstruction reconstruction_;
+  std::vector<float> spectrum_;
+  std::vector<double> magnitudes_;
+  bool saturated_ = false;
+};
+
+// Which texture to render, as the command line gives it: a training material's id, or a GelSight
+// press image (PNG/JPEG, unified models only) with the sensor's no-contact frame (optional: without
+// it, predict::self_reference of the image stands in).
+struct TextureChoice {
+  std::string material, image, reference;
+};
+// Throws haptex::Error (bad_input) naming model_path for an unknown material or an image given to a
+// per-material model, and the image for an unreadable image or a reference of another size.
+predict::TextureCode choose_texture(const predict::Predictor& predictor, const std::string& model_path,
+                                    const TextureChoice& choice);
+
+}  // namespace haptex::evaluate

@@ -1,0 +1,104 @@
+#include "evaluate/wav_writer.hpp"
+
+#include <sndfile.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <vector>
+
+#include "core/durable_file.hpp"
+#include "core/error.hpp"
+#include "core/version.hpp"
+
+namespace haptex::evaluate {
+namespace {
+
+constexpr const char* kFullScaleKey = "full_scale_m_s2=";
+
+// Nine significant digits, as %.9g.
+std::string number(double value) {
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, value, std::chars_format::general, 9).ptr);
+}
+
+struct SndfileCloser {
+  void operator()(SNDFILE* file) const { sf_close(file); }
+};
+
+double peak_of(const std::string& path, std::span<const double> signal) {
+  double peak = 0;
+  for (std::size_t i = 0; i < signal.size(); ++i) {
+    if (!std::isfinite(signal[i]))
+      throw failure(path + ": sample " + std::to_string(i) + " of the signal is " + std::to_string(signal[i]) +
+                    "; a WAV needs finite samples");
+    peak = std::max(peak, std::abs(signal[i]));
+  }
+  return peak;
+}
+
+}  // namespace
+
+double rounded_full_scale(double peak_m_s2) {
+  if (!(peak_m_s2 > 0) || !std::isfinite(peak_m_s2)) return 1.0;
+  const double step = std::pow(10.0, std::floor(std::log10(peak_m_s2)) - 2);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", std::ceil(peak_m_s2 / step - 1e-9) * step);
+  return std::strtod(text, nullptr);  // the decimal value itself, as the comment states it
+}
+
+double full_scale_from_comment(const std::string& comment) {
+  const std::size_t at = comment.find(kFullScaleKey);
+  if (at == std::string::npos) return std::nan("");
+  const char* start = comment.c_str() + at + std::char_traits<char>::length(kFullScaleKey);
+  char* end = nullptr;
+  const double value = std::strtod(start, &end);
+  return end == start ? std::nan("") : value;
+}
+
+WavSummary write_wav(const std::string& path, std::span<const double> signal_m_s2, const WavOptions& options) {
+  check_output_path(path, options.overwrite);
+  WavSummary summary;
+  summary.samples = signal_m_s2.size();
+  summary.peak_m_s2 = peak_of(path, signal_m_s2);
+  if (options.full_scale_m_s2 > 0) {
+    if (summary.peak_m_s2 > options.full_scale_m_s2)
+      throw input_error(path, "", "the vibration's peak " + number(summary.peak_m_s2) + " m/s^2 exceeds the full scale " +
+                                      number(options.full_scale_m_s2) + " m/s^2 and would clip",
+                        "Give a full scale of at least " + number(rounded_full_scale(summary.peak_m_s2)) +
+                            " m/s^2, or none to scale to the peak");
+    summary.full_scale_m_s2 = options.full_scale_m_s2;
+  } else {
+    summary.full_scale_m_s2 = rounded_full_scale(summary.peak_m_s2);
+  }
+  summary.comment = kFullScaleKey + number(summary.full_scale_m_s2) +
+                    "; acceleration in m/s^2 = sample (-1..1 of full scale) x " + number(summary.full_scale_m_s2) +
+                    "; 10 kHz, peak " + number(summary.peak_m_s2) + " m/s^2" +
+                    (options.source.empty() ? std::string() : "; " + options.source);
+
+  PartialFile partial(path);
+  SF_INFO info{};
+  info.samplerate = kWavSampleRate;
+  info.channels = 1;
+  info.format = SF_FORMAT_WAV | SF_FORMAT_PCM_24;
+  std::unique_ptr<SNDFILE, SndfileCloser> file(sf_open(partial.path().c_str(), SFM_WRITE, &info));
+  if (!file) throw failure(partial.path() + ": cannot open for writing: " + sf_strerror(nullptr));
+  sf_command(file.get(), SFC_SET_CLIPPING, nullptr, SF_TRUE);  // a rounding past 1.0 saturates, never wraps
+  const std::string software = std::string("haptex ") + kVersion;
+  if (sf_set_string(file.get(), SF_STR_COMMENT, summary.comment.c_str()) != 0 ||
+      sf_set_string(file.get(), SF_STR_SOFTWARE, software.c_str()) != 0 ||
+      (!options.title.empty() && sf_set_string(file.get(), SF_STR_TITLE, options.title.c_str()) != 0))
+    throw failure(partial.path() + ": cannot store the WAV's strings: " + sf_strerror(file.get()));
+  std::vector<double> scaled(signal_m_s2.size());
+  for (std::size_t i = 0; i < scaled.size(); ++i) scaled[i] = signal_m_s2[i] / summary.full_scale_m_s2;
+  if (sf_write_double(file.get(), scaled.data(), sf_count_t(scaled.size())) != sf_count_t(scaled.size()))
+    throw failure(partial.path() + ": write failed (disk full?): " + sf_strerror(file.get()));
+  if (const int status = sf_close(file.release()); status != 0)
+    throw failure(partial.path() + ": closing the WAV failed: " + sf_error_number(status));
+  partial.commit();
+  return summary;
+}
+
+}  // namespace haptex::evaluate
