@@ -95,9 +95,8 @@ class RenderCommand : public Command {
     o.reconstruction = evaluate::parse_reconstruction(live_ ? "online" : reconstruction_);
     o.as_played = live_;
     o.fgla.seed = seed_;
-    if (iterations_ >= 0) o.fgla.iterations = std::size_t(iterations_);
     o.online.look_ahead = std::size_t(look_ahead_);
-    if (iterations_ >= 0) o.online.iterations = std::size_t(iterations_);
+    if (iterations_ >= 0) o.fgla.iterations = o.online.iterations = std::size_t(iterations_);
     if (o.reconstruction == evaluate::Reconstruction::online && iterations_ == 0)
       throw Error(Error::Kind::bad_input, "render: the online reconstruction needs --iterations 1 or more (passes per frame)");
     return o;
