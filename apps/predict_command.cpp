@@ -1,25 +1,16 @@
 // haptex predict model.h5 (--image IMG [--reference REF] | --material ID) (--force F --speed V | --csv FILE) [--json]
 #include <cstdio>
 #include <iostream>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "apps/command.hpp"
 #include "core/error.hpp"
 #include "predict/model_file.hpp"
 #include "predict/predictor.hpp"
+#include "predict/texture_choice.hpp"
 #include "predict/trajectory.hpp"
 
 namespace haptex::apps {
 namespace {
-
-// RGB, as the dataset stores press images (OpenCV reads BGR).
-cv::Mat read_rgb(const std::string& path) {
-  cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
-  if (image.empty()) throw input_error(path, "", "not an image OpenCV can read", "Give a PNG or JPEG frame of the sensor");
-  cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
-  return image;
-}
 
 struct Query {
   std::size_t sample = 0;
@@ -81,20 +72,7 @@ class PredictCommand : public Command {
 
  private:
   predict::TextureCode texture(const predict::Predictor& predictor) {
-    const predict::Model& model = predictor.model();
-    if (!material_.empty()) {
-      const int m = model.material_index(material_);
-      if (m < 0) throw input_error(model_path_, "/materials/ids", "no material '" + material_ + "'", "Use one of the ids haptex info lists");
-      return predictor.material_code(m);
-    }
-    if (model.variant != predict::Variant::unified)
-      throw input_error(model_path_, "/", "a per-material model has no texture encoder", "Give --material ID instead of --image");
-    const cv::Mat peak = read_rgb(image_);
-    const cv::Mat reference = reference_.empty() ? predict::self_reference(peak) : read_rgb(reference_);
-    if (reference.size() != peak.size())
-      throw input_error(reference_, "", "the reference is not the size of the image", "Give the no-contact frame of the same sensor");
-    descriptor_ = predict::texture_descriptor(peak, reference, model.descriptor);
-    return predictor.encode_descriptor(descriptor_);
+    return predict::choose_texture(predictor, model_path_, {material_, image_, reference_}, &descriptor_);
   }
 
   static Query query(predict::Predictor& predictor, const predict::TextureCode& code, const float* action, std::size_t sample) {

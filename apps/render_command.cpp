@@ -9,6 +9,7 @@
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "evaluate/vibration_render.hpp"
+#include "predict/texture_choice.hpp"
 #include "evaluate/wav_writer.hpp"
 #include "predict/model_file.hpp"
 
@@ -57,7 +58,7 @@ class RenderCommand : public Command {
     if (trajectory.force.size() <= evaluate::kFirstActionSample)
       throw input_error(trajectory_path_, "", "fewer than 10 samples (1 ms)", "Give a longer trajectory");
     const predict::Model model = predict::read_model(model_path_);
-    const predict::TextureCode code = evaluate::choose_texture(predict::Predictor(model), model_path_, texture_);
+    const predict::TextureCode code = predict::choose_texture(predict::Predictor(model), model_path_, texture_);
 
     const auto start = std::chrono::steady_clock::now();
     const evaluate::Rendering rendering = evaluate::render_vibration(model, code, trajectory, options);
@@ -170,7 +171,7 @@ class RenderCommand : public Command {
   }
 
   std::string model_path_, trajectory_path_, output_, csv_, reconstruction_ = "fgla";
-  evaluate::TextureChoice texture_;
+  predict::TextureChoice texture_;
   int iterations_ = -1, look_ahead_ = 3;
   bool live_ = false, force_ = false;
   double full_scale_ = 0;

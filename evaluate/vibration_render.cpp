@@ -6,8 +6,6 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
@@ -32,14 +30,6 @@ void check_trajectory(const predict::Trajectory& t) {
 // Copies samples that start at `position` of the output into `signal`, dropping those past its end.
 void place(std::span<const double> samples, std::size_t position, std::vector<double>& signal) {
   for (std::size_t i = 0; i < samples.size() && position + i < signal.size(); ++i) signal[position + i] = samples[i];
-}
-
-// RGB, as the dataset stores press images (OpenCV reads BGR).
-cv::Mat read_rgb(const std::string& path) {
-  cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
-  if (image.empty()) throw input_error(path, "", "not an image OpenCV can read", "Give a PNG or JPEG frame of the sensor");
-  cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
-  return image;
 }
 
 void render_offline(const predict::Model& model, const predict::TextureCode& code, const predict::Trajectory& trajectory,
@@ -169,25 +159,6 @@ std::span<const double> VibrationLoop::tick(std::span<const float> action) {
   saturated_ = predictor_.predict(code_, action, spectrum_);
   target_magnitude_frame(std::span<const float>(spectrum_), magnitudes_);
   return reconstruction_.push(magnitudes_);
-}
-
-predict::TextureCode choose_texture(const predict::Predictor& predictor, const std::string& model_path, const TextureChoice& choice) {
-  const predict::Model& model = predictor.model();
-  if (!choice.material.empty()) {
-    const int m = model.material_index(choice.material);
-    if (m < 0)
-      throw input_error(model_path, "/materials/ids", "no material '" + choice.material + "'", "Use one of the ids haptex info lists");
-    return predictor.material_code(m);
-  }
-  if (choice.image.empty())
-    throw Error(Error::Kind::bad_input, "give a press image (--image, with --reference) or a training material (--material)");
-  if (model.variant != predict::Variant::unified)
-    throw input_error(model_path, "/", "a per-material model has no texture encoder", "Give --material ID instead of --image");
-  const cv::Mat peak = read_rgb(choice.image);
-  const cv::Mat reference = choice.reference.empty() ? predict::self_reference(peak) : read_rgb(choice.reference);
-  if (reference.size() != peak.size())
-    throw input_error(choice.reference, "", "the reference is not the size of the image", "Give the no-contact frame of the same sensor");
-  return predictor.encode_descriptor(predict::texture_descriptor(peak, reference, model.descriptor));
 }
 
 }  // namespace haptex::evaluate

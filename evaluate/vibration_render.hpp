@@ -115,15 +115,4 @@ class VibrationLoop {
   bool saturated_ = false;
 };
 
-// Which texture to render, as the command line gives it: a training material's id, or a GelSight
-// press image (PNG/JPEG, unified models only) with the sensor's no-contact frame (optional: without
-// it, predict::self_reference of the image stands in).
-struct TextureChoice {
-  std::string material, image, reference;
-};
-// Throws haptex::Error (bad_input) naming model_path for an unknown material or an image given to a
-// per-material model, and the image for an unreadable image or a reference of another size.
-predict::TextureCode choose_texture(const predict::Predictor& predictor, const std::string& model_path,
-                                    const TextureChoice& choice);
-
 }  // namespace haptex::evaluate

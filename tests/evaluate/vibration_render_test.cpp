@@ -1,6 +1,7 @@
 // Rendering a trajectory into vibration (evaluate/vibration_render.hpp) and writing it as WAV
 // (evaluate/wav_writer.hpp), with a small model trained in memory on the synthetic problem.
 #include "evaluate/vibration_render.hpp"
+#include "predict/texture_choice.hpp"
 
 #include <gtest/gtest.h>
 #include <sndfile.h>
@@ -226,9 +227,9 @@ TEST(EvaluateVibrationRender, LiveTicksDoNotAllocate) {
 
 TEST(EvaluateVibrationRender, TextureChoiceNamesTheModel) {
   const predict::Predictor p(model());
-  EXPECT_EQ(choose_texture(p, "m.h5", {"material_2", "", ""}).first_layer, p.material_code(2).first_layer);
+  EXPECT_EQ(predict::choose_texture(p, "m.h5", {"material_2", "", ""}).first_layer, p.material_code(2).first_layer);
   try {
-    choose_texture(p, "m.h5", {"no_such", "", ""});
+    predict::choose_texture(p, "m.h5", {"no_such", "", ""});
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), Error::Kind::bad_input);

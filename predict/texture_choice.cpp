@@ -1,0 +1,44 @@
+#include "predict/texture_choice.hpp"
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "core/error.hpp"
+
+namespace haptex::predict {
+namespace {
+
+// RGB, as the dataset stores press images (OpenCV reads BGR).
+cv::Mat read_rgb(const std::string& path) {
+  cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
+  if (image.empty()) throw input_error(path, "", "not an image OpenCV can read", "Give a PNG or JPEG frame of the sensor");
+  cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
+  return image;
+}
+
+}  // namespace
+
+TextureCode choose_texture(const Predictor& predictor, const std::string& model_path, const TextureChoice& choice,
+                           std::vector<float>* descriptor) {
+  const Model& model = predictor.model();
+  if (!choice.material.empty()) {
+    const int m = model.material_index(choice.material);
+    if (m < 0)
+      throw input_error(model_path, "/materials/ids", "no material '" + choice.material + "'", "Use one of the ids haptex info lists");
+    return predictor.material_code(m);
+  }
+  if (choice.image.empty())
+    throw Error(Error::Kind::bad_input, "give a press image (--image, with --reference) or a training material (--material)");
+  if (model.variant != Variant::unified)
+    throw input_error(model_path, "/", "a per-material model has no texture encoder", "Give --material ID instead of --image");
+  const cv::Mat peak = read_rgb(choice.image);
+  const cv::Mat reference = choice.reference.empty() ? self_reference(peak) : read_rgb(choice.reference);
+  if (reference.size() != peak.size())
+    throw input_error(choice.reference, "", "the reference is not the size of the image", "Give the no-contact frame of the same sensor");
+  std::vector<float> d = texture_descriptor(peak, reference, model.descriptor);
+  const TextureCode code = predictor.encode_descriptor(d);
+  if (descriptor) *descriptor = std::move(d);
+  return code;
+}
+
+}  // namespace haptex::predict
