@@ -301,7 +301,8 @@ std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& mode
     const std::string key = (unified ? "unified-new-presses:" : "per-material:") + std::to_string(i);
     out.push_back({(unified ? "unified-new-presses" : "per-material") + std::string("-vs-mean-spectrum") +
                        (count[models[i].model.variant] > 1 ? " (" + models[i].label + ")" : ""),
-                   "The same model against each material's mean training spectrum (the best action-blind predictor)", key,
+                   std::string(unified ? "Unified model (new actions, new press)" : "Per-material models (new actions)") +
+                       " against each material's mean training spectrum, the best action-blind predictor", key,
                    predict::variant_name(models[i].model.variant) + " model " + models[i].label, "mean-spectrum"});
   }
   if (c.stitched_model >= 0 && !c.stitched_key.empty()) {
