@@ -34,10 +34,9 @@ SpectrumNet spectrum_net(const TrainOptions& o, int latent, std::uint64_t seed) 
           make_mlp(predictor, Activation::relu, Activation::softplus, seed + 1)};
 }
 
-// A default-size model as train_model builds it (texture_training.cpp, spectrum_training.cpp), with
-// plausible normalisation statistics.
-Model default_model(Variant variant) {
-  const TrainOptions o;
+// A model as train_model builds it (texture_training.cpp, spectrum_training.cpp), with plausible
+// normalisation statistics.
+Model make_model(Variant variant, const TrainOptions& o) {
   Model m;
   m.variant = variant;
   const auto d = Eigen::Index(descriptor_length(m.descriptor));
@@ -68,7 +67,7 @@ Model default_model(Variant variant) {
 }
 
 const Model& model(Variant variant) {
-  static const Model unified = default_model(Variant::unified), per_material = default_model(Variant::per_material);
+  static const Model unified = make_model(Variant::unified, {}), per_material = make_model(Variant::per_material, {});
   return variant == Variant::unified ? unified : per_material;
 }
 
@@ -79,8 +78,8 @@ std::vector<float> stroke_action() {
   return a;
 }
 
-void single_query(benchmark::State& state, Variant variant) {
-  Predictor predictor(model(variant));
+void single_query(benchmark::State& state, const Model& model) {
+  Predictor predictor(model);
   const TextureCode code = predictor.material_code(7);
   std::vector<float> action = stroke_action(), spectrum(kSpectrumBins);
   for (auto _ : state) {
@@ -91,11 +90,19 @@ void single_query(benchmark::State& state, Variant variant) {
   state.SetItemsProcessed(std::int64_t(state.iterations()));
 }
 
-void BM_PredictSingle(benchmark::State& state) { single_query(state, Variant::unified); }
+void BM_PredictSingle(benchmark::State& state) { single_query(state, model(Variant::unified)); }
 BENCHMARK(BM_PredictSingle)->Unit(benchmark::kNanosecond);
 
-void BM_PredictSinglePerMaterial(benchmark::State& state) { single_query(state, Variant::per_material); }
+void BM_PredictSinglePerMaterial(benchmark::State& state) { single_query(state, model(Variant::per_material)); }
 BENCHMARK(BM_PredictSinglePerMaterial)->Unit(benchmark::kNanosecond);
+
+// The unified model's query at other predictor widths (bench/predict_sweep.sh's sizes).
+void BM_PredictSingleHidden(benchmark::State& state) {
+  TrainOptions o;
+  o.predictor_hidden = int(state.range(0));
+  single_query(state, make_model(Variant::unified, o));
+}
+BENCHMARK(BM_PredictSingleHidden)->ArgName("hidden")->Arg(64)->Arg(256)->Unit(benchmark::kNanosecond);
 
 void BM_PredictBatch(benchmark::State& state) {
   Predictor predictor(model(Variant::unified));

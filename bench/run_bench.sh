@@ -138,7 +138,8 @@ ns = {b["name"]: b["cpu_time"] * unit[b["time_unit"]] for b in json.load(open(sy
 torch = json.load(open(sys.argv[2]))
 single = ns["BM_PredictSingle"]
 print(f"predict, one query, default sizes, one core: unified {single:.0f} ns, per-material "
-      f"{ns['BM_PredictSinglePerMaterial']:.0f} ns (goal < 5000 ns)")
+      f"{ns['BM_PredictSinglePerMaterial']:.0f} ns (goal < 5000 ns); predictor hidden 64: "
+      f"{ns['BM_PredictSingleHidden/hidden:64']:.0f} ns, 256: {ns['BM_PredictSingleHidden/hidden:256']:.0f} ns")
 print(f"predict_batch of 1000 queries: {1e6 / ns['BM_PredictBatch/1000']:.3f} M predictions/s "
       f"({ns['BM_PredictBatch/1000'] / 1e3:.0f} us per batch)")
 print(f"encode a 960x720 press (texture descriptor + texture encoder): {ns['BM_Encode960x720'] / 1e6:.2f} ms")
