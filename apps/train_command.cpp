@@ -66,9 +66,9 @@ class TrainCommand : public Command {
     const auto start = std::chrono::steady_clock::now();
     const split::DatasetSplit split = split::read_dataset_split(dataset_, split_);
     const Progress loading = terminal_progress(global, "texture descriptors");
-    const predict::TrainingData data = predict::load_training_data(split, {}, [&](std::size_t done, std::size_t total) {
-      if (loading) loading(done, total, "presses");
-    });
+    const predict::TrainingData data = predict::load_training_data(
+        split, {}, [&](std::size_t done, std::size_t total) { if (loading) loading(done, total, "presses"); },
+        per_material_ ? predict::PressImages::none : predict::PressImages::training);
     nlohmann::json epochs = nlohmann::json::array();
     const bool show = !global.quiet && !global.json && (global.verbose > 0 || isatty(STDERR_FILENO));
     const predict::Model model = predict::train_model(data, options_, [&](const predict::EpochReport& r) {

@@ -230,7 +230,7 @@ void check_model(const ModelInput& input, const split::DatasetSplit& split) {
 }
 
 std::vector<Codes> unified_codes(const ModelInput& input, const split::DatasetSplit& split) {
-  const predict::TrainingData images = predict::load_training_data(split, input.model.descriptor, {}, false);
+  const predict::TrainingData images = predict::load_training_data(split, input.model.descriptor, {}, predict::PressImages::peaks);
   const predict::Predictor p(input.model);
   std::vector<Codes> out;
   for (std::size_t m = 0; m < split.materials.size(); ++m) {

@@ -15,7 +15,7 @@ struct TrainOptions {
   // Sizes (defaults from the sweep in docs/predict.md).
   int latent = 64, texture_hidden = 128;
   int action_hidden = 32, action_layers = 2;
-  int predictor_hidden = 128, predictor_layers = 1;
+  int predictor_hidden = 256, predictor_layers = 1;
   // Optimisation. Per-material models see about 1/60 of the windows, so they take smaller batches
   // and more epochs (per_material_* below).
   int batch = 256, max_epochs = 60, patience = 8;

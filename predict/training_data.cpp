@@ -78,7 +78,7 @@ Descriptors press_descriptors(const std::string& dataset_path, const std::string
 }
 
 TrainingData load_training_data(const split::DatasetSplit& split, const TextureDescriptorSpec& spec, const LoadProgress& progress,
-                                bool augmented) {
+                                PressImages images) {
   TrainingData data;
   data.dataset_sha256 = split.dataset_sha256;
   data.split_sha256 = split.manifest_sha256;
@@ -98,6 +98,7 @@ TrainingData load_training_data(const split::DatasetSplit& split, const TextureD
     const split::MaterialSets& sets = split.materials[m];
     check_sets(sets, split.manifest_path);
     data.materials.push_back({sets.id, sets.name, sets.rows, {}});
+    if (images == PressImages::none) continue;
     for (std::size_t s = 0; s < 3; ++s)
       for (int press : sets.presses[s]) jobs.push_back({m, s, press});
   }
@@ -107,7 +108,7 @@ TrainingData load_training_data(const split::DatasetSplit& split, const TextureD
   parallel_for(jobs.size(), [&](std::size_t j) {
     const Job& job = jobs[j];
     results[j] = press_descriptors(split.dataset_path, split.materials[job.material].id, job.press,
-                                   augmented && job.set == split::kTrain, spec);
+                                   images == PressImages::training && job.set == split::kTrain, spec);
     std::lock_guard lock(mutex);
     if (progress) progress(++done, jobs.size());
   });
