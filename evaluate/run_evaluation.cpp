@@ -298,12 +298,15 @@ std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& mode
   // Against the action-blind predictor: does the model use the actions at all?
   for (std::size_t i = 0; i < models.size(); ++i) {
     const bool unified = models[i].model.variant == predict::Variant::unified;
-    const std::string key = (unified ? "unified-new-presses:" : "per-material:") + std::to_string(i);
-    out.push_back({(unified ? "unified-new-presses" : "per-material") + std::string("-vs-mean-spectrum") +
-                       (count[models[i].model.variant] > 1 ? " (" + models[i].label + ")" : ""),
-                   std::string(unified ? "Unified model (new actions, new press)" : "Per-material models (new actions)") +
-                       " against each material's mean training spectrum, the best action-blind predictor", key,
-                   predict::variant_name(models[i].model.variant) + " model " + models[i].label, "mean-spectrum"});
+    const std::string suffix = count[models[i].model.variant] > 1 ? " (" + models[i].label + ")" : "";
+    const std::string label = predict::variant_name(models[i].model.variant) + " model " + models[i].label;
+    const std::vector<std::pair<std::string, std::string>> tested =
+        unified ? std::vector<std::pair<std::string, std::string>>{{"unified-new-actions", "Unified model (new actions, training presses)"},
+                                                                   {"unified-new-presses", "Unified model (new actions, new press)"}}
+                : std::vector<std::pair<std::string, std::string>>{{"per-material", "Per-material models (new actions)"}};
+    for (const auto& [id, what] : tested)
+      out.push_back({id + "-vs-mean-spectrum" + suffix, what + " against each material's mean training spectrum, the best action-blind predictor",
+                     id + ":" + std::to_string(i), label, "mean-spectrum"});
   }
   if (c.stitched_model >= 0 && !c.stitched_key.empty()) {
     const std::string& key = c.stitched_key;
