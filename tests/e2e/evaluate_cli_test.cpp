@@ -1,0 +1,96 @@
+// haptex evaluate as a user runs it, on the small pipeline's dataset, split and a quickly trained model.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <nlohmann/json.hpp>
+
+#include "core/json/schema.hpp"
+#include "tests/support/run_haptex.hpp"
+#include "tests/support/small_pipeline.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+struct Models {
+  TempDir dir;
+  std::string unified = dir.file("unified.h5"), per_material = dir.file("per_material.h5");
+};
+
+const Models& models() {
+  static Models m;
+  static const bool trained = [](const Models& out) {
+    const SmallPipeline& p = small_pipeline();
+    for (const auto& [path, extra] : {std::pair{out.unified, std::string()}, std::pair{out.per_material, std::string("--per-material")}}) {
+      std::vector<std::string> args = {"train", p.dataset, "--split", p.split, "-o", path, "--epochs", "4", "--latent", "8", "--hidden", "16"};
+      if (!extra.empty()) args.push_back(extra);
+      const CommandResult r = run_haptex(args);
+      if (r.exit_code != 0) throw std::runtime_error("haptex train failed: " + r.err);
+    }
+    return true;
+  }(m);
+  (void)trained;
+  return m;
+}
+
+TEST(EvaluateCli, WritesAReportWhoseTotalsMatchItsTables) {
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  const CommandResult r = run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", models().unified, "--model",
+                                      models().per_material, "--repeats", "3", "-o", dir.file("report"), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json printed = nlohmann::json::parse(r.out);
+  const nlohmann::json results = json::read_file(dir.file("report/results.json"));
+  EXPECT_EQ(printed, results);
+  EXPECT_NO_THROW(json::validate(results, "results.schema.json", "results.json"));
+  std::set<std::string> ids;
+  for (const auto& e : results["experiments"]) {
+    ids.insert(e["id"]);
+    // The totals are counts over the per-material rows.
+    std::size_t better = 0;
+    for (const auto& m : e["materials"]) better += m["better"].get<bool>() ? 1 : 0;
+    EXPECT_EQ(e["totals"]["better"], better) << e["id"];
+    EXPECT_EQ(e["materials"].size(), 2u);
+  }
+  for (const char* id : {"per-material", "unified-new-actions", "unified-new-presses", "stitched-fgla"})
+    EXPECT_TRUE(ids.count(id)) << id << " missing";
+  std::ifstream report(dir.file("report/report.md"));
+  const std::string text{std::istreambuf_iterator<char>(report), {}};
+  EXPECT_NE(text.find("better on"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir.file("report.partial")));
+}
+
+TEST(EvaluateCli, RefusesAModelTrainedOnAnotherSplit) {
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  // The same dataset, cut with another seed: other test sections, which the model may have trained on.
+  const CommandResult split = run_haptex({"split", p.dataset, "-o", dir.file("other.json"), "--seed", "99", "--no-plots"});
+  ASSERT_EQ(split.exit_code, 0) << split.err;
+  const CommandResult r = run_haptex({"evaluate", p.dataset, "--split", dir.file("other.json"), "--model", models().unified, "-o",
+                                      dir.file("report")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(models().unified), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("another dataset or split"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.file("report")));
+}
+
+TEST(EvaluateCli, PublishedBaselineNeedsItsFolderAndAMatchingModelFile) {
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  const CommandResult missing = run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", models().unified, "--baseline",
+                                            "hatt-published", "-o", dir.file("report")});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("--hatt-models"), std::string::npos) << missing.err;
+  fs::create_directories(dir.file("models"));
+  const CommandResult none = run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", models().unified, "--baseline",
+                                         "hatt-published", "--hatt-models", dir.file("models"), "-o", dir.file("report")});
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.err.find(dir.file("models")), std::string::npos) << none.err;
+  EXPECT_FALSE(fs::exists(dir.file("report")));
+  EXPECT_FALSE(fs::exists(dir.file("report.partial")));
+}
+
+}  // namespace
+}  // namespace haptex::test
