@@ -25,11 +25,11 @@ else
 fi
 
 # name  flags   (the default sizes: --latent 64 --texture-hidden 128 --action-hidden 32 --action-layers 2
-#                --hidden 128 --hidden-layers 1)
+#                --hidden 256 --hidden-layers 1)
 default_sweep='latent16      --latent 16
 hidden64      --hidden 64
 default
-hidden256     --hidden 256
+hidden128     --hidden 128
 action16      --action-hidden 16
 per-material  --per-material'
 sweep=${SWEEP:-$default_sweep}
