@@ -98,7 +98,9 @@ void write_gelsight(const fs::path& synth_gelsight, const std::string& output) {
 // A lock keeps parallel test processes from building it twice; a stamp (the binaries' modification
 // times) says whether it is current. Tests only read these files; mutations go to copies.
 fs::path test_program() { return fs::read_symlink("/proc/self/exe"); }
-fs::path cache_dir() { return test_program().parent_path() / "small_pipeline"; }
+// One folder per test program: the stamp names the program, and two programs sharing a folder would
+// rebuild it under each other's feet.
+fs::path cache_dir() { return test_program().parent_path() / ("small_pipeline_" + test_program().filename().string()); }
 
 std::string build_stamp() {
   auto mtime = [](const fs::path& p) { return std::to_string(fs::last_write_time(p).time_since_epoch().count()); };
