@@ -74,17 +74,14 @@ class EvaluateCommand : public Command {
 
  private:
   std::string truth_note(const evaluate::ModelInput& m) const {
-    double model = 0, constant = 0, norm = 0;
-    std::size_t points = 0;
     const auto found = evaluate::compare_with_truth(m.model, truth_);
-    for (const auto& c : found) model += c.model * double(c.points), constant += c.constant * double(c.points), norm += c.truth_norm * double(c.points), points += c.points;
-    if (points == 0) return m.label + ": no point of " + truth_ + " lies inside the training range";
+    const evaluate::TruthComparison all = evaluate::overall(found);
+    if (all.points == 0) return m.label + ": no point of " + truth_ + " lies inside the training range";
     char text[400];
     std::snprintf(text, sizeof text,
                   "%s against the noise-free spectra of %s (%zu materials, %zu speed-force points inside the training range): "
                   "mean distance %.4g m/s^2; a constant spectrum per material (the truth's own mean) %.4g; mean true spectrum norm %.4g",
-                  m.label.c_str(), truth_.c_str(), found.size(), points, model / double(points), constant / double(points),
-                  norm / double(points));
+                  m.label.c_str(), truth_.c_str(), found.size(), all.points, all.model, all.constant, all.truth_norm);
     return text;
   }
 

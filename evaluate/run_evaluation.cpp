@@ -229,20 +229,22 @@ void check_model(const ModelInput& input, const split::DatasetSplit& split) {
       throw input_error(input.path, "/materials/ids", "the model does not know material '" + s.id + "'", "Train it on this dataset");
 }
 
+// Only the test presses' peaks are encoded: the training presses' latents are in the model.
 std::vector<Codes> unified_codes(const ModelInput& input, const split::DatasetSplit& split) {
-  const predict::TrainingData images = predict::load_training_data(split, input.model.descriptor, {}, predict::PressImages::peaks);
   const predict::Predictor p(input.model);
   std::vector<Codes> out;
-  for (std::size_t m = 0; m < split.materials.size(); ++m) {
-    Codes c{p.material_code(input.model.material_index(split.materials[m].id)), {}};
-    for (const auto& d : images.materials[m].images[split::kTest]) c.test_presses.push_back(p.encode_descriptor(d));
+  for (const split::MaterialSets& m : split.materials) {
+    Codes c{p.material_code(input.model.material_index(m.id)), {}};
+    for (int press : m.presses[split::kTest])
+      for (const auto& d : predict::press_descriptors(split.dataset_path, m.id, press, false, input.model.descriptor))
+        c.test_presses.push_back(p.encode_descriptor(d));
     out.push_back(std::move(c));
   }
   return out;
 }
 
 // 2-D PCA of the training latents and the test presses' latents.
-std::vector<LatentPoint> latent_map(const ModelInput& input, const std::vector<Codes>& codes, const split::DatasetSplit& split) {
+std::vector<LatentPoint> latent_map(const std::vector<Codes>& codes, const split::DatasetSplit& split) {
   std::vector<LatentPoint> points;
   std::vector<Eigen::VectorXf> latents;
   for (std::size_t m = 0; m < codes.size(); ++m) {
@@ -261,7 +263,6 @@ std::vector<LatentPoint> latent_map(const ModelInput& input, const std::vector<C
     points[i].x = projected(Eigen::Index(i), 0);
     points[i].y = projected.cols() > 1 ? projected(Eigen::Index(i), 1) : 0.0;
   }
-  (void)input;
   return points;
 }
 
@@ -352,7 +353,7 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   for (std::size_t i = 0; i < models.size(); ++i)
     if (models[i].model.variant == predict::Variant::unified) {
       codes[i] = unified_codes(models[i], split);
-      if (stitched < 0) stitched = int(i), e.latents = latent_map(models[i], codes[i], split);
+      if (stitched < 0) stitched = int(i), e.latents = latent_map(codes[i], split);
     }
   Context c{models, codes, o, {}, {}, stitched};
   if (stitched >= 0 && o.reconstruct != Reconstruction::none) {

@@ -59,4 +59,17 @@ std::vector<TruthComparison> compare_with_truth(const predict::Model& model, con
   return out;
 }
 
+TruthComparison overall(const std::vector<TruthComparison>& materials) {
+  TruthComparison all;
+  for (const TruthComparison& c : materials) {
+    all.points += c.points;
+    all.model += c.model * double(c.points);
+    all.constant += c.constant * double(c.points);
+    all.truth_norm += c.truth_norm * double(c.points);
+  }
+  if (all.points == 0) return all;
+  for (double* v : {&all.model, &all.constant, &all.truth_norm}) *v /= double(all.points);
+  return all;
+}
+
 }  // namespace haptex::evaluate

@@ -22,4 +22,7 @@ struct TruthComparison {
 // per-material models its own network. Throws haptex::Error (bad_input) when the file is not truth/1.
 std::vector<TruthComparison> compare_with_truth(const predict::Model& model, const std::string& truth_path);
 
+// All materials together, each weighted by its points; id empty.
+TruthComparison overall(const std::vector<TruthComparison>& materials);
+
 }  // namespace haptex::evaluate

@@ -108,7 +108,7 @@ TrainingData load_training_data(const split::DatasetSplit& split, const TextureD
   parallel_for(jobs.size(), [&](std::size_t j) {
     const Job& job = jobs[j];
     results[j] = press_descriptors(split.dataset_path, split.materials[job.material].id, job.press,
-                                   images == PressImages::training && job.set == split::kTrain, spec);
+                                   job.set == split::kTrain, spec);
     std::lock_guard lock(mutex);
     if (progress) progress(++done, jobs.size());
   });

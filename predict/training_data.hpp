@@ -35,9 +35,8 @@ using LoadProgress = std::function<void(std::size_t, std::size_t)>;
 // Throws haptex::Error (bad_input) naming the material and the file when a material has no
 // training or no validation windows, or a press the split names is missing from the dataset.
 // Which press images get descriptors: training (training presses: all 12 frames in all 8
-// augmentations; others: the peak), peaks (every press its peak: evaluation), none (per-material
-// models, which have no texture encoder).
-enum class PressImages { training, peaks, none };
+// augmentations; others: the peak), or none (per-material models, which have no texture encoder).
+enum class PressImages { training, none };
 TrainingData load_training_data(const split::DatasetSplit& split, const TextureDescriptorSpec& spec,
                                 const LoadProgress& progress = {}, PressImages images = PressImages::training);
 
