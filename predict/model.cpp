@@ -6,6 +6,11 @@ namespace haptex::predict {
 
 std::string variant_name(Variant variant) { return variant == Variant::unified ? "unified" : "per-material"; }
 
+void standardisation(const Eigen::MatrixXf& x, Eigen::VectorXf& mean, Eigen::VectorXf& scale) {
+  mean = x.rowwise().mean();
+  scale = ((x.colwise() - mean).cwiseAbs2().rowwise().mean().cwiseSqrt().array() + 1e-6f).matrix();
+}
+
 int Model::material_index(const std::string& id) const {
   const auto found = std::find(material_ids.begin(), material_ids.end(), id);
   return found == material_ids.end() ? -1 : int(found - material_ids.begin());

@@ -29,6 +29,10 @@ struct Normalisation {
   Eigen::VectorXf target_scale;  // per bin: outputs are target_scale .* network outputs
 };
 
+// Per row of x (one sample per column): the mean and the spread (RMS about the mean, floored at
+// 1e-6) that standardising divides by.
+void standardisation(const Eigen::MatrixXf& x, Eigen::VectorXf& mean, Eigen::VectorXf& scale);
+
 // One action encoder and predictor (the unified model has one; per-material, one per material).
 struct SpectrumNet {
   Mlp action;     // kActionValues -> action code

@@ -85,12 +85,16 @@ bool Predictor::predict(const TextureCode& code, std::span<const float> action, 
 }
 
 Eigen::MatrixXf Predictor::predict_batch(const TextureCode& code, const Eigen::MatrixXf& actions, std::size_t* out_of_range) const {
-  const Eigen::MatrixXf normalised = normalised_actions(model_.normalisation, actions, out_of_range);
-  const Eigen::MatrixXf latents = code.latent.size() ? Eigen::MatrixXf(code.latent.replicate(1, actions.cols()))
-                                                     : Eigen::MatrixXf(0, actions.cols());
-  SpectrumTrace trace;
-  return model_.normalisation.target_scale.asDiagonal() *
-         spectrum_forward(model_.nets[std::size_t(code.net)], latents, normalised, trace);
+  const SpectrumNet& net = model_.nets[std::size_t(code.net)];
+  MlpTrace action, spectrum;
+  forward(net.action, normalised_actions(model_.normalisation, actions, out_of_range), action);
+  // As predict(): the texture's share of the first layer comes from the code, not from a latent per column.
+  Mlp tail = net.predictor;
+  DenseLayer& first = tail.layers.front();
+  first.weight = Eigen::MatrixXf(first.weight.rightCols(net.action.outputs()));
+  first.bias = code.first_layer;
+  forward(tail, action.out.back(), spectrum);
+  return model_.normalisation.target_scale.asDiagonal() * spectrum.out.back();
 }
 
 }  // namespace haptex::predict

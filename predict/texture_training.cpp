@@ -16,32 +16,36 @@ struct Labelled {
   std::vector<int> label;   // material per column
 };
 
+// Descriptors as columns, as they are.
+Eigen::MatrixXf stacked(const Descriptors& descriptors, Eigen::Index length) {
+  Eigen::MatrixXf x(length, Eigen::Index(descriptors.size()));
+  for (std::size_t i = 0; i < descriptors.size(); ++i) x.col(Eigen::Index(i)) = Eigen::Map<const Eigen::VectorXf>(descriptors[i].data(), length);
+  return x;
+}
+
+// Standardised descriptors, one per column.
+Eigen::MatrixXf normalised(const Normalisation& n, const Descriptors& descriptors) {
+  Eigen::MatrixXf x = stacked(descriptors, n.descriptor_mean.size()).colwise() - n.descriptor_mean;
+  x.array().colwise() /= n.descriptor_scale.array();  // divided, as Predictor::encode_descriptor divides
+  return x;
+}
+
 Labelled gather(const TrainingData& data, std::size_t set, const Normalisation& n) {
   Labelled out;
-  std::size_t count = 0;
-  for (const MaterialData& m : data.materials) count += m.images[set].size();
-  out.x.resize(n.descriptor_mean.size(), Eigen::Index(count));
-  Eigen::Index c = 0;
-  for (std::size_t m = 0; m < data.materials.size(); ++m)
-    for (const std::vector<float>& d : data.materials[m].images[set]) {
-      out.x.col(c++) = (Eigen::Map<const Eigen::VectorXf>(d.data(), Eigen::Index(d.size())) - n.descriptor_mean)
-                           .cwiseQuotient(n.descriptor_scale);
-      out.label.push_back(int(m));
-    }
+  Descriptors all;
+  for (std::size_t m = 0; m < data.materials.size(); ++m) {
+    const Descriptors& images = data.materials[m].images[set];
+    all.insert(all.end(), images.begin(), images.end());
+    out.label.insert(out.label.end(), images.size(), int(m));
+  }
+  out.x = normalised(n, all);
   return out;
 }
 
 void descriptor_statistics(const TrainingData& data, Normalisation& n) {
-  Eigen::MatrixXf all;
-  std::vector<const std::vector<float>*> rows;
-  for (const MaterialData& m : data.materials)
-    for (const auto& d : m.images[split::kTrain]) rows.push_back(&d);
-  const Eigen::Index length = Eigen::Index(rows.front()->size());
-  all.resize(length, Eigen::Index(rows.size()));
-  for (std::size_t i = 0; i < rows.size(); ++i) all.col(Eigen::Index(i)) = Eigen::Map<const Eigen::VectorXf>(rows[i]->data(), length);
-  n.descriptor_mean = all.rowwise().mean();
-  const Eigen::MatrixXf centred = all.colwise() - n.descriptor_mean;
-  n.descriptor_scale = (centred.cwiseAbs2().rowwise().mean().cwiseSqrt().array() + 1e-6f).matrix();
+  Descriptors all;
+  for (const MaterialData& m : data.materials) all.insert(all.end(), m.images[split::kTrain].begin(), m.images[split::kTrain].end());
+  standardisation(stacked(all, Eigen::Index(all.front().size())), n.descriptor_mean, n.descriptor_scale);
 }
 
 // Softmax cross-entropy of logits against labels; dLoss/dlogits into d (already / batch size).
@@ -122,13 +126,8 @@ Mlp fit(const Labelled& train, const Labelled& val, const TrainOptions& o, std::
 }  // namespace
 
 Eigen::MatrixXf texture_latents(const Model& model, const Descriptors& descriptors) {
-  const Normalisation& n = model.normalisation;
-  Eigen::MatrixXf x(n.descriptor_mean.size(), Eigen::Index(descriptors.size()));
-  for (std::size_t i = 0; i < descriptors.size(); ++i)
-    x.col(Eigen::Index(i)) = (Eigen::Map<const Eigen::VectorXf>(descriptors[i].data(), x.rows()) - n.descriptor_mean)
-                                 .cwiseQuotient(n.descriptor_scale);
   MlpTrace trace;
-  forward(model.texture, x, trace);
+  forward(model.texture, normalised(model.normalisation, descriptors), trace);
   return trace.out.back();
 }
 

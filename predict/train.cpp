@@ -26,9 +26,7 @@ Eigen::MatrixXf columns(const Eigen::MatrixXf& from, const std::vector<std::size
 Normalisation action_normalisation(const TrainingData& data) {
   const Eigen::MatrixXf train = columns(data.action, all_rows(data, split::kTrain));
   Normalisation n;
-  n.action_mean = train.rowwise().mean();
-  const Eigen::MatrixXf centred = train.colwise() - n.action_mean;
-  n.action_scale = (centred.cwiseAbs2().rowwise().mean().cwiseSqrt().array() + 1e-6f).matrix();
+  standardisation(train, n.action_mean, n.action_scale);
   const Eigen::Index half = train.rows() / 2;
   n.force_min = train.topRows(half).minCoeff(), n.force_max = train.topRows(half).maxCoeff();
   n.speed_min = train.bottomRows(half).minCoeff(), n.speed_max = train.bottomRows(half).maxCoeff();
