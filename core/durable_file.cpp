@@ -85,4 +85,14 @@ void PartialFile::commit() {
   fd_ = -1;
 }
 
+void write_file_durably(const std::string& path, std::string_view text) {
+  PartialFile partial(path);
+  std::FILE* file = std::fopen(partial.path().c_str(), "wb");
+  if (!file) throw failure(partial.path() + ": cannot open for writing");
+  const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+  const bool closed = std::fclose(file) == 0;
+  if (!written || !closed) throw failure(partial.path() + ": write failed (disk full?)");
+  partial.commit();
+}
+
 }  // namespace haptex

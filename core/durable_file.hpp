@@ -2,6 +2,7 @@
 // The file-system half of haptex's atomic writes (DESIGN.md section 5): every output is written
 // to NAME.partial, synced, and renamed, so a crash never leaves a half file under the final name.
 #include <string>
+#include <string_view>
 
 namespace haptex {
 
@@ -32,5 +33,9 @@ class PartialFile {
   int fd_ = -1;
   bool committed_ = false;
 };
+
+// The whole of `text` as a new file at path, through PartialFile: the final name appears only once
+// everything is written and synced. Throws haptex::Error (failed) naming the file when writing fails.
+void write_file_durably(const std::string& path, std::string_view text);
 
 }  // namespace haptex

@@ -120,16 +120,14 @@ void write_vibration_csv(const std::string& path, const predict::Trajectory& tra
   if (signal.size() != trajectory.force.size() || signal.size() != trajectory.speed.size())
     throw failure(path + ": the signal has " + std::to_string(signal.size()) + " samples, the trajectory " +
                   std::to_string(trajectory.force.size()) + "; they must match");
-  PartialFile partial(path);
-  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(partial.path().c_str(), "wb"), &std::fclose);
-  if (!file) throw failure(partial.path() + ": cannot open for writing");
-  bool written = std::fprintf(file.get(), "time_s,force_n,speed_mm_s,accel_m_s2\n") > 0;
-  for (std::size_t i = 0; i < signal.size() && written; ++i)
-    written = std::fprintf(file.get(), "%.4f,%.9g,%.9g,%.9g\n", double(i) * 1e-4, double(trajectory.force[i]),
-                           double(trajectory.speed[i]), signal[i]) > 0;
-  const bool closed = std::fclose(file.release()) == 0;
-  if (!written || !closed) throw failure(partial.path() + ": write failed (disk full?)");
-  partial.commit();
+  std::string text = "time_s,force_n,speed_mm_s,accel_m_s2\n";
+  char row[128];
+  for (std::size_t i = 0; i < signal.size(); ++i) {
+    const int n = std::snprintf(row, sizeof row, "%.4f,%.9g,%.9g,%.9g\n", double(i) * 1e-4, double(trajectory.force[i]),
+                                double(trajectory.speed[i]), signal[i]);
+    text.append(row, std::size_t(n));
+  }
+  write_file_durably(path, text);
 }
 
 double rendered_distance(const Rendering& rendering) {

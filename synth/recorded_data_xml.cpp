@@ -56,13 +56,7 @@ std::string recorded_data_xml(const convert::Recording& r) {
 void write_recorded_data_xml(const std::string& path, const convert::Recording& r) {
   const std::string xml = recorded_data_xml(r);
   check_output_path(path, true);
-  PartialFile partial(path);
-  FILE* file = std::fopen(partial.path().c_str(), "wb");
-  if (!file) throw failure(partial.path() + ": cannot open for writing");
-  const bool written = std::fwrite(xml.data(), 1, xml.size(), file) == xml.size();
-  const bool closed = std::fclose(file) == 0;
-  if (!written || !closed) throw failure(partial.path() + ": write failed (disk full?)");
-  partial.commit();
+  write_file_durably(path, xml);
 }
 
 }  // namespace haptex::synth

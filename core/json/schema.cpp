@@ -76,13 +76,7 @@ void write_file(const nlohmann::json& doc, std::string_view schema_name, const s
   } catch (const Error& e) {
     throw failure(std::string("internal: the document to write does not follow its schema: ") + e.what());
   }
-  PartialFile partial(path);
-  const std::string text = doc.dump(2) + "\n";
-  std::FILE* file = std::fopen(partial.path().c_str(), "wb");
-  const bool written = file && std::fwrite(text.data(), 1, text.size(), file) == text.size();
-  if (file && std::fclose(file) != 0) throw failure(partial.path() + ": write failed (disk full?)");
-  if (!written) throw failure(partial.path() + ": write failed (disk full?)");
-  partial.commit();
+  write_file_durably(path, doc.dump(2) + "\n");
 }
 
 }  // namespace haptex::json
