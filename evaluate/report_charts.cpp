@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "core/plot/gnuplot.hpp"
 #include "evaluate/results_json.hpp"
 
 namespace haptex::evaluate {
@@ -20,33 +20,7 @@ constexpr const char* kBetter = "#009e73";
 constexpr const char* kWorse = "#d55e00";
 constexpr const char* kNotSignificant = "#b0b0b0";
 
-// A gnuplot double-quoted string: backslashes and quotes escaped, a line break as \n.
-std::string gnuplot_string(std::string_view text) {
-  std::string s = "\"";
-  for (char c : text) s += c == '\\' ? "\\\\" : c == '"' ? "\\\"" : c == '\n' ? "\\n" : c == '\r' ? "" : std::string(1, c);
-  return s + "\"";
-}
-
-std::string shell_quoted(std::string_view text) {
-  std::string s = "'";
-  for (char c : text) s += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return s + "'";
-}
-
 std::string label_of(const std::string& name, const std::string& id) { return name.empty() ? id : name; }
-
-// "" when gnuplot is not on PATH; otherwise its best PNG terminal.
-std::string png_terminal() {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) return "";
-  return std::system("gnuplot -e 'set terminal pngcairo' > /dev/null 2>&1") == 0 ? "pngcairo" : "png";
-}
-
-bool is_png(const fs::path& path) {
-  static constexpr char kSignature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
-  std::ifstream in(path, std::ios::binary);
-  char head[8] = {};
-  return in.read(head, 8) && std::equal(head, head + 8, kSignature);
-}
 
 std::string header(const std::string& terminal, std::string_view stem, int width, int height, std::string_view what) {
   std::ostringstream s;
@@ -66,12 +40,12 @@ std::string bars_script(const Experiment& x, const std::string& stem, const std:
   std::ostringstream s;
   s << header(terminal, stem, int(std::clamp<std::size_t>(160 + 18 * n, 800, 6000)), 620,
               "baseline minus model per material (the paper's Fig. 4)")
-    << "set title " << gnuplot_string(x.title + "\nbaseline - model over the test windows: median (bar) and quartiles; "
+    << "set title " << gnuplot::text(x.title + "\nbaseline - model over the test windows: median (bar) and quartiles; "
                                                 "> 0: the model is closer") << "\n"
     << "set ylabel 'baseline - model spectral distance (m/s^2)'\n"
     << "set xrange [-0.6:" << double(n) - 0.4 << "]\n"
     << "set xtics nomirror rotate by 60 right font ',8' (";
-  for (std::size_t i = 0; i < n; ++i) s << (i ? ", " : "") << gnuplot_string(label_of(x.materials[i].name, x.materials[i].id)) << " " << i;
+  for (std::size_t i = 0; i < n; ++i) s << (i ? ", " : "") << gnuplot::text(label_of(x.materials[i].name, x.materials[i].id)) << " " << i;
   s << ")\n"
     << "set xzeroaxis lt -1\nset grid ytics\nset key outside bottom center horizontal\n"
     << "set offsets 0, 0, graph 0.05, graph 0.05\n"
@@ -105,8 +79,8 @@ std::string examples_script(const Evaluation& e, const ReportLayout& layout, con
     s << "set xlabel '" << row[2] << "'\nset ylabel '" << row[3] << "'\n";
     for (std::size_t k = 0; k < shown.size(); ++k) {
       const Example& x = e.examples[shown[k]];
-      s << "set title " << gnuplot_string(label_of(x.name, x.id) + row[1]) << "\n" << (k == 0 ? "set key top right font ',8' opaque\n" : "unset key\n")
-        << "plot '" << layout.examples[shown[k]] << row[0] << "' using " << row[4] << ":'truth' with lines lc rgb 'black' title 'recorded', \\\n"
+      s << "set title " << gnuplot::text(label_of(x.name, x.id) + row[1]) << "\n" << (k == 0 ? "set key top right font ',8' opaque\n" : "unset key\n")
+        << "plot " << gnuplot::file(layout.examples[shown[k]] + row[0]) << " using " << row[4] << ":'truth' with lines lc rgb 'black' title 'recorded', \\\n"
         << "     '' using " << row[4] << ":'model' with lines lc rgb '" << kPalette[0] << "' title 'model', \\\n"
         << "     '' using " << row[4] << ":'baseline' with lines lc rgb '" << kPalette[1] << "' title 'baseline'\n";
     }
@@ -118,13 +92,13 @@ std::string examples_script(const Evaluation& e, const ReportLayout& layout, con
 std::string latents_script(const std::vector<LatentPoint>& points, const std::string& terminal) {
   std::ostringstream s;
   s << header(terminal, kLatentsStem, 1000, 800, "texture latents, 2-D PCA")
-    << "set title " << gnuplot_string("Texture latents: 2-D PCA of the unified model's latents") << "\n"
+    << "set title " << gnuplot::text("Texture latents: 2-D PCA of the unified model's latents") << "\n"
     << "set xlabel 'first principal component'\nset ylabel 'second principal component'\n"
     << "set key outside top center horizontal\nset grid\n"
     << "set offsets graph 0.05, graph 0.1, graph 0.05, graph 0.05\n";
   for (const LatentPoint& p : points)
     if (std::isfinite(p.x) && std::isfinite(p.y))
-      s << "set label " << gnuplot_string(label_of(p.name, p.id)) << " at " << csv_number(p.x) << ","
+      s << "set label " << gnuplot::text(label_of(p.name, p.id)) << " at " << csv_number(p.x) << ","
         << csv_number(p.y) << " offset char 0.5,0.4 font ',7' tc rgb '" << kPalette[p.kind == "training" ? 0 : 5] << "'\n";
   s << "plot '" << kLatentsStem << ".csv' using 'x':(strcol('kind') eq 'training' ? column('y') : NaN) with points pt 7 "
     << "ps 1.2 lc rgb '" << kPalette[0] << "' title 'material (mean training latent)', \\\n"
@@ -149,7 +123,7 @@ std::string speed_script(const std::vector<SpeedPoint>& points, const std::strin
   for (const SpeedPoint& p : points) {
     if (std::find(methods.begin(), methods.end(), p.method) == methods.end()) methods.push_back(p.method);
     if (std::isfinite(p.seconds_per_second) && std::isfinite(p.distance) && (!log_x || p.seconds_per_second > 0))
-      s << "set label " << gnuplot_string(p.setting) << " at " << csv_number(p.seconds_per_second) << ","
+      s << "set label " << gnuplot::text(p.setting) << " at " << csv_number(p.seconds_per_second) << ","
         << csv_number(p.distance) << " offset char 0.8,0.4 font ',8'\n";
   }
   s << "plot ";
@@ -159,26 +133,16 @@ std::string speed_script(const std::vector<SpeedPoint>& points, const std::strin
       if (points[i].method == methods[m]) rows += (rows.empty() ? "$0==" : "||$0==") + std::to_string(i);
     s << (m ? ", \\\n     " : "") << "'" << kSpeedStem << ".csv' using ((" << rows
       << ") ? column('seconds_per_second') : NaN):'distance' with points pt " << 5 + 2 * (m / std::size(kPalette) % 3)
-      << " ps 1.6 lc rgb '" << kPalette[m % std::size(kPalette)] << "' title " << gnuplot_string(methods[m]);
+      << " ps 1.6 lc rgb '" << kPalette[m % std::size(kPalette)] << "' title " << gnuplot::text(methods[m]);
   }
   s << "\n";
   return s.str();
 }
 
-// Runs the script in directory; keeps its PNG only when gnuplot succeeded and wrote a PNG.
-bool draw(const std::string& directory, const std::string& stem) {
-  const fs::path png = fs::path(directory) / (stem + ".png");
-  const std::string command = "cd " + shell_quoted(directory) + " && gnuplot " + shell_quoted(stem + ".gnuplot") + " > /dev/null 2>&1";
-  if (std::system(command.c_str()) == 0 && is_png(png)) return true;
-  std::error_code ignored;
-  fs::remove(png, ignored);
-  return false;
-}
-
 }  // namespace
 
 ChartResult write_report_charts(const Evaluation& e, const ReportLayout& layout, const std::string& directory) {
-  const std::string found = png_terminal();
+  const std::string found = gnuplot::png_terminal();
   const std::string terminal = found.empty() ? "pngcairo" : found;
   std::vector<std::pair<std::string, std::string>> charts;  // stem, script
   for (std::size_t i = 0; i < e.experiments.size(); ++i)
@@ -194,7 +158,7 @@ ChartResult write_report_charts(const Evaluation& e, const ReportLayout& layout,
     write_text_file((fs::path(directory) / (stem + ".gnuplot")).string(), script);
     result.scripts.push_back(stem + ".gnuplot");
     if (found.empty()) continue;
-    if (draw(directory, stem)) result.images.push_back(stem + ".png");
+    if (gnuplot::draw(directory, stem + ".gnuplot", stem + ".png")) result.images.push_back(stem + ".png");
     else failed += (failed.empty() ? "" : ", ") + stem + ".gnuplot";
   }
   if (found.empty() && !charts.empty())

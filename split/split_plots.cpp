@@ -1,12 +1,13 @@
 #include "split/split_plots.hpp"
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "align/window_table.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
+#include "core/plot/gnuplot.hpp"
 #include "split/sections.hpp"
 
 namespace haptex::split {
@@ -16,8 +17,6 @@ namespace {
 
 constexpr const char* kSetNames[] = {"train", "val", "test"};
 constexpr int kTraceStep = 10;  // plot every 10th acceleration sample: 1 kHz is plenty for a trace
-
-bool gnuplot_available() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
 
 void write_points(const fs::path& path, const MaterialWindows& m, const MaterialSplit& s, std::size_t sections) {
   std::ofstream out(path);
@@ -48,20 +47,20 @@ void write_sections(const fs::path& path, const MaterialSplit& s, std::int64_t s
 constexpr const char* kSetColours[] = {"#9400d3", "#009e73", "#56b4e9"};
 
 // Sections become shaded rectangles spanning the plot's height (graph coordinates), so the trace's
-// scale does not matter; three empty plots give the legend its colours.
-void write_script(const fs::path& script, const fs::path& base, const std::string& title, const MaterialSplit& s,
-                  std::int64_t samples, std::size_t sections) {
-  std::ofstream out(script);
-  const std::string b = base.string();
-  out << "set terminal pngcairo size 1400,520 font ',10'\n"
-      << "set output '" << b << ".png'\n"
+// scale does not matter; three empty plots give the legend its colours. gnuplot runs in the plot
+// folder, so the script names its files by the material id alone.
+std::string script_text(const std::string& id, const std::string& title, const std::string& terminal,
+                        const MaterialSplit& s, std::int64_t samples, std::size_t sections) {
+  std::ostringstream out;
+  out << "set terminal " << terminal << " noenhanced size 1400,520" << (terminal == "pngcairo" ? " font ',10'" : "") << "\n"
+      << "set output " << gnuplot::file(id + ".png") << "\n"
       << "set datafile separator ','\n"
-      << "set multiplot layout 1,2 title '" << title << "'\n"
+      << "set multiplot layout 1,2 title " << gnuplot::text(title) << "\n"
       << "set key outside top center horizontal\n"
       << "set xlabel 'speed (mm/s)'; set ylabel 'normal force (N)'\n"
-      << "plot for [i=1:3] '< grep ^'.word('train val test', i).', " << b
-      << "_points.csv' using 2:3 with points pt 7 ps 0.3 lc rgb word('" << kSetColours[0] << " " << kSetColours[1] << " "
-      << kSetColours[2] << "', i) title word('train val test', i)\n";
+      << "plot for [i=1:3] " << gnuplot::file(id + "_points.csv") << " every ::1 using 2:(strcol(1) eq word('train val test', i) ? $3 : NaN)"
+      << " with points pt 7 ps 0.3 lc rgb word('" << kSetColours[0] << " " << kSetColours[1] << " " << kSetColours[2]
+      << "', i) title word('train val test', i)\n";
   for (std::size_t k = 0; k < sections; ++k) {
     const int set = set_of_section(s.sections, int(k));
     out << "set object " << k + 1 << " rect from " << double(section_begin(k, samples, sections)) / 10000.0
@@ -69,10 +68,11 @@ void write_script(const fs::path& script, const fs::path& base, const std::strin
         << kSetColours[set] << "' fs transparent solid 0.25 noborder behind\n";
   }
   out << "set xlabel 'time (s)'; set ylabel 'acceleration (m/s^2)'\n"
-      << "plot '" << b << "_trace.csv' every ::1 using 1:2 with lines lc rgb 'black' lw 0.5 notitle";
+      << "plot " << gnuplot::file(id + "_trace.csv") << " every ::1 using 1:2 with lines lc rgb 'black' lw 0.5 notitle";
   for (int set = 0; set < 3; ++set)
     out << ", NaN with boxes fs solid 0.25 lc rgb '" << kSetColours[set] << "' title '" << kSetNames[set] << "'";
   out << "\nunset multiplot\n";
+  return out.str();
 }
 
 }  // namespace
@@ -83,7 +83,7 @@ PlotResult write_split_plots(const std::string& dataset_path, const std::vector<
   fs::create_directories(directory, ec);
   if (ec) throw input_error(directory, "", "cannot create the plot folder (" + ec.message() + ")", "Choose a writable place");
   const h5::Group materials = h5::File::open(dataset_path).root().open_group("materials");
-  const bool draw = gnuplot_available();
+  const std::string terminal = gnuplot::png_terminal();
   PlotResult result;
   for (std::size_t m = 0; m < windows.size(); ++m) {
     const fs::path base = fs::path(directory) / windows[m].id;
@@ -92,12 +92,13 @@ PlotResult write_split_plots(const std::string& dataset_path, const std::vector<
     write_points(base.string() + "_points.csv", windows[m], splits[m], sections);
     write_trace(base.string() + "_trace.csv", accel);
     write_sections(base.string() + "_sections.csv", splits[m], std::int64_t(accel.size()), sections);
-    write_script(base.string() + ".gnuplot", base, windows[m].name + ": train, validation and test (recording 0)",
-                 splits[m], std::int64_t(accel.size()), sections);
-    if (draw && std::system(("gnuplot '" + base.string() + ".gnuplot' > /dev/null 2>&1").c_str()) == 0)
-      result.images.push_back(base.string() + ".png");
+    const std::string& id = windows[m].id;
+    std::ofstream(base.string() + ".gnuplot")
+        << script_text(id, windows[m].name + ": train, validation and test (recording 0)",
+                           terminal.empty() ? "pngcairo" : terminal, splits[m], std::int64_t(accel.size()), sections);
+    if (!terminal.empty() && gnuplot::draw(directory, id + ".gnuplot", id + ".png")) result.images.push_back(base.string() + ".png");
   }
-  if (!draw) result.note = "gnuplot is not installed: wrote the CSV data and gnuplot scripts to " + directory + " only";
+  if (terminal.empty()) result.note = "gnuplot is not installed: wrote the CSV data and gnuplot scripts to " + directory + " only";
   else if (result.images.size() < windows.size()) result.note = "gnuplot failed on some plots; their CSV data and scripts are in " + directory;
   return result;
 }

@@ -47,8 +47,7 @@ class ExtractCli : public ::testing::Test {
     text = std::regex_replace(text, std::regex("\\| vlen \\|"), "| object |");
     std::ofstream(dir_.file("layout.md")) << text;
     const std::string script = std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/check_layout.py";
-    return run_shell("/usr/bin/python3 " + shell_quote(script) + " " + shell_quote(dir_.file("layout.md")) + " " +
-                     shell_quote(file) + " " + shell_quote(section));
+    return run_python({script, dir_.file("layout.md"), file, section});
   }
   TempDir dir_;
 };
@@ -78,7 +77,7 @@ TEST_F(ExtractCli, JsonListsEveryPress) {
 }
 
 TEST_F(ExtractCli, H5pyReadsTheDocumentedLayout) {
-  if (run_shell("/usr/bin/python3 -c 'import h5py'").exit_code != 0)
+  if (!python_has("h5py"))
     GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
   ASSERT_EQ(run_haptex({"capture", "extract", dir_.file("gelsight"), "-o", out()}).exit_code, 0);
   const CommandResult gelsight = check_layout(out(), "GelSight file", 120, 160);
@@ -94,8 +93,8 @@ TEST_F(ExtractCli, H5pyReadsTheDocumentedLayout) {
   EXPECT_EQ(press.exit_code, 0) << press.out << press.err;
   // The checker must catch a file that breaks the layout.
   fs::copy_file(out(), dir_.file("broken.h5"));
-  ASSERT_EQ(run_shell("/usr/bin/python3 -c \"import h5py; f = h5py.File('" + dir_.file("broken.h5") +
-                      "', 'a'); del f['materials/cork/presses/1/peak_index']\"")
+  ASSERT_EQ(run_python({"-c", "import h5py, sys; f = h5py.File(sys.argv[1], 'a'); del f['materials/cork/presses/1/peak_index']",
+                        dir_.file("broken.h5")})
                 .exit_code,
             0);
   const CommandResult broken = check_layout(dir_.file("broken.h5"), "GelSight file", 120, 160);

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/json/schema.hpp"
+#include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
 
@@ -15,23 +16,11 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Models {
-  TempDir dir;
-  std::string unified = dir.file("unified.h5"), per_material = dir.file("per_material.h5");
+  std::string unified = quick_model(false), per_material = quick_model(true);
 };
 
 const Models& models() {
-  static Models m;
-  static const bool trained = [](const Models& out) {
-    const SmallPipeline& p = small_pipeline();
-    for (const auto& [path, extra] : {std::pair{out.unified, std::string()}, std::pair{out.per_material, std::string("--per-material")}}) {
-      std::vector<std::string> args = {"train", p.dataset, "--split", p.split, "-o", path, "--epochs", "4", "--latent", "8", "--hidden", "16"};
-      if (!extra.empty()) args.push_back(extra);
-      const CommandResult r = run_haptex(args);
-      if (r.exit_code != 0) throw std::runtime_error("haptex train failed: " + r.err);
-    }
-    return true;
-  }(m);
-  (void)trained;
+  static const Models m;
   return m;
 }
 

@@ -70,22 +70,22 @@ TEST_F(ConvertedFile, InfoRefusesFilesHaptexDidNotWrite) {
 }
 
 TEST_F(ConvertedFile, H5pyReadsTheDocumentedLayout) {
-  if (run_shell("/usr/bin/python3 -c 'import h5py'").exit_code != 0)
+  if (!python_has("h5py"))
     GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
   const std::string script = std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/check_layout.py";
   const std::string layout = std::string(HAPTEX_SCHEMA_DIR) + "/hdf5-layout.md";
-  const CommandResult ok = run_shell("/usr/bin/python3 " + shell_quote(script) + " " + shell_quote(layout) + " " +
-                                     shell_quote(file_) + " Recordings");
+  const CommandResult ok = run_python({script, layout, file_, "Recordings"});
   EXPECT_EQ(ok.exit_code, 0) << ok.out << ok.err;
   EXPECT_NE(ok.out.find("layout ok"), std::string::npos) << ok.out << ok.err;
 
   // The checker itself must catch a file that breaks the layout.
-  const CommandResult broken = run_shell(
-      "/usr/bin/python3 -c \"import h5py; f = h5py.File('" + file_ +
-      "', 'r+'); del f['/materials/cork/recordings/0/speed_lp']; f['/materials/cork/recordings/0/accel'].attrs['units'] = 'g'\"");
+  const CommandResult broken = run_python(
+      {"-c",
+       "import h5py, sys; f = h5py.File(sys.argv[1], 'r+'); del f['/materials/cork/recordings/0/speed_lp']; "
+       "f['/materials/cork/recordings/0/accel'].attrs['units'] = 'g'",
+       file_});
   ASSERT_EQ(broken.exit_code, 0) << broken.err;
-  const CommandResult bad = run_shell("/usr/bin/python3 " + shell_quote(script) + " " + shell_quote(layout) + " " +
-                                      shell_quote(file_) + " Recordings");
+  const CommandResult bad = run_python({script, layout, file_, "Recordings"});
   EXPECT_EQ(bad.exit_code, 1) << bad.out;
   EXPECT_NE(bad.out.find("missing: /materials/cork/recordings/0/speed_lp"), std::string::npos) << bad.out;
   EXPECT_NE(bad.out.find("units 'g'"), std::string::npos) << bad.out;

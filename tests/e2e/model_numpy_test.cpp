@@ -21,7 +21,7 @@ namespace {
 
 const std::string kScript = std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/model_forward.py";
 
-bool have_numpy() { return run_shell("/usr/bin/python3 -c 'import h5py, numpy'").exit_code == 0; }
+bool have_numpy() { return python_has("h5py, numpy"); }
 
 // A dataset image (H x W x 3 uint8, RGB) as a PNG a user would pass to haptex predict.
 void write_press_png(const std::string& dataset, const std::string& object, const std::string& png) {
@@ -37,7 +37,7 @@ void write_press_png(const std::string& dataset, const std::string& object, cons
 }
 
 CommandResult check(const std::string& model, const std::string& json_file) {
-  return run_shell("/usr/bin/python3 " + shell_quote(kScript) + " " + shell_quote(model) + " " + shell_quote(json_file));
+  return run_python({kScript, model, json_file});
 }
 
 std::string write_json(const TempDir& dir, const std::string& name, const nlohmann::json& doc) {

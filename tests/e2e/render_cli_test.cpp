@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "core/json/schema.hpp"
+#include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
 #include "tests/support/wav_file.hpp"
@@ -21,22 +22,7 @@ namespace haptex::test {
 namespace {
 namespace fs = std::filesystem;
 
-// Models trained once per program (small sizes, as tests/e2e/train_predict_cli_test.cpp).
-std::string trained(bool per_material) {
-  static const TempDir dir;
-  auto train = [](const std::string& path, bool per) {
-    std::vector<std::string> args = {"train", small_pipeline().dataset, "--split", small_pipeline().split, "-o", path,
-                                     "--epochs", "4", "--latent", "8", "--hidden", "16"};
-    if (per) args.push_back("--per-material");
-    const CommandResult r = run_haptex(args);
-    if (r.exit_code != 0) throw std::runtime_error("haptex train failed: " + r.err);
-    return path;
-  };
-  static const std::string unified = train(dir.file("unified.h5"), false);
-  if (!per_material) return unified;
-  static const std::string per = train(dir.file("per_material.h5"), true);
-  return per;
-}
+std::string trained(bool per_material) { return quick_model(per_material); }
 
 std::string material() { return json::read_file(small_pipeline().split)["materials"][0]["id"]; }
 
@@ -112,12 +98,12 @@ TEST(RenderCli, WritesATenKilohertzWavWhoseGainMatchesTheCsv) {
   EXPECT_GT(peak, 0.99 * gain);
 
   // Python's readers agree on rate, length and the 24-bit peak.
-  if (run_shell("/usr/bin/python3 -c 'import wave'").exit_code != 0) GTEST_SKIP() << "no python3: Python read-back skipped";
+  if (!python_has("wave")) GTEST_SKIP() << "no python3: Python read-back skipped";
   const std::string py_wave =
       "import wave, sys; w = wave.open(sys.argv[1]); d = w.readframes(w.getnframes()); "
       "s = [int.from_bytes(d[i:i + 3], 'little', signed=True) for i in range(0, len(d), 3)]; "
       "print(w.getframerate(), w.getnframes(), w.getnchannels(), w.getsampwidth(), max(abs(x) for x in s) / 2**23)";
-  const CommandResult py = run_shell("/usr/bin/python3 -c " + shell_quote(py_wave) + " " + shell_quote(dir.file("out.wav")));
+  const CommandResult py = run_python({"-c", py_wave, dir.file("out.wav")});
   ASSERT_EQ(py.exit_code, 0) << py.err;
   std::istringstream fields(py.out);
   int rate = 0, frames = 0, channels = 0, width = 0;
@@ -128,10 +114,9 @@ TEST(RenderCli, WritesATenKilohertzWavWhoseGainMatchesTheCsv) {
   EXPECT_EQ(channels, 1);
   EXPECT_EQ(width, 3);
   EXPECT_NEAR(py_peak * gain, peak, gain * 0x1p-22);
-  if (run_shell("/usr/bin/python3 -c 'import scipy.io.wavfile'").exit_code == 0) {
-    const CommandResult sp = run_shell("/usr/bin/python3 -c " +
-                                       shell_quote("import sys, scipy.io.wavfile as w; r, x = w.read(sys.argv[1]); print(r, len(x), x.ndim)") +
-                                       " " + shell_quote(dir.file("out.wav")));
+  if (python_has("scipy.io.wavfile")) {
+    const CommandResult sp =
+        run_python({"-c", "import sys, scipy.io.wavfile as w; r, x = w.read(sys.argv[1]); print(r, len(x), x.ndim)", dir.file("out.wav")});
     ASSERT_EQ(sp.exit_code, 0) << sp.err;
     EXPECT_EQ(sp.out, "10000 12345 1\n");
   }

@@ -74,10 +74,9 @@ TEST(SynthCli, MaterialsReadBackThroughConvertOpenCvAndH5py) {
     }
 
   EXPECT_NO_THROW(json::validate(json::read_file(out + "/materials.json"), "synth-materials.schema.json", "materials.json"));
-  if (run_shell("/usr/bin/python3 -c 'import h5py'").exit_code != 0) GTEST_SKIP() << "python3-h5py is not installed";
-  const CommandResult layout = run_shell("/usr/bin/python3 " + shell_quote(std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/check_layout.py") +
-                                         " " + shell_quote(std::string(HAPTEX_SCHEMA_DIR) + "/hdf5-layout.md") + " " +
-                                         shell_quote(out + "/truth.h5") + " Truth");
+  if (!python_has("h5py")) GTEST_SKIP() << "python3-h5py is not installed";
+  const CommandResult layout = run_python({std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/check_layout.py",
+                                           std::string(HAPTEX_SCHEMA_DIR) + "/hdf5-layout.md", out + "/truth.h5", "Truth"});
   EXPECT_EQ(layout.exit_code, 0) << layout.out << layout.err;
 }
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/json/schema.hpp"
+#include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
 
@@ -13,25 +14,11 @@ namespace haptex::test {
 namespace {
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kQuick = {"--epochs", "4", "--latent", "8", "--hidden", "16"};
-
 std::vector<std::string> train_args(const std::string& split, const std::string& model) {
-  std::vector<std::string> args = {"train", small_pipeline().dataset, "--split", split, "-o", model};
-  args.insert(args.end(), kQuick.begin(), kQuick.end());
-  return args;
+  return quick_train_args(small_pipeline().dataset, split, model);
 }
 
-// One trained model for the predict tests, made on first use.
-const std::string& trained_model() {
-  static const TempDir dir;
-  static const std::string model = [] {
-    const std::string path = dir.file("model.h5");
-    const CommandResult r = run_haptex(train_args(small_pipeline().split, path));
-    if (r.exit_code != 0) throw std::runtime_error("haptex train failed: " + r.err);
-    return path;
-  }();
-  return model;
-}
+const std::string& trained_model() { return quick_model(); }
 
 nlohmann::json edited_split(const std::function<void(nlohmann::json&)>& edit) {
   nlohmann::json doc = json::read_file(small_pipeline().split);

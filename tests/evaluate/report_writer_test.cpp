@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/process/run_program.hpp"
 #include "core/error.hpp"
 #include "core/json/schema.hpp"
 #include "evaluate/report_csv.hpp"
@@ -169,7 +170,7 @@ void make_folder_with(const std::string& dir, const std::string& file, const std
   std::ofstream(dir + "/" + file) << text;
 }
 
-bool gnuplot_installed() { return std::system("command -v gnuplot > /dev/null 2>&1") == 0; }
+bool gnuplot_installed() { return process::program_on_path("gnuplot"); }
 
 bool is_png(const fs::path& path) { return read_text(path).starts_with(std::string("\x89PNG\r\n\x1a\n", 8)); }
 

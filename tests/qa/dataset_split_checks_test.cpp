@@ -11,7 +11,7 @@
 #include "split/dataset_view.hpp"
 #include "split/sections.hpp"
 #include "split/split_search.hpp"
-#include "tests/qa/mutations.hpp"
+#include "tests/support/mutations.hpp"
 #include "tests/qa/qa_fixture.hpp"
 
 namespace haptex::test {

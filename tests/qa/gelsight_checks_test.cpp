@@ -5,7 +5,7 @@
 
 #include "capture/image_datasets.hpp"
 #include "qa/run_qa.hpp"
-#include "tests/qa/mutations.hpp"
+#include "tests/support/mutations.hpp"
 #include "tests/qa/qa_fixture.hpp"
 
 namespace haptex::test {

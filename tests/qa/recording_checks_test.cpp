@@ -6,7 +6,7 @@
 #include "core/signal/butterworth.hpp"
 #include "core/signal/sosfilt.hpp"
 #include "qa/run_qa.hpp"
-#include "tests/qa/mutations.hpp"
+#include "tests/support/mutations.hpp"
 #include "tests/qa/qa_fixture.hpp"
 
 namespace haptex::test {

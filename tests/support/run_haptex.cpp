@@ -1,41 +1,42 @@
 #include "tests/support/run_haptex.hpp"
 
-#include <sys/wait.h>
-
-#include <cstdlib>
 #include <fstream>
 #include <iterator>
 
+#include "core/process/run_program.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::test {
-
-std::string shell_quote(const std::string& word) {
-  std::string quoted = "'";
-  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
 
 static std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-CommandResult run_shell(const std::string& command_line) {
+CommandResult run_program(const std::vector<std::string>& argv, const std::string& directory) {
   TempDir dir;
   const std::string out = dir.file("out"), err = dir.file("err");
-  const int status = std::system((command_line + " > " + shell_quote(out) + " 2> " + shell_quote(err) + " < /dev/null").c_str());
   CommandResult result;
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.exit_code = process::run_program({argv, directory, out, err});
   result.out = slurp(out);
   result.err = slurp(err);
   return result;
 }
 
-CommandResult run_haptex(const std::vector<std::string>& args) {
-  std::string command = shell_quote(HAPTEX_BINARY);
-  for (const auto& arg : args) command += " " + shell_quote(arg);
-  return run_shell(command);
+CommandResult run_haptex_in(const std::string& directory, const std::vector<std::string>& args) {
+  std::vector<std::string> argv{HAPTEX_BINARY};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return run_program(argv, directory);
 }
+
+CommandResult run_haptex(const std::vector<std::string>& args) { return run_haptex_in("", args); }
+
+CommandResult run_python(const std::vector<std::string>& args) {
+  std::vector<std::string> argv{"/usr/bin/python3"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return run_program(argv);
+}
+
+bool python_has(const std::string& modules) { return run_python({"-c", "import " + modules}).exit_code == 0; }
 
 }  // namespace haptex::test

@@ -1,5 +1,6 @@
 #pragma once
-// Runs the built haptex binary as a user would, capturing exit code, stdout and stderr.
+// Runs the built haptex binary (or python3 for the numpy and h5py checks) as a user would, from an
+// argv and never through a shell, capturing exit code, stdout and stderr.
 #include <string>
 #include <vector>
 
@@ -11,8 +12,13 @@ struct CommandResult {
 };
 
 CommandResult run_haptex(const std::vector<std::string>& args);
-// Runs any shell command line (used for python3 checks); exit code 127 when the program is missing.
-CommandResult run_shell(const std::string& command_line);
-std::string shell_quote(const std::string& word);
+// The same with `directory` as the working directory (relative paths in args are relative to it).
+CommandResult run_haptex_in(const std::string& directory, const std::vector<std::string>& args);
+// Runs any program with its arguments (in `directory` when given); exit code 127 when it is missing.
+CommandResult run_program(const std::vector<std::string>& argv, const std::string& directory = "");
+// /usr/bin/python3 with these arguments (a script and its arguments, or -c CODE and its arguments).
+CommandResult run_python(const std::vector<std::string>& args);
+// Whether /usr/bin/python3 can import these modules ("h5py, numpy").
+bool python_has(const std::string& modules);
 
 }  // namespace haptex::test

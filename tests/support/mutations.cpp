@@ -1,4 +1,4 @@
-#include "tests/qa/mutations.hpp"
+#include "tests/support/mutations.hpp"
 
 #include <fstream>
 #include <stdexcept>

@@ -1,0 +1,23 @@
+#pragma once
+// Starting another program (gnuplot, python3 in the tests) the one safe way: an argv handed to
+// posix_spawnp, never a command line for a shell, so no file name or label can become a command.
+#include <string>
+#include <vector>
+
+namespace haptex::process {
+
+struct ProgramRun {
+  std::vector<std::string> argv;  // argv[0] is looked up on PATH when it has no '/'
+  std::string directory;          // working directory of the child; empty: this process's
+  std::string stdout_path;        // where its standard output goes; empty: /dev/null
+  std::string stderr_path;        // where its standard error goes; empty: /dev/null
+};
+
+// Runs the program to its end with standard input from /dev/null and returns its exit code:
+// 127 when it could not be started (not installed, not executable), 128 + N when signal N ended it.
+int run_program(const ProgramRun& run);
+
+// Whether name is an executable file in one of PATH's folders (or, with a '/', at that path).
+bool program_on_path(const std::string& name);
+
+}  // namespace haptex::process

@@ -1,0 +1,69 @@
+#include "core/text/utf8.hpp"
+
+#include "core/error.hpp"
+
+namespace haptex::text {
+
+namespace {
+
+// Decodes the character at text[i]; length 0 when no valid character starts there.
+Utf8Character decode(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(i);
+  Utf8Character c{0xFFFD, text.substr(i, 1), false};
+  if (lead < 0x80) return {lead, text.substr(i, 1), true};
+  const int length = lead >= 0xC2 && lead <= 0xDF ? 2 : lead >= 0xE0 && lead <= 0xEF ? 3 : lead >= 0xF0 && lead <= 0xF4 ? 4 : 0;
+  if (length == 0 || i + std::size_t(length) > text.size()) return c;
+  char32_t code = lead & (0x7F >> length);
+  for (int k = 1; k < length; ++k) {
+    if ((byte(i + k) & 0xC0) != 0x80) return c;
+    code = (code << 6) | (byte(i + k) & 0x3F);
+  }
+  const char32_t smallest[] = {0, 0, 0x80, 0x800, 0x10000};
+  if (code < smallest[length] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return c;
+  return {code, text.substr(i, std::size_t(length)), true};
+}
+
+// text with each byte that is not UTF-8 shown as \xHH, so the message itself is UTF-8.
+std::string printable(std::string_view text) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (const Utf8Character& c : utf8_characters(text)) {
+    if (c.valid) {
+      out += c.bytes;
+    } else {
+      const auto b = static_cast<unsigned char>(c.bytes[0]);
+      out += {'\\', 'x', kHex[b >> 4], kHex[b & 15]};
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Utf8Character> utf8_characters(std::string_view text) {
+  std::vector<Utf8Character> characters;
+  for (std::size_t i = 0; i < text.size();) {
+    characters.push_back(decode(text, i));
+    i += characters.back().bytes.size();
+  }
+  return characters;
+}
+
+std::size_t invalid_utf8_offset(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const Utf8Character c = decode(text, i);
+    if (!c.valid) return i;
+    i += c.bytes.size();
+  }
+  return std::string_view::npos;
+}
+
+void require_utf8(std::string_view text, const std::string& file, const std::string& what) {
+  const std::size_t offset = invalid_utf8_offset(text);
+  if (offset == std::string_view::npos) return;
+  throw input_error(file, what, "is not valid UTF-8 (byte " + std::to_string(offset) + " of \"" + printable(text) + "\")",
+                    "Write it in UTF-8 (iconv -f latin1 -t utf-8 converts a file, convmv a folder name)");
+}
+
+}  // namespace haptex::text

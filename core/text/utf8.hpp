@@ -1,0 +1,26 @@
+#pragma once
+// UTF-8, strictly (RFC 3629): no overlong forms, no surrogates, nothing past U+10FFFF. Names enter
+// haptex from files, folders and the command line; they must be UTF-8 before anything stores them
+// (JSON and HDF5 strings are UTF-8), so readers refuse the rest at the door with require_utf8().
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace haptex::text {
+
+struct Utf8Character {
+  char32_t code_point = 0;  // U+FFFD when not valid
+  std::string_view bytes;   // the encoded character, or the one byte that starts no valid character
+  bool valid = true;
+};
+
+std::vector<Utf8Character> utf8_characters(std::string_view text);
+
+// Byte offset of the first byte that starts no valid UTF-8 character; npos when text is all UTF-8.
+std::size_t invalid_utf8_offset(std::string_view text);
+
+// Throws haptex::Error (bad input) naming file, what (e.g. "the material name") and the byte
+// offset when text is not UTF-8.
+void require_utf8(std::string_view text, const std::string& file, const std::string& what);
+
+}  // namespace haptex::text
