@@ -5,6 +5,7 @@
 
 #include "align/align_dataset.hpp"
 #include "apps/command.hpp"
+#include "core/output_is_input.hpp"
 #include "apps/terminal_progress.hpp"
 
 namespace haptex::apps {
@@ -31,6 +32,7 @@ class AlignCommand : public Command {
   }
 
   int run(const GlobalOptions& global) override {
+    refuse_output_among_inputs(options_.output, {options_.recordings, options_.gelsight});
     options_.provenance = "haptex align --recordings " + options_.recordings + " --gelsight " + options_.gelsight +
                           " -o " + options_.output + " --stride " + std::to_string(options_.stride);
     const auto start = std::chrono::steady_clock::now();

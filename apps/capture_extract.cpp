@@ -5,6 +5,7 @@
 #include <set>
 
 #include "apps/capture_subcommands.hpp"
+#include "core/output_is_input.hpp"
 #include "apps/terminal_progress.hpp"
 #include "capture/extract_presses.hpp"
 
@@ -32,12 +33,16 @@ class CaptureExtract : public CaptureSubcommand {
         ->check(CLI::PositiveNumber);
     app->add_option("--sheets", options_.sheets_dir, "Folder for the contact sheets (default: <output>_sheets)");
     app->add_flag("--no-sheets", no_sheets_, "Write no contact sheets");
-    app->add_flag("--force", options_.overwrite, "Replace the output file and sheets folder if they exist");
+    app->add_flag("--force", options_.overwrite, "Replace the output file, and the sheets folder while it holds only the sheets its haptex-files.json lists");
     return app;
   }
 
   int run(const GlobalOptions& global) override {
     if (!reference_.empty()) options_.reference_path = reference_;
+    std::vector<std::string> inputs = inputs_;
+    inputs.push_back(reference_);
+    refuse_output_among_inputs(output_, inputs);
+    refuse_output_among_inputs(options_.sheets_dir.empty() ? capture::default_sheets_dir(output_) : options_.sheets_dir, inputs);
     if (!material_.empty()) options_.material = material_;
     if (pixel_floor_ > 0) options_.settings.pixel_floor = pixel_floor_;
     if (trigger_floor_ > 0) options_.settings.trigger_floor = trigger_floor_;

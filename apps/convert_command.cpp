@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.hpp"
+#include "core/output_is_input.hpp"
 #include "apps/terminal_progress.hpp"
 #include "convert/convert_recordings.hpp"
 
@@ -29,6 +30,9 @@ class ConvertCommand : public Command {
 
   int run(const GlobalOptions& global) override {
     if (!map_.empty()) options_.map_path = map_;
+    std::vector<std::string> inputs = inputs_;
+    inputs.push_back(map_);
+    refuse_output_among_inputs(output_, inputs);
     options_.provenance = "haptex convert hatt -o " + output_;
     for (const auto& input : inputs_) options_.provenance += " " + input;
     const auto start = std::chrono::steady_clock::now();

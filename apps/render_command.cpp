@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "apps/command.hpp"
+#include "core/output_is_input.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "evaluate/vibration_render.hpp"
@@ -49,6 +50,9 @@ class RenderCommand : public Command {
     const evaluate::RenderOptions options = render_options();
     if (texture_.image.empty() && texture_.material.empty())
       throw Error(Error::Kind::bad_input, "render: give --image (and --reference) or --material");
+    const std::vector<std::string> inputs{model_path_, trajectory_path_, texture_.image, texture_.reference};
+    refuse_output_among_inputs(output_, inputs);
+    refuse_output_among_inputs(csv_, inputs);
     check_output_path(output_, force_);
     if (!csv_.empty()) {
       if (csv_ == output_) throw Error(Error::Kind::bad_input, "render: --csv and -o name the same file " + csv_);

@@ -11,6 +11,11 @@
 namespace haptex::apps {
 namespace {
 
+// What --force may replace (core/owned_folder.hpp).
+constexpr const char* kForceHelp =
+    "Replace an earlier synth output folder: only while it holds nothing but the files its haptex-files.json lists "
+    "(a folder with a file of yours is refused, never emptied)";
+
 std::pair<int, int> parse_size(const std::string& text) {
   int width = 0, height = 0, used = 0;
   char x = 0;
@@ -47,7 +52,7 @@ class SynthCommand : public Command {
     hatt_->add_option("--recordings", hatt_options_.recordings, "Recordings per material")->capture_default_str()->check(CLI::Range(1, 100));
     hatt_->add_option("--seconds", hatt_options_.seconds, "Seconds per recording")->capture_default_str()->check(CLI::Range(0.2, 600.0));
     hatt_->add_option("--seed", hatt_options_.seed, "Random seed")->capture_default_str();
-    hatt_->add_flag("--force", hatt_options_.overwrite, "Write into a non-empty output folder");
+    hatt_->add_flag("--force", hatt_options_.overwrite, kForceHelp);
 
     materials_ = app.add_subcommand("materials", "Procedural materials: height fields -> presses, recordings, truth spectra");
     materials_->add_option("-n", materials_options_.count, "Number of materials (default: the 8-material demo set)")
@@ -58,7 +63,7 @@ class SynthCommand : public Command {
     materials_->add_option("--seconds", materials_options_.seconds, "Seconds per recording")->capture_default_str()->check(CLI::Range(0.2, 600.0));
     materials_->add_option("--size", size_, "GelSight frame size WIDTHxHEIGHT")->capture_default_str();
     materials_->add_option("--seed", materials_options_.seed, "Random seed")->capture_default_str();
-    materials_->add_flag("--force", materials_options_.overwrite, "Write into a non-empty output folder");
+    materials_->add_flag("--force", materials_options_.overwrite, kForceHelp);
   }
 
   int run(const GlobalOptions& global) override {

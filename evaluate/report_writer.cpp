@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
+#include "core/owned_folder.hpp"
 #include "evaluate/report_charts.hpp"
 #include "evaluate/report_csv.hpp"
 #include "evaluate/report_markdown.hpp"
@@ -47,6 +48,7 @@ void check_destination(const std::string& dir, bool overwrite) {
   if (!overwrite)
     throw input_error(dir, "", "the report folder already exists",
                       "Remove it, choose another -o, or pass --force to replace it");
+  check_only_haptex_files(dir);
 }
 
 // DIR.partial: created (or, left by a killed run, emptied), locked while this object lives, removed
@@ -82,6 +84,7 @@ class PartialDirectory {
   // Syncs every file and the folder, then renames it to the final name; an existing report folder
   // (overwrite) is swapped out in one step and then removed.
   void commit(bool overwrite) {
+    write_file_list(path_, "haptex evaluate");
     for (const fs::directory_entry& entry : fs::directory_iterator(path_)) fsync_path(entry.path().string(), O_RDONLY);
     fsync_path(path_, O_RDONLY | O_DIRECTORY);
     std::error_code ec;

@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/naming.hpp"
+#include "core/owned_folder.hpp"
 
 namespace haptex::synth {
 namespace fs = std::filesystem;
@@ -14,6 +15,7 @@ OutputFolder::OutputFolder(std::string out, bool overwrite) : out_(std::move(out
     throw input_error(out_, "", "exists and is not a directory", "Choose a folder with -o");
   if (fs::is_directory(out_, ec) && !fs::is_empty(out_, ec) && !overwrite)
     throw input_error(out_, "", "the output folder is not empty", "Choose a new folder with -o, or pass --force to replace it");
+  if (overwrite) check_only_haptex_files(out_);
   fs::remove_all(staging_, ec);  // the leftovers of a killed run
   for (const char* sub : {"recordings", "gelsight"}) {
     fs::create_directories(fs::path(staging_) / sub, ec);
@@ -27,6 +29,8 @@ OutputFolder::~OutputFolder() {
 }
 
 void OutputFolder::commit() {
+  write_file_list(staging_, "haptex synth");
+  check_only_haptex_files(out_);  // a file of the user's may have appeared while we wrote
   std::error_code ec;
   fs::remove_all(out_, ec);
   fs::rename(staging_, out_, ec);

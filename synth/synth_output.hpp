@@ -10,7 +10,8 @@ namespace haptex::synth {
 
 // Everything is written into OUT.partial/ and renamed to OUT by commit(), so a failure half way
 // leaves no OUT (and removes OUT.partial). A non-empty OUT is refused (bad input) unless overwrite,
-// which replaces it whole on commit: nothing of an earlier run survives next to the new one.
+// which replaces it whole on commit (nothing of an earlier run survives next to the new one), and
+// only while it holds nothing but what haptex wrote (core/owned_folder.hpp): a foreign file is refused.
 class OutputFolder {
  public:
   OutputFolder(std::string out, bool overwrite);

@@ -1,0 +1,14 @@
+#pragma once
+// No command may write over what it reads: an output that is one of the inputs (the same file by
+// device and inode, so another spelling, a symbolic or a hard link counts too) is refused with or
+// without --force, and so is an output folder that would be replaced while it holds an input.
+#include <string>
+#include <vector>
+
+namespace haptex {
+
+// Throws haptex::Error (bad input) naming output and the input it is, or holds. Inputs and outputs
+// that do not exist yet are skipped; empty strings (options not given) are ignored.
+void refuse_output_among_inputs(const std::string& output, const std::vector<std::string>& inputs);
+
+}  // namespace haptex

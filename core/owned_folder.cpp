@@ -1,0 +1,58 @@
+#include "core/owned_folder.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "core/durable_file.hpp"
+#include "core/error.hpp"
+
+namespace haptex {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::set<std::string> listed_files(const fs::path& list_path) {
+  std::ifstream in(list_path, std::ios::binary);
+  const nlohmann::json list = nlohmann::json::parse(in, nullptr, false);
+  std::set<std::string> files;
+  if (!list.is_object() || !list.contains("files") || !list["files"].is_array()) return files;
+  for (const nlohmann::json& f : list["files"])
+    if (f.is_string()) files.insert(f.get<std::string>());
+  return files;
+}
+
+}  // namespace
+
+void write_file_list(const std::string& dir, std::string_view written_by) {
+  nlohmann::json files = nlohmann::json::array();
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(dir))
+    files.push_back(fs::relative(entry.path(), dir).generic_string());
+  const nlohmann::json list = {
+      {"about", "The files haptex wrote in this folder. haptex --force replaces the folder only while it holds "
+                "nothing else; add a file of your own and it refuses."},
+      {"written_by", written_by},
+      {"files", files}};
+  write_file_durably((fs::path(dir) / kFileListName).string(), list.dump(1) + "\n");
+}
+
+void check_only_haptex_files(const std::string& folder) {
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec) || fs::is_empty(folder, ec)) return;
+  const fs::path list_path = fs::path(folder) / kFileListName;
+  if (!fs::is_regular_file(list_path, ec))
+    throw input_error(folder, "", "--force would replace this folder, but it has no " + std::string(kFileListName) +
+                                      ", so haptex cannot tell its own files from yours",
+                      "Choose a new folder with -o, or empty this one yourself");
+  const std::set<std::string> listed = listed_files(list_path);
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(folder, ec)) {
+    const std::string name = fs::relative(entry.path(), folder).generic_string();
+    if (name != kFileListName && !listed.contains(name))
+      throw input_error(folder, name, "--force would replace this folder, but haptex did not write this file",
+                        "Move your files out of the folder, or choose a new folder with -o");
+  }
+  if (ec) throw input_error(folder, "", "cannot list the folder (" + ec.message() + ")", "Check its permissions");
+}
+
+}  // namespace haptex

@@ -1,0 +1,21 @@
+#pragma once
+// Folders haptex writes whole (synth's output, evaluate's report, extract's contact sheets) end with a
+// list of every file in them, so that --force replaces such a folder only while it holds nothing
+// but what haptex wrote there: a file of the user's in it is never deleted.
+#include <string>
+#include <string_view>
+
+namespace haptex {
+
+inline constexpr std::string_view kFileListName = "haptex-files.json";
+
+// Writes dir/haptex-files.json naming every file and folder now under dir (paths relative to it).
+// Call it last, just before the folder is synced and renamed into place.
+void write_file_list(const std::string& dir, std::string_view written_by);
+
+// For --force on a folder about to be replaced: throws haptex::Error (bad input) when folder holds
+// anything its haptex-files.json does not list (naming the first such file), or has no such list.
+// An empty or missing folder passes.
+void check_only_haptex_files(const std::string& folder);
+
+}  // namespace haptex
