@@ -36,6 +36,11 @@ void append(std::vector<T>& to, const std::vector<T>& from) {
 
 }  // namespace
 
+std::string window_place(std::size_t w, std::string_view material, std::int64_t recording, std::int64_t start) {
+  return "/windows[" + std::to_string(w) + "] (" + std::string(material) + ", recording " + std::to_string(recording) +
+         ", start " + std::to_string(start) + ")";
+}
+
 std::vector<std::int64_t> window_starts(std::size_t samples, std::size_t stride) {
   std::vector<std::int64_t> starts;
   for (std::size_t t = kActionSamples - 1; t + kWindowSamples <= samples; t += stride) starts.push_back(std::int64_t(t));

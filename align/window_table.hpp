@@ -3,6 +3,8 @@
 // and 10 low-passed speed samples ending at t, the target the amplitude spectrum (bins 1..100) of the
 // 1000 acceleration samples starting at t. A window uses samples [t - 9, t + 1000).
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace haptex::align {
@@ -31,6 +33,9 @@ std::vector<std::int64_t> window_starts(std::size_t samples, std::size_t stride)
 
 // Every recording's windows on all cores, in the order of `recordings` then start.
 WindowTable build_windows(const std::vector<RecordingSignals>& recordings, std::size_t stride);
+
+// "/windows[w] (material, recording r, start t)": how every message names a window (split, train, qa).
+std::string window_place(std::size_t w, std::string_view material, std::int64_t recording, std::int64_t start);
 
 // The first sample a window starting at t uses, and one past its last.
 inline std::int64_t window_first_sample(std::int64_t t) { return t - std::int64_t(kActionSamples) + 1; }

@@ -15,6 +15,7 @@
 #include "capture/sensor_discovery.hpp"
 #include "capture/system_kernel.hpp"
 #include "core/error.hpp"
+#include "core/text/utf8.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -75,6 +76,7 @@ class CaptureRecord : public CaptureSubcommand {
   int run(const GlobalOptions& global) override {
     if (device_.empty() && serial_.empty())
       throw input_error("capture record", "", "no sensor given", "Name it with --device /dev/videoN or --serial S");
+    text::require_utf8(options_.material, "--material", "the material name");
     build_request();
     StopOnSignal stop_on_signal;
     const capture::RecordingResult result = record(global);

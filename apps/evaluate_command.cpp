@@ -8,11 +8,13 @@
 
 #include "apps/command.hpp"
 #include "apps/terminal_progress.hpp"
+#include "core/output_is_input.hpp"
 #include "core/error.hpp"
 #include "evaluate/report_writer.hpp"
 #include "evaluate/run_evaluation.hpp"
 #include "evaluate/truth_comparison.hpp"
 #include "predict/model_file.hpp"
+#include "qa/sound_split.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -41,15 +43,20 @@ class EvaluateCommand : public Command {
     app.add_option("--truth", truth_, "truth.h5 of haptex synth materials: also compare with the noise-free spectra")
         ->check(CLI::ExistingFile);
     app.add_option("-o,--output", output_, "Report folder to write")->required();
-    app.add_flag("--force", force_, "Replace the report folder if it exists");
+    app.add_flag("--force", force_, "Replace an earlier report folder: only while it holds nothing but the files its haptex-files.json lists "
+                                "(a folder with a file of yours is refused, never emptied)");
   }
 
   int run(const GlobalOptions& global) override {
     if (options_.baseline == evaluate::Baseline::hatt_published && options_.hatt_models.empty())
       throw Error(Error::Kind::bad_input, "evaluate: --baseline hatt-published needs --hatt-models DIR (the toolkit's Models_*.xml)");
+    std::vector<std::string> inputs = models_;
+    inputs.insert(inputs.end(), {dataset_, split_, truth_, options_.hatt_models});
+    refuse_output_among_inputs(output_, inputs);
     if (std::filesystem::exists(output_) && !force_)
       throw input_error(output_, "", "the report folder exists", "Choose another -o or add --force");
     const split::DatasetSplit split = split::read_dataset_split(dataset_, split_);
+    qa::require_sound_split(split::read_split_manifest(split_), dataset_);
     std::vector<evaluate::ModelInput> models;
     for (const std::string& path : models_)
       models.push_back({path, std::filesystem::path(path).filename().string(), predict::read_model(path)});

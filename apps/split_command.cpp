@@ -5,10 +5,12 @@
 #include <iostream>
 
 #include "apps/command.hpp"
+#include "core/output_is_input.hpp"
 #include "core/durable_file.hpp"
 #include "core/json/schema.hpp"
 #include "split/split_manifest.hpp"
 #include "split/split_plots.hpp"
+#include "qa/sound_split.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -33,17 +35,20 @@ class SplitCommand : public Command {
   }
 
   int run(const GlobalOptions& global) override {
+    refuse_output_among_inputs(output_, {dataset_});
+    refuse_output_among_inputs(plots_folder(), {dataset_});
     check_output_path(output_, force_);
     const auto windows = split::read_dataset_windows(dataset_);
-    const auto splits = split::search_split(windows, options_);
+    const auto splits = split::search_split(windows, options_, dataset_);
     const std::string source = "haptex split " + dataset_ + " -o " + output_ + " --sections " + std::to_string(options_.sections) +
                                " --val " + std::to_string(options_.val) + " --test " + std::to_string(options_.test) +
                                " --seed " + std::to_string(options_.seed);
-    json::write_file(split::manifest_json(dataset_, options_, splits, source), "split.schema.json", output_);
+    const nlohmann::json manifest = split::manifest_json(dataset_, options_, splits, source);
+    qa::require_sound_split({output_, manifest}, dataset_);
+    json::write_file(manifest, "split.schema.json", output_);
     split::PlotResult plots;
     if (!no_plots_) {
-      const std::filesystem::path dir = std::filesystem::path(output_).replace_extension(".plots");
-      plots = split::write_split_plots(dataset_, windows, splits, options_.sections, dir.string());
+      plots = split::write_split_plots(dataset_, windows, splits, options_.sections, plots_folder());
     }
     if (global.json) {
       std::cout << json::read_file(output_).dump(2) << "\n";
@@ -54,6 +59,8 @@ class SplitCommand : public Command {
   }
 
  private:
+  std::string plots_folder() const { return std::filesystem::path(output_).replace_extension(".plots").string(); }
+
   void print(const std::vector<split::MaterialSplit>& splits, const split::PlotResult& plots) const {
     std::vector<double> worst;
     for (const auto& s : splits) worst.push_back(s.worst());

@@ -9,12 +9,14 @@
 
 #include "apps/command.hpp"
 #include "apps/terminal_progress.hpp"
+#include "core/output_is_input.hpp"
 #include "core/durable_file.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
 #include "core/version.hpp"
 #include "predict/model_file.hpp"
 #include "predict/train.hpp"
+#include "qa/sound_split.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -60,11 +62,14 @@ class TrainCommand : public Command {
 
   int run(const GlobalOptions& global) override {
     if (log_.empty()) log_ = std::filesystem::path(output_).replace_extension(".training.json").string();
+    refuse_output_among_inputs(output_, {dataset_, split_});
+    refuse_output_among_inputs(log_, {dataset_, split_});
     check_output_path(output_, force_);
     check_output_path(log_, force_);
     options_.variant = per_material_ ? predict::Variant::per_material : predict::Variant::unified;
     const auto start = std::chrono::steady_clock::now();
     const split::DatasetSplit split = split::read_dataset_split(dataset_, split_);
+    qa::require_sound_split(split::read_split_manifest(split_), dataset_);
     const Progress loading = terminal_progress(global, "texture descriptors");
     const predict::TrainingData data = predict::load_training_data(
         split, {}, [&](std::size_t done, std::size_t total) { if (loading) loading(done, total, "presses"); },

@@ -55,10 +55,11 @@ CaptureInput input_for(const std::string& path, const std::string& material_name
   return CaptureInput{path, material.value_or(press ? "" : material_name), kind};
 }
 
+// The folder's own name, also for "", ".", "./" and "dir/" (the current folder's name, "dir").
 std::string directory_name(const std::string& path) {
-  fs::path p = fs::path(path);
-  if (p.filename().empty()) p = p.parent_path();  // "dir/" names "dir"
-  return fs::absolute(p).lexically_normal().filename().string();
+  fs::path p = fs::absolute(path.empty() ? fs::path(".") : fs::path(path)).lexically_normal();
+  if (p.filename().empty()) p = p.parent_path();
+  return p.filename().string();
 }
 
 }  // namespace

@@ -10,7 +10,9 @@
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"
+#include "core/owned_folder.hpp"
 #include "core/sha256.hpp"
+#include "core/text/utf8.hpp"
 
 namespace haptex::capture {
 namespace fs = std::filesystem;
@@ -23,6 +25,7 @@ class SheetsFolder {
     std::error_code ec;
     if (fs::exists(final_, ec) && !overwrite)
       throw input_error(final_, "", "the contact sheet folder already exists", "Remove it, choose another --sheets, or pass --force");
+    check_only_haptex_files(final_);
     fs::remove_all(partial_, ec);  // left by a killed run
     fs::create_directories(partial_);
   }
@@ -36,6 +39,8 @@ class SheetsFolder {
     if (!out) throw failure(partial_ + "/" + name + ": cannot write the contact sheet");
   }
   void commit() {
+    write_file_list(partial_, "haptex capture extract");
+    check_only_haptex_files(final_);  // a file of the user's may have appeared while we wrote
     std::error_code ec;
     fs::remove_all(final_, ec);
     durable_rename(partial_, final_);
@@ -78,6 +83,7 @@ class Extraction {
                         : input.kind == CaptureInput::Kind::image_sequence ? open_image_sequence(input.path)
                                                                            : open_video(input.path);
     const std::string material = input.material.empty() ? source->material() : input.material;
+    text::require_utf8(material, input.path, "the material name (--material, the folder's name or the press file's)");
     const SourceScores scores = score_source(*source, settings_);
     result_.frames_scored += std::int64_t(scores.scores.size());
     SegmenterSettings segmenter = settings_.segmenter;

@@ -32,8 +32,11 @@ void apply(FakeDevice& fake, FakeMode& mode, bool& fps_given, const std::string&
   if (key == "size") {
     const auto x = value.find('x');
     if (x == std::string::npos) bad(device, key, "expected WIDTHxHEIGHT");
-    mode.width = std::uint32_t(number(device, key, value.substr(0, x)));
-    mode.height = std::uint32_t(number(device, key, value.substr(x + 1)));
+    const double width = number(device, key, value.substr(0, x)), height = number(device, key, value.substr(x + 1));
+    // 8192: above any tactile sensor's frame (a GelSight Mini's is 3280 x 2464), and a frame's bytes stay far from overflow.
+    if (width > 8192 || height > 8192) bad(device, key, "the fake camera makes frames of at most 8192x8192");
+    mode.width = std::uint32_t(width);
+    mode.height = std::uint32_t(height);
     if (mode.width < 16 || mode.height < 16 || mode.width % 2) bad(device, key, "expected an even width and a size of at least 16x16");
   } else if (key == "format") {
     mode.fourcc = fourcc_code(value, "--device " + device);

@@ -8,6 +8,7 @@
 #include "convert/recording_checks.hpp"
 #include "core/error.hpp"
 #include "core/sha256.hpp"
+#include "core/text/utf8.hpp"
 
 namespace haptex::convert {
 namespace {
@@ -80,6 +81,7 @@ Recording read_csv_recording(const std::string& path, const FieldMap& map, std::
   recording.source_path = path;
   recording.source_sha256 = sha256_hex(buffer);
   recording.material = material_from_file_stem(std::filesystem::path(path).stem().string());
+  text::require_utf8(recording.material, path, "the material name (the file's name)");
 
   Lines lines(buffer);
   std::string_view line;
@@ -124,7 +126,7 @@ Recording read_csv_recording(const std::string& path, const FieldMap& map, std::
       if (!is_time && channel == columns.end()) continue;
       std::optional<double> value = parse_number(fields[c]);
       if (!value || !std::isfinite(*value))
-        throw input_error(path, where + ", column '" + header[c] + "'", describe_bad_value(fields[c], value.has_value()),
+        throw input_error(path, where + ", column '" + header[c] + "'", describe_bad_number(fields[c], value.has_value()),
                           "Remove or interpolate bad samples in the source before converting");
       (is_time ? times : recording.channels[channel->second]).push_back(*value);
     }

@@ -3,6 +3,7 @@
 #include "convert/parse_number.hpp"
 #include "convert/recording_checks.hpp"
 #include "convert/xml_file.hpp"
+#include "core/text/utf8.hpp"
 
 namespace haptex::convert {
 namespace {
@@ -11,6 +12,7 @@ void read_identity(const XmlFile& xml, const pugi::xml_node& root, const FieldMa
   const pugi::xml_node material =
       xml.require(root, map.material, "Add <" + map.material + ">surface name</" + map.material + ">");
   recording.material = std::string(trim(material.child_value()));
+  text::require_utf8(recording.material, xml.source(), xml.where(material));
   if (recording.material.empty())
     throw xml.error(material, "the material name is empty",
                     "Name the surface, e.g. <" + map.material + ">Book</" + map.material + ">");

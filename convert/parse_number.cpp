@@ -21,4 +21,16 @@ std::optional<double> parse_number(std::string_view text) {
   return value;
 }
 
+std::string describe_bad_number(std::string_view text, bool parsed) {
+  const std::string quoted = "'" + std::string(text.substr(0, 40)) + (text.size() > 40 ? "...'" : "'");
+  if (parsed) return quoted + " is not a finite number (NaN or Inf)";
+  std::string_view t = trim(text);
+  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+  double ignored = 0;
+  const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), ignored);
+  if (error == std::errc::result_out_of_range && end == t.data() + t.size())
+    return quoted + " is out of range for a 64-bit float (magnitudes from about 2.2e-308 to 1.8e308, or 0)";
+  return quoted + " is not a number";
+}
+
 }  // namespace haptex::convert

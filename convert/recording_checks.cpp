@@ -57,9 +57,5 @@ void check_channels(const Recording& recording, const std::function<std::string(
                       "Give all three position channels or none");
 }
 
-std::string describe_bad_value(std::string_view text, bool parsed) {
-  if (!parsed) return "'" + std::string(text.substr(0, 40)) + "' is not a number";
-  return "'" + std::string(text.substr(0, 40)) + "' is not a finite number (NaN or Inf)";
-}
 
 }  // namespace haptex::convert

@@ -17,7 +17,5 @@ void apply_units(Recording& recording, const std::string& quantity, const std::s
 // Equal lengths, at least kMinimumSamples, position all-or-none. where(channel) names a channel's
 // place in the file for messages ("<accelY> at line 12", "column 'accelY'").
 void check_channels(const Recording& recording, const std::function<std::string(const std::string&)>& where);
-// "value 17 is NaN" / "value 17 is 'abc'" message parts, shared by both readers.
-std::string describe_bad_value(std::string_view text, bool parsed);
 
 }  // namespace haptex::convert

@@ -59,7 +59,7 @@ double XmlFile::number(const pugi::xml_node& node) const {
   const std::string_view text = trim(node.child_value());
   const std::optional<double> value = parse_number(text);
   if (!value || !std::isfinite(*value))
-    throw error(node, describe_bad_value(text, value.has_value()), "Write a finite decimal number");
+    throw error(node, describe_bad_number(text, value.has_value()), "Write a finite decimal number");
   return *value;
 }
 
@@ -95,7 +95,7 @@ std::vector<double> XmlFile::values(const pugi::xml_node& array, const std::stri
     if (!number || !std::isfinite(*number))
       throw input_error(source_, where(value) + " (value " + std::to_string(samples.size() + 1) + " of <" +
                                      array.name() + ">)",
-                        describe_bad_value(text, number.has_value()),
+                        describe_bad_number(text, number.has_value()),
                         "Remove or interpolate bad values in the source before converting");
     samples.push_back(*number);
   }

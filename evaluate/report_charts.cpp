@@ -25,7 +25,7 @@ std::string label_of(const std::string& name, const std::string& id) { return na
 std::string header(const std::string& terminal, std::string_view stem, int width, int height, std::string_view what) {
   std::ostringstream s;
   s << "# haptex evaluate: " << what << ".\n"
-    << "# Run `gnuplot " << stem << ".gnuplot` in the report folder to draw " << stem << ".png again.\n"
+    << "# To draw " << stem << ".png again, run in the report folder: gnuplot " << stem << ".gnuplot\n"
     << "set terminal " << terminal << " noenhanced size " << width << "," << height
     << (terminal == "pngcairo" ? " font ',10'" : "") << "\n"
     << "set output '" << stem << ".png'\n"

@@ -1,5 +1,7 @@
 #include "predict/model_file.hpp"
 
+#include <cmath>
+
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
 
@@ -55,24 +57,74 @@ void write_descriptor_spec(h5::Group root, const TextureDescriptorSpec& spec) {
   g.set_attr("length", std::int64_t(descriptor_length(spec)));
 }
 
-// Readers: every array checked for its expected size so a damaged file fails here, not in a product.
+constexpr const char* kRetrain = "Train the model again (haptex train)";
+constexpr std::int64_t kLargestLayer = 1 << 16;  // far beyond any haptex network; bounds what a damaged file makes us allocate
+
+enum class Values { finite, positive };
+
+// Readers: every array checked for its expected size and for finite values (scales: positive) so a
+// damaged or diverged model fails here, naming the array, not as NaN spectra later.
 struct Reader {
   std::string path;
 
-  Eigen::VectorXf vector(const h5::Group& g, const char* name, Eigen::Index expected = -1) const {
+  void check(const h5::Dataset& d, const std::vector<float>& v, Values kind) const {
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (!std::isfinite(v[i]) || (kind == Values::positive && !(v[i] > 0)))
+        throw input_error(path, d.object_path(),
+                          "value " + std::to_string(i) + " is " + std::to_string(v[i]) +
+                              (kind == Values::positive ? ", but a scale must be positive and finite" : ", not a finite number"),
+                          std::string("The model is damaged or its training diverged. ") + kRetrain);
+  }
+
+  h5::Dataset floats(const h5::Group& g, const char* name) const {
     const h5::Dataset d = g.open_dataset(name);
+    if (d.dtype() != "float32") throw input_error(path, d.object_path(), "holds " + d.dtype() + ", expected float32", kRetrain);
+    return d;
+  }
+
+  Eigen::VectorXf vector(const h5::Group& g, const char* name, Eigen::Index expected = -1, Values kind = Values::finite) const {
+    const h5::Dataset d = floats(g, name);
+    const h5::Shape shape = d.shape();
+    if (shape.size() != 1 || (expected >= 0 && Eigen::Index(shape[0]) != expected) || shape[0] > hsize_t(kLargestLayer))
+      throw input_error(path, d.object_path(), "has shape " + h5::shape_text(shape) + ", expected (" + std::to_string(expected) + ")", kRetrain);
     const std::vector<float> v = d.read<float>();
-    if (d.shape().size() != 1 || (expected >= 0 && Eigen::Index(v.size()) != expected))
-      throw input_error(path, d.object_path(), "expected " + std::to_string(expected) + " values", "Train the model again");
+    check(d, v, kind);
     return Eigen::Map<const Eigen::VectorXf>(v.data(), Eigen::Index(v.size()));
   }
 
   Eigen::MatrixXf matrix(const h5::Group& g, const char* name) const {
-    const h5::Dataset d = g.open_dataset(name);
+    const h5::Dataset d = floats(g, name);
     const h5::Shape shape = d.shape();
-    if (shape.size() != 2) throw input_error(path, d.object_path(), "expected a 2-D array", "Train the model again");
+    if (shape.size() != 2 || shape[0] > hsize_t(kLargestLayer) || shape[1] > hsize_t(kLargestLayer))
+      throw input_error(path, d.object_path(), "has shape " + h5::shape_text(shape) + ", expected a 2-D array", kRetrain);
     const std::vector<float> v = d.read<float>();
+    check(d, v, Values::finite);
     return Eigen::Map<const RowMajor>(v.data(), Eigen::Index(shape[0]), Eigen::Index(shape[1]));
+  }
+
+  nlohmann::json json(const h5::Node& node, const char* name) const {
+    nlohmann::json value = nlohmann::json::parse(node.attr_string(name), nullptr, false);
+    if (value.is_discarded()) throw input_error(path, node.object_path() + " attribute '" + name + "'", "is not JSON", kRetrain);
+    return value;
+  }
+
+  float bound(const h5::Node& node, const char* name) const {
+    const double v = node.attr_double(name);
+    if (!std::isfinite(v) || v < 0)
+      throw input_error(path, node.object_path() + " attribute '" + name + "'", "is " + std::to_string(v) + ", not a finite force or speed",
+                        kRetrain);
+    return float(v);
+  }
+
+  TextureDescriptorSpec spec(const h5::Group& g) const {
+    const auto value = [&](const char* name) {
+      const std::int64_t v = g.attr_int(name);
+      return v < 0 || v > 1 << 20 ? -1 : int(v);
+    };
+    const TextureDescriptorSpec spec{value("size"), value("radial_bins"), value("orientations"), value("octaves"),
+                                     value("gradient_scales")};
+    if (const std::string problem = spec_problem(spec); !problem.empty()) throw input_error(path, g.object_path(), problem, kRetrain);
+    return spec;
   }
 
   Mlp mlp(const h5::Group& parent, const char* name) const {
@@ -139,27 +191,33 @@ Model read_model(const std::string& path) {
     throw input_error(path, "/", "not a model file (model/1)", "Give the file haptex train wrote");
   const Reader r{path};
   Model m;
-  m.variant = root.attr_string("variant") == "unified" ? Variant::unified : Variant::per_material;
+  const std::string variant = root.attr_string("variant");
+  if (variant != variant_name(Variant::unified) && variant != variant_name(Variant::per_material))
+    throw input_error(path, "/ attribute 'variant'", "is '" + variant + "', neither unified nor per_material", kRetrain);
+  m.variant = variant == variant_name(Variant::unified) ? Variant::unified : Variant::per_material;
   m.dataset_sha256 = root.attr_string("dataset_sha256");
   m.split_sha256 = root.attr_string("split_sha256");
-  m.config = nlohmann::json::parse(root.attr_string("config"));
-  m.metrics = nlohmann::json::parse(root.attr_string("metrics"));
+  m.config = r.json(root, "config");
+  m.metrics = r.json(root, "metrics");
   m.material_ids = root.open_dataset("materials/ids").read_strings();
   m.material_names = root.open_dataset("materials/names").read_strings();
-  const h5::Group spec = root.open_group("feature_spec");
-  m.descriptor = {int(spec.attr_int("size")), int(spec.attr_int("radial_bins")), int(spec.attr_int("orientations")),
-                  int(spec.attr_int("octaves")), int(spec.attr_int("gradient_scales"))};
+  if (m.material_ids.empty() || m.material_names.size() != m.material_ids.size())
+    throw input_error(path, "/materials", std::to_string(m.material_ids.size()) + " ids and " + std::to_string(m.material_names.size()) +
+                                              " names", kRetrain);
+  m.descriptor = r.spec(root.open_group("feature_spec"));
   const h5::Group g = root.open_group("normalisation");
   Normalisation& n = m.normalisation;
   n.action_mean = r.vector(g, "action_mean", kActionValues);
-  n.action_scale = r.vector(g, "action_scale", kActionValues);
-  n.target_scale = r.vector(g, "target_scale", kSpectrumBins);
-  n.force_min = float(g.attr_double("force_min")), n.force_max = float(g.attr_double("force_max"));
-  n.speed_min = float(g.attr_double("speed_min")), n.speed_max = float(g.attr_double("speed_max"));
+  n.action_scale = r.vector(g, "action_scale", kActionValues, Values::positive);
+  n.target_scale = r.vector(g, "target_scale", kSpectrumBins, Values::positive);
+  n.force_min = r.bound(g, "force_min"), n.force_max = r.bound(g, "force_max");
+  n.speed_min = r.bound(g, "speed_min"), n.speed_max = r.bound(g, "speed_max");
+  if (n.force_min > n.force_max || n.speed_min > n.speed_max)
+    throw input_error(path, "/normalisation", "the force or speed range is reversed (minimum above maximum)", kRetrain);
   if (m.variant == Variant::unified) {
     const auto length = Eigen::Index(descriptor_length(m.descriptor));
     n.descriptor_mean = r.vector(g, "descriptor_mean", length);
-    n.descriptor_scale = r.vector(g, "descriptor_scale", length);
+    n.descriptor_scale = r.vector(g, "descriptor_scale", length, Values::positive);
     m.texture = r.mlp(root, "texture_encoder");
     m.classifier = r.mlp(root, "classifier");
     m.material_latents = r.matrix(root, "material_latents").transpose();

@@ -4,14 +4,28 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
+#include "core/image_header.hpp"
 
 namespace haptex::predict {
 namespace {
 
+// 8192 x 8192: twice the largest GelSight-type frame we know of (a 3280 x 2464 GelSight Mini frame is
+// 8 MP). The descriptor works at 256 x 256, so a larger image only costs time and memory.
+constexpr std::uint64_t kMostPixels = std::uint64_t(1) << 26;
+
+void check_pixels(const std::string& path, std::uint64_t width, std::uint64_t height) {
+  if (width * height > kMostPixels)
+    throw input_error(path, "", "the image is " + std::to_string(width) + " x " + std::to_string(height) +
+                                    " pixels, over the limit of 64 megapixels for a press image",
+                      "Scale it down (haptex describes it at 256 x 256 anyway), e.g. convert IMG -resize 2048x2048 SMALL.png");
+}
+
 // RGB, as the dataset stores press images (OpenCV reads BGR).
 cv::Mat read_rgb(const std::string& path) {
+  if (const auto size = image_header_size(path)) check_pixels(path, size->width, size->height);
   cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
   if (image.empty()) throw input_error(path, "", "not an image OpenCV can read", "Give a PNG or JPEG frame of the sensor");
+  check_pixels(path, std::uint64_t(image.cols), std::uint64_t(image.rows));
   cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
   return image;
 }
@@ -32,10 +46,15 @@ TextureCode choose_texture(const Predictor& predictor, const std::string& model_
   if (model.variant != Variant::unified)
     throw input_error(model_path, "/", "a per-material model has no texture encoder", "Give --material ID instead of --image");
   const cv::Mat peak = read_rgb(choice.image);
-  const cv::Mat reference = choice.reference.empty() ? self_reference(peak) : read_rgb(choice.reference);
-  if (reference.size() != peak.size())
-    throw input_error(choice.reference, "", "the reference is not the size of the image", "Give the no-contact frame of the same sensor");
-  std::vector<float> d = texture_descriptor(peak, reference, model.descriptor);
+  std::vector<float> d;
+  if (choice.reference.empty()) {
+    d = texture_descriptor_self_referenced(peak, model.descriptor);
+  } else {
+    const cv::Mat reference = read_rgb(choice.reference);
+    if (reference.size() != peak.size())
+      throw input_error(choice.reference, "", "the reference is not the size of the image", "Give the no-contact frame of the same sensor");
+    d = texture_descriptor(peak, reference, model.descriptor);
+  }
   const TextureCode code = predictor.encode_descriptor(d);
   if (descriptor) *descriptor = std::move(d);
   return code;

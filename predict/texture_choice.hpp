@@ -1,7 +1,7 @@
 #pragma once
 // Which texture a command renders or predicts for, as its command line gives it: a training
 // material's id, or a GelSight press image (PNG/JPEG, unified models only) with the sensor's
-// no-contact frame (optional: without it, self_reference of the image stands in).
+// no-contact frame (optional: without it, the image blurred stands in; texture_descriptor_self_referenced).
 #include <string>
 #include <vector>
 

@@ -1,5 +1,6 @@
 #include "predict/texture_descriptor.hpp"
 
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <opencv2/imgproc.hpp>
@@ -19,12 +20,12 @@ cv::Mat grey_float(const cv::Mat& image) {
   return out;
 }
 
-// The contact image: peak minus reference, resized, mean removed, Hann-windowed against edge leakage.
-cv::Mat contact_image(const cv::Mat& peak, const cv::Mat& reference, int size) {
-  cv::Mat difference = grey_float(peak) - grey_float(reference), resized;
-  cv::resize(difference, resized, {size, size}, 0, 0, cv::INTER_AREA);
-  resized -= cv::mean(resized)[0];
-  return resized;
+// An image as the descriptor sees it: grey and area-averaged to size x size. Area averaging is
+// linear, so the difference of two reduced images is the reduced difference.
+cv::Mat reduced(const cv::Mat& image, int size) {
+  cv::Mat out;
+  cv::resize(grey_float(image), out, {size, size}, 0, 0, cv::INTER_AREA);
+  return out;
 }
 
 cv::Mat power_spectrum(const cv::Mat& image) {
@@ -94,12 +95,23 @@ std::size_t descriptor_length(const TextureDescriptorSpec& spec) {
   return std::size_t(spec.radial_bins + spec.orientations * spec.octaves + 3 * spec.gradient_scales);
 }
 
-std::vector<float> texture_descriptor(const cv::Mat& peak, const cv::Mat& reference, const TextureDescriptorSpec& spec) {
-  if (peak.empty() || peak.size() != reference.size())
-    throw failure("texture_descriptor: the peak and reference images must be non-empty and of one size");
-  if (spec.size < 16 || (spec.size & (spec.size - 1)) != 0)
-    throw failure("texture_descriptor: size must be a power of two >= 16");
-  const cv::Mat contact = contact_image(peak, reference, spec.size);
+std::string spec_problem(const TextureDescriptorSpec& spec) {
+  if (spec.size < 16 || spec.size > 4096 || (spec.size & (spec.size - 1)) != 0) return "size must be a power of two in 16..4096";
+  const int log2_size = std::countr_zero(unsigned(spec.size));
+  if (spec.radial_bins < 1 || spec.radial_bins > 1024) return "radial_bins must be in 1..1024";
+  if (spec.orientations < 1 || spec.orientations > 180) return "orientations must be in 1..180";
+  if (spec.octaves < 1 || spec.octaves > log2_size) return "octaves must be in 1.." + std::to_string(log2_size);
+  if (spec.gradient_scales < 1 || spec.gradient_scales > log2_size - 2)
+    return "gradient_scales must be in 1.." + std::to_string(log2_size - 2);
+  return "";
+}
+
+namespace {
+
+// From the reduced peak and reference: the contact image (their difference, mean removed) described.
+std::vector<float> describe(const cv::Mat& peak, const cv::Mat& reference, const TextureDescriptorSpec& spec) {
+  cv::Mat contact = peak - reference;
+  contact -= cv::mean(contact)[0];
   std::vector<float> out;
   out.reserve(descriptor_length(spec));
   spectral_features(power_spectrum(contact), spec, out);
@@ -107,11 +119,23 @@ std::vector<float> texture_descriptor(const cv::Mat& peak, const cv::Mat& refere
   return out;
 }
 
-cv::Mat self_reference(const cv::Mat& image) {
-  cv::Mat out;
-  const double sigma = std::max(image.rows, image.cols) / 16.0;
-  cv::GaussianBlur(image, out, {0, 0}, sigma, sigma, cv::BORDER_REFLECT);
-  return out;
+}  // namespace
+
+std::vector<float> texture_descriptor(const cv::Mat& peak, const cv::Mat& reference, const TextureDescriptorSpec& spec) {
+  if (peak.empty() || peak.size() != reference.size())
+    throw failure("texture_descriptor: the peak and reference images must be non-empty and of one size");
+  if (const std::string problem = spec_problem(spec); !problem.empty()) throw failure("texture_descriptor: " + problem);
+  return describe(reduced(peak, spec.size), reduced(reference, spec.size), spec);
+}
+
+std::vector<float> texture_descriptor_self_referenced(const cv::Mat& peak, const TextureDescriptorSpec& spec) {
+  if (peak.empty()) throw failure("texture_descriptor: the peak image is empty");
+  if (const std::string problem = spec_problem(spec); !problem.empty()) throw failure("texture_descriptor: " + problem);
+  const cv::Mat small = reduced(peak, spec.size);
+  cv::Mat reference;
+  const double sigma = spec.size / 16.0;
+  cv::GaussianBlur(small, reference, {0, 0}, sigma, sigma, cv::BORDER_REFLECT);
+  return describe(small, reference, spec);
 }
 
 }  // namespace haptex::predict

@@ -8,6 +8,7 @@
 // sensor's lighting and vignetting, which say nothing about the surface.
 #include <cstddef>
 #include <opencv2/core.hpp>
+#include <string>
 #include <vector>
 
 namespace haptex::predict {
@@ -21,14 +22,18 @@ struct TextureDescriptorSpec {
 };
 
 std::size_t descriptor_length(const TextureDescriptorSpec& spec = {});
+// "" when texture_descriptor can compute this spec; otherwise what is wrong with it (a model file's
+// spec is checked with this before use).
+std::string spec_problem(const TextureDescriptorSpec& spec);
 
 // peak and reference: BGR or grey images of one size (8-bit or float). Throws haptex::Error when
 // they differ in size or are empty.
 std::vector<float> texture_descriptor(const cv::Mat& peak, const cv::Mat& reference, const TextureDescriptorSpec& spec = {});
 
-// A stand-in for the no-contact reference when a user has only the press image: the image blurred
-// at 1/16 of its size keeps the sensor's lighting and vignetting and drops the texture. The
-// descriptor's lowest radial bins are less reliable with it than with a real reference.
-cv::Mat self_reference(const cv::Mat& image);
+// The same without a reference, for a user who has only the press image: the image blurred at 1/16
+// of its size stands in for the no-contact frame (it keeps the sensor's lighting and vignetting and
+// drops the texture); the descriptor's lowest radial bins are less reliable with it. The blur runs
+// on the image reduced to spec.size, so a 3280 x 2464 frame costs about what a 640 x 480 one does.
+std::vector<float> texture_descriptor_self_referenced(const cv::Mat& peak, const TextureDescriptorSpec& spec = {});
 
 }  // namespace haptex::predict

@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
+#include "convert/parse_number.hpp"
 #include "core/error.hpp"
 
 namespace haptex::predict {
@@ -48,14 +50,12 @@ Trajectory read_trajectory(const std::string& path) {
     const std::vector<std::string> v = fields(line);
     const std::string where = "line " + std::to_string(number);
     auto value = [&](int c, const char* what) {
-      try {
-        std::size_t used = 0;
-        const double x = std::stod(v.at(std::size_t(c)), &used);
-        if (used != v[std::size_t(c)].size() || !std::isfinite(x)) throw std::invalid_argument(what);
-        return x;
-      } catch (const std::exception&) {
-        throw input_error(path, where, std::string("no finite number in the ") + what + " column", "Fix or remove the line");
-      }
+      if (std::size_t(c) >= v.size()) throw input_error(path, where, std::string("the ") + what + " column is missing", "Fix or remove the line");
+      const std::optional<double> x = convert::parse_number(v[std::size_t(c)]);
+      if (!x || !std::isfinite(*x))
+        throw input_error(path, where + ", column " + what, convert::describe_bad_number(v[std::size_t(c)], x.has_value()),
+                          "Fix or remove the line");
+      return *x;
     };
     const double force = value(f, "force"), speed = value(s, "speed");
     if (force < 0 || speed < 0) throw input_error(path, where, "negative force or speed", "Give magnitudes: force in N, speed in mm/s");

@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "align/window_table.hpp"
 #include "core/parallel.hpp"
 #include "core/signal/spectrum.hpp"
 #include "qa/checkers.hpp"
@@ -19,8 +20,7 @@ namespace {
 std::string window_where(const WindowTable& t, std::size_t w) {
   const auto m = t.material[w];
   const std::string id = m >= 0 && std::size_t(m) < t.materials.size() ? t.materials[std::size_t(m)] : "#" + std::to_string(m);
-  return "/windows[" + std::to_string(w) + "] (" + id + ", recording " + std::to_string(t.recording[w]) + ", start " +
-         std::to_string(t.start[w]) + ")";
+  return align::window_place(w, id, t.recording[w], t.start[w]);
 }
 
 struct Run {  // the windows of one recording
@@ -95,12 +95,20 @@ std::vector<CheckResult> check_dataset(const h5::Group& root) {
     // Starts t = a - 1, a - 1 + stride, ... while t + window_samples <= samples.
     const std::int64_t t0 = t.action_samples - 1;
     const std::int64_t expected = *samples < t0 + t.window_samples ? 0 : (*samples - t0 - t.window_samples) / t.stride + 1;
-    bool ok = std::int64_t(run.windows.size()) == expected;
-    for (std::size_t k = 0; ok && k < run.windows.size(); ++k) ok = t.start[run.windows[k]] == t0 + std::int64_t(k) * t.stride;
-    if (!ok) {
+    if (std::int64_t(run.windows.size()) != expected) {
       windows.fail(where, std::to_string(run.windows.size()) + " windows; a recording of " + std::to_string(*samples) +
                               " samples at stride " + std::to_string(t.stride) + " has " + std::to_string(expected) +
                               ", starting at " + std::to_string(t0) + " every " + std::to_string(t.stride) + " samples");
+      continue;
+    }
+    std::size_t k = 0;
+    while (k < run.windows.size() && t.start[run.windows[k]] == t0 + std::int64_t(k) * t.stride) ++k;
+    if (k < run.windows.size()) {
+      windows.fail(window_where(t, run.windows[k]), "window " + std::to_string(k) + " of its recording starts at sample " +
+                                                        std::to_string(t.start[run.windows[k]]) + ", expected " +
+                                                        std::to_string(t0 + std::int64_t(k) * t.stride) + " (" +
+                                                        std::to_string(t0) + " + " + std::to_string(k) + " x stride " +
+                                                        std::to_string(t.stride) + ")");
       continue;
     }
     for (auto w : run.windows) valid[w] = 1;

@@ -22,11 +22,7 @@ std::string shape_text(const std::vector<std::string>& extents) {
   return text + ")";
 }
 
-std::string shape_text(const h5::Shape& shape) {
-  std::vector<std::string> extents;
-  for (auto e : shape) extents.push_back(std::to_string(e));
-  return shape_text(extents);
-}
+std::string shape_text(const h5::Shape& shape) { return h5::shape_text(shape); }
 
 bool is_number(const std::string& s) {
   return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;

@@ -91,15 +91,17 @@ int set_of_section(const Sets& s, int section) {
   return -1;
 }
 
-std::vector<MaterialSplit> search_split(const std::vector<MaterialWindows>& materials, const SplitOptions& o) {
+std::vector<MaterialSplit> search_split(const std::vector<MaterialWindows>& materials, const SplitOptions& o,
+                                        const std::string& dataset_path) {
   if (o.val < 1 || o.test < 1 || o.val + o.test + 1 > o.sections)
     throw input_error("--val/--test/--sections", "", "need at least one section each for val and test and one for training",
                       "For example --sections 25 --val 3 --test 3");
   if (o.tries < 1) throw input_error("--tries", "", "must be at least 1", "Pass --tries 200");
   for (const auto& m : materials)
     if (m.presses < kPresses)
-      throw input_error(m.id, "presses", "has " + std::to_string(m.presses) + " presses; the split needs 5 (3 train, 1 val, 1 test)",
-                        "Capture more presses of this material");
+      throw input_error(dataset_path, "/materials/" + m.id + "/presses",
+                        "material '" + m.name + "' has " + std::to_string(m.presses) + " presses; the split needs 5 (3 train, 1 val, 1 test)",
+                        "Capture more presses of this material, then run capture extract and align again");
   std::vector<MaterialSplit> result(materials.size());
   parallel_for(materials.size(), [&](std::size_t i) { result[i] = best_split(materials[i], o); });
   std::string below;

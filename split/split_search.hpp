@@ -39,6 +39,8 @@ int set_of_section(const Sets& sections, int section);
 // Throws haptex::Error: bad_input for impossible options or a material with fewer than 5 presses;
 // failed (naming every material below min_coverage, their coverage, and what to try) when the
 // search cannot reach the threshold.
-std::vector<MaterialSplit> search_split(const std::vector<MaterialWindows>& materials, const SplitOptions& options);
+// dataset_path names the file in messages.
+std::vector<MaterialSplit> search_split(const std::vector<MaterialWindows>& materials, const SplitOptions& options,
+                                        const std::string& dataset_path);
 
 }  // namespace haptex::split

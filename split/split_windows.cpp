@@ -3,6 +3,7 @@
 #include <map>
 
 #include "core/error.hpp"
+#include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
 #include "core/sha256.hpp"
 #include "split/dataset_view.hpp"
@@ -38,6 +39,7 @@ MaterialSets assign(const MaterialWindows& windows, const SplitMaterial& listed,
 }  // namespace
 
 DatasetSplit read_dataset_split(const std::string& dataset_path, const std::string& manifest_path) {
+  h5::File::open(dataset_path);  // a damaged dataset is named as such, not as "another dataset" by its hash
   const SplitManifestDocument document = read_split_manifest(manifest_path);
   json::validate(document.json, "split.schema.json", manifest_path);
   const SplitManifest manifest = parse_split_manifest(document.json);

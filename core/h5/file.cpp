@@ -16,7 +16,7 @@ File File::open(const std::string& path, bool writable) {
     throw input_error(path, "", "no such file", "Check the path");
   if (H5Fis_hdf5(path.c_str()) <= 0)
     throw input_error(path, "", "not an HDF5 file", "Give a file written by haptex (recordings, gelsight, dataset or model)");
-  Handle file(check(H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT), "open the file",
+  Handle file(check_input(H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT), "open the file",
                     path));
   return File(std::move(file), path);
 }
@@ -33,7 +33,7 @@ File File::create(const std::string& path) {
 }
 
 Group File::root() const {
-  return Group(Handle(check(H5Gopen2(handle_.get(), "/", H5P_DEFAULT), "open the root group", path_)), path_, "/");
+  return Group(Handle(check_input(H5Gopen2(handle_.get(), "/", H5P_DEFAULT), "open the root group", path_)), path_, "/");
 }
 
 void File::flush() { check_status(H5Fflush(handle_.get(), H5F_SCOPE_GLOBAL), "flush the file", path_); }

@@ -46,8 +46,13 @@ class Handle {
 void silence_library_errors();
 // The innermost message of HDF5's current error stack, for our own error text.
 std::string last_library_error();
-// Throws haptex::Error (failed) naming `what` and `path` when id < 0; returns id otherwise.
+// Throws haptex::Error (failed) naming `what` and `path` when id < 0; returns id otherwise. For
+// creating and writing: a failure there is the machine's (disk full, permissions), exit code 1.
 hid_t check(hid_t id, const std::string& what, const std::string& path);
 void check_status(herr_t status, const std::string& what, const std::string& path);
+// The same for opening and reading, where a failure means the input is truncated, damaged or not
+// what haptex wrote: haptex::Error (bad input, exit code 2) saying how to get a sound copy.
+hid_t check_input(hid_t id, const std::string& what, const std::string& path);
+void check_input_status(herr_t status, const std::string& what, const std::string& path);
 
 }  // namespace haptex::h5

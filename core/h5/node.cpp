@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "core/error.hpp"
+#include "core/text/utf8.hpp"
 
 namespace haptex::h5 {
 namespace {
@@ -90,7 +91,7 @@ Handle Node::open_attr(std::string_view name) const {
   if (!has_attr(name))
     throw input_error(file_, object_path_, "attribute '" + n + "' is missing",
                       "Was the file written by haptex? Check it with 'haptex qa'");
-  return Handle(check(H5Aopen(id(), n.c_str(), H5P_DEFAULT), "open attribute " + n, where()));
+  return Handle(check_input(H5Aopen(id(), n.c_str(), H5P_DEFAULT), "open attribute " + n, where()));
 }
 
 Handle Node::open_scalar_attr(std::string_view name) const {
@@ -110,7 +111,7 @@ double Node::attr_double(std::string_view name) const {
     throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' is not a number",
                       "Rewrite the file with haptex");
   double value = 0;
-  check_status(H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &value), "read attribute", where());
+  check_input_status(H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &value), "read attribute", where());
   return value;
 }
 
@@ -121,7 +122,7 @@ std::int64_t Node::attr_int(std::string_view name) const {
     throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' is not an integer",
                       "Rewrite the file with haptex");
   std::int64_t value = 0;
-  check_status(H5Aread(attr.get(), H5T_NATIVE_INT64, &value), "read attribute", where());
+  check_input_status(H5Aread(attr.get(), H5T_NATIVE_INT64, &value), "read attribute", where());
   return value;
 }
 
@@ -134,22 +135,25 @@ std::string Node::attr_string(std::string_view name) const {
   if (H5Tis_variable_str(type.get()) > 0) {
     Handle memory = utf8_string_type();
     char* text = nullptr;
-    check_status(H5Aread(attr.get(), memory.get(), &text), "read attribute", where());
+    check_input_status(H5Aread(attr.get(), memory.get(), &text), "read attribute", where());
     std::string value = text ? text : "";
     Handle space(H5Aget_space(attr.get()));
     H5Dvlen_reclaim(memory.get(), space.get(), H5P_DEFAULT, &text);
+    text::require_utf8(value, file_, object_path_ + " attribute '" + std::string(name) + "'");
     return value;
   }
   std::string value(H5Tget_size(type.get()), '\0');  // fixed-length strings, as other tools write them
-  check_status(H5Aread(attr.get(), type.get(), value.data()), "read attribute", where());
-  return value.substr(0, value.find('\0'));
+  check_input_status(H5Aread(attr.get(), type.get(), value.data()), "read attribute", where());
+  value.resize(std::min(value.size(), value.find('\0')));
+  text::require_utf8(value, file_, object_path_ + " attribute '" + std::string(name) + "'");
+  return value;
 }
 
 std::vector<double> Node::attr_doubles(std::string_view name) const {
   Handle attr = open_attr(name);
   Handle space(H5Aget_space(attr.get()));
   std::vector<double> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space.get())));
-  check_status(H5Aread(attr.get(), H5T_NATIVE_DOUBLE, values.data()), "read attribute", where());
+  check_input_status(H5Aread(attr.get(), H5T_NATIVE_DOUBLE, values.data()), "read attribute", where());
   return values;
 }
 
@@ -183,17 +187,25 @@ std::string Dataset::dtype() const {
 }
 
 void Dataset::read_raw(hid_t memory_type, void* out) const {
-  check_status(H5Dread(id(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out), "read dataset", where());
+  check_input_status(H5Dread(id(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out), "read dataset", where());
 }
 
 std::vector<std::string> Dataset::read_strings() const {
   Handle memory = utf8_string_type();
   std::vector<char*> pointers(elements(), nullptr);
-  check_status(H5Dread(id(), memory.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "read strings", where());
-  std::vector<std::string> values(pointers.begin(), pointers.end());
+  check_input_status(H5Dread(id(), memory.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "read strings", where());
+  std::vector<std::string> values;
+  for (const char* p : pointers) values.emplace_back(p ? p : "");
   Handle space(H5Dget_space(id()));
   H5Dvlen_reclaim(memory.get(), space.get(), H5P_DEFAULT, pointers.data());
+  for (std::size_t i = 0; i < values.size(); ++i) text::require_utf8(values[i], file_, object_path_ + "[" + std::to_string(i) + "]");
   return values;
+}
+
+std::string shape_text(const Shape& shape) {
+  std::string text = "(";
+  for (std::size_t i = 0; i < shape.size(); ++i) text += (i ? ", " : "") + std::to_string(shape[i]);
+  return text + ")";
 }
 
 // ---- groups
@@ -218,7 +230,7 @@ Group Group::open_group(std::string_view name) const {
   const std::string path = child_path(name);
   if (!has_group(name))
     throw input_error(file_, path, "group is missing", "Check the file's layout with 'haptex info' or 'haptex qa'");
-  return Group(Handle(check(H5Gopen2(id(), std::string(name).c_str(), H5P_DEFAULT), "open group", file_ + ":" + path)),
+  return Group(Handle(check_input(H5Gopen2(id(), std::string(name).c_str(), H5P_DEFAULT), "open group", file_ + ":" + path)),
                file_, path);
 }
 
@@ -227,7 +239,7 @@ Dataset Group::open_dataset(std::string_view name) const {
   if (!has_dataset(name))
     throw input_error(file_, path, "dataset is missing", "Check the file's layout with 'haptex info' or 'haptex qa'");
   return Dataset(
-      Handle(check(H5Dopen2(id(), std::string(name).c_str(), H5P_DEFAULT), "open dataset", file_ + ":" + path)),
+      Handle(check_input(H5Dopen2(id(), std::string(name).c_str(), H5P_DEFAULT), "open dataset", file_ + ":" + path)),
       file_, path);
 }
 
@@ -255,6 +267,7 @@ std::vector<std::string> Group::children() const {
         return 0;
       },
       &names);
+  for (const std::string& name : names) text::require_utf8(name, file_, child_path(name));
   std::stable_sort(names.begin(), names.end(), [](const std::string& a, const std::string& b) {
     if (all_digits(a) && all_digits(b) && a.size() != b.size()) return a.size() < b.size();
     return a < b;

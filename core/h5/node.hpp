@@ -13,6 +13,8 @@
 namespace haptex::h5 {
 
 using Shape = std::vector<hsize_t>;
+// "(3, 4)": a shape in messages.
+std::string shape_text(const Shape& shape);
 
 // Anything that carries attributes.
 class Node {
