@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
 
@@ -94,6 +95,32 @@ TEST(TextureDescriptor, RefusesImagesOfDifferentSizes) {
   TextureDescriptorSpec odd;
   odd.size = 100;
   EXPECT_THROW(texture_descriptor(reference_image(64, 100), reference_image(64, 100), odd), Error);
+}
+
+// Issue 11 point 7: the image is reduced to spec.size before anything else, so the descriptor of a
+// large frame equals that of the frame reduced first (the blur of the self-reference included) and
+// its cost no longer grows with the blur's reach over millions of pixels.
+TEST(TextureDescriptor, WorksAtItsOwnResolutionWhateverTheImageSize) {
+  const cv::Mat large = reference_image(2048, 120) + noise(2048, 6, 5);
+  cv::Mat reduced;
+  cv::resize(large, reduced, {256, 256}, 0, 0, cv::INTER_AREA);
+  const auto a = texture_descriptor_self_referenced(large), b = texture_descriptor_self_referenced(reduced);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i], b[i], 1e-3 * (1 + std::abs(b[i]))) << i;
+  // With a reference, reducing first changes nothing either (area averaging is linear).
+  const cv::Mat reference = reference_image(2048, 120);
+  cv::Mat reference_reduced;
+  cv::resize(reference, reference_reduced, {256, 256}, 0, 0, cv::INTER_AREA);
+  const auto c = texture_descriptor(large, reference), d = texture_descriptor(reduced, reference_reduced);
+  for (std::size_t i = 0; i < c.size(); ++i) EXPECT_NEAR(c[i], d[i], 1e-3 * (1 + std::abs(d[i]))) << i;
+}
+
+TEST(TextureDescriptor, SpecsItCannotComputeAreNamed) {
+  EXPECT_EQ(spec_problem(kSpec), "");
+  for (const auto& [spec, says] : {std::pair{TextureDescriptorSpec{100, 24, 6, 4, 3}, "size"}, std::pair{TextureDescriptorSpec{256, 0, 6, 4, 3}, "radial_bins"},
+                                   std::pair{TextureDescriptorSpec{256, 24, 6, 9, 3}, "octaves"}, std::pair{TextureDescriptorSpec{16, 24, 6, 4, 3}, "gradient_scales"},
+                                   std::pair{TextureDescriptorSpec{1 << 20, 24, 6, 4, 3}, "size"}})
+    EXPECT_NE(spec_problem(spec).find(says), std::string::npos) << spec_problem(spec);
 }
 
 }  // namespace

@@ -63,7 +63,7 @@ MaterialWindows wandering(const std::string& id, bool ring = false) {
 
 TEST(SplitSearch, SetsAreDisjointCoveredAndSeeded) {
   const std::vector<MaterialWindows> materials = {wandering("book"), wandering("cork")};
-  const auto a = search_split(materials, {}), b = search_split(materials, {});
+  const auto a = search_split(materials, {}, "dataset.h5"), b = search_split(materials, {}, "dataset.h5");
   ASSERT_EQ(a.size(), 2u);
   for (const MaterialSplit& s : a) {
     std::set<int> all;
@@ -85,14 +85,14 @@ TEST(SplitSearch, SetsAreDisjointCoveredAndSeeded) {
   EXPECT_EQ(a[0].sections.val, b[0].sections.val);
   SplitOptions other;
   other.seed = 1;
-  EXPECT_NE(search_split(materials, other)[0].sections.train, a[0].sections.train);
+  EXPECT_NE(search_split(materials, other, "dataset.h5")[0].sections.train, a[0].sections.train);
   EXPECT_NE(a[0].sections.val, a[1].sections.val);  // materials draw independently
 }
 
 TEST(SplitSearch, FailsNamingMaterialsBelowTheCoverageThreshold) {
   const std::vector<MaterialWindows> materials = {wandering("book"), wandering("cork_ring", true)};
   try {
-    search_split(materials, {});
+    search_split(materials, {}, "dataset.h5");
     FAIL() << "a drifting material reached the coverage threshold";
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), Error::Kind::failed);
@@ -103,18 +103,18 @@ TEST(SplitSearch, FailsNamingMaterialsBelowTheCoverageThreshold) {
   }
   SplitOptions lenient;
   lenient.min_coverage = 0.0;
-  EXPECT_NO_THROW(search_split(materials, lenient));
+  EXPECT_NO_THROW(search_split(materials, lenient, "dataset.h5"));
 }
 
 TEST(SplitSearch, RefusesTooFewPressesAndImpossibleSections) {
   MaterialWindows m = wandering("book");
   m.presses = 4;
-  EXPECT_THROW(search_split({m}, {}), Error);
+  EXPECT_THROW(search_split({m}, {}, "dataset.h5"), Error);
   SplitOptions bad;
   bad.sections = 6;
   bad.val = 3;
   bad.test = 3;
-  EXPECT_THROW(search_split({wandering("book")}, bad), Error);
+  EXPECT_THROW(search_split({wandering("book")}, bad, "dataset.h5"), Error);
 }
 
 TEST(SplitManifest, FollowsItsSchemaAndRecordsTheInputsHashes) {
@@ -124,7 +124,7 @@ TEST(SplitManifest, FollowsItsSchemaAndRecordsTheInputsHashes) {
   ASSERT_EQ(windows.size(), 2u);
   SplitOptions o;
   o.min_coverage = 0;  // the sample recordings' force and speed are smooth sines, not strokes
-  const auto splits = search_split(windows, o);
+  const auto splits = search_split(windows, o, "dataset.h5");
   const nlohmann::json doc = manifest_json(files.dataset, o, splits, "test");
   EXPECT_NO_THROW(json::validate(doc, "split.schema.json", "manifest"));
   EXPECT_EQ(doc["dataset"]["sha256"].get<std::string>().size(), 64u);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -167,6 +168,11 @@ const SmallPipeline& small_pipeline() {
   // A failure is kept and reported by every test rather than retried by each.
   if (!files) throw std::runtime_error("the small pipeline test fixture could not be built: " + failure);
   return *files;
+}
+
+std::string small_material() {
+  std::ifstream in(small_pipeline().split);
+  return nlohmann::json::parse(in)["materials"][0]["id"];
 }
 
 std::string copy_into(const TempDir& dir, const std::string& file, const std::string& name) {

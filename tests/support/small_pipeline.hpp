@@ -15,6 +15,9 @@ struct SmallPipeline {
 // Builds the files on first use (each step through the haptex binary, as a user runs it).
 const SmallPipeline& small_pipeline();
 
+// The id of the small pipeline's first material (for --material).
+std::string small_material();
+
 // A copy of `file` in a fresh folder owned by `dir`, named `name`.
 std::string copy_into(const TempDir& dir, const std::string& file, const std::string& name);
 

@@ -1,0 +1,266 @@
+// Issue 11 point 8: a table of hostile inputs per reader (XML and CSV recordings, JSON manifests,
+// trajectories, HDF5 files with wrong dtypes and shapes, images, videos). Each case asserts what the
+// README promises: exit code 2, one message naming the file, no crash, and no output or NAME.partial left.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <set>
+
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/mutations.hpp"
+#include "tests/support/quick_models.hpp"
+#include "tests/support/sample_recording.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+struct HostileCase {
+  std::string reader, name;
+  std::function<std::string(const TempDir&)> make;  // writes the hostile file, returns its path
+  std::function<std::vector<std::string>(const TempDir&, const std::string&)> command;
+  std::string says;  // a word the message must hold besides the file's name
+};
+
+std::string write(const TempDir& dir, const std::string& name, const std::string& bytes) {
+  std::ofstream(dir.file(name), std::ios::binary) << bytes;
+  return dir.file(name);
+}
+
+std::string replace_once(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+// ---- the readers and what makes them hostile
+
+std::string good_xml() { return sample_recording_xml({.seconds = 0.3}); }
+
+auto convert_it = [](const TempDir& dir, const std::string& file) {
+  return std::vector<std::string>{"convert", "hatt", file, "-o", dir.file("out.h5")};
+};
+
+std::vector<HostileCase> xml_cases() {
+  auto xml = [](std::string name, std::function<std::string()> text, std::string says) {
+    return HostileCase{"HaTT XML", name, [=](const TempDir& d) { return write(d, "rec.xml", text()); }, convert_it, says};
+  };
+  return {
+      xml("empty", [] { return ""; }, "rec.xml"),
+      xml("truncated in half", [] { const std::string x = good_xml(); return x.substr(0, x.size() / 2); }, "XML"),
+      xml("binary garbage", [] { return std::string("\x00\xff\xfe\x01garbage\x00", 12); }, "XML"),
+      xml("entity expansion (billion laughs)", [] {
+        return "<?xml version=\"1.0\"?><!DOCTYPE r [<!ENTITY a \"aaaaaaaaaa\"><!ENTITY b \"&a;&a;&a;&a;&a;&a;&a;&a;\">]><r>&b;</r>";
+      }, "DTD"),
+      xml("100000 nested elements", [] { std::string s; for (int i = 0; i < 100000; ++i) s += "<a>"; return s; }, "XML"),
+      xml("NaN sample", [] { return replace_once(good_xml(), "<value>", "<value>NaN</value><value>"); }, "NaN"),
+      xml("1e-400 sample", [] { return replace_once(good_xml(), "<value>", "<value>1e-400</value><value>"); }, "out of range"),
+      xml("1e999 sample", [] { return replace_once(good_xml(), "<value>", "<value>1e999</value><value>"); }, "out of range"),
+      xml("text sample", [] { return replace_once(good_xml(), "<value>", "<value>twelve</value><value>"); }, "not a number"),
+      xml("no material", [] {
+        std::string x = good_xml();
+        const auto open = x.find("<material>"), close = x.find("</material>") + 11;
+        return x.erase(open, close - open);
+      }, "material"),
+      xml("material not UTF-8", [] { return replace_once(good_xml(), "<material>", "<material>\xc3\x28"); }, "UTF-8"),
+  };
+}
+
+std::vector<HostileCase> csv_cases() {
+  auto csv = [](std::string name, std::function<std::string()> text, std::string says, std::string file = "cork_0.csv") {
+    return HostileCase{"recording CSV", name, [=](const TempDir& d) { return write(d, file, text()); }, convert_it, says};
+  };
+  const std::string good = sample_recording_csv({.seconds = 0.3});
+  return {
+      csv("empty", [] { return ""; }, "empty"),
+      csv("header only", [=] { return good.substr(0, good.find('\n') + 1); }, "cork_0.csv"),
+      csv("ragged row", [=] { return replace_once(good, "\n", "\n1,2\n"); }, "fields"),
+      csv("NaN sample", [=] {
+        std::string text = good;
+        const auto row = text.find('\n') + 1;  // the first sample's first field
+        text.replace(row, text.find(',', row) - row, "nan");
+        return text;
+      }, "line 2"),
+      csv("name not UTF-8", [=] { return good; }, "UTF-8", "Caf\xe9_0.csv"),
+  };
+}
+
+std::vector<HostileCase> manifest_cases() {
+  auto train_with = [](const TempDir& dir, const std::string& file) {
+    return quick_train_args(small_pipeline().dataset, file, dir.file("m.h5"));
+  };
+  auto manifest = [=](std::string name, std::function<std::string()> text, std::string says) {
+    return HostileCase{"split manifest", name, [=](const TempDir& d) { return write(d, "split.json", text()); }, train_with, says};
+  };
+  auto edited = [](std::function<void(nlohmann::json&)> change) {
+    return [=] {
+      nlohmann::json doc = read_json(small_pipeline().split);
+      change(doc);
+      return doc.dump();
+    };
+  };
+  return {
+      manifest("empty", [] { return ""; }, "JSON"),
+      manifest("truncated", [] { const std::string s = file_bytes(small_pipeline().split); return s.substr(0, s.size() / 2); }, "JSON"),
+      manifest("not UTF-8", [] { return std::string("{\"a\": \"\xff\"}"); }, "JSON"),
+      manifest("100000 nested arrays", [] { return std::string(100000, '[') + std::string(100000, ']'); }, "split.json"),
+      manifest("sections as strings", edited([](nlohmann::json& d) { d["materials"][0]["sections"]["train"] = {"a", "b"}; }), "schema"),
+      manifest("sections not a number", edited([](nlohmann::json& d) { d["parameters"]["sections"] = "many"; }), "schema"),
+      manifest("negative section", edited([](nlohmann::json& d) { d["materials"][0]["sections"]["val"].push_back(-3); }), "split.json"),
+      manifest("no materials", edited([](nlohmann::json& d) { d["materials"] = nlohmann::json::array(); }), "split.json"),
+  };
+}
+
+std::vector<HostileCase> trajectory_cases() {
+  auto predict_with = [](const TempDir&, const std::string& file) {
+    return std::vector<std::string>{"predict", quick_model(), "--material", small_material(), "--csv", file};
+  };
+  auto trajectory = [=](std::string name, std::string text, std::string says) {
+    return HostileCase{"trajectory CSV", name, [=](const TempDir& d) { return write(d, "t.csv", text); }, predict_with, says};
+  };
+  return {
+      trajectory("empty", "", "t.csv"),
+      trajectory("no force column", "speed\n100\n", "force"),
+      trajectory("NaN force", "force,speed\nnan,100\n", "line 2"),
+      trajectory("missing field", "force,speed\n1\n", "line 2"),
+      trajectory("negative speed", "force,speed\n1,-5\n", "negative"),
+      trajectory("binary", std::string("\x00\x01\x02\xff", 4), "t.csv"),
+  };
+}
+
+// HDF5 files haptex wrote, each with one object of the wrong kind, type or shape.
+std::vector<HostileCase> hdf5_cases() {
+  auto dataset_edit = [](std::string name, std::function<void(Edit&)> change, std::string says) {
+    return HostileCase{"dataset HDF5", name,
+                       [=](const TempDir& d) {
+                         const std::string file = copy_into(d, small_pipeline().dataset, "d.h5");
+                         Edit edit(file);
+                         change(edit);
+                         return file;
+                       },
+                       [](const TempDir& d, const std::string& file) { return std::vector<std::string>{"split", file, "-o", d.file("s.json")}; },
+                       says};
+  };
+  auto model_edit = [](std::string name, std::function<void(Edit&)> change, std::string says) {
+    return HostileCase{"model HDF5", name,
+                       [=](const TempDir& d) {
+                         const std::string file = copy_into(d, quick_model(), "m.h5");
+                         Edit edit(file);
+                         change(edit);
+                         return file;
+                       },
+                       [](const TempDir&, const std::string& file) {
+                         return std::vector<std::string>{"predict", file, "--material", small_material(), "--force", "1", "--speed", "100"};
+                       },
+                       says};
+  };
+  return {
+      HostileCase{"dataset HDF5", "not HDF5", [](const TempDir& d) { return write(d, "d.h5", "plain text"); },
+                  [](const TempDir& d, const std::string& f) { return std::vector<std::string>{"split", f, "-o", d.file("s.json")}; }, "HDF5"},
+      dataset_edit("no /windows", [](Edit& e) { e.remove("windows"); }, "windows"),
+      dataset_edit("start as float", [](Edit& e) {
+        const auto v = e.dataset("windows/start").read<double>();
+        e.replace<double>("windows/start", v, {v.size()});
+      }, "windows"),
+      dataset_edit("start of another length", [](Edit& e) {
+        auto v = e.dataset("windows/start").read<std::int64_t>();
+        v.pop_back();
+        e.replace<std::int64_t>("windows/start", v, {v.size()});
+      }, "/windows/material"),
+      dataset_edit("action 1-D", [](Edit& e) {
+        const auto v = e.dataset("windows/action").read<float>();
+        e.replace<float>("windows/action", v, {v.size()});
+      }, "/windows/action"),
+      dataset_edit("format attribute an integer", [](Edit& e) {
+        e.remove("@haptex_format");
+        e.root().set_attr("haptex_format", 7);
+      }, "haptex_format"),
+      dataset_edit("recording named 'x'", [](Edit& e) {
+        const std::string id = read_json(small_pipeline().split)["materials"][0]["id"];
+        e.copy("materials/" + id + "/recordings/0", "materials/" + id + "/recordings/x");
+      }, "recording number"),
+      model_edit("weights as int64", [](Edit& e) {
+        const auto v = e.dataset("nets/0/predictor/layers/0/weight").read<float>();
+        const h5::Shape shape = e.dataset("nets/0/predictor/layers/0/weight").shape();
+        std::vector<std::int64_t> ints(v.size(), 1 << 30);
+        e.replace<std::int64_t>("nets/0/predictor/layers/0/weight", ints, shape);
+      }, "m.h5"),
+      model_edit("scale of another length", [](Edit& e) { e.replace<float>("normalisation/target_scale", {1, 2, 3}, {3}); }, "target_scale"),
+      model_edit("config not JSON", [](Edit& e) {
+        e.remove("@config");
+        e.root().set_attr("config", "{not json");
+      }, "config"),
+      model_edit("feature size 10^9", [](Edit& e) {
+        e.remove("feature_spec@size");
+        e.group("feature_spec").set_attr("size", std::int64_t(1000000000));
+      }, "size"),
+      model_edit("no materials", [](Edit& e) { e.remove("materials"); }, "materials"),
+  };
+}
+
+std::vector<HostileCase> image_cases() {
+  auto predict_image = [](const TempDir&, const std::string& file) {
+    return std::vector<std::string>{"predict", quick_model(), "--image", file, "--force", "1", "--speed", "100"};
+  };
+  auto image = [=](std::string name, std::string bytes, std::string file, std::string says) {
+    return HostileCase{"press image", name, [=](const TempDir& d) { return write(d, file, bytes); }, predict_image, says};
+  };
+  return {
+      image("empty PNG", "", "p.png", "image"),
+      image("text named .png", "hello", "p.png", "image"),
+      image("PNG cut after its header", std::string("\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR\x00\x00\x01\x00\x00\x00\x01\x00\x08\x02", 26), "p.png", "image"),
+      image("JPEG start only", std::string("\xff\xd8\xff", 3), "p.jpg", "image"),
+  };
+}
+
+std::vector<HostileCase> video_cases() {
+  auto extract = [](const TempDir& d, const std::string& file) {
+    return std::vector<std::string>{"capture", "extract", file, "-o", d.file("g.h5")};
+  };
+  auto video = [=](std::string name, std::string bytes, std::string file) {
+    return HostileCase{"press video", name, [=](const TempDir& d) { return write(d, file, bytes); }, extract, file};
+  };
+  return {
+      video("empty .mkv", "", "v.mkv"),
+      video("random bytes .mp4", std::string(4096, '\x5a'), "v.mp4"),
+      video("text .avi", "RIFF....AVI not really", "v.avi"),
+  };
+}
+
+// ---- the test
+
+std::set<std::string> names_in(const TempDir& dir) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::recursive_directory_iterator(dir.path())) names.insert(entry.path().string());
+  return names;
+}
+
+std::vector<HostileCase> corpus() {
+  std::vector<HostileCase> all;
+  for (auto part : {xml_cases(), csv_cases(), manifest_cases(), trajectory_cases(), hdf5_cases(), image_cases(), video_cases()})
+    all.insert(all.end(), part.begin(), part.end());
+  return all;
+}
+
+TEST(HostileCorpus, EveryReaderRefusesEveryCaseCleanly) {
+  const std::vector<HostileCase> cases = corpus();
+  for (const HostileCase& c : cases) {
+    SCOPED_TRACE(c.reader + ": " + c.name);
+    const TempDir dir;
+    const std::string file = c.make(dir);
+    const std::set<std::string> before = names_in(dir);
+    const CommandResult r = run_haptex(c.command(dir, file));
+    expect_refusal(r, {fs::path(file).filename().string(), c.says});
+    EXPECT_LT(std::count(r.err.begin(), r.err.end(), '\n'), 3) << "one message, not a cascade: " << r.err;
+    EXPECT_EQ(names_in(dir), before) << "the command left a file behind";
+  }
+  std::cout << cases.size() << " hostile cases\n";
+}
+
+}  // namespace
+}  // namespace haptex::test

@@ -1,0 +1,128 @@
+// Issue 11 point 2: --force replaces only what haptex wrote, and no command writes over one of its
+// inputs (the same file by device and inode), with or without --force.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <fstream>
+
+#include "core/sha256.hpp"
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/quick_models.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+const std::vector<std::string> kTinySynth = {"synth", "materials", "-n", "1", "--presses", "1", "--recordings", "1",
+                                            "--seconds", "0.5", "--size", "64x48"};
+
+std::vector<std::string> tiny_synth(const std::string& out, bool force) {
+  std::vector<std::string> args = kTinySynth;
+  args.insert(args.end(), {"-o", out});
+  if (force) args.push_back("--force");
+  return args;
+}
+
+TEST(Force, SynthRefusesAFolderHoldingFilesItDidNotWrite) {
+  const TempDir dir;
+  const std::string out = dir.file("out");
+  ASSERT_EQ(run_haptex(tiny_synth(out, false)).exit_code, 0);
+  ASSERT_EQ(run_haptex(tiny_synth(out, true)).exit_code, 0) << "its own earlier output is replaced";
+
+  std::ofstream(out + "/notes.txt") << "mine";
+  expect_refusal(run_haptex(tiny_synth(out, true)), {out, "notes.txt", "did not write"});
+  EXPECT_EQ(file_bytes(out + "/notes.txt"), "mine");
+  fs::remove(out + "/notes.txt");
+
+  const fs::path material = *fs::directory_iterator(out + "/gelsight");
+  std::ofstream(material / "mine.txt") << "mine too";
+  expect_refusal(run_haptex(tiny_synth(out, true)), {"mine.txt"});
+  EXPECT_EQ(file_bytes((material / "mine.txt").string()), "mine too");
+  EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+}
+
+TEST(Force, SynthRefusesAFolderWithoutItsFileList) {
+  const TempDir dir;
+  fs::create_directory(dir.file("mine"));
+  std::ofstream(dir.file("mine/data.csv")) << "1,2\n";
+  expect_refusal(run_haptex(tiny_synth(dir.file("mine"), true)), {"haptex-files.json"});
+  EXPECT_EQ(file_bytes(dir.file("mine/data.csv")), "1,2\n");
+}
+
+TEST(Force, EvaluateRefusesAReportFolderHoldingAFileOfYours) {
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  const std::vector<std::string> args = {"evaluate", p.dataset, "--split", p.split, "--model", quick_model(), "--repeats", "2",
+                                         "--reconstruct", "none", "-o", dir.file("report"), "--force"};
+  ASSERT_EQ(run_haptex(args).exit_code, 0);
+  std::ofstream(dir.file("report/my_notes.md")) << "notes";
+  expect_refusal(run_haptex(args), {"my_notes.md"});
+  EXPECT_EQ(file_bytes(dir.file("report/my_notes.md")), "notes");
+}
+
+// Each command, given one of its inputs as output (by name, through a symbolic or a hard link),
+// refuses with or without --force and leaves the input as it was.
+struct SameFileCase {
+  std::string name;
+  std::function<std::vector<std::string>(const TempDir&)> args;  // the output is dir/"victim"
+  std::string victim_source;                                     // the file the victim starts as
+};
+
+TEST(Force, NoCommandWritesOverItsInput) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir synth_dir;
+  ASSERT_EQ(run_haptex(tiny_synth(synth_dir.file("s"), false)).exit_code, 0);
+  const std::string xml = (*fs::directory_iterator(synth_dir.file("s/recordings"))).path().string();
+  const std::vector<SameFileCase> cases = {
+      {"convert", [](const TempDir& d) { return std::vector<std::string>{"convert", "hatt", d.file("victim"), "-o", d.file("victim")}; }, xml},
+      {"align", [&](const TempDir& d) { return std::vector<std::string>{"align", "--recordings", d.file("victim"), "--gelsight", p.gelsight, "-o", d.file("victim")}; }, p.recordings},
+      {"split", [](const TempDir& d) { return std::vector<std::string>{"split", d.file("victim"), "-o", d.file("victim"), "--no-plots"}; }, p.dataset},
+      {"train", [&](const TempDir& d) { return quick_train_args(p.dataset, d.file("victim"), d.file("victim")); }, p.split},
+      {"render", [&](const TempDir& d) {
+         std::ofstream(d.file("victim")) << "force,speed\n1,100\n";
+         return std::vector<std::string>{"render", quick_model(), "--material", "any", "--trajectory", d.file("victim"),
+                                         "-o", d.file("out.wav"), "--csv", d.file("victim")};
+       }, ""},
+      {"extract", [](const TempDir& d) { return std::vector<std::string>{"capture", "extract", d.file("victim"), "-o", d.file("victim")}; }, p.gelsight},
+  };
+  for (const SameFileCase& c : cases) {
+    for (const char* how : {"name", "symlink", "hardlink"}) {
+      for (bool force : {false, true}) {
+        SCOPED_TRACE(c.name + std::string(" via ") + how + (force ? " --force" : ""));
+        const TempDir d;
+        std::vector<std::string> args = c.args(d);
+        if (!c.victim_source.empty()) fs::copy_file(c.victim_source, d.file("victim"));
+        const std::string before = file_bytes(d.file("victim"));
+        if (std::string(how) != "name") {
+          // The output names the input through a link.
+          std::string& output = *std::find(args.rbegin(), args.rend(), d.file("victim"));
+          if (std::string(how) == "symlink") fs::create_symlink(d.file("victim"), d.file("link"));
+          else fs::create_hard_link(d.file("victim"), d.file("link"));
+          output = d.file("link");
+        }
+        if (force) args.push_back("--force");
+        expect_refusal(run_haptex(args), {"is also an input"});
+        EXPECT_EQ(file_bytes(d.file("victim")), before);
+        EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
+      }
+    }
+  }
+}
+
+TEST(Force, EvaluateRefusesAReportFolderHoldingItsDataset) {
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  fs::create_directory(dir.file("work"));
+  const std::string dataset = copy_into(dir, p.dataset, "work/d.h5");
+  const std::string before = sha256_file(dataset);
+  expect_refusal(run_haptex({"evaluate", dataset, "--split", p.split, "--model", quick_model(), "-o", dir.file("work"), "--force"}),
+                 {"holds an input"});
+  EXPECT_EQ(sha256_file(dataset), before);
+}
+
+}  // namespace
+}  // namespace haptex::test

@@ -1,0 +1,67 @@
+// Issue 11 point 7: a press image too large to be a sensor frame is refused from its header, before
+// OpenCV decodes (and allocates) it; a real sensor-sized frame still works.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/image_header.hpp"
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/quick_models.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+
+void put_u32(std::string& s, std::uint32_t v) {
+  for (int shift = 24; shift >= 0; shift -= 8) s += char((v >> shift) & 0xff);
+}
+
+// A PNG whose header claims width x height and whose data is cut off: only the header is read.
+std::string png_header_only(std::uint32_t width, std::uint32_t height) {
+  std::string s("\x89PNG\r\n\x1a\n", 8);
+  put_u32(s, 13);
+  s += "IHDR";
+  put_u32(s, width);
+  put_u32(s, height);
+  s += std::string("\x08\x02\x00\x00\x00", 5);
+  put_u32(s, 0);  // CRC: never checked before the size
+  return s;
+}
+
+TEST(LargeInput, APressImageOverTheLimitIsRefusedFromItsHeader) {
+  const TempDir dir;
+  std::ofstream(dir.file("huge.png"), std::ios::binary) << png_header_only(12000, 12000);
+  const CommandResult r = run_haptex({"predict", quick_model(), "--image", dir.file("huge.png"), "--force", "1", "--speed", "100"});
+  expect_refusal(r, {dir.file("huge.png"), "12000 x 12000", "64 megapixels"});
+}
+
+TEST(LargeInput, ImageHeadersGiveTheSizeWithoutDecoding) {
+  const TempDir dir;
+  const cv::Mat image(37, 53, CV_8UC3, cv::Scalar(10, 20, 30));
+  for (const char* name : {"a.png", "a.jpg"}) {
+    ASSERT_TRUE(cv::imwrite(dir.file(name), image));
+    const auto size = image_header_size(dir.file(name));
+    ASSERT_TRUE(size.has_value()) << name;
+    EXPECT_EQ(size->width, 53u) << name;
+    EXPECT_EQ(size->height, 37u) << name;
+  }
+  std::ofstream(dir.file("text.png")) << "not an image";
+  EXPECT_FALSE(image_header_size(dir.file("text.png")).has_value());
+  std::ofstream(dir.file("cut.jpg"), std::ios::binary) << std::string("\xff\xd8\xff\xe0\x00", 5);
+  EXPECT_FALSE(image_header_size(dir.file("cut.jpg")).has_value());
+}
+
+TEST(LargeInput, ASensorSizedFrameWithoutAReferenceStillWorks) {
+  const TempDir dir;
+  cv::Mat frame(2464, 3280, CV_8UC3);
+  cv::randu(frame, 0, 255);
+  ASSERT_TRUE(cv::imwrite(dir.file("mini.png"), frame));
+  const CommandResult r = run_haptex({"predict", quick_model(), "--image", dir.file("mini.png"), "--force", "1", "--speed", "100"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+}  // namespace
+}  // namespace haptex::test

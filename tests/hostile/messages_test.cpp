@@ -1,0 +1,155 @@
+// Issue 11 point 6: every failure is a haptex error with exit code 2 (bad input) and a message that
+// names the file, the place and the fix; never "unexpected error", a C++ exception's text or exit 1.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/sha256.hpp"
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/mutations.hpp"
+#include "tests/support/quick_models.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+std::string half_of(const TempDir& dir, const std::string& file, const std::string& name) {
+  const std::string copy = copy_into(dir, file, name);
+  fs::resize_file(copy, fs::file_size(copy) / 2);
+  return copy;
+}
+
+TEST(Messages, ATruncatedHdf5FileIsBadInputWithAFixEverywhere) {
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  const std::string r = half_of(dir, p.recordings, "r.h5"), g = half_of(dir, p.gelsight, "g.h5");
+  const std::string d = half_of(dir, p.dataset, "d.h5"), m = half_of(dir, quick_model(), "m.h5");
+  std::ofstream traj(dir.file("t.csv"));
+  traj << "force,speed\n";
+  for (int i = 0; i < 100; ++i) traj << "1,100\n";
+  traj.close();
+  const std::vector<std::pair<std::string, std::vector<std::string>>> runs = {
+      {r, {"align", "--recordings", r, "--gelsight", p.gelsight, "-o", dir.file("o1.h5")}},
+      {g, {"align", "--recordings", p.recordings, "--gelsight", g, "-o", dir.file("o2.h5")}},
+      {d, {"split", d, "-o", dir.file("o.json")}},
+      {d, {"info", d}},
+      {d, {"info", d, "--json"}},
+      {d, {"train", d, "--split", p.split, "-o", dir.file("o3.h5")}},
+      {d, {"evaluate", d, "--split", p.split, "--model", quick_model(), "-o", dir.file("rep")}},
+      {m, {"predict", m, "--material", small_material(), "--force", "1", "--speed", "100"}},
+      {m, {"render", m, "--material", small_material(), "--trajectory", dir.file("t.csv"), "-o", dir.file("o.wav")}},
+      {d, {"qa", d}},
+  };
+  for (const auto& [file, args] : runs) {
+    SCOPED_TRACE(args[0] + " " + file);
+    expect_refusal(run_haptex(args), {file, "copy it again"});
+  }
+  EXPECT_EQ(files_named(dir.path().string(), {"o1.h5", "o2.h5", "o.json", "o3.h5", "rep", "o.wav"}), std::vector<std::string>{});
+  EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+}
+
+// A dataset whose window 3 names recording 999: split, train and evaluate name the window.
+TEST(Messages, AWindowOfAMissingRecordingIsNamed) {
+  const TempDir dir;
+  const std::string d = copy_into(dir, small_pipeline().dataset, "d.h5");
+  {
+    Edit edit(d);
+    std::vector<std::int32_t> recording = edit.dataset("windows/recording").read<std::int32_t>();
+    recording.at(3) = 999;
+    edit.replace<std::int32_t>("windows/recording", recording, {recording.size()});
+  }
+  nlohmann::json manifest = read_json(small_pipeline().split);
+  manifest["dataset"]["sha256"] = sha256_file(d);
+  write_json(dir.file("split.json"), manifest);
+  expect_refusal(run_haptex({"split", d, "-o", dir.file("s.json")}), {d, "/windows[3] (", "recording 999", "no such recording"});
+  expect_refusal(run_haptex(quick_train_args(d, dir.file("split.json"), dir.file("m.h5"))), {d, "/windows[3] (", "recording 999"});
+}
+
+// Names must be UTF-8; the first byte that is not is named, with the file, and nothing is written.
+TEST(Messages, ANameThatIsNotUtf8IsRefusedAtTheDoor) {
+  const TempDir dir;
+  ASSERT_EQ(run_haptex({"synth", "materials", "-n", "1", "--presses", "1", "--recordings", "1", "--seconds", "0.5", "--size", "64x48",
+                        "-o", dir.file("s")}).exit_code, 0);
+  const fs::path xml = *fs::directory_iterator(dir.file("s/recordings"));
+  std::string text = file_bytes(xml.string());
+  const auto open = text.find("<material>") + 10;
+  text.replace(open, text.find("</material>") - open, "Caf\xe9");
+  std::ofstream(xml, std::ios::binary) << text;
+  expect_refusal(run_haptex({"convert", "hatt", xml.string(), "-o", dir.file("r.h5")}), {xml.string(), "<material>", "not valid UTF-8", "byte 3", "Caf\\xe9"});
+  EXPECT_FALSE(fs::exists(dir.file("r.h5")));
+
+  const CommandResult record = run_haptex({"capture", "record", "--device", "fake:size=64x48,lockstep", "--material", "Caf\xe9",
+                                           "--presses", "1", "-o", dir.file("session")});
+  expect_refusal(record, {"--material", "not valid UTF-8", "byte 3"});
+  EXPECT_FALSE(fs::exists(dir.file("session")));
+
+  const fs::path material = *fs::directory_iterator(dir.file("s/gelsight"));
+  fs::rename(material, material.parent_path() / "Caf\xe9");
+  expect_refusal(run_haptex({"capture", "extract", dir.file("s/gelsight"), "-o", dir.file("g.h5"), "--json"}), {"not valid UTF-8", "byte 3"});
+  EXPECT_FALSE(fs::exists(dir.file("g.h5")));
+}
+
+// `cd material && haptex capture extract press_0 -o /abs/g.h5`: a bare name in the current folder
+// (a frame folder, a video, ./name) is an input like any other.
+TEST(Messages, RelativeInputsInTheCurrentFolderWork) {
+  const TempDir dir;
+  ASSERT_EQ(run_haptex({"synth", "materials", "-n", "2", "--presses", "1", "--recordings", "1", "--seconds", "0.5", "-o", dir.file("s")})
+                .exit_code,
+            0);
+  const std::string material = dir.file("s/gelsight/Sandpaper 1");
+  for (const std::string input : {"press_0", "./press_0", "press_0/"}) {
+    SCOPED_TRACE(input);
+    const CommandResult r = run_haptex_in(material, {"capture", "extract", input, "-o", dir.file("g.h5"), "--no-sheets", "--force"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("1 presses of 1 materials"), std::string::npos) << r.out;
+  }
+  const CommandResult folder = run_haptex_in(material, {"capture", "extract", ".", "-o", dir.file("g.h5"), "--no-sheets", "--force"});
+  ASSERT_EQ(folder.exit_code, 0) << folder.err;
+  const CommandResult info = run_haptex({"info", dir.file("g.h5")});
+  EXPECT_NE(info.out.find("sandpaper_1 (Sandpaper 1)"), std::string::npos) << "named after the current folder: " << info.out;
+}
+
+TEST(Messages, ANumberPastAFloatsRangeIsSaidToBeOutOfRange) {
+  const TempDir dir;
+  std::ofstream(dir.file("t.csv")) << "force,speed\n1e-400,100\n";
+  const CommandResult r = run_haptex({"predict", quick_model(), "--material", small_material(), "--csv", dir.file("t.csv")});
+  expect_refusal(r, {dir.file("t.csv"), "line 2", "out of range for a 64-bit float"});
+}
+
+TEST(Messages, SplitNamesTheDatasetOfAMaterialWithFourPresses) {
+  const TempDir dir;
+  const std::string d = copy_into(dir, small_pipeline().dataset, "d.h5");
+  const std::string id = read_json(small_pipeline().split)["materials"][0]["id"];
+  {
+    Edit edit(d);
+    edit.remove("materials/" + id + "/presses/4");
+  }
+  expect_refusal(run_haptex({"split", d, "-o", dir.file("s.json")}), {d, "/materials/" + id + "/presses", "4 presses"});
+}
+
+TEST(Messages, QaSaysWhichWindowStartsWhereItShouldNot) {
+  const TempDir dir;
+  const std::string d = copy_into(dir, small_pipeline().dataset, "d.h5");
+  {
+    Edit edit(d);
+    std::vector<std::int64_t> start = edit.dataset("windows/start").read<std::int64_t>();
+    start.at(0) = -390;
+    edit.replace<std::int64_t>("windows/start", start, {start.size()});
+  }
+  const CommandResult r = run_haptex({"qa", d});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.out.find("window 0 of its recording starts at sample -390, expected 9"), std::string::npos) << r.out;
+}
+
+TEST(Messages, AFakeCameraOfAbsurdSizeIsRefusedAndLeavesNoFolder) {
+  const TempDir dir;
+  expect_refusal(run_haptex({"capture", "record", "--device", "fake:size=100000x100000", "--material", "Cork", "-o", dir.file("s")}),
+                 {"--device", "size", "at most 8192x8192"});
+  EXPECT_FALSE(fs::exists(dir.file("s")));
+}
+
+}  // namespace
+}  // namespace haptex::test
