@@ -40,10 +40,13 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
     std::error_code ec;
     if (fs::is_directory(input, ec)) {
       std::vector<fs::path> found;
+      fs::path listing = input;  // the folder being read when listing fails: the entry last seen, or input itself
       for (auto it = fs::recursive_directory_iterator(input, ec); !ec && it != fs::recursive_directory_iterator();
-           it.increment(ec))
+           it.increment(ec)) {
+        listing = it->path();
         if (it->is_regular_file() && is_recording_file(it->path())) found.push_back(it->path());
-      if (ec) throw input_error(input, "", "cannot list the directory (" + ec.message() + ")", "Check its permissions");
+      }
+      if (ec) throw input_error(listing.string(), "", "cannot list the folder (" + ec.message() + ")", "Check its permissions");
       if (found.empty())
         throw input_error(input, "", "the directory holds no .xml or .csv recordings", "Point at the recordings' folder");
       std::sort(found.begin(), found.end());

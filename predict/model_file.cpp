@@ -10,12 +10,21 @@ namespace {
 
 using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
+// A training that diverged must not leave a model that prints NaN: the partial file is dropped.
+void require_finite(const h5::Group& g, const char* name, bool finite) {
+  if (!finite)
+    throw failure(g.where() + "/" + name + ": holds NaN or infinity, so the training diverged and no model was written. "
+                                           "Train again with a lower --learning-rate");
+}
+
 void write_vector(h5::Group g, const char* name, const Eigen::VectorXf& v) {
+  require_finite(g, name, v.allFinite());
   g.write_array<float>(name, std::span<const float>(v.data(), std::size_t(v.size())), {std::size_t(v.size())});
 }
 
 // (rows, cols) in HDF5's row-major order, as numpy shows it.
 void write_matrix(h5::Group g, const char* name, const Eigen::MatrixXf& m) {
+  require_finite(g, name, m.allFinite());
   const RowMajor r = m;
   g.write_array<float>(name, std::span<const float>(r.data(), std::size_t(r.size())), {std::size_t(r.rows()), std::size_t(r.cols())});
 }

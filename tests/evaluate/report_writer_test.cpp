@@ -391,16 +391,41 @@ TEST(ReportWriter, AnExistingFolderIsRefusedWithoutOverwriteAndKept) {
   EXPECT_FALSE(fs::exists(dir + ".partial"));
 }
 
+// An earlier report: every file of it listed in haptex-files.json, and one file of its own marked.
+void write_old_report(const std::string& dir) {
+  Evaluation old = sample_evaluation();
+  old.notes.push_back("the old report");
+  write_report(old, dir, false);
+  ASSERT_TRUE(fs::is_regular_file(dir + "/haptex-files.json"));
+}
+
 TEST(ReportWriter, OverwriteReplacesTheOldReport) {
   test::TempDir tmp;
   const std::string dir = tmp.file("report");
-  make_folder_with(dir, "old.txt", "the old report");
+  write_old_report(dir);
   const ReportFiles files = write_report(sample_evaluation(), dir + "/", true);
   EXPECT_EQ(files.directory, dir);
-  EXPECT_FALSE(fs::exists(dir + "/old.txt"));
+  EXPECT_EQ(read_text(dir + "/report.md").find("the old report"), std::string::npos);
   EXPECT_TRUE(fs::is_regular_file(dir + "/report.md"));
   EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
   EXPECT_FALSE(fs::exists(dir + ".partial"));
+}
+
+// Issue 11 point 2: overwrite replaces only what haptex wrote.
+TEST(ReportWriter, OverwriteRefusesAFolderHoldingAFileItDidNotWrite) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  write_old_report(dir);
+  make_folder_with(dir + "/mine", "notes.txt", "my notes");
+  std::string message;
+  EXPECT_EQ(kind_of_failure(sample_evaluation(), dir, true, &message), Error::Kind::bad_input);
+  EXPECT_NE(message.find("mine"), std::string::npos) << message;
+  EXPECT_EQ(read_text(dir + "/mine/notes.txt"), "my notes");
+  EXPECT_NE(read_text(dir + "/report.md").find("the old report"), std::string::npos);
+  make_folder_with(tmp.file("not_a_report"), "data.csv", "1,2");
+  EXPECT_EQ(kind_of_failure(sample_evaluation(), tmp.file("not_a_report"), true, &message), Error::Kind::bad_input);
+  EXPECT_NE(message.find("haptex-files.json"), std::string::npos) << message;
+  EXPECT_EQ(read_text(tmp.file("not_a_report/data.csv")), "1,2");
 }
 
 TEST(ReportWriter, AFailureLeavesNoHalfReportAndKeepsTheOldOne) {
@@ -413,10 +438,9 @@ TEST(ReportWriter, AFailureLeavesNoHalfReportAndKeepsTheOldOne) {
   EXPECT_FALSE(fs::exists(fresh + ".partial"));
 
   const std::string old = tmp.file("old");
-  make_folder_with(old, "old.txt", "the old report");
+  write_old_report(old);
   EXPECT_EQ(kind_of_failure(broken, old, true), Error::Kind::failed);
-  EXPECT_EQ(read_text(old + "/old.txt"), "the old report");
-  EXPECT_FALSE(fs::exists(old + "/report.md"));
+  EXPECT_NE(read_text(old + "/report.md").find("the old report"), std::string::npos);
   EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
 }
 

@@ -2,6 +2,8 @@
 // names the file, the place and the fix; never "unexpected error", a C++ exception's text or exit 1.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -90,6 +92,18 @@ TEST(Messages, ANameThatIsNotUtf8IsRefusedAtTheDoor) {
   fs::rename(material, material.parent_path() / "Caf\xe9");
   expect_refusal(run_haptex({"capture", "extract", dir.file("s/gelsight"), "-o", dir.file("g.h5"), "--json"}), {"not valid UTF-8", "byte 3"});
   EXPECT_FALSE(fs::exists(dir.file("g.h5")));
+
+  // A name attribute edited into a dataset: every reader of HDF5 strings refuses it.
+  const std::string d = copy_into(dir, small_pipeline().dataset, "d.h5");
+  {
+    Edit edit(d);
+    edit.remove("materials/" + small_material() + "@name");
+    edit.group("materials/" + small_material()).set_attr("name", "Caf\xe9");
+  }
+  const std::string where = "/materials/" + small_material() + " attribute 'name'";
+  expect_refusal(run_haptex({"info", d, "--json"}), {d, where, "not valid UTF-8"});
+  expect_refusal(run_haptex({"split", d, "-o", dir.file("split.json")}), {d, where, "not valid UTF-8"});
+  EXPECT_FALSE(fs::exists(dir.file("split.json")));
 }
 
 // `cd material && haptex capture extract press_0 -o /abs/g.h5`: a bare name in the current folder
@@ -110,6 +124,27 @@ TEST(Messages, RelativeInputsInTheCurrentFolderWork) {
   ASSERT_EQ(folder.exit_code, 0) << folder.err;
   const CommandResult info = run_haptex({"info", dir.file("g.h5")});
   EXPECT_NE(info.out.find("sandpaper_1 (Sandpaper 1)"), std::string::npos) << "named after the current folder: " << info.out;
+}
+
+// A folder no one may list, inside the folder given: the message names it, not its parent. Root
+// reads any folder, so as root the command runs as nobody (setpriv).
+TEST(Messages, AnUnreadableSubfolderIsNamedItself) {
+  const TempDir dir;
+  fs::create_directories(dir.file("recs/Secret"));
+  ASSERT_EQ(run_haptex({"synth", "materials", "-n", "1", "--presses", "1", "--recordings", "1", "--seconds", "0.5", "--size", "64x48",
+                        "-o", dir.file("s")}).exit_code, 0);
+  fs::copy(dir.file("s/recordings"), dir.file("recs"));
+  fs::permissions(dir.path(), fs::perms::all, fs::perm_options::add);
+  fs::permissions(dir.file("recs"), fs::perms::all, fs::perm_options::add);
+  fs::permissions(dir.file("recs/Secret"), fs::perms::none);
+  std::vector<std::string> argv = {HAPTEX_BINARY, "convert", "hatt", dir.file("recs"), "-o", dir.file("r.h5")};
+  if (::geteuid() == 0) {
+    if (run_program({"setpriv", "--version"}).exit_code != 0) GTEST_SKIP() << "running as root without setpriv";
+    argv.insert(argv.begin(), {"setpriv", "--reuid=65534", "--regid=65534", "--clear-groups"});
+  }
+  const CommandResult r = run_program(argv);
+  fs::permissions(dir.file("recs/Secret"), fs::perms::owner_all);
+  expect_refusal(r, {dir.file("recs/Secret") + ": cannot list the folder"});
 }
 
 TEST(Messages, ANumberPastAFloatsRangeIsSaidToBeOutOfRange) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "core/error.hpp"
@@ -115,6 +116,24 @@ TEST(ModelFile, OtherFilesAreRefusedWithTheirName) {
     FAIL() << "a broken model was read";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("broken.h5"), std::string::npos) << e.what();
+  }
+}
+
+// Issue 11 point 3: a diverged training (NaN or infinite weights) writes no model at all.
+TEST(ModelFile, ADivergedModelIsNotWritten) {
+  const test::TempDir dir;
+  for (const float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+    Model diverged = trained(Variant::unified);
+    diverged.nets[0].predictor.layers[1].bias[7] = bad;
+    try {
+      write_model(diverged, dir.file("diverged.h5"), false, "test");
+      ADD_FAILURE() << "a model holding " << bad << " was written";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("/nets/0/predictor/layers/1/bias"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("--learning-rate"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir.file("diverged.h5")));
+    EXPECT_FALSE(std::filesystem::exists(dir.file("diverged.h5.partial")));
   }
 }
 
