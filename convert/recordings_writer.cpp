@@ -63,7 +63,10 @@ WrittenRecording write_recording(h5::Group root, const Recording& r) {
   g.set_attr("lowpass_order", kLowpassOrder);
   g.set_attr("lowpass_cutoff_hz", kLowpassCutoffHz);
   g.set_attr("lowpass_method", "sosfiltfilt, odd padding, default pad length (scipy semantics)");
-  g.set_attr("accel_reduction", "DFT321 over the whole recording (Landin et al. 2010)");
+  g.set_attr("accel_reduction", "DFT321 frame by frame, phase along the axes' principal direction (Landin et al. 2010; "
+                                "schemas/hdf5-layout.md)");
+  g.set_attr("accel_reduction_window", std::int64_t(signal::kDft321Frames.window));
+  g.set_attr("accel_reduction_hop", std::int64_t(signal::kDft321Frames.hop));
   g.set_attr("source_file", r.source_path);
   g.set_attr("source_sha256", r.source_sha256);
   if (r.texture) g.set_attr("hatt_texture", *r.texture);

@@ -49,6 +49,10 @@ const std::vector<CheckInfo>& all_checks() {
       {"signal.accel_spectrum", error,
        "acceleration has >= 1% of its power and >= 0.001 m/s^2 RMS between 100 and 1000 Hz",
        "Record the accelerometer unfiltered (or anti-aliased above 1 kHz) at 10 kHz"},
+      {"signal.reduction_energy", error,
+       "every 100 ms window of accel holds 0.8 to 1.25 times the energy of the three raw axes in that window",
+       "Convert the recording again: accel must be the frame-by-frame DFT321 of accel_xyz (older files reduced "
+       "the whole recording at once)"},
       {"filter.lowpass", error, "force_normal_lp and speed_lp have at most 1e-5 of their power above 40 Hz",
        "Convert the recording again: the *_lp signals must be the 20 Hz zero-phase Butterworth output"},
       {"filter.raw", error, "force_normal and speed keep at least 1e-8 of their power above 40 Hz (unfiltered)",

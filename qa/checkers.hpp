@@ -32,10 +32,10 @@ class SignalChecks {
   std::vector<CheckResult> results() const;
 
  private:
-  CheckTally nan_, rate_, duration_, short_, clipping_, force_, speed_, spectrum_;
+  CheckTally nan_, rate_, duration_, short_, clipping_, force_, speed_, spectrum_, reduction_;
   // The worst values seen, for the pass messages.
   double worst_clip_share_ = 0, force_lo_ = INFINITY, force_hi_ = -INFINITY, speed_lo_ = INFINITY,
-         speed_hi_ = -INFINITY, lowest_band_share_ = INFINITY;
+         speed_hi_ = -INFINITY, lowest_band_share_ = INFINITY, reduction_lo_ = INFINITY, reduction_hi_ = 0;
 };
 
 // filter.*: the low-passed and raw force and speed of each recording.

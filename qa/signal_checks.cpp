@@ -55,6 +55,28 @@ void check_range(CheckTally& tally, const LoadedRecording& r, const char* name, 
   else tally.pass();
 }
 
+// Per 100 ms window, the energy of accel over that of the three axes (quiet windows left out).
+std::vector<std::pair<std::size_t, double>> reduction_ratios(const Signal& accel, const Signal& xyz) {
+  const std::size_t n = std::min(accel.rows, xyz.rows), w = kReductionWindowSamples;
+  std::vector<std::pair<std::size_t, double>> ratios;
+  std::vector<double> axes;
+  for (std::size_t s = 0; s + w <= n; s += w) {
+    double sum = 0;
+    for (std::size_t i = s; i < s + w; ++i)
+      for (std::size_t c = 0; c < 3; ++c) sum += xyz.at(i, c) * xyz.at(i, c);
+    axes.push_back(sum);
+  }
+  double mean = 0;
+  for (double e : axes) mean += e / double(std::max<std::size_t>(1, axes.size()));
+  for (std::size_t k = 0; k < axes.size(); ++k) {
+    if (!(axes[k] > kReductionQuiet * mean)) continue;
+    double sum = 0;
+    for (std::size_t i = k * w; i < (k + 1) * w; ++i) sum += accel.at(i) * accel.at(i);
+    ratios.emplace_back(k * w, sum / axes[k]);
+  }
+  return ratios;
+}
+
 }  // namespace
 
 SignalChecks::SignalChecks()
@@ -65,7 +87,8 @@ SignalChecks::SignalChecks()
       clipping_("signal.clipping", "acceleration channels"),
       force_("signal.force_range", "recordings"),
       speed_("signal.speed_range", "recordings"),
-      spectrum_("signal.accel_spectrum", "recordings") {}
+      spectrum_("signal.accel_spectrum", "recordings"),
+      reduction_("signal.reduction_energy", "recordings") {}
 
 void SignalChecks::add(const LoadedRecording& r) {
   // NaN / Inf in any signal.
@@ -130,6 +153,22 @@ void SignalChecks::add(const LoadedRecording& r) {
     else clipping_.pass();
   }
 
+  // DFT321 keeps each window's energy.
+  if (!accel.ok() || !xyz.ok()) {
+    reduction_.skip(r.path + ": accel or accel_xyz unreadable");
+  } else {
+    std::pair<std::size_t, double> worst{0, 1.0};
+    for (const auto& [start, ratio] : reduction_ratios(accel, xyz)) {
+      reduction_lo_ = std::min(reduction_lo_, ratio);
+      reduction_hi_ = std::max(reduction_hi_, ratio);
+      if (!(std::abs(std::log(ratio)) <= std::abs(std::log(worst.second)))) worst = {start, ratio};
+    }
+    if (!(worst.second >= kReductionEnergyLow && worst.second <= kReductionEnergyHigh))
+      reduction_.fail(r.path + "/accel", "the 100 ms window at sample " + std::to_string(worst.first) + " holds " +
+                                             number(worst.second, 3) + " x the energy of the three axes (0.8 to 1.25 expected)");
+    else reduction_.pass();
+  }
+
   check_range(force_, r, "force_normal", kForceMinN, kForceMaxN, kForcePeakAtLeastN, "N", force_lo_, force_hi_);
   check_range(speed_, r, "speed", kSpeedMinMmS, kSpeedMaxMmS, kSpeedPeakAtLeastMmS, "mm/s", speed_lo_, speed_hi_);
 
@@ -150,13 +189,15 @@ void SignalChecks::add(const LoadedRecording& r) {
 }
 
 std::vector<CheckResult> SignalChecks::results() const {
-  CheckTally clipping = clipping_, force = force_, speed = speed_, spectrum = spectrum_;
+  CheckTally clipping = clipping_, force = force_, speed = speed_, spectrum = spectrum_, reduction = reduction_;
+  reduction.set_pass_message("every 100 ms window of accel holds " + number(reduction_lo_, 3) + " to " + number(reduction_hi_, 3) +
+                             " x the axes' energy");
   clipping.set_pass_message("at most " + number(100 * worst_clip_share_, 3) + "% of any channel's samples in flat tops");
   force.set_pass_message("force_normal ranges " + number(force_lo_, 4) + " .. " + number(force_hi_, 4) + " N");
   speed.set_pass_message("speed ranges " + number(speed_lo_, 4) + " .. " + number(speed_hi_, 4) + " mm/s");
   spectrum.set_pass_message("100-1000 Hz holds at least " + number(100 * lowest_band_share_, 3) + "% of the power");
   return {nan_.result(),      rate_.result(),  duration_.result(), short_.result(),
-          clipping.result(),  force.result(),  speed.result(),     spectrum.result()};
+          clipping.result(),  force.result(),  speed.result(),     spectrum.result(), reduction.result()};
 }
 
 }  // namespace haptex::qa

@@ -27,8 +27,10 @@ TEST(GnuplotText, ReplacesEveryCharacterGnuplotCouldExpand) {
 TEST(GnuplotText, GnuplotPrintsTheLabelAndRunsNothing) {
   if (!process::program_on_path("gnuplot")) GTEST_SKIP() << "gnuplot is not installed";
   const TempDir dir;
-  const std::vector<std::string> labels = {
-      "Evil `touch x` 1' ; system 'touch y' ; y = '", "\"; system(\"touch z\"); \"", "@macro `touch w`", "a\\' . system('touch v') . '"};
+  const std::string d = dir.path().string();
+  // The first is issue 11's material name, aimed at this folder instead of /tmp.
+  const std::vector<std::string> labels = {"Evil `touch " + d + "/x` 1' ; system 'touch " + d + "/y' ; y = '",
+                                           "\"; system(\"touch z\"); \"", "@macro `touch w`", "a\\' . system('touch v') . '"};
   std::ofstream script(dir.file("print.gnuplot"));
   script << "set print '-'\n";
   for (const std::string& label : labels) script << "print " << gnuplot::text(label) << "\n";

@@ -64,11 +64,45 @@ def butter_cases(rng):
     save("force_long_filtered", sig.sosfiltfilt(sig.butter(4, 20, fs=FS, output="sos"), long_x))
 
 
-def dft321_reference(axes):
-    spectra = np.fft.rfft(axes, axis=1)
+def combine(spectra):
+    """DFT321 of one spectrum per axis (axis 0): the axes' energy, the phase of their sum."""
     magnitude = np.sqrt(np.sum(np.abs(spectra) ** 2, axis=0))
-    phase = np.angle(np.sum(spectra, axis=0))
-    return np.fft.irfft(magnitude * np.exp(1j * phase), axes.shape[1])
+    return magnitude * np.exp(1j * np.angle(np.sum(spectra, axis=0)))
+
+
+def dft321_whole_recording(axes):
+    return np.fft.irfft(combine(np.fft.rfft(axes, axis=1)), axes.shape[1])
+
+
+def phase_weights(spectra):
+    """Per frame: weights that start as the plain sum of the axes and move toward the frame's principal
+    direction as far as it stands out ((l1 - l2) / l1 of the covariance's eigenvalues), the direction's
+    sign the one closer to the weights before, as core/signal/dft321.cpp does."""
+    covariance = np.einsum("ibm,jbm->mij", spectra, spectra.conj()).real  # frame, axis, axis
+    w = np.ones(3) / np.sqrt(3)
+    weights = []
+    for c in covariance:
+        eigenvalues, vectors = np.linalg.eigh(c)
+        v = vectors[:, -1]
+        if v @ w < 0:
+            v = -v
+        clarity = (eigenvalues[2] - eigenvalues[1]) / eigenvalues[2] if eigenvalues[2] > 0 else 0.0
+        w = (1 - clarity) * w + clarity * v
+        w /= np.linalg.norm(w)
+        weights.append(w)
+    return np.array(weights)  # frame, axis
+
+
+def dft321_framewise(axes, window=1024, hop=256):
+    """Frame by frame with scipy's STFT (periodic Hann, frames centred by zero padding) and its
+    weighted overlap-add inverse: an implementation independent of haptex's core/signal/stft."""
+    n = axes.shape[1]
+    spectra = np.array([sig.stft(a, window="hann", nperseg=window, noverlap=window - hop, boundary="zeros",
+                                 padded=True)[2] for a in axes])  # axis, bin, frame
+    magnitude = np.sqrt(np.sum(np.abs(spectra) ** 2, axis=0))
+    phase = np.angle(np.einsum("mi,ibm->bm", phase_weights(spectra), spectra))
+    _, y = sig.istft(magnitude * np.exp(1j * phase), window="hann", nperseg=window, noverlap=window - hop, boundary=True)
+    return y[:n]
 
 
 def dft321_cases(rng):
@@ -79,7 +113,16 @@ def dft321_cases(rng):
         axes[1] -= 2 * np.sin(2 * np.pi * 200 * t)  # partly cancels x in the plain sum
         axes[2] += 0.5
         save(f"dft321_axes_{tag}", axes)
-        save(f"dft321_{tag}", dft321_reference(axes))
+        save(f"dft321_{tag}", dft321_whole_recording(axes))
+        save(f"dft321_framewise_{tag}", dft321_framewise(axes))
+    # A tool turning twice in 2 s: one vibration seen through axis weights that change sign.
+    n = 20000
+    t = np.arange(n) / FS
+    source = rng.standard_normal(n) + 2 * np.sin(2 * np.pi * 230 * t)
+    angle = 2 * np.pi * t  # one turn per second
+    axes = np.array([np.cos(angle) * source, np.sin(angle) * source, 0.3 * source]) + 0.05 * rng.standard_normal((3, n))
+    save("dft321_axes_turning", axes)
+    save("dft321_framewise_turning", dft321_framewise(axes))
 
 
 def spectrum_cases(rng):

@@ -18,7 +18,7 @@ void expect_clean(const qa::Report& report, qa::FileKind kind, std::size_t check
 }
 
 TEST(GoodFiles, RecordingsPassEveryCheck) {
-  expect_clean(qa::run_qa({small_pipeline().recordings, {}}), qa::FileKind::recordings, 15);
+  expect_clean(qa::run_qa({small_pipeline().recordings, {}}), qa::FileKind::recordings, 16);
 }
 
 TEST(GoodFiles, GelsightPassesEveryCheck) {
@@ -26,7 +26,7 @@ TEST(GoodFiles, GelsightPassesEveryCheck) {
 }
 
 TEST(GoodFiles, DatasetWithItsSplitPassesEveryCheck) {
-  expect_clean(qa::run_qa({small_pipeline().dataset, small_pipeline().split}), qa::FileKind::dataset, 4 + 11 + 6 + 2 + 9);
+  expect_clean(qa::run_qa({small_pipeline().dataset, small_pipeline().split}), qa::FileKind::dataset, 4 + 12 + 6 + 2 + 9);
 }
 
 TEST(GoodFiles, SplitManifestAloneFindsItsDataset) {

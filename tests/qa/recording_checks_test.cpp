@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/signal/butterworth.hpp"
+#include "core/signal/dft321.hpp"
 #include "core/signal/sosfilt.hpp"
 #include "qa/run_qa.hpp"
 #include "tests/support/mutations.hpp"
@@ -130,13 +131,26 @@ TEST_F(RecordingsMutation, TwoSecondRecordingIsSignalShortAWarning) {
   EXPECT_EQ(r.errors(), 0);
 }
 
+// accel made again from the (edited) axes, as convert would make it.
+void reduce_again(Edit& e, const std::string& recording) {
+  const std::vector<float> xyz = e.dataset(recording + "/accel_xyz").read<float>();
+  std::vector<double> axis[3];
+  for (std::size_t i = 0; i < xyz.size(); ++i) axis[i % 3].push_back(xyz[i]);
+  const std::vector<double> reduced = signal::dft321(axis[0], axis[1], axis[2]);
+  e.change_floats(recording + "/accel", [&](std::vector<float>& v) { v.assign(reduced.begin(), reduced.end()); });
+}
+
 TEST_F(RecordingsMutation, RailedAxisIsSignalClipping) {
-  Edit(file_).change_floats(kRecording + "/accel_xyz", [](std::vector<float>& v) {
-    float peak = 0;
-    for (std::size_t i = 0; i < v.size(); i += 3) peak = std::max(peak, std::abs(v[i]));
-    const float rail = 0.3f * peak;  // an accelerometer range far too small for the stroke
-    for (std::size_t i = 0; i < v.size(); i += 3) v[i] = std::clamp(v[i], -rail, rail);
-  });
+  {
+    Edit e(file_);
+    e.change_floats(kRecording + "/accel_xyz", [](std::vector<float>& v) {
+      float peak = 0;
+      for (std::size_t i = 0; i < v.size(); i += 3) peak = std::max(peak, std::abs(v[i]));
+      const float rail = 0.3f * peak;  // an accelerometer range far too small for the stroke
+      for (std::size_t i = 0; i < v.size(); i += 3) v[i] = std::clamp(v[i], -rail, rail);
+    });
+    reduce_again(e, kRecording);
+  }
   const qa::Report r = qa();
   expect_only(r, "signal.clipping");
   EXPECT_NE(r.find("signal.clipping")->message.find("accel_xyz[:, 0]"), std::string::npos) << r.find("signal.clipping")->message;
@@ -169,11 +183,19 @@ TEST_F(RecordingsMutation, SpeedInMetresPerSecondIsSignalSpeedRange) {
 }
 
 TEST_F(RecordingsMutation, AccelerationLowPassedAt50HzIsSignalAccelSpectrum) {
-  Edit(file_).change_floats(kRecording + "/accel", [](std::vector<float>& v) {
-    const auto sos = signal::butter_lowpass_hz(4, 50, 10000);
-    const auto filtered = signal::sosfiltfilt(sos, std::vector<double>(v.begin(), v.end()));
-    std::copy(filtered.begin(), filtered.end(), v.begin());
-  });
+  {
+    Edit e(file_);
+    e.change_floats(kRecording + "/accel_xyz", [](std::vector<float>& v) {
+      const auto sos = signal::butter_lowpass_hz(4, 50, 10000);
+      for (std::size_t c = 0; c < 3; ++c) {
+        std::vector<double> axis;
+        for (std::size_t i = c; i < v.size(); i += 3) axis.push_back(v[i]);
+        const auto filtered = signal::sosfiltfilt(sos, axis);
+        for (std::size_t i = 0; i < filtered.size(); ++i) v[3 * i + c] = float(filtered[i]);
+      }
+    });
+    reduce_again(e, kRecording);
+  }
   expect_only(qa(), "signal.accel_spectrum");
 }
 
@@ -212,6 +234,18 @@ TEST_F(RecordingsMutation, SameSourceHashIsRecordingsDuplicate) {
     e.group(kOther).set_attr("source_sha256", e.group(kRecording).attr_string("source_sha256"));
   }
   expect_only(qa(), "recordings.duplicate");
+}
+
+// A window whose reduced signal lost or gained energy against the axes, as a whole-recording DFT321
+// of a turning tool leaves them (issue 12, section 0).
+TEST_F(RecordingsMutation, AWindowOffTheAxesEnergyIsSignalReductionEnergy) {
+  Edit(file_).change_floats(kRecording + "/accel", [](std::vector<float>& v) {
+    for (std::size_t i = 2000; i < 3000; ++i) v[i] *= 0.5f;
+  });
+  const qa::Report r = qa();
+  expect_only(r, "signal.reduction_energy");
+  EXPECT_NE(r.find("signal.reduction_energy")->message.find("window at sample 2000 holds 0.25"), std::string::npos)
+      << r.find("signal.reduction_energy")->message;
 }
 
 TEST_F(RecordingsMutation, SameSamplesUnderAnotherSourceIsRecordingsDuplicate) {
