@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/version.hpp"
+#include "evaluate/paper_figures.hpp"
 
 namespace haptex::evaluate {
 namespace {
@@ -43,22 +44,20 @@ nlohmann::json experiment_json(const Experiment& x, const std::string& csv) {
                         {"mean_baseline", json_number(x.mean_baseline())},
                         {"materials", materials}};
   if (const auto paper = paper_figure(x.id)) {
-    doc["paper"] = {{"share_significantly_better", paper->share}, {"text", paper->text}};
-    if (paper->count) doc["paper"]["significantly_better"] = *paper->count;
-    if (paper->of) doc["paper"]["materials"] = *paper->of;
+    nlohmann::json& p = doc["paper"];
+    p = {{"materials", paper->materials},
+         {"share_better", paper->better_share()},
+         {"significantly_better", paper->significantly_better},
+         {"share_significantly_better", paper->significantly_better_share()},
+         {"text", paper->text()}};
+    if (paper->better) p["better"] = *paper->better;
+    if (paper->better_percent) p["better_percent"] = *paper->better_percent;
+    if (paper->significantly_worse) p["significantly_worse"] = *paper->significantly_worse;
   }
   return doc;
 }
 
 }  // namespace
-
-std::optional<PaperFigure> paper_figure(std::string_view id) {
-  if (id.starts_with("unified-new-actions"))
-    return PaperFigure{82.0 / 93.0, 82, 93, "82 of 93 materials"};
-  if (id.starts_with("stitched-"))
-    return PaperFigure{0.86, std::nullopt, std::nullopt, "86 % of materials"};
-  return std::nullopt;
-}
 
 nlohmann::json json_number(double x) {
   if (std::isnan(x)) return "nan";

@@ -17,16 +17,6 @@ namespace haptex::evaluate {
 
 inline constexpr double kSignificanceLevel = 0.05;  // MaterialComparison::significant(): Welch, two-sided
 
-// What Heravi et al. (ICRA 2020) report for an experiment haptex repeats: the share of materials on
-// which their model was significantly better than the AR baseline.
-struct PaperFigure {
-  double share = 0;                      // of the materials
-  std::optional<std::size_t> count, of;  // when the paper gives the counts
-  std::string text;                      // "82 of 93 materials"
-};
-// unified-new-actions*: 82 of 93; stitched-*: 86 %. Other experiments: nothing.
-std::optional<PaperFigure> paper_figure(std::string_view experiment_id);
-
 // A double as JSON: the number, or "inf", "-inf", "nan".
 nlohmann::json json_number(double x);
 

@@ -233,10 +233,14 @@ TEST(ReportWriter, ResultsJsonFollowsTheSchemaAndCountsTheTotals) {
   EXPECT_EQ(actions["materials"][1]["name"], "Brick, 2");
   EXPECT_EQ(actions["materials"][1]["significant"], true);
   EXPECT_EQ(actions["materials"][1]["better"], false);
-  EXPECT_EQ(actions["paper"]["significantly_better"], 82);
+  EXPECT_EQ(actions["paper"]["better"], 82);
+  EXPECT_EQ(actions["paper"]["significantly_better"], 78);
   EXPECT_EQ(actions["paper"]["materials"], 93);
-  EXPECT_EQ(doc["experiments"][1]["paper"]["share_significantly_better"], 0.86);
-  EXPECT_FALSE(doc["experiments"][2].contains("paper"));
+  EXPECT_EQ(doc["experiments"][1]["paper"]["better_percent"], 86.02);
+  EXPECT_EQ(doc["experiments"][1]["paper"]["significantly_better"], 52);
+  EXPECT_EQ(doc["experiments"][1]["paper"]["significantly_worse"], 2);
+  EXPECT_EQ(doc["experiments"][2]["paper"]["better"], 75) << "per-material, with a model label";
+  EXPECT_EQ(doc["experiments"][2]["paper"]["significantly_better"], 65);
   EXPECT_EQ(doc["experiments"][2]["csv"], "experiment-per-material__small.h5_.csv");
   EXPECT_EQ(doc["speed"].size(), e.speed.size());
   EXPECT_EQ(doc["latents"][2]["x"], -1.25);
@@ -306,9 +310,12 @@ TEST(ReportWriter, MarkdownGivesTotalsPaperFiguresAndTables) {
   EXPECT_NE(md.find("better on 3 of 5 materials, significantly on 2, significantly worse on 1"), std::string::npos);
   EXPECT_NE(md.find("better on 1 of 2 materials, significantly on 1, significantly worse on 0"), std::string::npos);
   EXPECT_NE(md.find("better on 1 of 1 material, significantly on 1, significantly worse on 0"), std::string::npos);
-  EXPECT_NE(md.find("82 of 93 materials (88 %)"), std::string::npos);
-  EXPECT_NE(md.find("86 % of materials"), std::string::npos);
-  EXPECT_NE(md.find("| 5 | 3 | 2 (40 %) | 1 |"), std::string::npos) << "totals row of unified-new-actions";
+  EXPECT_NE(md.find("better on 82 of 93 (88.2 %), significantly on 78 (83.9 %)"), std::string::npos);
+  EXPECT_NE(md.find("better on 77 of 93 (82.8 %), significantly on 71 (76.3 %)"), std::string::npos);
+  EXPECT_NE(md.find("better on 75 of 93 (80.6 %), significantly on 65 (69.9 %)"), std::string::npos);
+  EXPECT_NE(md.find("better on 86.02 %, significantly better on 52 of 93 (55.9 %), significantly worse on 2 (2.2 %)"),
+            std::string::npos);
+  EXPECT_NE(md.find("| 5 | 3 (60 %) | 2 (40 %) | 1 (20 %) |"), std::string::npos) << "totals row of unified-new-actions";
   EXPECT_NE(md.find(std::string(64, 'a')), std::string::npos) << "the dataset's hash";
   EXPECT_NE(md.find("`models/small.h5`"), std::string::npos);
   EXPECT_NE(md.find("| Brick, 2 | 120 | 1.100 | 0.7000 | -0.6000 | -0.4000 | -0.1000 | 3.100 | 0.0021 | worse \\* |"),

@@ -137,7 +137,7 @@ TEST(Messages, AnUnreadableSubfolderIsNamedItself) {
   fs::permissions(dir.path(), fs::perms::all, fs::perm_options::add);
   fs::permissions(dir.file("recs"), fs::perms::all, fs::perm_options::add);
   fs::permissions(dir.file("recs/Secret"), fs::perms::none);
-  std::vector<std::string> argv = {HAPTEX_BINARY, "convert", "hatt", dir.file("recs"), "-o", dir.file("r.h5")};
+  std::vector<std::string> argv = {haptex_binary(), "convert", "hatt", dir.file("recs"), "-o", dir.file("r.h5")};
   if (::geteuid() == 0) {
     if (run_program({"setpriv", "--version"}).exit_code != 0) GTEST_SKIP() << "running as root without setpriv";
     argv.insert(argv.begin(), {"setpriv", "--reuid=65534", "--regid=65534", "--clear-groups"});

@@ -1,5 +1,6 @@
 #include "tests/support/run_haptex.hpp"
 
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 
@@ -23,8 +24,13 @@ CommandResult run_program(const std::vector<std::string>& argv, const std::strin
   return result;
 }
 
+std::string haptex_binary() {
+  const char* other = std::getenv("HAPTEX_TEST_BINARY");
+  return other && *other ? other : HAPTEX_BINARY;
+}
+
 CommandResult run_haptex_in(const std::string& directory, const std::vector<std::string>& args) {
-  std::vector<std::string> argv{HAPTEX_BINARY};
+  std::vector<std::string> argv{haptex_binary()};
   argv.insert(argv.end(), args.begin(), args.end());
   return run_program(argv, directory);
 }

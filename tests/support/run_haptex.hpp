@@ -11,6 +11,10 @@ struct CommandResult {
   std::string out, err;
 };
 
+// The haptex binary the tests run: this build's, or the one HAPTEX_TEST_BINARY names (to run the
+// end-to-end tests against another build, e.g. the previous release, and see which fail there).
+std::string haptex_binary();
+
 CommandResult run_haptex(const std::vector<std::string>& args);
 // The same with `directory` as the working directory (relative paths in args are relative to it).
 CommandResult run_haptex_in(const std::string& directory, const std::vector<std::string>& args);

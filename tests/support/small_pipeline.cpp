@@ -105,7 +105,7 @@ fs::path cache_dir() { return test_program().parent_path() / ("small_pipeline_" 
 
 std::string build_stamp() {
   auto mtime = [](const fs::path& p) { return std::to_string(fs::last_write_time(p).time_since_epoch().count()); };
-  return mtime(HAPTEX_BINARY) + " " + mtime(test_program()) + "\n";
+  return haptex_binary() + " " + mtime(haptex_binary()) + " " + mtime(test_program()) + "\n";
 }
 
 std::string read_text(const fs::path& p) {
