@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "tests/support/npy.hpp"
+#include "tests/support/random_signal.hpp"
 
 namespace haptex::signal {
 namespace {
@@ -50,14 +51,6 @@ Axes oriented(const std::vector<double>& source, double wx, double wy, double wz
   return a;
 }
 
-std::vector<double> noise(std::size_t n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> normal;
-  std::vector<double> v(n);
-  for (double& x : v) x = normal(rng);
-  return v;
-}
-
 TEST(SignalDft321, WholeRecordingMatchesNumpyEvenAndOddLengths) {
   for (const std::string tag : {"even", "odd"}) {
     const Axes a = golden_axes(tag);
@@ -86,13 +79,13 @@ TEST(SignalDft321, ATurningToolKeepsEveryWindowsEnergy) {
 }
 
 TEST(SignalDft321, AFixedOrientationGivesTheWholeRecordingResult) {
-  const Axes a = oriented(noise(12345, 3), 0.3, -0.8, 0.9);
+  const Axes a = oriented(test::random_signal(12345, 3), 0.3, -0.8, 0.9);
   EXPECT_LT(max_scaled_error(dft321(a.x, a.y, a.z), dft321_whole_recording(a.x, a.y, a.z)), 1e-9);
 }
 
 // Weights that sum to zero leave the plain sum of the axes no phase; the principal direction has one.
 TEST(SignalDft321, AxesWhoseWeightsSumToZeroKeepTheirEnergy) {
-  const Axes a = oriented(noise(20000, 4), 0.3, -0.8, 0.5);
+  const Axes a = oriented(test::random_signal(20000, 4), 0.3, -0.8, 0.5);
   for (const double r : window_energy_ratios(dft321(a.x, a.y, a.z), a)) EXPECT_NEAR(r, 1.0, 0.02);
 }
 
@@ -109,7 +102,7 @@ TEST(SignalDft321, WholeRecordingKeepsTotalSpectralEnergy) {
 
 // With one axis only, magnitude and phase are that axis' own: the signal comes back unchanged.
 TEST(SignalDft321, SingleAxisIsReturnedUnchanged) {
-  const std::vector<double> x = noise(1001, 7), zero(1001, 0.0);
+  const std::vector<double> x = test::random_signal(1001, 7), zero(1001, 0.0);
   std::vector<double> negated(x.size());
   for (std::size_t i = 0; i < x.size(); ++i) negated[i] = -x[i];
   for (const auto& reduce : {dft321_whole_recording, +[](std::span<const double> a, std::span<const double> b, std::span<const double> c) {

@@ -9,11 +9,13 @@
 
 #include "core/error.hpp"
 #include "tests/support/npy.hpp"
+#include "tests/support/random_signal.hpp"
 
 namespace haptex::signal {
 namespace {
 
 using test::load_golden;
+using test::random_signal;
 using test::max_scaled_error;
 
 std::vector<double> interleave(const std::vector<std::complex<double>>& values) {
@@ -23,14 +25,6 @@ std::vector<double> interleave(const std::vector<std::complex<double>>& values) 
     out.push_back(v.imag());
   }
   return out;
-}
-
-std::vector<double> random_signal(std::size_t n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> noise;
-  std::vector<double> x(n);
-  for (double& v : x) v = noise(rng);
-  return x;
 }
 
 TEST(SignalStft, HannMatchesScipyGetWindow) {
