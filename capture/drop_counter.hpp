@@ -10,8 +10,10 @@ class DropCounter {
  public:
   explicit DropCounter(double period_ns) : period_ns_(period_ns) {}
 
-  // Returns how many frames were lost just before this one.
-  std::uint64_t observe(std::uint32_t sequence, std::int64_t timestamp_ns);
+  // Returns how many frames were lost just before this one. `flagged`: buffers the driver returned
+  // flagged as errors since the previous frame (counted apart as error buffers): the sequence numbers
+  // they used are no loss.
+  std::uint64_t observe(std::uint32_t sequence, std::int64_t timestamp_ns, std::uint64_t flagged = 0);
 
   std::uint64_t dropped() const { return dropped_; }
   std::uint64_t sequence_gaps() const { return sequence_gaps_; }    // losses the sequence numbers showed

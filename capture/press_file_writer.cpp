@@ -49,7 +49,7 @@ void PressFileWriter::append(const Frame& frame, float score, std::uint64_t erro
   summary_.last_sequence = frame.sequence;
   if (!timestamps_.empty()) summary_.error_frames += error_buffers;
   if (std::isnan(score)) ++summary_.corrupt_frames;
-  drops_.observe(frame.sequence, frame.timestamp_ns);
+  drops_.observe(frame.sequence, frame.timestamp_ns, error_buffers);
   timestamps_.push_back(frame.timestamp_ns);
   sequences_.push_back(frame.sequence);
   flags_.push_back(frame.flags);

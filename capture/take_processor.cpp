@@ -59,7 +59,7 @@ cv::Mat TakeProcessor::decode_full(const Frame& frame) const {
 void TakeProcessor::process(TakeFrame&& frame) {
   if (enough_presses()) return;
   ++frames_;
-  drops_.observe(frame.frame.sequence, frame.frame.timestamp_ns);
+  drops_.observe(frame.frame.sequence, frame.frame.timestamp_ns, frame.error_buffers - error_buffers_);
   error_buffers_ = frame.error_buffers;
   poll_timeouts_ = frame.poll_timeouts;
   if (frame.take_index < options_.warmup_frames) return;

@@ -25,6 +25,16 @@ TEST(DropCounter, TimestampGapsCountWhenSequenceNumbersDoNot) {
   EXPECT_EQ(d.timestamp_gaps(), 2u);
 }
 
+// Issue 11 point 5: a buffer the driver returned flagged (an error buffer) used a sequence number and
+// a frame period, but it is no lost frame: it is counted apart.
+TEST(DropCounter, FlaggedBuffersAreNotLosses) {
+  DropCounter d(kPeriod);
+  d.observe(10, 0);
+  EXPECT_EQ(d.observe(13, 120000000, 2), 0u) << "two error buffers filled the gap";
+  EXPECT_EQ(d.observe(17, 280000000, 1), 2u) << "one error buffer, two frames lost";
+  EXPECT_EQ(d.dropped(), 2u);
+}
+
 TEST(DropCounter, SurvivesTheSequenceWrapping) {
   DropCounter d(kPeriod);
   d.observe(0xfffffffeu, 0);

@@ -55,6 +55,29 @@ TEST_F(RecordCli, RecordsPressesIntoFilesAndAManifest) {
   EXPECT_EQ(m["presses"].size(), 2u);
 }
 
+// Issue 11 point 5: error buffers are not drops, in the totals, each press entry and each press file.
+TEST_F(RecordCli, ErrorBuffersAndDropsAreCountedApart) {
+  const CommandResult r = record("fake:size=320x240,lockstep,error=20", {"--presses", "2"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json m = manifest();
+  EXPECT_EQ(m["totals"]["dropped_frames"], 0);
+  EXPECT_GT(m["totals"]["error_buffers"], 0);
+  std::int64_t errors = 0;
+  for (const auto& p : m["presses"]) {
+    EXPECT_EQ(p["dropped_frames"], 0) << p.dump();
+    errors += p["error_frames"].get<std::int64_t>();
+    const h5::Group root = h5::File::open(session_ + "/" + p["file"].get<std::string>()).root();
+    EXPECT_EQ(root.attr_int("dropped_frames"), 0);
+    EXPECT_EQ(root.attr_int("error_frames"), p["error_frames"].get<std::int64_t>());
+  }
+  EXPECT_GT(errors, 0) << "the presses saw error buffers too";
+  // With real drops as well, both counts show, and neither swallows the other.
+  const CommandResult both = record("fake:size=320x240,lockstep,error=10,drop=10,seed=3", {"--presses", "1", "--force"});
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  EXPECT_GT(manifest()["totals"]["dropped_frames"], 0);
+  EXPECT_GT(manifest()["totals"]["error_buffers"], 0);
+}
+
 TEST_F(RecordCli, JsonOutputIsTheManifest) {
   const CommandResult r = record(kFake, {"--presses", "1", "--json", "--control", "exposure_absolute=200"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
