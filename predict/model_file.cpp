@@ -117,9 +117,11 @@ struct Reader {
     return value;
   }
 
+  // A training range's end. Low-passed force and speed ring slightly below zero after a stroke's
+  // turn, so only finiteness is asked here; the order of the two ends is checked by the caller.
   float bound(const h5::Node& node, const char* name) const {
     const double v = node.attr_double(name);
-    if (!std::isfinite(v) || v < 0)
+    if (!std::isfinite(v))
       throw input_error(path, node.object_path() + " attribute '" + name + "'", "is " + std::to_string(v) + ", not a finite force or speed",
                         kRetrain);
     return float(v);

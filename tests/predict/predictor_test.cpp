@@ -119,6 +119,19 @@ TEST(ModelFile, OtherFilesAreRefusedWithTheirName) {
   }
 }
 
+// Low-passed force rings slightly below zero after a stroke's turn (the 60 HaTT-driven materials' model
+// has force_min = -0.0003 N): a range end below zero is fine, a reversed or infinite range is not.
+TEST(ModelFile, ATrainingRangeMayDipBelowZeroButNotReverse) {
+  const test::TempDir dir;
+  Model m = trained(Variant::unified);
+  m.normalisation.force_min = -0.0003f;
+  write_model(m, dir.file("ringing.h5"), false, "test");
+  EXPECT_FLOAT_EQ(read_model(dir.file("ringing.h5")).normalisation.force_min, -0.0003f);
+  m.normalisation.speed_min = m.normalisation.speed_max + 1;
+  write_model(m, dir.file("reversed.h5"), false, "test");
+  EXPECT_THROW(read_model(dir.file("reversed.h5")), Error);
+}
+
 // Issue 11 point 3: a diverged training (NaN or infinite weights) writes no model at all.
 TEST(ModelFile, ADivergedModelIsNotWritten) {
   const test::TempDir dir;
