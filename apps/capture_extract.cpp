@@ -66,6 +66,7 @@ class CaptureExtract : public CaptureSubcommand {
                            {"contact_sheet", p.contact_sheet}});
       std::cout << nlohmann::json{{"output", output_}, {"presses", presses}, {"sources", r.sources},
                                   {"sources_without_press", r.sources_without_press}, {"frames_scored", r.frames_scored},
+                                  {"frames_unreadable", r.frames_unreadable},
                                   {"sheets", r.sheets_dir}}
                        .dump(2)
                 << "\n";
@@ -85,6 +86,9 @@ class CaptureExtract : public CaptureSubcommand {
               << " materials from " << r.sources << " files";
     if (!r.sheets_dir.empty()) std::cout << "; contact sheets in " << r.sheets_dir;
     std::cout << "\n";
+    if (r.frames_unreadable > 0)
+      std::cout << r.frames_unreadable << " frames did not decode (damaged, or announced by a video cut short); none was "
+                << "taken as a peak or kept\n";
   }
 
   std::vector<std::string> inputs_;

@@ -86,6 +86,7 @@ class Extraction {
     text::require_utf8(material, input.path, "the material name (--material, the folder's name or the press file's)");
     const SourceScores scores = score_source(*source, settings_);
     result_.frames_scored += std::int64_t(scores.scores.size());
+    result_.frames_unreadable += scores.unreadable_frames + source->frames_missing();
     SegmenterSettings segmenter = settings_.segmenter;
     segmenter.trigger = scores.contact->trigger();
     segmenter.release = scores.contact->release();

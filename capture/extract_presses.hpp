@@ -35,6 +35,8 @@ struct ExtractResult {
   std::vector<std::string> sources_without_press;
   std::size_t sources = 0;
   std::int64_t frames_scored = 0;
+  // Frames that did not decode (damaged, or announced by a video cut short): never a peak or kept.
+  std::int64_t frames_unreadable = 0;
   std::string sheets_dir;  // empty without sheets
 };
 

@@ -44,6 +44,8 @@ class FrameSource {
   virtual std::optional<StoredReference> stored_reference() const { return std::nullopt; }
   // The material a source names itself (press files); empty for videos.
   virtual std::string material() const { return {}; }
+  // After scan: frames the source announced but that never decoded (a video cut short or damaged).
+  virtual std::int64_t frames_missing() const { return 0; }
 };
 
 // Throws haptex::Error (bad_input) naming the file when OpenCV cannot open it or it has no frames.

@@ -40,12 +40,19 @@ class VideoSource : public FrameSource {
     cv::Mat frame;
     cache_.clear();
     cached_ = true;
-    for (std::int64_t i = 0; video.read(frame); ++i) {
-      check_size(frame, i);
-      visit(i, scoring_image(frame), frame);
+    std::int64_t decoded = 0;
+    for (; video.read(frame); ++decoded) {
+      check_size(frame, decoded);
+      visit(decoded, scoring_image(frame), frame);
       keep(frame);
     }
+    // The container's count is exact for AVI and MP4 indices and an estimate (duration x fps) for
+    // Matroska: one frame of slack, so only a real shortfall counts.
+    const auto announced = std::int64_t(video.get(cv::CAP_PROP_FRAME_COUNT));
+    frames_missing_ = announced > decoded + 1 ? announced - decoded : 0;
   }
+
+  std::int64_t frames_missing() const override { return frames_missing_; }
 
   void read(const std::vector<std::int64_t>& indices,
             const std::function<void(std::int64_t, const cv::Mat&)>& deliver) override {
@@ -76,6 +83,10 @@ class VideoSource : public FrameSource {
     // (damage shows as frames that do not decode). OpenCV reads this once, when FFmpeg is first used;
     // a user's own setting wins.
     setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);  // AV_LOG_QUIET
+    // A packet cut short (a truncated file) would decode, concealed, into a frame whose missing part
+    // differs from the reference and so scores as the strongest contact: FFmpeg's demuxer drops such
+    // packets instead (read per open, so it applies to this video).
+    setenv("OPENCV_FFMPEG_CAPTURE_OPTIONS", "fflags;discardcorrupt", 0);
     cv::VideoCapture video;
     // FFmpeg only: other backends (GStreamer) print their own warnings on failure, and libraries
     // here never print.
@@ -114,6 +125,7 @@ class VideoSource : public FrameSource {
   std::uint32_t fourcc_ = 0;
   std::vector<cv::Mat> cache_;
   bool cached_ = false;
+  std::int64_t frames_missing_ = 0;
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <cmath>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "capture/capture_inputs.hpp"
 #include "capture/extract_presses.hpp"
@@ -60,6 +61,38 @@ TEST_F(Extract, AFolderOfMaterialFoldersGivesStablePressNumbers) {
   EXPECT_EQ(cork.attr_string("name"), "Cork");
   EXPECT_EQ(cork.open_group("presses").children(), (std::vector<std::string>{"0", "1", "2"}));
   for (const auto& p : r.presses) EXPECT_TRUE(fs::exists(dir_.path() / p.contact_sheet)) << p.contact_sheet;
+}
+
+// Issue 11 point 5: a video cut off in the middle of a press (MJPG: its last frame's JPEG is cut
+// short and would decode, concealed, into a half-grey frame that scores as the strongest contact).
+// No frame that did not decode whole is a peak or kept, and the result counts the lost frames.
+TEST_F(Extract, AVideoCutShortKeepsNoDamagedFrame) {
+  fs::create_directories(dir_.path() / "videos");
+  const std::string full = dir_.file("videos/full.avi"), cut = dir_.file("videos/cut.avi");
+  fixtures::write_press_video(full, quick_presses(1), 45, 160, 120, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'));
+  std::vector<cv::Mat> frames;
+  cv::VideoCapture reader(full, cv::CAP_FFMPEG);
+  for (cv::Mat f; reader.read(f);) frames.push_back(f.clone());
+  ASSERT_EQ(frames.size(), 45u);
+  fs::copy_file(full, cut);
+  fs::resize_file(cut, fs::file_size(full) * 81 / 100);  // inside frame 36's JPEG, during the press's hold
+
+  const ExtractResult r = extract_presses({cut}, out(), {});
+  ASSERT_EQ(r.presses.size(), 1u);
+  EXPECT_GT(r.frames_unreadable, 0) << "the frames the container announced but that never decoded";
+  const h5::Group press = h5::File::open(out()).root().open_group("materials/videos/presses/0");
+  const auto indices = press.open_dataset("frame_indices").read<std::int64_t>();
+  const std::vector<std::uint8_t> kept = press.open_dataset("frames").read<std::uint8_t>();
+  const std::size_t one = 160 * 120 * 3;
+  ASSERT_EQ(kept.size(), indices.size() * one);
+  for (std::size_t k = 0; k < indices.size(); ++k) {
+    cv::Mat rgb(120, 160, CV_8UC3, const_cast<std::uint8_t*>(kept.data() + k * one)), bgr;
+    cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+    ASSERT_LT(std::size_t(indices[k]), frames.size());
+    EXPECT_EQ(cv::norm(bgr, frames[std::size_t(indices[k])], cv::NORM_INF), 0.0) << "kept frame " << indices[k] << " is damaged";
+  }
+  const std::int64_t peak = press.open_dataset("peak_index").read<std::int64_t>().at(0);
+  EXPECT_LT(peak, 36) << "the cut frame (36) or later";
 }
 
 TEST_F(Extract, EachPressHoldsReferencePeakTwelveFramesAndScores) {
