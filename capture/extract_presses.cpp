@@ -138,6 +138,7 @@ class Extraction {
     p.pixel_threshold = contact.pixel_threshold();
     p.trigger = contact.trigger();
     p.release = contact.release();
+    p.source_frames_unreadable = scores.unreadable_frames + source.frames_missing();
     const std::string id = material_id(material);
     std::string sheet_name;
     if (sheets_) {

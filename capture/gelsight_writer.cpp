@@ -29,6 +29,7 @@ void set_press_attributes(h5::Group& g, const GelsightPress& p) {
   g.set_attr("trigger", double(p.trigger));
   g.set_attr("release", double(p.release));
   if (!p.contact_sheet.empty()) g.set_attr("contact_sheet", p.contact_sheet);
+  g.set_attr("source_frames_unreadable", p.source_frames_unreadable);
 }
 
 void set_description(h5::Dataset d, const std::string& units, const std::string& description) {

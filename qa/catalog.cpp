@@ -74,6 +74,9 @@ const std::vector<CheckInfo>& all_checks() {
        "Capture every press of a material with the same sensor mode (width x height)"},
       {"gelsight.press_count", error, "every material has at least 5 presses (3 train, 1 val, 1 test)",
        "Capture more presses of the material (haptex capture record)"},
+      {"gelsight.source_damage", warning,
+       "every press's source decoded whole (`source_frames_unreadable` is 0: no frame failed or went missing)",
+       "Copy the video again from the sensor's machine (a damaged frame is never kept, but the press may be cut short)"},
       // dataset
       {"dataset.windows", error,
        "the window table's materials, recordings and starts exist and follow the stride (t = 9, 9 + stride, ...)",

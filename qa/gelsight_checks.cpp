@@ -159,12 +159,28 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// capture extract records how many frames of the press's source did not decode; layout.* reports a
+// missing or mistyped attribute.
+void check_source_damage(const h5::Group& press, const std::string& path, CheckTally& damage) {
+  std::int64_t unreadable = 0;
+  try {
+    if (!press.has_attr("source_frames_unreadable")) return damage.skip(path + ": no source_frames_unreadable attribute");
+    unreadable = press.attr_int("source_frames_unreadable");
+  } catch (const Error&) {
+    return damage.skip(path + "/@source_frames_unreadable is not an integer");
+  }
+  if (unreadable > 0)
+    damage.fail(path, "its source had " + std::to_string(unreadable) + " frames that did not decode or never arrived (none is kept)");
+  else damage.pass();
+}
+
 }  // namespace
 
 std::vector<CheckResult> check_gelsight(const h5::Group& root) {
   CheckTally reference("gelsight.reference", "references"), peak_score("gelsight.peak_score", "presses"),
       saturation("gelsight.saturation", "frames"), blur("gelsight.blur", "frames"),
-      resolution("gelsight.resolution", "materials"), press_count("gelsight.press_count", "materials");
+      resolution("gelsight.resolution", "materials"), press_count("gelsight.press_count", "materials"),
+      damage("gelsight.source_damage", "presses");
 
   std::vector<Press> presses;
   std::map<std::string, std::size_t> per_material;  // presses per material id
@@ -180,6 +196,7 @@ std::vector<CheckResult> check_gelsight(const h5::Group& root) {
         if (!group.has_group(j)) continue;
         presses.push_back(summarize_press(group.open_group(j), "/materials/" + id + "/presses/" + j, id));
         ++per_material[id];
+        check_source_damage(group.open_group(j), presses.back().path, damage);
       }
     }
   }
@@ -280,7 +297,7 @@ std::vector<CheckResult> check_gelsight(const h5::Group& root) {
   saturation.set_pass_message("at most " + number(100 * worst_saturation) + "% of a frame's pixels saturated");
   blur.set_pass_message("Laplacian variance at least " + number(worst_blur) + " x the references'");
   return {reference.result(), peak_score.result(), saturation.result(), blur.result(), resolution.result(),
-          press_count.result()};
+          press_count.result(), damage.result()};
 }
 
 }  // namespace haptex::qa

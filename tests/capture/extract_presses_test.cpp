@@ -92,6 +92,7 @@ TEST_F(Extract, AVideoCutShortKeepsNoDamagedFrame) {
     EXPECT_EQ(cv::norm(bgr, frames[std::size_t(indices[k])], cv::NORM_INF), 0.0) << "kept frame " << indices[k] << " is damaged";
   }
   const std::int64_t peak = press.open_dataset("peak_index").read<std::int64_t>().at(0);
+  EXPECT_EQ(press.attr_int("source_frames_unreadable"), r.frames_unreadable) << "the gelsight file records them for qa";
   EXPECT_LT(peak, 36) << "the cut frame (36) or later";
 }
 

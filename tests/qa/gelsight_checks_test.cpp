@@ -53,6 +53,15 @@ TEST_F(GelsightMutation, FramesOfAnotherSizeThanTheAttributesIsLayoutShape) {
   EXPECT_NE(r.find("layout.shape")->message.find("= (H, W, 3)"), std::string::npos) << r.find("layout.shape")->message;
 }
 
+// Issue 11 point 5: capture extract counts the frames of a press's source that did not decode.
+TEST_F(GelsightMutation, ASourceWithUnreadableFramesIsGelsightSourceDamage) {
+  Edit(file_).group(kPress).set_attr("source_frames_unreadable", std::int64_t(16));
+  const qa::Report r = qa();
+  expect_only(r, "gelsight.source_damage");
+  EXPECT_NE(r.find("gelsight.source_damage")->message.find("16 frames that did not decode"), std::string::npos)
+      << r.find("gelsight.source_damage")->message;
+}
+
 TEST_F(GelsightMutation, ReferenceTakenDuringContactIsGelsightReference) {
   {
     Edit e(file_);
