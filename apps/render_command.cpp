@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "apps/command.hpp"
@@ -55,7 +56,8 @@ class RenderCommand : public Command {
     refuse_output_among_inputs(csv_, inputs);
     check_output_path(output_, force_);
     if (!csv_.empty()) {
-      if (csv_ == output_) throw Error(Error::Kind::bad_input, "render: --csv and -o name the same file " + csv_);
+      if (std::filesystem::weakly_canonical(csv_) == std::filesystem::weakly_canonical(output_))
+        throw input_error(csv_, "", "--csv and -o name the same file", "Give the CSV another name");
       check_output_path(csv_, force_);
     }
     const predict::Trajectory trajectory = predict::read_trajectory(trajectory_path_);

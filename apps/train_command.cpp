@@ -11,6 +11,7 @@
 #include "apps/terminal_progress.hpp"
 #include "core/output_is_input.hpp"
 #include "core/durable_file.hpp"
+#include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
 #include "core/version.hpp"
@@ -62,6 +63,8 @@ class TrainCommand : public Command {
 
   int run(const GlobalOptions& global) override {
     if (log_.empty()) log_ = std::filesystem::path(output_).replace_extension(".training.json").string();
+    if (std::filesystem::weakly_canonical(log_) == std::filesystem::weakly_canonical(output_))
+      throw input_error(log_, "", "--log names the model file itself", "Give the training log another name, or leave --log out");
     refuse_output_among_inputs(output_, {dataset_, split_});
     refuse_output_among_inputs(log_, {dataset_, split_});
     check_output_path(output_, force_);

@@ -113,6 +113,14 @@ TEST(Force, NoCommandWritesOverItsInput) {
   }
 }
 
+TEST(Force, TrainRefusesALogThatIsTheModel) {
+  const TempDir dir;
+  std::vector<std::string> args = quick_train_args(small_pipeline().dataset, small_pipeline().split, dir.file("m.h5"));
+  args.insert(args.end(), {"--log", dir.file("./m.h5")});
+  expect_refusal(run_haptex(args), {"--log names the model file itself"});
+  EXPECT_FALSE(std::filesystem::exists(dir.file("m.h5")));
+}
+
 TEST(Force, EvaluateRefusesAReportFolderHoldingItsDataset) {
   const TempDir dir;
   const SmallPipeline& p = small_pipeline();
