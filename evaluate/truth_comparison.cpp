@@ -1,15 +1,16 @@
 #include "evaluate/truth_comparison.hpp"
 
 #include "core/error.hpp"
-#include "core/h5/file.hpp"
+#include "core/naming.hpp"
 #include "predict/predictor.hpp"
+#include "synth/truth_file.hpp"
 
 namespace haptex::evaluate {
 namespace {
 
-TruthComparison compare_material(predict::Predictor& p, int material, const h5::Group& g) {
-  const auto speeds = g.open_dataset("speeds").read<double>(), forces = g.open_dataset("forces").read<double>();
-  const auto spectrum = g.open_dataset("spectrum").read<double>();
+TruthComparison compare_material(predict::Predictor& p, int material, const synth::TruthGrid& grid) {
+  const std::vector<double>& speeds = grid.speeds_mm_s;
+  const std::vector<double>& forces = grid.forces_n;
   const predict::Normalisation& n = p.model().normalisation;
   const predict::TextureCode code = p.material_code(material);
   std::vector<Eigen::VectorXf> truths, predictions;
@@ -22,7 +23,8 @@ TruthComparison compare_material(predict::Predictor& p, int material, const h5::
       p.predict(code, action, out);
       predictions.push_back(Eigen::Map<const Eigen::VectorXf>(out.data(), predict::kSpectrumBins));
       Eigen::VectorXf t(predict::kSpectrumBins);
-      for (int k = 0; k < predict::kSpectrumBins; ++k) t[k] = float(spectrum[(s * forces.size() + f) * predict::kSpectrumBins + std::size_t(k)]);
+      const double* truth = grid.spectrum(s, f);
+      for (int k = 0; k < predict::kSpectrumBins; ++k) t[k] = float(truth[k]);
       truths.push_back(t);
     }
   TruthComparison c;
@@ -41,21 +43,20 @@ TruthComparison compare_material(predict::Predictor& p, int material, const h5::
 }  // namespace
 
 std::vector<TruthComparison> compare_with_truth(const predict::Model& model, const std::string& truth_path) {
-  const h5::File file = h5::File::open(truth_path);
-  const h5::Group root = file.root();
-  if (!root.has_attr("haptex_format") || root.attr_string("haptex_format") != "truth/1")
-    throw input_error(truth_path, "/", "not a truth file (truth/1)", "Give OUT/truth.h5 of haptex synth materials");
+  const synth::Truth truth = synth::read_truth_file(truth_path);
   predict::Predictor p(model);
   std::vector<TruthComparison> out;
-  const h5::Group materials = root.open_group("materials");
-  for (const std::string& id : materials.children()) {
-    const int m = model.material_index(id);
-    if (m < 0) continue;
-    TruthComparison c = compare_material(p, m, materials.open_group(id));
+  bool known = false;
+  for (const synth::MaterialTruth& m : truth.materials) {
+    const std::string id = material_id(m.name);
+    const int index = model.material_index(id);
+    known = known || index >= 0;
+    if (index < 0 || !m.grid) continue;  // a HaTT model's truth is the model itself (evaluate/oracle.hpp), not a grid
+    TruthComparison c = compare_material(p, index, *m.grid);
     c.id = id;
     out.push_back(c);
   }
-  if (out.empty()) throw input_error(truth_path, "/materials", "no material of the model is in this file", "Give the truth.h5 of the synthetic data the model was trained on");
+  if (!known) throw input_error(truth_path, "/materials", "no material of the model is in this file", "Give the truth.h5 of the synthetic data the model was trained on");
   return out;
 }
 

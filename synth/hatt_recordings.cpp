@@ -16,12 +16,13 @@ Strokes hatt_strokes(const ar::ModelSet& set, double seconds, std::uint64_t reco
   return generate_strokes({set.max_speed, set.max_force}, {seconds, set.sample_rate_hz}, derive_seed(recording_seed, 1));
 }
 
-convert::Recording render_hatt_recording(const ar::PiecewiseArModel& model, double seconds, std::uint64_t seed) {
+HattRecording render_hatt_recording(const ar::PiecewiseArModel& model, double seconds, std::uint64_t seed) {
   const ar::ModelSet& set = model.set();
-  const Strokes strokes = hatt_strokes(set, seconds, seed);
-  const std::vector<double> accel = ar::render_texture(model, strokes.speed, strokes.force, derive_seed(seed, 2));
-  return assemble_recording({set.material, set.texture, set.mu > 0 ? set.mu : 0.3}, strokes, accel,
-                            derive_seed(seed, 3));
+  HattRecording out{hatt_strokes(set, seconds, seed), {}};
+  const std::vector<double> accel = ar::render_texture(model, out.strokes.speed, out.strokes.force, derive_seed(seed, 2));
+  out.recording = assemble_recording({set.material, set.texture, set.mu > 0 ? set.mu : 0.3}, out.strokes, accel,
+                                     derive_seed(seed, 3));
+  return out;
 }
 
 }  // namespace haptex::synth

@@ -6,12 +6,12 @@
 #include <random>
 
 #include "core/error.hpp"
+#include "core/sha256.hpp"
+#include "synth/recorded_data_xml.hpp"
 
 namespace haptex::synth {
 namespace {
 
-constexpr double kSampleRateHz = 10000;
-constexpr double kAccelNoise = 0.02;         // m/s^2 per axis, a MEMS accelerometer's floor at 10 kHz
 constexpr double kForceRipple = 0.01;        // N per m/s^2 of vibration reaching the load cell
 constexpr double kSpeedRipple = 0.5;         // mm/s per m/s^2 of vibration seen by the position sensor
 
@@ -50,6 +50,11 @@ convert::Recording assemble_recording(const RecordingIdentity& identity, const S
   ch["position_y"] = strokes.position_y;
   ch["position_z"] = strokes.position_z;
   return r;
+}
+
+TruthRecording write_recording(const std::string& path, int index, const convert::Recording& recording, Strokes&& strokes) {
+  write_recorded_data_xml(path, recording);
+  return {index, sha256_file(path), std::move(strokes.speed), std::move(strokes.force)};
 }
 
 }  // namespace haptex::synth

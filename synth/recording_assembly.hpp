@@ -10,8 +10,14 @@
 
 #include "convert/recording.hpp"
 #include "synth/stroke_generator.hpp"
+#include "synth/truth_file.hpp"
 
 namespace haptex::synth {
+
+inline constexpr double kSampleRateHz = 10000;  // every synthetic recording's rate
+// White noise per accelerometer axis (m/s^2, standard deviation): a MEMS accelerometer's floor at
+// 10 kHz. truth.h5 records it, since the evaluation's noise floor includes it.
+inline constexpr double kAccelNoise = 0.02;
 
 struct RecordingIdentity {
   std::string material;
@@ -22,5 +28,11 @@ struct RecordingIdentity {
 // accel: the tool's vibration (m/s^2), one value per stroke sample.
 convert::Recording assemble_recording(const RecordingIdentity& identity, const Strokes& strokes,
                                       std::span<const double> accel, std::uint64_t seed);
+
+// Writes recording `index` as HaTT recorded-data XML at path (synth/recorded_data_xml.hpp) and
+// returns what truth.h5 keeps of it: the noise-free action it was made from (strokes' speed and
+// force, moved out) and the SHA-256 of the file as written, which convert stamps as @source_sha256,
+// so the evaluation can find a converted recording's truth.
+TruthRecording write_recording(const std::string& path, int index, const convert::Recording& recording, Strokes&& strokes);
 
 }  // namespace haptex::synth

@@ -9,7 +9,6 @@
 #include "synth/material_families.hpp"
 #include "synth/gelsight_presses.hpp"
 #include "synth/probe_vibration.hpp"
-#include "synth/recorded_data_xml.hpp"
 #include "synth/recording_assembly.hpp"
 #include "core/random_seeds.hpp"
 #include "synth/synth_output.hpp"
@@ -51,7 +50,7 @@ void write_manifest(const std::string& out, const SynthMaterialsOptions& o, cons
   json::write_file(doc, "synth-materials.schema.json", (std::filesystem::path(out) / "materials.json").string());
 }
 
-// One material: surface, presses, recordings; returns its truth spectra.
+// One material: surface, presses, recordings; returns its truth (recipe, spectra, the recordings' actions).
 MaterialTruth synthesize_material(const MaterialSpec& spec, const SynthMaterialsOptions& o) {
   const HeightField surface = make_height_field(spec.surface, spec.seed);
   const HeightField tip = smoothed_for_tip(surface, kTipRadiusMm);
@@ -63,14 +62,16 @@ MaterialTruth synthesize_material(const MaterialSpec& spec, const SynthMaterials
   write_material_presses(GelSightRenderer(surface, optics), gelsight_directory(o.out, spec.name), spec.name,
                          derive_seed(spec.seed, 1), o.provenance, presses);
   const ProbeVibration probe(tip, spec);
+  MaterialTruth truth{spec.name, "synth-material", "", recipe_json(spec).dump(), std::nullopt, {}};
   for (int k = 0; k < o.recordings; ++k) {
-    const Strokes strokes = generate_strokes(kLimits, {o.seconds, 10000}, derive_seed(spec.seed, 10, std::uint64_t(k)));
-    const std::vector<double> accel = probe.along_path(strokes.position_x, strokes.position_y, strokes.force, 10000);
-    write_recorded_data_xml(recording_path(o.out, spec.name, k),
-                            assemble_recording({spec.name, std::nullopt, 0.3}, strokes, accel,
-                                               derive_seed(spec.seed, 20, std::uint64_t(k))));
+    Strokes strokes = generate_strokes(kLimits, {o.seconds, kSampleRateHz}, derive_seed(spec.seed, 10, std::uint64_t(k)));
+    const std::vector<double> accel = probe.along_path(strokes.position_x, strokes.position_y, strokes.force, kSampleRateHz);
+    const convert::Recording recording =
+        assemble_recording({spec.name, std::nullopt, 0.3}, strokes, accel, derive_seed(spec.seed, 20, std::uint64_t(k)));
+    truth.recordings.push_back(write_recording(recording_path(o.out, spec.name, k), k, recording, std::move(strokes)));
   }
-  return {spec.name, expected_spectra(probe, kLimits, derive_seed(spec.seed, 30))};
+  truth.grid = expected_spectra(probe, kLimits, derive_seed(spec.seed, 30));
+  return truth;
 }
 
 }  // namespace
@@ -81,15 +82,15 @@ SynthSummary synth_materials(const SynthMaterialsOptions& o, const Progress& pro
   SynthMaterialsOptions staged = o;
   staged.out = folder.path();
   const std::vector<MaterialSpec> specs = material_specs(o.count, o.seed);
-  std::vector<MaterialTruth> truths(specs.size());
+  Truth truth{kSampleRateHz, kAccelNoise, std::vector<MaterialTruth>(specs.size())};
   std::mutex mutex;
   std::size_t done = 0;
   parallel_for(specs.size(), [&](std::size_t i) {
-    truths[i] = synthesize_material(specs[i], staged);
+    truth.materials[i] = synthesize_material(specs[i], staged);
     std::lock_guard lock(mutex);
     if (progress) progress(++done, specs.size(), specs[i].name);
   });
-  write_truth_file((std::filesystem::path(staged.out) / "truth.h5").string(), truths, o.provenance);
+  write_truth_file((std::filesystem::path(staged.out) / "truth.h5").string(), truth, o.provenance);
   write_manifest(staged.out, o, specs);
   folder.commit();
 

@@ -4,8 +4,6 @@
 #include <numbers>
 #include <random>
 
-#include "core/h5/atomic_file.hpp"
-#include "core/naming.hpp"
 #include "core/signal/spectrum.hpp"
 
 namespace haptex::synth {
@@ -57,25 +55,6 @@ TruthGrid expected_spectra(const ProbeVibration& probe, const StrokeLimits& limi
       mean_spectrum(probe, grid.speeds_mm_s[s], grid.forces_n[f], options.strokes_per_point, rng,
                     grid.spectra.data() + (s * grid.forces_n.size() + f) * signal::kSpectrumBins);
   return grid;
-}
-
-void write_truth_file(const std::string& path, const std::vector<MaterialTruth>& materials, const std::string& source) {
-  h5::AtomicFile out(path, true);
-  h5::stamp_root(out.root(), kTruthFormat, source);
-  h5::Group all = out.root().create_group("materials");
-  for (const MaterialTruth& m : materials) {
-    h5::Group g = all.create_group(material_id(m.name));
-    g.set_attr("name", m.name);
-    const auto& grid = m.grid;
-    g.write("speeds", grid.speeds_mm_s).set_attr("units", "mm/s");
-    g.write("forces", grid.forces_n).set_attr("units", "N");
-    h5::Dataset spectrum = g.write_array<double>("spectrum", grid.spectra,
-                                                 {grid.speeds_mm_s.size(), grid.forces_n.size(), signal::kSpectrumBins});
-    spectrum.set_attr("units", "m/s^2");
-    spectrum.set_attr("description", "expected single-sided amplitude spectrum 2|X_k|/N of 1000-sample windows, "
-                                     "bins k = 1..100 (10..1000 Hz), noise-free, at each (speed, force)");
-  }
-  out.commit();
 }
 
 }  // namespace haptex::synth

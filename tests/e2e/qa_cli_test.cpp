@@ -136,11 +136,11 @@ TEST_F(QaCli, BadInputExitsTwoNamingFileAndFix) {
   // An HDF5 file of a format qa does not check.
   {
     h5::File f = h5::File::create(dir_.file("truth.h5"));
-    h5::stamp_root(f.root(), "truth/1", "test");
+    h5::stamp_root(f.root(), "truth/2", "test");
   }
   const CommandResult r = run_haptex({"qa", dir_.file("truth.h5")});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("'truth/1' is not a format qa checks"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("'truth/2' is not a format qa checks"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -7,7 +7,11 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
+#include "core/naming.hpp"
+#include "core/sha256.hpp"
+#include "synth/truth_file.hpp"
 #include "tests/support/npy.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -22,6 +26,20 @@ std::string slurp(const fs::path& path) {
 }
 
 const std::vector<std::string> kSmall = {"--size", "160x120", "--presses", "2", "--recordings", "1", "--seconds", "0.5"};
+
+// truth.h5 knows every recording by the SHA-256 convert stamps on it (the evaluation's noise floor
+// finds a recording's truth that way): checks that link through the converted recordings file.
+void expect_truth_of_each_recording(const synth::Truth& truth, const std::string& recordings_file, std::size_t samples) {
+  const h5::File converted = h5::File::open(recordings_file);
+  for (const synth::MaterialTruth& m : truth.materials)
+    for (const synth::TruthRecording& r : m.recordings) {
+      SCOPED_TRACE(m.name + " recording " + std::to_string(r.index));
+      const std::string k = "materials/" + material_id(m.name) + "/recordings/" + std::to_string(r.index);
+      EXPECT_EQ(converted.root().open_group(k).attr_string("source_sha256"), r.source_sha256);
+      EXPECT_EQ(r.speed_mm_s.size(), samples);
+      EXPECT_EQ(r.force_n.size(), samples);
+    }
+}
 
 CommandResult synth_materials(const std::string& out, std::vector<std::string> extra = {}) {
   std::vector<std::string> args = {"synth", "materials", "-n", "2", "-o", out};
@@ -74,6 +92,17 @@ TEST(SynthCli, MaterialsReadBackThroughConvertOpenCvAndH5py) {
     }
 
   EXPECT_NO_THROW(json::validate(json::read_file(out + "/materials.json"), "synth-materials.schema.json", "materials.json"));
+  const synth::Truth truth = synth::read_truth_file(out + "/truth.h5");
+  EXPECT_EQ(truth.accel_noise_m_s2, 0.02);
+  ASSERT_EQ(truth.materials.size(), 2u);
+  for (const synth::MaterialTruth& m : truth.materials) {
+    EXPECT_EQ(m.generator, "synth-material");
+    EXPECT_EQ(nlohmann::json::parse(m.recipe_json)["name"], m.name);
+    ASSERT_TRUE(m.grid.has_value()) << m.name;
+    EXPECT_EQ(m.grid->spectra.size(), 10u * 8u * 100u);
+    EXPECT_EQ(m.recordings.size(), 1u);
+  }
+  expect_truth_of_each_recording(truth, dir.file("r.h5"), 5000);
   if (!python_has("h5py")) GTEST_SKIP() << "python3-h5py is not installed";
   const CommandResult layout = run_python({std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/check_layout.py",
                                            std::string(HAPTEX_SCHEMA_DIR) + "/hdf5-layout.md", out + "/truth.h5", "Truth"});
@@ -148,8 +177,26 @@ TEST(SynthCli, HattModelsAndPhotographsBecomeRecordingsAndPresses) {
   EXPECT_EQ(summary["presses"], 10);
   EXPECT_TRUE(fs::exists(out + "/recordings/book_1.xml"));
   EXPECT_TRUE(fs::exists(out + "/gelsight/Cork/press_4.json"));
+  EXPECT_TRUE(fs::exists(out + "/truth.h5"));
   const CommandResult converted = run_haptex({"convert", "hatt", out + "/recordings", "-o", dir.file("r.h5")});
-  EXPECT_EQ(converted.exit_code, 0) << converted.err;
+  ASSERT_EQ(converted.exit_code, 0) << converted.err;
+
+  // truth.h5: each model byte for byte, and the noise-free action of each recording.
+  const synth::Truth truth = synth::read_truth_file(out + "/truth.h5");
+  EXPECT_EQ(truth.accel_noise_m_s2, 0.02);
+  ASSERT_EQ(truth.materials.size(), 2u);
+  for (const synth::MaterialTruth& m : truth.materials) {
+    EXPECT_EQ(m.generator, "hatt-model");
+    EXPECT_EQ(m.model_xml, slurp(dir.file("models/Models_" + m.name + ".xml"))) << m.name;
+    EXPECT_FALSE(m.grid.has_value());
+    ASSERT_EQ(m.recordings.size(), 2u);
+    EXPECT_EQ(m.recordings[1].source_sha256, sha256_file(out + "/recordings/" + material_id(m.name) + "_1.xml"));
+  }
+  expect_truth_of_each_recording(truth, dir.file("r.h5"), 10000);
+  if (!python_has("h5py")) GTEST_SKIP() << "python3-h5py is not installed";
+  const CommandResult layout = run_python({std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/check_layout.py",
+                                           std::string(HAPTEX_SCHEMA_DIR) + "/hdf5-layout.md", out + "/truth.h5", "Truth"});
+  EXPECT_EQ(layout.exit_code, 0) << layout.out << layout.err;
 }
 
 }  // namespace

@@ -97,8 +97,12 @@ TEST(SynthRecordings, HattRecordingRendersTheModelsSpectrum) {
   const std::string data = test::shared_data_dir();
   if (data.empty()) GTEST_SKIP() << "../shared/data is absent: the published HaTT models are needed";
   const ar::PiecewiseArModel model = convert::load_hatt_model(data + "/hatt/models/Models_Book.xml");
-  const convert::Recording a = render_hatt_recording(model, 1.0, 9), b = render_hatt_recording(model, 1.0, 9);
-  EXPECT_EQ(a.channels.at("accel_x"), b.channels.at("accel_x"));
+  const HattRecording rendered = render_hatt_recording(model, 1.0, 9);
+  const convert::Recording& a = rendered.recording;
+  EXPECT_EQ(a.channels.at("accel_x"), render_hatt_recording(model, 1.0, 9).recording.channels.at("accel_x"));
+  // The strokes it was rendered along are the noise-free action truth.h5 keeps.
+  EXPECT_EQ(rendered.strokes.speed, hatt_strokes(model.set(), 1.0, 9).speed);
+  EXPECT_EQ(rendered.strokes.force.size(), a.samples());
   EXPECT_EQ(a.material, "Book");
   EXPECT_EQ(a.samples(), 10000u);
   double energy = 0;
