@@ -1,5 +1,7 @@
 // haptex evaluate dataset.h5 --split split.json --model model.h5 [--model ...] [--baseline ar-refit|hatt-published]
 //                [--hatt-models DIR] [--reconstruct fgla|online|none] [--repeats 10] -o report/
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -13,6 +15,7 @@
 #include "evaluate/report_writer.hpp"
 #include "evaluate/run_evaluation.hpp"
 #include "evaluate/truth_comparison.hpp"
+#include "synth/truth_file.hpp"
 #include "predict/model_file.hpp"
 #include "qa/sound_split.hpp"
 
@@ -40,7 +43,9 @@ class EvaluateCommand : public Command {
     app.add_option("--repeats", options_.repeats, "Baseline renderings (seeds) per test section")->capture_default_str()->check(CLI::Range(2, 1000));
     app.add_option("--seed", options_.seed, "Random seed of the renderings and of FGLA's initial phase")->capture_default_str();
     app.add_option("--threads", options_.threads, "Threads (0: every core)")->capture_default_str();
-    app.add_option("--truth", truth_, "truth.h5 of haptex synth materials: also compare with the noise-free spectra")
+    app.add_option("--truth", options_.truth,
+                   "truth.h5 of haptex synth hatt or synth materials: the oracle noise floor (and, for synth materials, "
+                   "the models against the noise-free spectra grid)")
         ->check(CLI::ExistingFile);
     app.add_option("-o,--output", output_, "Report folder to write")->required();
     app.add_flag("--force", force_, "Replace an earlier report folder: only while it holds nothing but the files its haptex-files.json lists "
@@ -51,7 +56,7 @@ class EvaluateCommand : public Command {
     if (options_.baseline == evaluate::Baseline::hatt_published && options_.hatt_models.empty())
       throw Error(Error::Kind::bad_input, "evaluate: --baseline hatt-published needs --hatt-models DIR (the toolkit's Models_*.xml)");
     std::vector<std::string> inputs = models_;
-    inputs.insert(inputs.end(), {dataset_, split_, truth_, options_.hatt_models});
+    inputs.insert(inputs.end(), {dataset_, split_, options_.truth, options_.hatt_models});
     refuse_output_among_inputs(output_, inputs);
     if (std::filesystem::exists(output_) && !force_)
       throw input_error(output_, "", "the report folder exists", "Choose another -o or add --force");
@@ -61,7 +66,7 @@ class EvaluateCommand : public Command {
     for (const std::string& path : models_)
       models.push_back({path, std::filesystem::path(path).filename().string(), predict::read_model(path)});
     evaluate::Evaluation e = evaluate::run_evaluation(split, models, options_, terminal_progress(global, "evaluate"));
-    if (!truth_.empty())
+    if (!options_.truth.empty() && has_grid(synth::read_truth_file(options_.truth)))
       for (const evaluate::ModelInput& m : models) e.notes.push_back(truth_note(m));
     const evaluate::ReportFiles files = evaluate::write_report(e, output_, force_);
     if (global.json) {
@@ -71,16 +76,26 @@ class EvaluateCommand : public Command {
     if (global.quiet) return 0;
     std::cout << "wrote " << files.report << " (" << e.experiments.size() << " experiments, " << std::fixed << std::setprecision(1)
               << e.seconds << " s)\n";
-    for (const evaluate::Experiment& x : e.experiments)
+    for (const evaluate::Experiment& x : e.experiments) {
       std::printf("  %s: better than the %s on %zu of %zu materials, significantly on %zu, significantly worse on %zu (mean distance %.4g vs %.4g m/s^2)\n",
                   x.id.c_str(), x.baseline_label.substr(0, x.baseline_label.find(" (")).c_str(), x.better(), x.materials.size(),
                   x.significantly_better(), x.significantly_worse(), x.mean_model(), x.mean_baseline());
+      if (std::isfinite(x.median_floor_ratio()))
+        std::printf("  %s: within 10 %% of the %s on %zu of %zu materials (median ratio %.3g, worst %.3g)%s\n", x.id.c_str(),
+                    e.floor_kind == "oracle" ? "oracle" : "floor estimate", x.within_floor(0.10), x.materials.size(),
+                    x.median_floor_ratio(), x.worst_floor_ratio(), x.below_floor() ? "; BEATS THE ORACLE: the oracle is wrong" : "");
+    }
     if (!files.note.empty()) std::cout << "note: " << files.note << "\n";
     return 0;
   }
 
  private:
+  static bool has_grid(const synth::Truth& truth) {
+    return std::any_of(truth.materials.begin(), truth.materials.end(), [](const synth::MaterialTruth& m) { return m.grid.has_value(); });
+  }
+
   std::string truth_note(const evaluate::ModelInput& m) const {
+    const std::string& truth_ = options_.truth;
     const auto found = evaluate::compare_with_truth(m.model, truth_);
     const evaluate::TruthComparison all = evaluate::overall(found);
     if (all.points == 0) return m.label + ": no point of " + truth_ + " lies inside the training range";
@@ -92,7 +107,7 @@ class EvaluateCommand : public Command {
     return text;
   }
 
-  std::string dataset_, split_, output_, truth_;
+  std::string dataset_, split_, output_;
   std::vector<std::string> models_;
   evaluate::EvaluationOptions options_;
   bool force_ = false;

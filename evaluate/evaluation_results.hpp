@@ -4,6 +4,7 @@
 // the figures; the texture latents. evaluate/report_* turn it into report.md, results.json
 // (schemas/results.schema.json), CSVs and charts.
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -14,14 +15,23 @@ namespace haptex::evaluate {
 
 // One material in one experiment: per-window spectral distances (DESIGN.md section 3) of the model
 // and of the baseline on the same test windows.
+inline constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
+
 struct MaterialComparison {
   std::string id, name;
   std::size_t windows = 0;
   double model = 0, baseline = 0;  // mean distance, m/s^2
   Quartiles difference;            // of baseline - model per window: > 0 where the model is closer
   WelchTest test;                  // model windows against baseline windows
+  // The same windows scored in other ways (docs/evaluate.md, "Measures"):
+  double model_lsd_db = kNotMeasured, baseline_lsd_db = kNotMeasured;  // mean log-spectral distance, dB
+  double floor = kNotMeasured;          // the material's noise floor (Evaluation::floor_kind), mean distance
+  double mean_spectrum = kNotMeasured;  // the material's mean training spectrum, mean distance
+  bool below_floor = false;             // the model beats an oracle beyond sampling error: the oracle is wrong
   bool better() const { return model < baseline; }
   bool significant() const { return test.p < 0.05; }
+  double floor_ratio() const { return model / floor; }
+  double mean_spectrum_ratio() const { return model / mean_spectrum; }
 };
 
 struct Experiment {
@@ -36,6 +46,12 @@ struct Experiment {
   std::size_t significantly_worse() const;
   double mean_model() const;
   double mean_baseline() const;
+  // Against the noise floor: materials whose model distance is within `margin` (0.1: 10 %) of the
+  // floor's; the median and largest ratio model / floor (NaN without a floor); oracles beaten.
+  std::size_t within_floor(double margin) const;
+  double median_floor_ratio() const;
+  double worst_floor_ratio() const;
+  std::size_t below_floor() const;
 };
 
 // One point of the speed-vs-accuracy chart.
@@ -43,6 +59,35 @@ struct SpeedPoint {
   std::string method, setting;
   double seconds_per_second = 0;  // compute time per second of rendered vibration, one core
   double distance = 0;            // mean spectral distance over the test windows, m/s^2
+  std::string kind = "spectrum";  // "spectrum" (predicts spectra) or "signal" (renders vibration)
+  // Signals only (NaN for spectra): the medians over materials of the realism figures (Realism).
+  double section_lsd_db = kNotMeasured, spread_ratio = kNotMeasured;
+};
+
+// How real a rendered signal looks next to the recording, per material (mean over its test sections;
+// docs/evaluate.md, "Realism"): the log-spectral distance (dB) of the section-average power spectrum,
+// and the median over bins of the coefficient of variation of window amplitudes, divided by the
+// recording's (1: as steady as the recording; < 1 too steady; > 1 too wild).
+struct MaterialRealism {
+  std::string id, name;
+  double section_lsd_db = kNotMeasured, spread_ratio = kNotMeasured;
+};
+struct Realism {
+  std::string method, setting;
+  std::vector<MaterialRealism> materials;
+};
+
+// The best any predictor can score on a material's test windows (docs/evaluate.md, "The noise floor").
+struct MaterialFloor {
+  std::string id, name;
+  std::string kind;    // "oracle" (the generating process is known) or "estimate"
+  std::string method;  // oracle: "closed form", "Monte Carlo" or "truth grid"; estimate: "k nearest training windows"
+  std::size_t windows = 0;
+  double distance = kNotMeasured, lsd_db = kNotMeasured;  // the floor's mean distances to the recording
+  double closed_form = kNotMeasured, monte_carlo = kNotMeasured;  // AR oracles: the distance of each way
+  double rendered = kNotMeasured;  // AR oracles: the generating model rendered (mean over renders)
+  double estimate = kNotMeasured;  // the empirical estimate's distance, beside an oracle to check it
+  double baseline_expected = kNotMeasured;  // the AR baseline's expected spectrum at the recorded action
 };
 
 // Figure 5: one test window of a material: frequencies 10..1000 Hz with true, model and baseline
@@ -72,6 +117,9 @@ struct Evaluation {
   std::vector<SpeedPoint> speed;
   std::vector<Example> examples;
   std::vector<LatentPoint> latents;
+  std::string floor_kind;  // "oracle" (--truth) or "estimate"; see MaterialFloor
+  std::vector<MaterialFloor> floors;
+  std::vector<Realism> realism;
   std::vector<std::string> notes;  // what was skipped and why
   double seconds = 0;              // wall-clock time of the evaluation
 };

@@ -1,11 +1,11 @@
 #include "evaluate/run_evaluation.hpp"
 
-#include <time.h>
-
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <mutex>
+#include <optional>
 
 #include <Eigen/SVD>
 
@@ -13,12 +13,17 @@
 #include "core/parallel.hpp"
 #include "core/random_seeds.hpp"
 #include "core/sha256.hpp"
+#include "core/thread_clock.hpp"
+#include "evaluate/ar_expectation.hpp"
 #include "evaluate/ar_refit.hpp"
 #include "evaluate/griffin_lim.hpp"
 #include "evaluate/hatt_published.hpp"
+#include "evaluate/log_spectral_distance.hpp"
 #include "evaluate/online_reconstruction.hpp"
+#include "evaluate/oracle.hpp"
 #include "evaluate/section_signals.hpp"
 #include "evaluate/spectral_distance.hpp"
+#include "evaluate/window_sets.hpp"
 #include "predict/predictor.hpp"
 #include "predict/training_data.hpp"
 
@@ -28,26 +33,25 @@ namespace {
 constexpr double kSampleRate = 10000.0;
 constexpr std::size_t kExampleSamples = 2000;
 
-// Compute time on this thread: the materials run in parallel, and wall time would count the others.
-double thread_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
-// Per-window distances of one method and what computing it cost.
+// Per-window distances of one method, what computing it cost, and for signals how real they look.
 struct Scores {
-  std::vector<double> windows;
+  std::vector<double> windows, lsd;    // Euclidean distance (m/s^2) and log-spectral distance (dB) per window
   double seconds = 0, rendered_seconds = 0;
+  std::vector<SectionRealism> realism;  // time-domain methods: one per test section
   void add(const Scores& o) {
     windows.insert(windows.end(), o.windows.begin(), o.windows.end());
+    lsd.insert(lsd.end(), o.lsd.begin(), o.lsd.end());
+    realism.insert(realism.end(), o.realism.begin(), o.realism.end());
     seconds += o.seconds, rendered_seconds += o.rendered_seconds;
   }
 };
 
 struct MaterialRun {
   Scores baseline;
-  std::map<std::string, Scores> methods;  // by method key (see method_keys)
+  // By method key: the models (see method_keys), fgla:<n>, online, and the references
+  // mean-spectrum, floor, floor-estimate, expected-ar, oracle-rendered.
+  std::map<std::string, Scores> methods;
+  MaterialFloor floor;
   Example example;
 };
 
@@ -57,10 +61,41 @@ struct Codes {
   std::vector<predict::TextureCode> test_presses;
 };
 
-std::vector<double> distances(const std::vector<std::vector<double>>& predicted, const std::vector<std::vector<double>>& truth) {
-  std::vector<double> out;
-  for (std::size_t j = 0; j < truth.size(); ++j) out.push_back(spectrum_distance(predicted[j], truth[j]));
+// Both distances of predicted spectra to the recording's, window by window.
+Scores score(const std::vector<std::vector<double>>& predicted, const std::vector<std::vector<double>>& truth, const std::vector<double>& floor) {
+  Scores s;
+  for (std::size_t j = 0; j < truth.size(); ++j) {
+    s.windows.push_back(spectrum_distance(predicted[j], truth[j]));
+    s.lsd.push_back(log_spectral_distance(predicted[j], truth[j], floor));
+  }
+  return s;
+}
+
+// The mean of several scorings of the same windows (renderings, presses), window by window; their
+// costs add up; realism, where they have it, is averaged per section.
+Scores average(const std::vector<Scores>& each) {
+  Scores out = each.front();
+  for (std::size_t r = 1; r < each.size(); ++r) {
+    for (std::size_t j = 0; j < out.windows.size(); ++j) out.windows[j] += each[r].windows[j], out.lsd[j] += each[r].lsd[j];
+    out.seconds += each[r].seconds, out.rendered_seconds += each[r].rendered_seconds;
+  }
+  for (std::size_t j = 0; j < out.windows.size(); ++j) out.windows[j] /= double(each.size()), out.lsd[j] /= double(each.size());
+  for (std::size_t k = 0; k < out.realism.size(); ++k) {
+    SectionRealism& mean_realism = out.realism[k];
+    mean_realism = {0, 0};
+    for (const Scores& s : each) {
+      mean_realism.section_lsd_db += s.realism[k].section_lsd_db / double(each.size());
+      mean_realism.spread_ratio += s.realism[k].spread_ratio / double(each.size());
+    }
+  }
   return out;
+}
+
+// A rendered signal's scores on one section: both distances and its realism.
+Scores signal_scores(const std::vector<std::vector<double>>& spectra, const std::vector<std::vector<double>>& truth, const std::vector<double>& floor) {
+  Scores s = score(spectra, truth, floor);
+  s.realism.push_back(section_realism(spectra, truth, floor));
+  return s;
 }
 
 ar::PiecewiseArModel baseline_model(const MaterialSignals& m, const EvaluationOptions& o) {
@@ -71,18 +106,19 @@ ar::PiecewiseArModel baseline_model(const MaterialSignals& m, const EvaluationOp
 
 // The model's spectra for every grid window, one single query at a time as a haptic loop asks.
 Scores predict_scores(predict::Predictor& p, const predict::TextureCode& code, const Eigen::MatrixXf& actions,
-                      const std::vector<std::vector<double>>& truth, std::vector<std::vector<double>>* spectra) {
+                      const std::vector<std::vector<double>>& truth, const std::vector<double>& floor,
+                      std::vector<std::vector<double>>* spectra) {
   std::vector<std::vector<double>> predicted(truth.size(), std::vector<double>(predict::kSpectrumBins));
   std::vector<float> out(predict::kSpectrumBins);
-  Scores s;
   const double start = thread_seconds();
   for (std::size_t j = 0; j < truth.size(); ++j) {
     p.predict(code, std::span<const float>(actions.col(Eigen::Index(j)).data(), predict::kActionValues), out);
     std::copy(out.begin(), out.end(), predicted[j].begin());
   }
-  s.seconds = thread_seconds() - start;
+  const double seconds = thread_seconds() - start;
+  Scores s = score(predicted, truth, floor);
+  s.seconds = seconds;
   s.rendered_seconds = double(truth.size()) * 100 / kSampleRate;  // each prediction covers the next hop
-  s.windows = distances(predicted, truth);
   if (spectra) *spectra = std::move(predicted);
   return s;
 }
@@ -108,19 +144,19 @@ std::vector<double> online_signal(const MagnitudeFrames& frames, std::size_t len
 
 // The stitched signal of the predicted spectra, scored on the same windows (offset grid[0] = frame 0).
 Scores stitched_scores(const std::vector<std::vector<double>>& spectra, const std::vector<std::size_t>& grid,
-                       const std::vector<std::vector<double>>& truth, double predict_seconds, const std::string& key,
-                       std::uint64_t seed, std::vector<double>* signal) {
+                       const std::vector<std::vector<double>>& truth, const std::vector<double>& floor, double predict_seconds,
+                       const std::string& key, std::uint64_t seed, std::vector<double>* signal) {
   const MagnitudeFrames frames = frames_of(spectra);
   const std::size_t length = covered_samples(frames.frames);
   const double start = thread_seconds();
   std::vector<double> x = key == "online" ? online_signal(frames, length)
                                           : griffin_lim(frames, length, {std::stoul(key.substr(5)), 0.99, InitialPhase::random, seed});
-  Scores s;
-  s.seconds = thread_seconds() - start + predict_seconds;
-  s.rendered_seconds = double(spectra.size()) * 100 / kSampleRate;
+  const double seconds = thread_seconds() - start + predict_seconds;
   std::vector<std::size_t> local;
   for (std::size_t t : grid) local.push_back(t - grid[0]);
-  s.windows = distances(grid_spectra(x, local), truth);
+  Scores s = signal_scores(grid_spectra(x, local), truth, floor);
+  s.seconds = seconds;
+  s.rendered_seconds = double(spectra.size()) * 100 / kSampleRate;
   if (signal) *signal = std::move(x);
   return s;
 }
@@ -134,87 +170,151 @@ struct Context {
   const std::vector<ModelInput>& models;
   const std::vector<std::vector<Codes>>& codes;  // [model][material]; empty for per-material models
   const EvaluationOptions& options;
+  const std::optional<synth::Truth>& truth;  // --truth: the oracle where it knows a material
   std::vector<std::string> stitched_keys;  // every reconstruction scored (speed-vs-accuracy points)
   std::string stitched_key;                // the one the stitched-signal experiment reports
   int stitched_model = -1;                 // the first unified model, whose new-press spectra are stitched
 };
 
-// The material's mean spectrum over its training and validation sections: the action-blind
-// predictor a model of the actions has to beat.
-std::vector<double> mean_training_spectrum(const MaterialSignals& signals) {
-  std::vector<double> sum(predict::kSpectrumBins, 0.0);
-  std::size_t count = 0;
-  for (const SectionSignals& s : signals.training)
-    for (const auto& spectrum : grid_spectra(s.accel, section_grid(s.accel.size()))) {
-      for (std::size_t k = 0; k < sum.size(); ++k) sum[k] += spectrum[k];
-      ++count;
-    }
-  for (double& v : sum) v /= double(std::max<std::size_t>(1, count));
-  return sum;
+// What a material's training windows give every method: the recording's noise level per bin (the
+// log-spectral distance's floor), the mean spectrum (the best action-blind predictor) and the
+// windows themselves (the empirical floor estimate).
+struct MaterialReferences {
+  WindowSet training;
+  std::vector<double> noise, mean;
+};
+
+MaterialReferences material_references(const MaterialSignals& signals) {
+  MaterialReferences r{training_windows(signals), {}, {}};
+  if (r.training.spectra.empty())
+    throw Error(Error::Kind::bad_input, "evaluate: material '" + signals.id + "' has no training window; give it longer sections");
+  r.noise = noise_floor(r.training.spectra);
+  r.mean = mean_spectrum(r.training);
+  return r;
+}
+
+// The AR baseline rendered `repeats` times along the recorded action (the paper's protocol).
+Scores rendered_baseline(const ar::PiecewiseArModel& baseline, const SectionSignals& section, const std::vector<std::size_t>& grid,
+                         const std::vector<std::vector<double>>& truth, const std::vector<double>& floor, const Context& c,
+                         std::uint64_t seed, std::vector<double>& first_render, std::vector<std::vector<double>>& first_spectra) {
+  const double start = thread_seconds();
+  auto renders = render_repeats(baseline, section.speed, section.force, c.options.repeats, seed);
+  const double seconds = thread_seconds() - start;
+  std::vector<Scores> each;
+  for (std::size_t r = 0; r < renders.size(); ++r) {
+    const auto spectra = grid_spectra(renders[r], grid);
+    each.push_back(signal_scores(spectra, truth, floor));
+    if (r == 0) first_spectra = spectra;
+  }
+  first_render = std::move(renders.front());
+  Scores s = average(each);
+  s.seconds = seconds;
+  s.rendered_seconds = double(c.options.repeats * section.accel.size()) / kSampleRate;
+  return s;
+}
+
+// Per test section: the oracle's spectra (or, without one, the k-nearest estimate's), and for an
+// AR oracle its renderings (scored each, then averaged).
+void score_floor(MaterialRun& run, std::size_t m, const MaterialSignals& signals, const MaterialReferences& ref,
+                 const std::vector<std::vector<std::vector<double>>>& recorded, const Context& c) {
+  MaterialFloor& f = run.floor;
+  f = {signals.id, signals.name, "estimate", "k nearest training windows"};
+  std::optional<MaterialOracle> oracle;
+  if (c.truth) oracle = material_oracle(*c.truth, c.options.truth, signals, recorded, derive_seed(c.options.seed, 11, m));
+  for (std::size_t s = 0; s < signals.test.size(); ++s) {
+    if (recorded[s].empty()) continue;
+    const WindowSet test = section_windows(signals.test[s]);
+    run.methods["floor-estimate"].add(score(nearest_action_spectra(ref.training, test.actions, kNearestWindows), recorded[s], ref.noise));
+    if (!oracle) continue;
+    run.methods["floor"].add(score(oracle->spectra[s], recorded[s], ref.noise));
+    if (!oracle->ar) continue;
+    std::vector<Scores> each;
+    for (const auto& rendering : oracle->ar->rendered_spectra[s]) each.push_back(signal_scores(rendering, recorded[s], ref.noise));
+    run.methods["oracle-rendered"].add(average(each));
+  }
+  f.estimate = mean(run.methods["floor-estimate"].windows);
+  if (!oracle) {
+    run.methods["floor"] = run.methods["floor-estimate"];
+  } else {
+    f.kind = "oracle", f.method = oracle->method;
+    if (oracle->ar) f.closed_form = oracle->ar->closed_form, f.monte_carlo = oracle->ar->monte_carlo, f.rendered = oracle->ar->rendered;
+  }
+  const Scores& floor = run.methods["floor"];
+  f.windows = floor.windows.size();
+  f.distance = mean(floor.windows), f.lsd_db = mean(floor.lsd);
+}
+
+// The AR baseline as a spectrum predictor: its expected spectrum along each section's recorded action.
+Scores expected_baseline(const ar::PiecewiseArModel& baseline, const MaterialSignals& signals,
+                         const std::vector<std::vector<std::vector<double>>>& recorded, const std::vector<double>& floor) {
+  std::vector<ArSection> sections;
+  for (std::size_t s = 0; s < signals.test.size(); ++s)
+    if (!recorded[s].empty())
+      sections.push_back(held_start_section(signals.test[s].speed, signals.test[s].force, section_grid(signals.test[s].accel.size()), recorded[s]));
+  ArExpectationOptions closed_form_only;
+  closed_form_only.renders = 0;
+  const ArExpectation e = expected_ar_spectra(baseline, sections, closed_form_only);
+  Scores all;
+  for (std::size_t s = 0; s < sections.size(); ++s) all.add(score(e.spectra[s], sections[s].recorded, floor));
+  all.seconds = e.closed_form_seconds;
+  all.rendered_seconds = double(e.closed_form_windows) * 100 / kSampleRate;  // as the models: each window covers the next hop
+  return all;
 }
 
 MaterialRun run_material(std::size_t m, const MaterialSignals& signals, const Context& c, bool keep_example) {
   MaterialRun run;
   const ar::PiecewiseArModel baseline = baseline_model(signals, c.options);
-  const std::vector<double> mean_spectrum = mean_training_spectrum(signals);
+  const MaterialReferences ref = material_references(signals);
   std::vector<predict::Predictor> predictors;
   for (const ModelInput& input : c.models) predictors.emplace_back(input.model);
+  std::vector<std::vector<std::vector<double>>> recorded;
+  for (const SectionSignals& section : signals.test) recorded.push_back(grid_spectra(section.accel, section_grid(section.accel.size())));
   for (std::size_t s = 0; s < signals.test.size(); ++s) {
     const SectionSignals& section = signals.test[s];
     const std::vector<std::size_t> grid = section_grid(section.accel.size());
     if (grid.empty()) continue;
-    const auto truth = grid_spectra(section.accel, grid);
+    const auto& truth = recorded[s];
     const Eigen::MatrixXf actions = grid_actions(section, grid);
-    // The baseline: HaTT-style rendering of the recorded force and speed, `repeats` seeds.
-    double start = thread_seconds();
-    const auto renders = render_repeats(baseline, section.speed, section.force, c.options.repeats, derive_seed(c.options.seed, m, s));
-    Scores base;
-    base.seconds = thread_seconds() - start;
-    base.rendered_seconds = double(c.options.repeats * section.accel.size()) / kSampleRate;
-    base.windows.assign(grid.size(), 0.0);
+    std::vector<double> first_render;
     std::vector<std::vector<double>> first_render_spectra;
-    for (std::size_t r = 0; r < renders.size(); ++r) {
-      const auto spectra = grid_spectra(renders[r], grid);
-      const auto d = distances(spectra, truth);
-      for (std::size_t j = 0; j < d.size(); ++j) base.windows[j] += d[j] / double(renders.size());
-      if (r == 0) first_render_spectra = spectra;
-    }
-    run.baseline.add(base);
-    run.methods["mean-spectrum"].add({distances(std::vector<std::vector<double>>(truth.size(), mean_spectrum), truth), 0, 0});
+    run.baseline.add(rendered_baseline(baseline, section, grid, truth, ref.noise, c, derive_seed(c.options.seed, m, s), first_render,
+                                       first_render_spectra));
+    run.methods["mean-spectrum"].add(score(std::vector<std::vector<double>>(truth.size(), ref.mean), truth, ref.noise));
     std::vector<std::vector<double>> stitched_spectra;
     double stitched_predict_seconds = 0;
     for (std::size_t i = 0; i < c.models.size(); ++i) {
       const std::string tag = ":" + std::to_string(i);
       if (c.models[i].model.variant == predict::Variant::per_material) {
         const int index = c.models[i].model.material_index(signals.id);
-        run.methods["per-material" + tag].add(predict_scores(predictors[i], predictors[i].material_code(index), actions, truth, nullptr));
+        run.methods["per-material" + tag].add(predict_scores(predictors[i], predictors[i].material_code(index), actions, truth, ref.noise, nullptr));
         continue;
       }
       const Codes& codes = c.codes[i][m];
-      run.methods["unified-new-actions" + tag].add(predict_scores(predictors[i], codes.training, actions, truth, nullptr));
+      run.methods["unified-new-actions" + tag].add(predict_scores(predictors[i], codes.training, actions, truth, ref.noise, nullptr));
       // With several test presses, each window's distance is the mean over them.
-      Scores presses;
+      std::vector<Scores> presses;
       for (std::size_t press = 0; press < codes.test_presses.size(); ++press) {
         const bool stitch = int(i) == c.stitched_model && press == 0;
-        const Scores scores = predict_scores(predictors[i], codes.test_presses[press], actions, truth, stitch ? &stitched_spectra : nullptr);
-        if (stitch) stitched_predict_seconds = scores.seconds;
-        presses.windows.resize(scores.windows.size(), 0.0);
-        for (std::size_t j = 0; j < scores.windows.size(); ++j) presses.windows[j] += scores.windows[j] / double(codes.test_presses.size());
-        presses.seconds += scores.seconds, presses.rendered_seconds += scores.rendered_seconds;
+        presses.push_back(predict_scores(predictors[i], codes.test_presses[press], actions, truth, ref.noise, stitch ? &stitched_spectra : nullptr));
+        if (stitch) stitched_predict_seconds = presses.back().seconds;
       }
-      run.methods["unified-new-presses" + tag].add(presses);
+      Scores& new_presses = run.methods["unified-new-presses" + tag];
+      if (!presses.empty()) new_presses.add(average(presses));
     }
     for (const std::string& key : c.stitched_keys) {
       std::vector<double> signal;
-      run.methods[key].add(stitched_scores(stitched_spectra, grid, truth, stitched_predict_seconds, key,
+      run.methods[key].add(stitched_scores(stitched_spectra, grid, truth, ref.noise, stitched_predict_seconds, key,
                                            derive_seed(c.options.seed, 7, m, s), &signal));
       if (keep_example && s == 0 && key == c.stitched_key) {
         const std::size_t j = grid.size() / 2;
         run.example = {signals.id, signals.name, truth[j], stitched_spectra[j], first_render_spectra[j],
-                       head(section.accel, grid[0]), head(signal, 0), head(renders[0], grid[0])};
+                       head(section.accel, grid[0]), head(signal, 0), head(first_render, grid[0])};
       }
     }
   }
+  run.methods["expected-ar"] = expected_baseline(baseline, signals, recorded, ref.noise);
+  score_floor(run, m, signals, ref, recorded, c);
+  run.floor.baseline_expected = mean(run.methods["expected-ar"].windows);
   return run;
 }
 
@@ -266,12 +366,27 @@ std::vector<LatentPoint> latent_map(const std::vector<Codes>& codes, const split
   return points;
 }
 
-MaterialComparison compare(const MaterialSignals& m, const Scores& model, const Scores& baseline) {
+// Does the model beat the oracle beyond sampling error? Paired per window; neighbouring windows
+// overlap by 90 %, so about one in ten is independent. Three standard errors.
+bool beats_oracle(const std::vector<double>& model, const std::vector<double>& oracle) {
+  if (model.size() != oracle.size() || model.size() < 2) return false;
+  std::vector<double> d;
+  for (std::size_t j = 0; j < model.size(); ++j) d.push_back(model[j] - oracle[j]);
+  const double independent = std::max(1.0, double(d.size()) / 10);
+  return mean(d) < -3 * std::sqrt(sample_variance(d) / independent);
+}
+
+MaterialComparison compare(const MaterialSignals& m, const MaterialRun& run, const Scores& model, const Scores& baseline) {
   MaterialComparison c{m.id, m.name, model.windows.size(), mean(model.windows), mean(baseline.windows), {}, {}};
   std::vector<double> difference;
   for (std::size_t j = 0; j < model.windows.size(); ++j) difference.push_back(baseline.windows[j] - model.windows[j]);
   c.difference = quartiles(difference);
   c.test = welch_t_test(model.windows, baseline.windows);
+  c.model_lsd_db = mean(model.lsd), c.baseline_lsd_db = mean(baseline.lsd);
+  const Scores& floor = run.methods.at("floor");
+  c.floor = mean(floor.windows);
+  c.mean_spectrum = mean(run.methods.at("mean-spectrum").windows);
+  c.below_floor = run.floor.kind == "oracle" && beats_oracle(model.windows, floor.windows);
   return c;
 }
 
@@ -305,9 +420,12 @@ std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& mode
         unified ? std::vector<std::pair<std::string, std::string>>{{"unified-new-actions", "Unified model (new actions, training presses)"},
                                                                    {"unified-new-presses", "Unified model (new actions, new press)"}}
                 : std::vector<std::pair<std::string, std::string>>{{"per-material", "Per-material models (new actions)"}};
-    for (const auto& [id, what] : tested)
+    for (const auto& [id, what] : tested) {
       out.push_back({id + "-vs-mean-spectrum" + suffix, what + " against each material's mean training spectrum, the best action-blind predictor",
                      id + ":" + std::to_string(i), label, "mean-spectrum"});
+      out.push_back({id + "-vs-expected-ar" + suffix, what + " against the AR baseline's expected spectrum at each window's action: spectrum against spectrum",
+                     id + ":" + std::to_string(i), label, "expected-ar"});
+    }
   }
   if (c.stitched_model >= 0 && !c.stitched_key.empty()) {
     const std::string& key = c.stitched_key;
@@ -333,6 +451,75 @@ std::string method_name(const std::string& key) {
   return key.substr(0, key.find(':'));
 }
 
+std::string baseline_label(const std::string& key, const std::string& baseline, std::size_t repeats) {
+  if (key.empty()) return baseline + " (" + std::to_string(repeats) + " renderings per test section)";
+  if (key == "expected-ar") return baseline + " expected spectrum at the recorded action (closed form)";
+  return "mean training spectrum per material";
+}
+
+double median_of(std::vector<double> v) {
+  std::erase_if(v, [](double x) { return !std::isfinite(x); });
+  return v.empty() ? kNotMeasured : percentile(v, 50);
+}
+
+MaterialRealism material_realism(const MaterialSignals& m, const Scores& s) {
+  std::vector<double> lsd, spread;
+  for (const SectionRealism& r : s.realism)
+    if (std::isfinite(r.section_lsd_db) && std::isfinite(r.spread_ratio)) lsd.push_back(r.section_lsd_db), spread.push_back(r.spread_ratio);
+  if (lsd.empty()) return {m.id, m.name};
+  return {m.id, m.name, mean(lsd), mean(spread)};
+}
+
+// One time-domain method's realism over the materials; key "" is the AR baseline as rendered.
+Realism realism_of(const std::string& key, const std::string& method, const std::string& setting,
+                   const std::vector<MaterialSignals>& signals, const std::vector<MaterialRun>& runs) {
+  Realism r{method, setting, {}};
+  for (std::size_t m = 0; m < runs.size(); ++m) {
+    const auto it = runs[m].methods.find(key);
+    const Scores* s = key.empty() ? &runs[m].baseline : it == runs[m].methods.end() ? nullptr : &it->second;
+    if (s && !s->realism.empty()) r.materials.push_back(material_realism(signals[m], *s));
+  }
+  return r;
+}
+
+SpeedPoint point(const std::string& method, const std::string& setting, const Scores& s, const Realism* realism) {
+  SpeedPoint p{method, setting, s.seconds / s.rendered_seconds, mean(s.windows)};
+  if (!realism) return p;
+  std::vector<double> lsd, spread;
+  for (const MaterialRealism& r : realism->materials) lsd.push_back(r.section_lsd_db), spread.push_back(r.spread_ratio);
+  p.kind = "signal", p.section_lsd_db = median_of(lsd), p.spread_ratio = median_of(spread);
+  return p;
+}
+
+// Floors, realism and the speed-vs-accuracy points over all materials.
+void summarise(Evaluation& e, const std::vector<MaterialSignals>& signals, const std::vector<MaterialRun>& runs,
+               const std::vector<ModelInput>& models, const Context& c) {
+  Scores base;
+  std::map<std::string, Scores> totals;
+  for (const MaterialRun& r : runs) {
+    base.add(r.baseline);
+    for (const auto& [key, s] : r.methods) totals[key].add(s);
+    if (!r.example.id.empty()) e.examples.push_back(r.example);
+    if (!r.baseline.windows.empty()) e.floors.push_back(r.floor);
+  }
+  const bool any_oracle = std::any_of(e.floors.begin(), e.floors.end(), [](const MaterialFloor& f) { return f.kind == "oracle"; });
+  e.floor_kind = any_oracle ? "oracle" : "estimate";
+  e.realism.push_back(realism_of("", e.baseline, "rendered along the recorded action", signals, runs));
+  e.speed.push_back(point(e.baseline, "order 14-20, 1 rendering", base, &e.realism.back()));
+  e.speed.push_back(point(e.baseline + " expected spectrum", "closed form", totals["expected-ar"], nullptr));
+  for (const std::string& key : c.stitched_keys) {
+    e.realism.push_back(realism_of(key, method_name(key), method_setting(key, models), signals, runs));
+    e.speed.push_back(point(method_name(key), method_setting(key, models), totals[key], &e.realism.back()));
+  }
+  if (totals.count("oracle-rendered")) e.realism.push_back(realism_of("oracle-rendered", "generating model rendered", "the oracle's model, 10 renderings", signals, runs));
+  for (const auto& [key, s] : totals)
+    if (key.find(':') != std::string::npos && key.rfind("fgla:", 0) != 0) e.speed.push_back(point(method_name(key), method_setting(key, models), s, nullptr));
+  if (c.truth && !any_oracle)
+    e.notes.push_back("--truth " + c.options.truth + " knows none of the materials' recordings: every floor is an estimate");
+  if (any_oracle && std::any_of(e.floors.begin(), e.floors.end(), [](const MaterialFloor& f) { return f.kind != "oracle"; }))
+    e.notes.push_back("--truth " + c.options.truth + " does not know every material: the others' floor is an estimate");
+}
+
 }  // namespace
 
 Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<ModelInput>& models, const EvaluationOptions& o,
@@ -355,7 +542,9 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
       codes[i] = unified_codes(models[i], split);
       if (stitched < 0) stitched = int(i), e.latents = latent_map(codes[i], split);
     }
-  Context c{models, codes, o, {}, {}, stitched};
+  std::optional<synth::Truth> truth;
+  if (!o.truth.empty()) truth = synth::read_truth_file(o.truth);
+  Context c{models, codes, o, truth, {}, {}, stitched};
   if (stitched >= 0 && o.reconstruct != Reconstruction::none) {
     for (std::size_t n : o.fgla_iterations) c.stitched_keys.push_back("fgla:" + std::to_string(n));
     c.stitched_keys.push_back("online");
@@ -380,26 +569,15 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   }, o.threads);
 
   for (const ExperimentSpec& spec : experiment_specs(models, c)) {
-    const std::string against = spec.baseline_key.empty() ? e.baseline + " (" + std::to_string(o.repeats) + " renderings per test section)"
-                                                          : "mean training spectrum per material";
-    Experiment x{spec.id, spec.title, spec.model_label, against, {}};
+    Experiment x{spec.id, spec.title, spec.model_label, baseline_label(spec.baseline_key, e.baseline, o.repeats), {}};
     for (std::size_t m = 0; m < signals.size(); ++m) {
       if (runs[m].baseline.windows.empty()) continue;
       const Scores& versus = spec.baseline_key.empty() ? runs[m].baseline : runs[m].methods.at(spec.baseline_key);
-      x.materials.push_back(compare(signals[m], runs[m].methods.at(spec.key), versus));
+      x.materials.push_back(compare(signals[m], runs[m], runs[m].methods.at(spec.key), versus));
     }
     e.experiments.push_back(std::move(x));
   }
-  Scores base;
-  std::map<std::string, Scores> totals;
-  for (const MaterialRun& r : runs) {
-    base.add(r.baseline);
-    for (const auto& [key, s] : r.methods) totals[key].add(s);
-    if (!r.example.id.empty()) e.examples.push_back(r.example);
-  }
-  e.speed.push_back({e.baseline, "order 14-20, 1 rendering", base.seconds / base.rendered_seconds, mean(base.windows)});
-  for (const auto& [key, s] : totals)
-    if (key != "mean-spectrum") e.speed.push_back({method_name(key), method_setting(key, models), s.seconds / s.rendered_seconds, mean(s.windows)});
+  summarise(e, signals, runs, models, c);
   e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return e;
 }

@@ -22,6 +22,7 @@ struct EvaluationOptions {
   Reconstruction reconstruct = Reconstruction::fgla;    // the stitched-signal experiment's method
   std::size_t repeats = 10;                             // baseline renderings (seeds) per test section
   std::vector<std::size_t> fgla_iterations{0, 8, 32, 100};  // speed-vs-accuracy points; the largest is the experiment's
+  std::string truth;               // truth.h5 of haptex synth (hatt or materials): the oracle noise floor; empty: estimates
   std::uint64_t seed = 0;
   unsigned threads = 0;
 };
@@ -32,7 +33,7 @@ struct ModelInput {
 };
 
 // Throws haptex::Error (bad_input) when a model was trained on another dataset or split (hashes),
-// or does not know a material of the split; and as the baselines throw (a material whose training
+// or does not know a material of the split; as synth::read_truth_file throws; and as the baselines throw (a material whose training
 // sections are too short for the AR fit; no published model for a material).
 Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<ModelInput>& models,
                           const EvaluationOptions& options, const Progress& progress = {});

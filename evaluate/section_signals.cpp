@@ -18,11 +18,11 @@ std::vector<double> read_signal(const h5::Group& recording, const char* name, co
 }
 
 SectionSignals cut(const std::vector<double>& accel, const std::vector<double>& force, const std::vector<double>& speed, int recording,
-                   int section, std::size_t sections) {
+                   const std::string& source_sha256, int section, std::size_t sections) {
   const auto n = std::int64_t(accel.size());
   const std::int64_t b = split::section_begin(std::size_t(section), n, sections), e = split::section_begin(std::size_t(section) + 1, n, sections);
   auto part = [&](const std::vector<double>& v) { return std::vector<double>(v.begin() + b, v.begin() + e); };
-  return {recording, section, b, part(accel), part(force), part(speed)};
+  return {recording, section, source_sha256, b, part(accel), part(force), part(speed)};
 }
 
 }  // namespace
@@ -45,9 +45,10 @@ std::vector<MaterialSignals> read_section_signals(const split::DatasetSplit& spl
                  speed = read_signal(r, "speed_lp", split.dataset_path);
       if (force.size() != accel.size() || speed.size() != accel.size())
         throw input_error(split.dataset_path, r.object_path(), "signals of different lengths", "Run haptex convert again");
-      for (int s : m.sections[split::kTest]) signals.test.push_back(cut(accel, force, speed, std::stoi(k), s, split.sections));
+      const std::string sha = r.has_attr("source_sha256") ? r.attr_string("source_sha256") : std::string();
+      for (int s : m.sections[split::kTest]) signals.test.push_back(cut(accel, force, speed, std::stoi(k), sha, s, split.sections));
       for (std::size_t set : {split::kTrain, split::kVal})
-        for (int s : m.sections[set]) signals.training.push_back(cut(accel, force, speed, std::stoi(k), s, split.sections));
+        for (int s : m.sections[set]) signals.training.push_back(cut(accel, force, speed, std::stoi(k), sha, s, split.sections));
     }
     out.push_back(std::move(signals));
   }

@@ -15,6 +15,7 @@ namespace haptex::evaluate {
 
 struct SectionSignals {
   int recording = 0, section = 0;
+  std::string source_sha256;                // the recording's @source_sha256 (empty when absent): matches truth.h5
   std::int64_t begin = 0;                   // first sample of the section in its recording
   std::vector<double> accel, force, speed;  // DFT321 acceleration (m/s^2), low-passed force (N) and speed (mm/s)
 };

@@ -51,6 +51,36 @@ TEST(EvaluateCli, WritesAReportWhoseTotalsMatchItsTables) {
   EXPECT_FALSE(fs::exists(dir.file("report.partial")));
 }
 
+// synth materials' truth.h5 knows what generated every recording: the floor is the oracle, and no
+// model beats it beyond sampling error.
+TEST(EvaluateCli, WithTheTruthTheFloorIsTheOracle) {
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  const CommandResult r = run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", models().unified, "--model",
+                                      models().per_material, "--repeats", "3", "--truth", p.truth, "-o", dir.file("report"), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json results = nlohmann::json::parse(r.out);
+  EXPECT_EQ(results["floor_kind"], "oracle");
+  ASSERT_EQ(results["floors"].size(), 2u);
+  for (const auto& f : results["floors"]) {
+    EXPECT_EQ(f["kind"], "oracle");
+    EXPECT_EQ(f["method"], "truth grid");
+    EXPECT_GT(f["distance"].get<double>(), 0.0);
+  }
+  std::set<std::string> ids;
+  for (const auto& e : results["experiments"]) {
+    ids.insert(e["id"]);
+    for (const auto& m : e["materials"]) {
+      EXPECT_FALSE(m["below_floor"].get<bool>()) << e["id"] << " " << m["id"] << ": a model beats the oracle";
+      EXPECT_GT(m["floor"].get<double>(), 0.0);
+      EXPECT_GT(m["model_lsd_db"].get<double>(), 0.0);
+    }
+  }
+  for (const char* id : {"per-material-vs-expected-ar", "unified-new-actions-vs-expected-ar", "unified-new-presses-vs-mean-spectrum"})
+    EXPECT_TRUE(ids.count(id)) << id << " missing";
+  EXPECT_FALSE(results["realism"].empty());
+}
+
 TEST(EvaluateCli, RefusesAModelTrainedOnAnotherSplit) {
   const TempDir dir;
   const SmallPipeline& p = small_pipeline();

@@ -114,7 +114,8 @@ std::string read_text(const fs::path& p) {
 }
 
 SmallPipeline files_in(const fs::path& root) {
-  return {(root / "r.h5").string(), (root / "g.h5").string(), (root / "d.h5").string(), (root / "split.json").string()};
+  return {(root / "r.h5").string(), (root / "g.h5").string(), (root / "d.h5").string(), (root / "split.json").string(),
+          (root / "synth" / "truth.h5").string()};
 }
 
 void build(const fs::path& root) {

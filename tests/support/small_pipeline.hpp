@@ -10,6 +10,7 @@ namespace haptex::test {
 
 struct SmallPipeline {
   std::string recordings, gelsight, dataset, split;
+  std::string truth;  // synth materials' truth.h5 (every material, the dropped ones too)
 };
 
 // Builds the files on first use (each step through the haptex binary, as a user runs it).

@@ -1,0 +1,102 @@
+// The oracle noise floor (evaluate/oracle.hpp) on recordings whose generator is known exactly.
+#include "evaluate/oracle.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "core/ar/gaussian_noise.hpp"
+#include "core/ar/texture_renderer.hpp"
+#include "core/error.hpp"
+#include "evaluate/spectral_distance.hpp"
+#include "tests/support/ar_fixture.hpp"
+
+namespace haptex::evaluate {
+namespace {
+
+synth::TruthGrid two_by_two() {
+  synth::TruthGrid g{{10, 20}, {1, 2}, std::vector<double>(4 * 100)};
+  for (std::size_t s = 0; s < 2; ++s)
+    for (std::size_t f = 0; f < 2; ++f)
+      for (std::size_t k = 0; k < 100; ++k) g.spectra[(s * 2 + f) * 100 + k] = double(1 + s + 2 * f);
+  return g;
+}
+
+TEST(TruthGridOracle, InterpolatesPowerAndFallsSilentAtRest) {
+  const synth::TruthGrid g = two_by_two();
+  EXPECT_DOUBLE_EQ(grid_power_at(g, 10, 1)[0], 1.0);
+  EXPECT_DOUBLE_EQ(grid_power_at(g, 20, 2)[7], 16.0);
+  EXPECT_DOUBLE_EQ(grid_power_at(g, 15, 1)[3], 0.5 * (1 + 4));        // between (10, 1) and (20, 1), in power
+  EXPECT_DOUBLE_EQ(grid_power_at(g, 5, 1)[0], 0.5);                   // halfway to the silent speed 0
+  EXPECT_DOUBLE_EQ(grid_power_at(g, 0, 2)[0], 0.0);
+  EXPECT_DOUBLE_EQ(grid_power_at(g, 10, -1)[0], 0.0);
+  EXPECT_DOUBLE_EQ(grid_power_at(g, 500, 9)[0], 16.0);                // held at the grid's far corner
+  std::vector<double> a{0.0, 3.0};
+  add_sensor_noise(a, 0.02 * 0.02 * 3);
+  EXPECT_NEAR(a[0], std::sqrt(std::numbers::pi * 0.0012 / 1000), 1e-15);
+  EXPECT_NEAR(a[1], std::sqrt(9 + std::numbers::pi * 0.0012 / 1000), 1e-15);
+}
+
+// A recording of the fixture model along a slow speed ramp at 2 N, with the sensor noise of three
+// axes as DFT321 keeps it, cut into one test section.
+struct HattCase {
+  synth::Truth truth;
+  MaterialSignals signals;
+  std::vector<std::vector<std::vector<double>>> recorded;
+};
+
+HattCase hatt_case() {
+  const std::size_t n = 30000, begin = 6000, length = 20000;
+  std::vector<double> speed(n), force(n, 2.0);
+  for (std::size_t i = 0; i < n; ++i) speed[i] = 60 + 40 * double(i) / double(n);
+  auto accel = ar::render_texture(test::ar_fixture(), speed, force, 5);
+  ar::GaussianNoise noise(6);
+  for (double& v : accel) v += std::sqrt(3.0) * 0.02 * noise.next();
+  HattCase c;
+  c.truth.accel_noise_m_s2 = 0.02;
+  c.truth.materials.push_back({"Fixture", "hatt-model", test::kArFixtureXml, "", std::nullopt, {{0, "sha-of-recording-0", speed, force}}});
+  auto part = [&](const std::vector<double>& v) { return std::vector<double>(v.begin() + begin, v.begin() + begin + length); };
+  c.signals = {"fixture", "Fixture", {{0, 0, "sha-of-recording-0", std::int64_t(begin), part(accel), part(force), part(speed)}}, {}};
+  c.recorded.push_back(grid_spectra(c.signals.test[0].accel, section_grid(length)));
+  return c;
+}
+
+TEST(HattOracle, ClosedFormAgreesWithMonteCarloAndBeatsTheModelRendered) {
+  const HattCase c = hatt_case();
+  const auto oracle = material_oracle(c.truth, "truth.h5", c.signals, c.recorded, 1);
+  ASSERT_TRUE(oracle);
+  ASSERT_TRUE(oracle->ar);
+  EXPECT_EQ(oracle->method, "closed form");
+  ASSERT_EQ(oracle->spectra.size(), 1u);
+  EXPECT_EQ(oracle->spectra[0].size(), c.recorded[0].size());
+  const ArExpectation& e = *oracle->ar;
+  EXPECT_NEAR(e.closed_form / e.monte_carlo, 1.0, 0.02);
+  // A renderer pays the texture's randomness twice: its own and the recording's.
+  EXPECT_GT(e.rendered / e.closed_form, 1.2);
+  EXPECT_LT(e.rendered / e.closed_form, 1.6);
+  EXPECT_EQ(e.rendered_spectra.size(), 1u);
+  EXPECT_EQ(e.rendered_spectra[0].size(), 10u);
+}
+
+TEST(HattOracle, KnowsOnlyTheRecordingsItGenerated) {
+  HattCase c = hatt_case();
+  c.signals.test[0].source_sha256 = "another recording";
+  EXPECT_FALSE(material_oracle(c.truth, "truth.h5", c.signals, c.recorded, 1));
+  c = hatt_case();
+  c.signals.id = "other";
+  EXPECT_FALSE(material_oracle(c.truth, "truth.h5", c.signals, c.recorded, 1));
+  c = hatt_case();
+  c.truth.materials[0].recordings[0].speed_mm_s.resize(20000);
+  c.truth.materials[0].recordings[0].force_n.resize(20000);
+  try {
+    material_oracle(c.truth, "truth.h5", c.signals, c.recorded, 1);
+    FAIL() << "a true action shorter than the recording was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("truth.h5"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace haptex::evaluate
