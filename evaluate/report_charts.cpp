@@ -107,35 +107,91 @@ std::string latents_script(const std::vector<LatentPoint>& points, const std::st
   return s.str();
 }
 
-std::string speed_script(const std::vector<SpeedPoint>& points, const std::string& terminal) {
-  const bool log_x = std::any_of(points.begin(), points.end(),
-                                 [](const SpeedPoint& p) { return std::isfinite(p.seconds_per_second) && p.seconds_per_second > 0; });
-  std::ostringstream s;
-  s << header(terminal, kSpeedStem, 1100, 700, "speed against accuracy")
-    << "set title 'Speed against accuracy: one point per method and setting (lower left is better)'\n"
-    << "set xlabel 'compute time per second of rendered vibration (s, one core)" << (log_x ? ", log scale" : "") << "'\n"
-    << "set ylabel 'mean spectral distance (m/s^2)'\n"
-    << (log_x ? "set logscale x\nset format x '%g'\n" : "") << "set key outside right top\nset grid\n"
-    << "set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n"
-    << "set arrow from 1, graph 0 to 1, graph 1 nohead dt 2 lc rgb '#666666'\n"
-    << "set label 'real time' at 1, graph 0.5 rotate by 90 offset char -1,0 center tc rgb '#666666'\n";
-  std::vector<std::string> methods;
-  for (const SpeedPoint& p : points) {
-    if (std::find(methods.begin(), methods.end(), p.method) == methods.end()) methods.push_back(p.method);
-    if (std::isfinite(p.seconds_per_second) && std::isfinite(p.distance) && (!log_x || p.seconds_per_second > 0))
+// The speed chart's panels: the accuracy of spectrum predictors, the realism of rendered signals.
+struct SpeedPanel {
+  std::string_view kind, title, ylabel, column;
+};
+constexpr SpeedPanel kSpeedPanels[] = {
+    {"spectrum", "Spectrum accuracy (lower left is better)", "mean spectral distance (m/s^2)", "distance"},
+    {"signal", "Signal realism (1: as steady as the recording)", "spread ratio (rendered / recorded)", "spread_ratio"},
+};
+
+double panel_y(const SpeedPoint& p, const SpeedPanel& panel) { return panel.column == "distance" ? p.distance : p.spread_ratio; }
+
+bool on_panel(const SpeedPoint& p, const SpeedPanel& panel, bool log_x) {
+  return p.kind == panel.kind && std::isfinite(p.seconds_per_second) && std::isfinite(panel_y(p, panel)) &&
+         (!log_x || p.seconds_per_second > 0);
+}
+
+bool any_finite_floor(const std::vector<MaterialFloor>& floors) {
+  return std::any_of(floors.begin(), floors.end(), [](const MaterialFloor& f) { return std::isfinite(f.distance); });
+}
+
+// The panel's horizontal line, plotted as a constant over the whole x range: the mean floor distance
+// (the gnuplot variable `floor`, from floors.csv) or the recording's spread ratio 1; empty without one.
+std::string reference_line(const SpeedPanel& panel, const Evaluation& e) {
+  if (panel.column != "distance") return ", \\\n     1 with lines dt 2 lc rgb 'black' title 'the recording (1)'";
+  if (!any_finite_floor(e.floors)) return "";
+  const std::string label = e.floor_kind == "oracle" ? "oracle" : e.floor_kind == "estimate" ? "floor (estimate)" : "floor";
+  return ", \\\n     floor with lines dt 2 lc rgb '#666666' title " + gnuplot::text(label);
+}
+
+// One panel: its points coloured by method (colours shared by both panels), labelled with their setting.
+void speed_panel(std::ostringstream& s, const Evaluation& e, const SpeedPanel& panel, const std::vector<std::string>& methods,
+                 bool log_x) {
+  const std::vector<SpeedPoint>& points = e.speed;
+  s << "unset label\n"
+    << (log_x ? "set label 'real time' at 1, graph 0.5 rotate by 90 offset char -1,0 center tc rgb '#666666'\n" : "")
+    << "set title " << gnuplot::text(std::string(panel.title)) << "\nset ylabel " << gnuplot::text(std::string(panel.ylabel)) << "\n";
+  for (const SpeedPoint& p : points)
+    if (on_panel(p, panel, log_x))
       s << "set label " << gnuplot::text(p.setting) << " at " << csv_number(p.seconds_per_second) << ","
-        << csv_number(p.distance) << " offset char 0.8,0.4 font ',8'\n";
-  }
+        << csv_number(panel_y(p, panel)) << " offset char 0.8,0.4 font ',8'\n";
   s << "plot ";
+  bool first = true;
   for (std::size_t m = 0; m < methods.size(); ++m) {
     std::string rows;
     for (std::size_t i = 0; i < points.size(); ++i)
-      if (points[i].method == methods[m]) rows += (rows.empty() ? "$0==" : "||$0==") + std::to_string(i);
-    s << (m ? ", \\\n     " : "") << "'" << kSpeedStem << ".csv' using ((" << rows
-      << ") ? column('seconds_per_second') : NaN):'distance' with points pt " << 5 + 2 * (m / std::size(kPalette) % 3)
-      << " ps 1.6 lc rgb '" << kPalette[m % std::size(kPalette)] << "' title " << gnuplot::text(methods[m]);
+      if (points[i].method == methods[m] && on_panel(points[i], panel, log_x)) rows += (rows.empty() ? "$0==" : "||$0==") + std::to_string(i);
+    if (rows.empty()) continue;
+    s << (first ? "" : ", \\\n     ") << "'" << kSpeedStem << ".csv' using ((" << rows << ") ? column('seconds_per_second') : NaN):'"
+      << panel.column << "' with points pt " << 5 + 2 * (m / std::size(kPalette) % 3) << " ps 1.6 lc rgb '"
+      << kPalette[m % std::size(kPalette)] << "' title " << gnuplot::text(methods[m]);
+    first = false;
   }
-  s << "\n";
+  s << reference_line(panel, e) << "\n";
+}
+
+// Two panels side by side (those with points): spectrum accuracy and signal realism against compute
+// time; "" when neither has a point to draw.
+std::string speed_script(const Evaluation& e, const std::string& terminal) {
+  const std::vector<SpeedPoint>& points = e.speed;
+  const bool log_x = std::any_of(points.begin(), points.end(),
+                                 [](const SpeedPoint& p) { return std::isfinite(p.seconds_per_second) && p.seconds_per_second > 0; });
+  std::vector<const SpeedPanel*> panels;
+  for (const SpeedPanel& panel : kSpeedPanels)
+    if (std::any_of(points.begin(), points.end(), [&](const SpeedPoint& p) { return on_panel(p, panel, log_x); })) panels.push_back(&panel);
+  if (panels.empty()) return "";
+  std::vector<std::string> methods;
+  for (const SpeedPoint& p : points)
+    if (std::find(methods.begin(), methods.end(), p.method) == methods.end()) methods.push_back(p.method);
+  std::ostringstream s;
+  s << header(terminal, kSpeedStem, int(800 * panels.size()), 720, "speed against spectrum accuracy and signal realism");
+  s << "finite(x) = abs(x) < 1e300 ? x : NaN  # inf and nan left out\n";
+  if (any_finite_floor(e.floors))
+    s << "stats '" << kFloorsStem << ".csv' using (finite(column('distance'))) nooutput\nfloor = STATS_mean\n";
+  // On the log axis, from half the fastest time to twice the slowest or real time (1 s), whichever is
+  // slower, over the times that are positive and finite.
+  if (log_x)
+    s << "stats '" << kSpeedStem << ".csv' using (column('seconds_per_second') > 0 ? finite(column('seconds_per_second')) : NaN) "
+      << "nooutput prefix 'TIME'\n"
+      << "set logscale x\nset format x '%g'\nset xrange [TIME_min / 2 : (TIME_max > 1 ? TIME_max : 1) * 2]\n"
+      << "set arrow from 1, graph 0 to 1, graph 1 nohead dt 2 lc rgb '#666666'\n";
+  s << "set multiplot layout 1," << panels.size() << " title 'Speed against accuracy: one point per method and setting'\n"
+    << "set xlabel 'compute time per second of rendered vibration (s, one core)" << (log_x ? ", log scale" : "") << "'\n"
+    << "set key below\nset grid\nset offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n";
+  for (const SpeedPanel* panel : panels) speed_panel(s, e, *panel, methods, log_x);
+  s << "unset multiplot\n";
   return s.str();
 }
 
@@ -150,7 +206,7 @@ ChartResult write_report_charts(const Evaluation& e, const ReportLayout& layout,
       charts.emplace_back(layout.experiments[i], bars_script(e.experiments[i], layout.experiments[i], terminal));
   if (std::string s = examples_script(e, layout, terminal); !s.empty()) charts.emplace_back(kExamplesStem, s);
   if (!e.latents.empty()) charts.emplace_back(kLatentsStem, latents_script(e.latents, terminal));
-  if (!e.speed.empty()) charts.emplace_back(kSpeedStem, speed_script(e.speed, terminal));
+  if (std::string s = speed_script(e, terminal); !s.empty()) charts.emplace_back(kSpeedStem, s);
 
   ChartResult result;
   std::string failed;

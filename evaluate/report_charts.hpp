@@ -9,8 +9,12 @@
 // - examples.png (Fig. 5): the first four examples in a 2 x 4 grid, spectra of one test window
 //   above, the start of the stitched signals below; recorded, model and baseline;
 // - latents.png: the texture latents' 2-D PCA, mean training latents and test presses, labelled;
-// - speed.png: compute time per second of rendered vibration (log axis) against mean spectral
-//   distance, one point per method and setting, labelled with the setting.
+// - speed.png: two panels against compute time per second of rendered vibration (log axis), one
+//   point per method and setting, labelled with the setting: left, "spectrum accuracy", the speed
+//   points of kind spectrum at their mean spectral distance, with a line at the mean floor distance
+//   (read from floors.csv; "oracle" or "floor (estimate)"); right, "signal realism", the points of
+//   kind signal at their spread ratio, with a line at 1 (the recording). A panel without a point
+//   is left out.
 // A chart without data (no materials, examples, latents or speed points) is left out.
 #include <string>
 #include <vector>

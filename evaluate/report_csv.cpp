@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
+#include "evaluate/results_json.hpp"
 
 namespace haptex::evaluate {
 namespace {
@@ -63,10 +64,57 @@ std::string write_series(const std::string& path, std::string_view header, X x, 
   return out.close();
 }
 
+std::string write_experiment(const std::string& path, const Experiment& x) {
+  CsvFile out(path, kExperimentColumns);
+  for (const MaterialComparison& m : x.materials)
+    out.row(csv_field(m.id), csv_field(m.name), m.windows, csv_number(m.model), csv_number(m.baseline),
+            csv_number(m.difference.q1), csv_number(m.difference.median), csv_number(m.difference.q3), csv_number(m.test.t),
+            csv_number(m.test.df), csv_number(m.test.p), m.test.n_a, m.test.n_b, int(m.better()), int(m.significant()),
+            csv_measured(m.model_lsd_db), csv_measured(m.baseline_lsd_db), csv_measured(m.floor),
+            csv_measured(m.floor_ratio()), csv_measured(m.mean_spectrum), csv_measured(m.mean_spectrum_ratio()),
+            int(m.below_floor));
+  return out.close();
+}
+
+std::string write_speed(const std::string& path, const std::vector<SpeedPoint>& points) {
+  CsvFile out(path, kSpeedColumns);
+  for (const SpeedPoint& s : points)
+    out.row(csv_field(s.method), csv_field(s.setting), csv_number(s.seconds_per_second), csv_number(s.distance),
+            csv_field(s.kind), csv_measured(s.section_lsd_db), csv_measured(s.spread_ratio));
+  return out.close();
+}
+
+std::string write_latents(const std::string& path, const std::vector<LatentPoint>& points) {
+  CsvFile out(path, kLatentColumns);
+  for (const LatentPoint& p : points)
+    out.row(csv_field(p.id), csv_field(p.name), csv_field(p.kind), csv_number(p.x), csv_number(p.y));
+  return out.close();
+}
+
+std::string write_floors(const std::string& path, const std::vector<MaterialFloor>& floors) {
+  CsvFile out(path, kFloorColumns);
+  for (const MaterialFloor& f : floors)
+    out.row(csv_field(f.id), csv_field(f.name), csv_field(f.kind), csv_field(f.method), f.windows, csv_measured(f.distance),
+            csv_measured(f.lsd_db), csv_measured(f.closed_form), csv_measured(f.monte_carlo),
+            csv_measured(closed_form_gap_percent(f)), csv_measured(f.rendered), csv_measured(rendered_ratio(f)),
+            csv_measured(f.estimate), csv_measured(f.baseline_expected));
+  return out.close();
+}
+
+std::string write_realism(const std::string& path, const std::vector<Realism>& realism) {
+  CsvFile out(path, kRealismColumns);
+  for (const Realism& r : realism)
+    for (const MaterialRealism& m : r.materials)
+      out.row(csv_field(r.method), csv_field(r.setting), csv_field(m.id), csv_field(m.name), csv_measured(m.section_lsd_db),
+              csv_measured(m.spread_ratio));
+  return out.close();
+}
+
 }  // namespace
 
 ReportLayout report_layout(const Evaluation& e) {
-  std::set<std::string> used{std::string(kSpeedStem), std::string(kLatentsStem), std::string(kExamplesStem)};
+  std::set<std::string> used{std::string(kSpeedStem), std::string(kLatentsStem), std::string(kExamplesStem),
+                             std::string(kFloorsStem), std::string(kRealismStem)};
   ReportLayout layout;
   for (const Experiment& x : e.experiments) layout.experiments.push_back(unique_name("experiment-" + safe_stem(x.id), used));
   for (const Example& x : e.examples) layout.examples.push_back(unique_name("example-" + safe_stem(x.id), used));
@@ -96,27 +144,18 @@ std::string csv_number(double x) {
   return std::string(buffer, end);
 }
 
+std::string csv_measured(double x) { return std::isnan(x) ? "" : csv_number(x); }
+
 std::vector<std::string> write_report_csvs(const Evaluation& e, const ReportLayout& layout, const std::string& directory) {
   namespace fs = std::filesystem;
   const auto path = [&](const std::string& name) { return (fs::path(directory) / name).string(); };
+  const auto csv = [&](std::string_view stem) { return path(std::string(stem) + ".csv"); };
   std::vector<std::string> written;
-  for (std::size_t i = 0; i < e.experiments.size(); ++i) {
-    CsvFile out(path(layout.experiments[i] + ".csv"), kExperimentColumns);
-    for (const MaterialComparison& m : e.experiments[i].materials)
-      out.row(csv_field(m.id), csv_field(m.name), m.windows, csv_number(m.model), csv_number(m.baseline),
-              csv_number(m.difference.q1), csv_number(m.difference.median), csv_number(m.difference.q3),
-              csv_number(m.test.t), csv_number(m.test.df), csv_number(m.test.p), m.test.n_a, m.test.n_b,
-              int(m.better()), int(m.significant()));
-    written.push_back(out.close());
-  }
-  CsvFile speed(path(std::string(kSpeedStem) + ".csv"), kSpeedColumns);
-  for (const SpeedPoint& s : e.speed)
-    speed.row(csv_field(s.method), csv_field(s.setting), csv_number(s.seconds_per_second), csv_number(s.distance));
-  written.push_back(speed.close());
-  CsvFile latents(path(std::string(kLatentsStem) + ".csv"), kLatentColumns);
-  for (const LatentPoint& p : e.latents)
-    latents.row(csv_field(p.id), csv_field(p.name), csv_field(p.kind), csv_number(p.x), csv_number(p.y));
-  written.push_back(latents.close());
+  for (std::size_t i = 0; i < e.experiments.size(); ++i) written.push_back(write_experiment(csv(layout.experiments[i]), e.experiments[i]));
+  written.push_back(write_speed(csv(kSpeedStem), e.speed));
+  written.push_back(write_latents(csv(kLatentsStem), e.latents));
+  written.push_back(write_floors(csv(kFloorsStem), e.floors));
+  written.push_back(write_realism(csv(kRealismStem), e.realism));
   for (std::size_t i = 0; i < e.examples.size(); ++i) {
     const Example& x = e.examples[i];
     written.push_back(write_series(path(layout.examples[i] + "-spectra.csv"), kSpectraColumns,

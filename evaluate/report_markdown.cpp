@@ -8,6 +8,7 @@
 #include "core/version.hpp"
 #include "evaluate/paper_figures.hpp"
 #include "evaluate/results_json.hpp"
+#include "evaluate/window_sets.hpp"
 
 namespace haptex::evaluate {
 namespace {
@@ -40,6 +41,12 @@ std::string percent(std::size_t count, std::size_t of) { return of == 0 ? "n/a" 
 std::string materials_word(std::size_t n) { return n == 1 ? "material" : "materials"; }
 
 std::string mean_text(const Experiment& x, double mean) { return x.materials.empty() ? "n/a" : format_number(mean); }
+
+// A figure that may not have been measured: "–" when it was not.
+std::string measured(double x) { return std::isnan(x) ? "–" : format_number(x); }
+std::string measured_percent(double x) { return std::isnan(x) ? "–" : format_number(x) + " %"; }
+
+std::string shown_name(const std::string& name, const std::string& id) { return escaped(name.empty() ? id : name); }
 
 bool drawn(const ChartResult& charts, const std::string& stem) {
   return std::find(charts.images.begin(), charts.images.end(), stem + ".png") != charts.images.end();
@@ -76,7 +83,45 @@ constexpr std::pair<std::string_view, std::string_view> kExplanations[] = {
      "exactly like the baseline's rendering: the vibration a haptic device would play."},
 };
 
+// What each comparison is and which question it answers (docs/evaluate.md, "Which comparison answers which
+// question"); explanation: the experiment's own, where its id's start does not give one (kExplanations).
+struct ComparisonText {
+  Comparison kind;
+  std::string_view what, question, explanation;
+};
+constexpr ComparisonText kComparisons[] = {
+    {Comparison::rendered_ar, "Predicted spectra against the AR baseline **rendered**",
+     "The paper's protocol: is the learned model closer to the recording than the vibration the AR baseline plays? Not "
+     "like for like: a stochastic renderer pays the texture's randomness twice (the recording is one random draw, its "
+     "rendering another), while a spectrum predictor can aim at the expected spectrum, so even the true generating "
+     "model, rendered, loses to a good predictor.",
+     ""},
+    {Comparison::expected_ar, "Predicted spectra against the AR baseline's **expected spectrum** at each window's action",
+     "Which model knows the texture better? Like for like: both predict a spectrum from the same action, neither plays "
+     "a random draw.",
+     "The same predictions against the AR baseline used as a spectrum predictor: its expected amplitude spectrum at each "
+     "test window's action (in closed form, or averaged over many renderings where the two disagree), not one random "
+     "rendering. Like for like: which model knows the texture better?"},
+    {Comparison::mean_spectrum, "Predicted spectra against each material's **mean training spectrum**",
+     "Does the model use the actions? The mean spectrum is the best predictor that ignores force and speed; a model "
+     "significantly worse than it has learnt less than the texture's average colour.",
+     "The same predictions against a predictor that ignores the actions: each material's mean training spectrum, the "
+     "same for every window (the baseline columns below). A model that uses force and speed should beat it; every "
+     "material where it is significantly worse is named."},
+    {Comparison::stitched, "The model's spectra **stitched** into a signal against the AR baseline rendered",
+     "Signal against signal: which renders vibration closer to the recording? Both play one random draw (the stitched "
+     "signal through its reconstructed phase).",
+     ""},
+};
+
+const ComparisonText& comparison_text(Comparison kind) {
+  for (const ComparisonText& c : kComparisons)
+    if (c.kind == kind) return c;
+  return kComparisons[0];
+}
+
 std::string_view experiment_explanation(std::string_view id) {
+  if (const std::string_view own = comparison_text(comparison_of(id)).explanation; !own.empty()) return own;
   for (const auto& [prefix, text] : kExplanations)
     if (id.starts_with(prefix)) return text;
   return "";
@@ -116,38 +161,97 @@ void explanations_section(std::ostringstream& s, const Evaluation& e) {
        "recording. The tables give its quartiles (Q1, median, Q3) over the test windows.\n\n"
     << "**Significance.** Welch's two-sided t-test (unequal variances) of the model's window distances against the "
        "baseline's; p < " << kSignificanceLevel << " counts as significant. t < 0 where the model's distances are lower. "
-       "When neither sample varies and their means differ, t is infinite and p = 0: the two do not overlap at all.\n\n";
+       "When neither sample varies and their means differ, t is infinite and p = 0: the two do not overlap at all.\n\n"
+    << "**Log-spectral distance** (LSD, dB, lower is better): the same windows compared on a log scale, the root mean "
+       "square over the bins of 20 log10 of the two amplitudes' ratio, each amplitude raised to the material's noise "
+       "level (the 5th percentile of the bin over its training windows) so that silent bins count as equal. The "
+       "Euclidean distance is ruled by the loudest bins and the loudest materials; the LSD weighs them all alike.\n\n"
+    << "**Noise floor** (m/s^2): the best any predictor can score on a material's test windows (section *Noise "
+       "floor*). **Model/floor** is the model's distance over it: 1 is as good as possible. **Model/mean spectrum** is "
+       "the model's distance over that of the material's mean training spectrum: below 1 where the model gains from "
+       "the actions. A dash (–) marks a figure that was not measured.\n\n";
+}
+
+// Which experiments of this report compare kind, as code; "none".
+std::string experiments_of(const Evaluation& e, Comparison kind) {
+  std::string ids;
+  for (const Experiment& x : e.experiments)
+    if (comparison_of(x.id) == kind) ids += (ids.empty() ? "" : ", ") + code(x.id);
+  return ids.empty() ? "none" : ids;
+}
+
+void questions_section(std::ostringstream& s, const Evaluation& e) {
+  s << "## Which comparison answers which question\n\n| comparison | experiments here | question |\n|---|---|---|\n";
+  for (const ComparisonText& c : kComparisons) s << "| " << c.what << " | " << experiments_of(e, c.kind) << " | " << c.question << " |\n";
+  s << "| Model / noise floor | every experiment with a floor | How far from the best possible? 1 is as good as any "
+       "predictor can be on these windows; clearly below 1 means the oracle is wrong or the model saw the test data. |\n"
+    << "| Realism of rendered signals | every rendering scored | Does a rendered signal vary like the surface? The "
+       "distances above reward the smooth expected spectrum, which no surface plays. |\n\n";
 }
 
 void totals_section(std::ostringstream& s, const Evaluation& e) {
   if (!section(s, "Totals", e.experiments.empty(), "No experiment was run (see Notes).")) return;
   s << "| experiment | materials | model better | significantly better | significantly worse | mean model | mean baseline "
-       "| the paper (93 materials) |\n|---|---|---|---|---|---|---|---|\n";
+       "| median model/floor | the paper (93 materials) |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const Experiment& x : e.experiments) {
     const auto paper = paper_figure(x.id);
     s << "| " << escaped(x.title) << " (" << code(x.id) << ") | " << x.materials.size() << " | " << x.better() << " ("
       << percent(x.better(), x.materials.size()) << ") | " << x.significantly_better() << " ("
       << percent(x.significantly_better(), x.materials.size()) << ") | " << x.significantly_worse() << " ("
       << percent(x.significantly_worse(), x.materials.size()) << ") | " << mean_text(x, x.mean_model()) << " | "
-      << mean_text(x, x.mean_baseline()) << " | " << (paper ? paper->text() : "not in the paper") << " |\n";
+      << mean_text(x, x.mean_baseline()) << " | " << measured(x.median_floor_ratio()) << " | "
+      << (paper ? paper->text() : "not in the paper") << " |\n";
   }
-  s << "\nMean model and mean baseline: spectral distance in m/s^2, averaged over the materials. The paper's column "
+  s << "\nMean model and mean baseline: spectral distance in m/s^2, averaged over the materials. Median model/floor: "
+       "over the materials with a noise floor (1: as good as possible). The paper's column "
        "quotes Heravi et al. (ICRA 2020) for the same experiment against its AR baseline.\n\n";
 }
 
 void material_table(std::ostringstream& s, const Experiment& x, const std::string& csv) {
-  s << "| material | windows | model | baseline | difference Q1 | median | Q3 | t | p | result |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|\n";
+  s << "| material | windows | model | baseline | difference Q1 | median | Q3 | t | p | result | LSD model (dB) "
+       "| LSD baseline (dB) | floor (m/s^2) | model/floor | model/mean spectrum |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const MaterialComparison& m : x.materials)
-    s << "| " << escaped(m.name.empty() ? m.id : m.name) << " | " << m.windows << " | " << format_number(m.model) << " | "
+    s << "| " << shown_name(m.name, m.id) << " | " << m.windows << " | " << format_number(m.model) << " | "
       << format_number(m.baseline) << " | " << format_number(m.difference.q1) << " | " << format_number(m.difference.median)
       << " | " << format_number(m.difference.q3) << " | " << format_number(m.test.t) << " | " << format_p(m.test.p) << " | "
-      << (m.better() ? "better" : "worse") << (m.significant() ? " \\*" : "") << " |\n";
+      << (m.better() ? "better" : "worse") << (m.significant() ? " \\*" : "") << " | " << measured(m.model_lsd_db) << " | "
+      << measured(m.baseline_lsd_db) << " | " << measured(m.floor) << " | " << measured(m.floor_ratio())
+      << (m.below_floor ? " †" : "") << " | " << measured(m.mean_spectrum_ratio()) << " |\n";
   s << "\nModel and baseline: mean spectral distance (m/s^2) over the test windows. \\* significant: p < "
-    << kSignificanceLevel << ". Data: " << code(csv) << ".\n\n";
+    << kSignificanceLevel << ". LSD: mean log-spectral distance over the same windows. Floor: the material's noise "
+       "floor; model/floor and model/mean spectrum: the model's distance over the floor's and over the mean training "
+       "spectrum's. † below the floor beyond sampling error. – not measured. Data: " << code(csv) << ".\n\n";
 }
 
-void experiment_section(std::ostringstream& s, const Experiment& x, const std::string& stem, const ChartResult& charts) {
+// "Against the noise floor (oracle): within 10 % of the floor on X of N materials ..." and a warning for any
+// material below it; nothing without a floor.
+void floor_totals(std::ostringstream& s, const Experiment& x, const std::string& floor_kind) {
+  const std::size_t n = materials_with_floor(x);
+  if (n == 0) return;
+  s << "**Against the noise floor" << (floor_kind.empty() ? "" : " (" + escaped(floor_kind) + ")") << ":** within 10 % "
+    << "of the floor on " << x.within_floor(0.10) << " of " << n << " " << materials_word(n) << ", within 15 % on "
+    << x.within_floor(0.15) << "; model/floor median " << format_number(x.median_floor_ratio()) << ", worst "
+    << format_number(x.worst_floor_ratio()) << "; below the floor on " << x.below_floor() << ".";
+  if (n < x.materials.size()) s << " " << x.materials.size() - n << " " << materials_word(x.materials.size() - n) << " without a floor.";
+  s << "\n\n";
+  if (x.below_floor() > 0)
+    s << "> **Warning:** the model scores below the floor on " << x.below_floor() << " " << materials_word(x.below_floor())
+      << " (marked † below): the oracle is wrong or the model saw the test data.\n\n";
+}
+
+// Against the mean training spectrum: every material where the model is significantly worse, by name.
+void worse_than_mean_spectrum(std::ostringstream& s, const Experiment& x) {
+  if (comparison_of(x.id) != Comparison::mean_spectrum) return;
+  std::string names;
+  for (const MaterialComparison& m : x.materials)
+    if (m.significant() && !m.better()) names += (names.empty() ? "" : "; ") + shown_name(m.name, m.id);
+  s << "**Significantly worse than the material's mean training spectrum** (the model does not gain from the actions) "
+       "on: " << (names.empty() ? "none" : names) << ".\n\n";
+}
+
+void experiment_section(std::ostringstream& s, const Experiment& x, const std::string& stem, const ChartResult& charts,
+                        const std::string& floor_kind) {
   s << "### " << escaped(x.title) << " (" << code(x.id) << ")\n\n";
   if (const std::string_view why = experiment_explanation(x.id); !why.empty()) s << why << "\n\n";
   s << "Model: " << escaped(x.model_label) << ". Baseline: " << escaped(x.baseline_label) << ".\n\n";
@@ -160,9 +264,65 @@ void experiment_section(std::ostringstream& s, const Experiment& x, const std::s
     s << " The paper (Heravi et al., ICRA 2020) reports its model " << paper->text() << "; here: better on " << x.better()
       << " of " << x.materials.size() << " (" << percent(x.better(), x.materials.size()) << "), significantly on "
       << x.significantly_better() << " (" << percent(x.significantly_better(), x.materials.size()) << ").";
-  s << "\n\n"
-    << chart(charts, stem, "Baseline minus model per material: " + x.title, stem + ".csv");
+  s << "\n\n";
+  floor_totals(s, x, floor_kind);
+  worse_than_mean_spectrum(s, x);
+  s << chart(charts, stem, "Baseline minus model per material: " + x.title, stem + ".csv");
   material_table(s, x, stem + ".csv");
+}
+
+std::string floor_kind_text(const std::string& kind) {
+  if (kind == "oracle")
+    return "**Oracle.** The process that generated every material's vibration is known (`--truth`: synthetic data), so "
+           "the floor is its expected spectrum at each test window's action: the best any predictor can score, since "
+           "what remains is the texture's own randomness and the sensor noise. A model clearly below it means the "
+           "oracle is wrong or the model saw the test data.";
+  if (kind == "estimate")
+    return "**Estimate.** The generating process is unknown, so the floor is estimated: for each test window, the mean "
+           "spectrum of the " + std::to_string(kNearestWindows) + " training windows nearest in action space (speed and "
+           "force, each scaled by its spread). It is an estimate, not a bound: its own sampling error and the spread of "
+           "actions among those windows put it above the true floor, so a good model may score below it.";
+  return "The floor's kind was not recorded.";
+}
+
+void floor_section(std::ostringstream& s, const Evaluation& e) {
+  if (!section(s, "Noise floor", e.floors.empty(), "No noise floor was computed.")) return;
+  s << floor_kind_text(e.floor_kind) << "\n\n"
+    << "| material | kind | method | windows | floor (m/s^2) | floor LSD (dB) | closed form | Monte Carlo "
+       "| closed form vs Monte Carlo | rendered | rendered/floor | estimate | AR baseline expected |\n"
+       "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const MaterialFloor& f : e.floors)
+    s << "| " << shown_name(f.name, f.id) << " | " << escaped(f.kind) << " | " << escaped(f.method) << " | " << f.windows
+      << " | " << measured(f.distance) << " | " << measured(f.lsd_db) << " | " << measured(f.closed_form) << " | "
+      << measured(f.monte_carlo) << " | " << measured_percent(closed_form_gap_percent(f)) << " | " << measured(f.rendered)
+      << " | " << measured(rendered_ratio(f)) << " | " << measured(f.estimate) << " | " << measured(f.baseline_expected) << " |\n";
+  s << "\nFloor: the floor's mean spectral distance to the recording over the material's test windows, and as "
+       "log-spectral distance. Closed form and Monte Carlo (AR oracles): the expected spectra computed both ways, "
+       "their distances and how far apart they are (the closed form is used while within 2 % of Monte Carlo). "
+       "Rendered: the generating model rendered, one random rendering scored like the AR baseline; rendered/floor is "
+       "well above 1 because the generating model rendered pays the randomness twice, once in the recording and once "
+       "in its own rendering. Estimate: the empirical estimate (nearest training windows) beside the oracle, to "
+       "check it. AR baseline expected: the baseline's expected spectrum at the recorded action, on the same windows, "
+       "for scale. – not measured. Data: " << code(std::string(kFloorsStem) + ".csv") << ".\n\n";
+}
+
+void realism_section(std::ostringstream& s, const Evaluation& e) {
+  if (!section(s, "Realism of rendered signals", e.realism.empty(), "No rendered signal was scored for realism.")) return;
+  s << "Window-by-window distances reward the smooth expected spectrum, which no real surface plays. These figures ask "
+       "instead whether a rendered signal varies like the recording, per material over its test sections, here as the "
+       "median over materials.\n\n"
+    << "| method | setting | materials | median section LSD (dB) | median spread ratio |\n|---|---|---|---|---|\n";
+  for (const Realism& r : e.realism) {
+    const RealismMedians m = realism_medians(r);
+    s << "| " << escaped(r.method) << " | " << escaped(r.setting) << " | " << m.materials << " | " << measured(m.section_lsd_db)
+      << " | " << measured(m.spread_ratio) << " |\n";
+  }
+  s << "\n**Section LSD**: the log-spectral distance (dB) of the section-average power spectra, rendered against "
+       "recorded: is the overall colour right? **Spread ratio**: per frequency bin, the coefficient of variation "
+       "(standard deviation / mean) of the window amplitudes, rendered over recorded, the median over the bins. 1 = as "
+       "steady as the recording; < 1 too steady (Griffin-Lim from smooth predicted spectra); > 1 too wild. Noise-like "
+       "texture at a steady action has a per-bin coefficient of variation of about 0.52 (Rayleigh amplitudes). "
+       "Materials: those with a spread ratio. Per material: " << code(std::string(kRealismStem) + ".csv") << ".\n\n";
 }
 
 void examples_section(std::ostringstream& s, const Evaluation& e, const ReportLayout& layout, const ChartResult& charts) {
@@ -171,7 +331,7 @@ void examples_section(std::ostringstream& s, const Evaluation& e, const ReportLa
        "(recorded, model, baseline), the bottom one the start of a test section as time signals (the model's signal "
        "stitched by phase reconstruction). Materials:";
   for (std::size_t i = 0; i < e.examples.size(); ++i)
-    s << (i ? "; " : " ") << escaped(e.examples[i].name.empty() ? e.examples[i].id : e.examples[i].name);
+    s << (i ? "; " : " ") << shown_name(e.examples[i].name, e.examples[i].id);
   s << (e.examples.size() > 4 ? " (the chart shows the first four)" : "") << ".\n\n"
     << chart(charts, std::string(kExamplesStem), "Spectra and time signals of recorded, model and baseline vibration",
              layout.examples.front() + "-spectra.csv and the other example CSVs");
@@ -190,12 +350,18 @@ void latents_section(std::ostringstream& s, const Evaluation& e, const ChartResu
 void speed_section(std::ostringstream& s, const Evaluation& e, const ChartResult& charts) {
   if (!section(s, "Speed against accuracy", e.speed.empty(), "No timings were recorded.")) return;
   s << "Compute time per second of rendered vibration (one core; below 1 s it can run in real time) against the mean "
-       "spectral distance over the test windows, one row per method and setting.\n\n"
-    << "| method | setting | compute time per second of vibration | mean spectral distance (m/s^2) |\n|---|---|---|---|\n";
+       "spectral distance over the test windows, one row per method and setting. Kind: `spectrum` for a method that "
+       "predicts spectra, `signal` for one that renders vibration; for signals the medians over materials of the "
+       "realism figures (section *Realism of rendered signals*).\n\n"
+    << "| method | setting | compute time per second of vibration | mean spectral distance (m/s^2) | kind "
+       "| section LSD (dB) | spread ratio |\n|---|---|---|---|---|---|---|\n";
   for (const SpeedPoint& p : e.speed)
     s << "| " << escaped(p.method) << " | " << escaped(p.setting) << " | " << format_number(1000 * p.seconds_per_second)
-      << " ms | " << format_number(p.distance) << " |\n";
-  s << "\n" << chart(charts, std::string(kSpeedStem), "Speed against accuracy", std::string(kSpeedStem) + ".csv");
+      << " ms | " << format_number(p.distance) << " | " << escaped(p.kind) << " | " << measured(p.section_lsd_db) << " | "
+      << measured(p.spread_ratio) << " |\n";
+  s << "\n"
+    << chart(charts, std::string(kSpeedStem),
+             "Speed against accuracy: spectrum accuracy (left) and signal realism (right)", std::string(kSpeedStem) + ".csv");
 }
 
 void notes_section(std::ostringstream& s, const Evaluation& e, const ChartResult& charts) {
@@ -207,21 +373,32 @@ void notes_section(std::ostringstream& s, const Evaluation& e, const ChartResult
   s << "\n";
 }
 
+// A CSV header as code: "`a`, `b`, `c`".
+std::string column_list(std::string_view header) {
+  std::string s = "`";
+  for (char c : header) s += c == ',' ? std::string("`, `") : std::string(1, c);
+  return s + "`";
+}
+
 void files_section(std::ostringstream& s, const ReportLayout& layout, const ChartResult& charts) {
   s << "## Files\n\n"
     << "- `report.md`: this report.\n"
     << "- `results.json`: everything above, machine-readable (haptex's `schemas/results.schema.json`; infinite or "
-       "undefined numbers are the strings \"inf\", \"-inf\", \"nan\").\n";
+       "undefined numbers are the strings \"inf\", \"-inf\", \"nan\"; a figure that was not measured is null).\n";
   if (!layout.experiments.empty()) {
     s << "- One CSV per experiment, a row per material:";
     for (std::size_t i = 0; i < layout.experiments.size(); ++i) s << (i ? ", " : " ") << code(layout.experiments[i] + ".csv");
     s << ". Columns: `material_id`, `name`, `windows` (test windows), `model_distance` and `baseline_distance` (mean "
          "spectral distance, m/s^2), `difference_q1`, `difference_median`, `difference_q3` (baseline - model), `t`, `df`, "
          "`p` (Welch's test), `n_model` and `n_baseline` (the window distances it compared), `better` and `significant` "
-         "(1 or 0).\n";
+         "(1 or 0), `model_lsd_db` and `baseline_lsd_db` (mean log-spectral distance, dB), `floor` (the noise floor, "
+         "m/s^2), `floor_ratio` (model / floor), `mean_spectrum` (the mean training spectrum's distance), "
+         "`mean_spectrum_ratio` (model / mean spectrum), `below_floor` (1 or 0).\n";
   }
-  s << "- `speed.csv`: the speed-vs-accuracy points (`method`, `setting`, `seconds_per_second`, `distance`).\n"
-    << "- `latents.csv`: the texture map's coordinates (`material_id`, `name`, `kind`, `x`, `y`).\n";
+  s << "- `speed.csv`: the speed-vs-accuracy points (" << column_list(kSpeedColumns) << ").\n"
+    << "- `latents.csv`: the texture map's coordinates (" << column_list(kLatentColumns) << ").\n"
+    << "- `floors.csv`: the noise floor per material (" << column_list(kFloorColumns) << ").\n"
+    << "- `realism.csv`: realism per rendering method and material (" << column_list(kRealismColumns) << ").\n";
   if (!layout.examples.empty()) {
     s << "- Two CSVs per example:";
     for (std::size_t i = 0; i < layout.examples.size(); ++i)
@@ -231,7 +408,8 @@ void files_section(std::ostringstream& s, const ReportLayout& layout, const Char
   if (!charts.scripts.empty())
     s << "- `*.gnuplot`: the chart scripts; run `gnuplot NAME.gnuplot` in this folder to draw NAME.png again.\n";
   if (!charts.images.empty()) s << "- `*.png`: the charts.\n";
-  s << "\nCSV numbers are written to full precision; `inf`, `-inf` and `nan` mark values that are not finite.\n";
+  s << "\nCSV numbers are written to full precision; `inf`, `-inf` and `nan` mark values that are not finite, an empty "
+       "cell a figure that was not measured.\n";
 }
 
 }  // namespace
@@ -275,9 +453,13 @@ std::string report_markdown(const Evaluation& e, const ReportLayout& layout, con
        "machine-readable, are in [results.json](results.json) and the CSV files listed at the end.\n\n";
   inputs_section(s, e);
   explanations_section(s, e);
+  questions_section(s, e);
   totals_section(s, e);
   if (!e.experiments.empty()) s << "## Experiments\n\n";
-  for (std::size_t i = 0; i < e.experiments.size(); ++i) experiment_section(s, e.experiments[i], layout.experiments[i], charts);
+  for (std::size_t i = 0; i < e.experiments.size(); ++i)
+    experiment_section(s, e.experiments[i], layout.experiments[i], charts, e.floor_kind);
+  floor_section(s, e);
+  realism_section(s, e);
   examples_section(s, e, layout, charts);
   latents_section(s, e, charts);
   speed_section(s, e, charts);

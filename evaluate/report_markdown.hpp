@@ -1,9 +1,12 @@
 #pragma once
 // report.md: an evaluation told for a reader who has nothing else at hand: what was compared (inputs
-// with their SHA-256, settings), what the spectral distance and each experiment are, a totals table
-// (with the paper's figure beside ours where the experiment is the paper's), per experiment its
-// totals sentence, chart and per-material table, the examples, the texture map, the speed-vs-
-// accuracy table, the notes and the list of files. Charts are relative image links.
+// with their SHA-256, settings), what the measures and each experiment are, which comparison answers
+// which question, a totals table (with the paper's figure beside ours where the experiment is the
+// paper's), per experiment its totals sentence, its standing against the noise floor (a warning for
+// any material below it; for a comparison with the mean training spectrum, every material where the
+// model is significantly worse, by name), chart and per-material table; the noise floor, the realism
+// of rendered signals, the examples, the texture map, the speed-vs-accuracy table, the notes and the
+// list of files. Charts are relative image links; a figure that was not measured shows as "–".
 #include <string>
 
 #include "evaluate/evaluation_results.hpp"

@@ -1,9 +1,11 @@
 #include "evaluate/results_json.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/version.hpp"
 #include "evaluate/paper_figures.hpp"
+#include "evaluate/summary_statistics.hpp"
 
 namespace haptex::evaluate {
 namespace {
@@ -25,7 +27,37 @@ nlohmann::json material_json(const MaterialComparison& m) {
                     {"n_model", m.test.n_a},
                     {"n_baseline", m.test.n_b}}},
           {"better", m.better()},
-          {"significant", m.significant()}};
+          {"significant", m.significant()},
+          {"model_lsd_db", json_measured(m.model_lsd_db)},
+          {"baseline_lsd_db", json_measured(m.baseline_lsd_db)},
+          {"floor", json_measured(m.floor)},
+          {"floor_ratio", json_measured(m.floor_ratio())},
+          {"mean_spectrum", json_measured(m.mean_spectrum)},
+          {"mean_spectrum_ratio", json_measured(m.mean_spectrum_ratio())},
+          {"below_floor", m.below_floor}};
+}
+
+nlohmann::json totals_json(const Experiment& x) {
+  return {{"materials", x.materials.size()},
+          {"better", x.better()},
+          {"significantly_better", x.significantly_better()},
+          {"significantly_worse", x.significantly_worse()},
+          {"with_floor", materials_with_floor(x)},
+          {"within_floor_10_percent", x.within_floor(0.10)},
+          {"within_floor_15_percent", x.within_floor(0.15)},
+          {"below_floor", x.below_floor()}};
+}
+
+nlohmann::json paper_json(const PaperFigure& paper) {
+  nlohmann::json p = {{"materials", paper.materials},
+                      {"share_better", paper.better_share()},
+                      {"significantly_better", paper.significantly_better},
+                      {"share_significantly_better", paper.significantly_better_share()},
+                      {"text", paper.text()}};
+  if (paper.better) p["better"] = *paper.better;
+  if (paper.better_percent) p["better_percent"] = *paper.better_percent;
+  if (paper.significantly_worse) p["significantly_worse"] = *paper.significantly_worse;
+  return p;
 }
 
 nlohmann::json experiment_json(const Experiment& x, const std::string& csv) {
@@ -33,28 +65,77 @@ nlohmann::json experiment_json(const Experiment& x, const std::string& csv) {
   for (const MaterialComparison& m : x.materials) materials.push_back(material_json(m));
   nlohmann::json doc = {{"id", x.id},
                         {"title", x.title},
+                        {"comparison", comparison_name(comparison_of(x.id))},
                         {"model_label", x.model_label},
                         {"baseline_label", x.baseline_label},
                         {"csv", csv},
-                        {"totals", {{"materials", x.materials.size()},
-                                    {"better", x.better()},
-                                    {"significantly_better", x.significantly_better()},
-                                    {"significantly_worse", x.significantly_worse()}}},
+                        {"totals", totals_json(x)},
                         {"mean_model", json_number(x.mean_model())},
                         {"mean_baseline", json_number(x.mean_baseline())},
+                        {"median_floor_ratio", json_measured(x.median_floor_ratio())},
+                        {"worst_floor_ratio", json_measured(x.worst_floor_ratio())},
                         {"materials", materials}};
-  if (const auto paper = paper_figure(x.id)) {
-    nlohmann::json& p = doc["paper"];
-    p = {{"materials", paper->materials},
-         {"share_better", paper->better_share()},
-         {"significantly_better", paper->significantly_better},
-         {"share_significantly_better", paper->significantly_better_share()},
-         {"text", paper->text()}};
-    if (paper->better) p["better"] = *paper->better;
-    if (paper->better_percent) p["better_percent"] = *paper->better_percent;
-    if (paper->significantly_worse) p["significantly_worse"] = *paper->significantly_worse;
-  }
+  if (const auto paper = paper_figure(x.id)) doc["paper"] = paper_json(*paper);
   return doc;
+}
+
+nlohmann::json speed_json(const SpeedPoint& s) {
+  return {{"method", s.method},
+          {"setting", s.setting},
+          {"kind", s.kind},
+          {"seconds_per_second", json_number(s.seconds_per_second)},
+          {"distance", json_number(s.distance)},
+          {"section_lsd_db", json_measured(s.section_lsd_db)},
+          {"spread_ratio", json_measured(s.spread_ratio)}};
+}
+
+nlohmann::json floor_json(const MaterialFloor& f) {
+  return {{"id", f.id},
+          {"name", f.name},
+          {"kind", f.kind},
+          {"method", f.method},
+          {"windows", f.windows},
+          {"distance", json_measured(f.distance)},
+          {"lsd_db", json_measured(f.lsd_db)},
+          {"closed_form", json_measured(f.closed_form)},
+          {"monte_carlo", json_measured(f.monte_carlo)},
+          {"closed_form_gap_percent", json_measured(closed_form_gap_percent(f))},
+          {"rendered", json_measured(f.rendered)},
+          {"rendered_ratio", json_measured(rendered_ratio(f))},
+          {"estimate", json_measured(f.estimate)},
+          {"baseline_expected", json_measured(f.baseline_expected)}};
+}
+
+nlohmann::json realism_json(const Realism& r) {
+  nlohmann::json materials = nlohmann::json::array();
+  for (const MaterialRealism& m : r.materials)
+    materials.push_back({{"id", m.id},
+                         {"name", m.name},
+                         {"section_lsd_db", json_measured(m.section_lsd_db)},
+                         {"spread_ratio", json_measured(m.spread_ratio)}});
+  const RealismMedians medians = realism_medians(r);
+  return {{"method", r.method},
+          {"setting", r.setting},
+          {"median_section_lsd_db", json_measured(medians.section_lsd_db)},
+          {"median_spread_ratio", json_measured(medians.spread_ratio)},
+          {"materials", materials}};
+}
+
+// Each item of v as item_json gives it.
+template <typename T, typename ToJson>
+nlohmann::json json_array(const std::vector<T>& v, ToJson item_json) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const T& item : v) out.push_back(item_json(item));
+  return out;
+}
+
+// The finite values of figure(item), sorted, and their median; NaN when none is finite.
+template <typename T, typename Figure>
+double median_of(const std::vector<T>& v, Figure figure) {
+  std::vector<double> values;
+  for (const T& item : v)
+    if (std::isfinite(figure(item))) values.push_back(figure(item));
+  return values.empty() ? kNotMeasured : percentile(values, 50);
 }
 
 }  // namespace
@@ -65,16 +146,12 @@ nlohmann::json json_number(double x) {
   return x;
 }
 
+nlohmann::json json_measured(double x) { return std::isnan(x) ? nlohmann::json(nullptr) : json_number(x); }
+
 nlohmann::json results_json(const Evaluation& e, const ReportLayout& layout, const std::string& created_utc) {
-  nlohmann::json models = nlohmann::json::array();
-  for (const InputFile& m : e.models) models.push_back(input_json(m));
   nlohmann::json experiments = nlohmann::json::array();
   for (std::size_t i = 0; i < e.experiments.size(); ++i)
     experiments.push_back(experiment_json(e.experiments[i], layout.experiments[i] + ".csv"));
-  nlohmann::json speed = nlohmann::json::array();
-  for (const SpeedPoint& s : e.speed)
-    speed.push_back({{"method", s.method}, {"setting", s.setting}, {"seconds_per_second", json_number(s.seconds_per_second)},
-                     {"distance", json_number(s.distance)}});
   nlohmann::json examples = nlohmann::json::array();
   for (std::size_t i = 0; i < e.examples.size(); ++i) {
     const Example& x = e.examples[i];
@@ -85,21 +162,60 @@ nlohmann::json results_json(const Evaluation& e, const ReportLayout& layout, con
                         {"spectra_csv", layout.examples[i] + "-spectra.csv"},
                         {"signals_csv", layout.examples[i] + "-signals.csv"}});
   }
-  nlohmann::json latents = nlohmann::json::array();
-  for (const LatentPoint& p : e.latents)
-    latents.push_back({{"id", p.id}, {"name", p.name}, {"kind", p.kind}, {"x", json_number(p.x)}, {"y", json_number(p.y)}});
-  return {{"format", "results/1"},
+  const auto latent_json = [](const LatentPoint& p) {
+    return nlohmann::json{{"id", p.id}, {"name", p.name}, {"kind", p.kind}, {"x", json_number(p.x)}, {"y", json_number(p.y)}};
+  };
+  return {{"format", "results/2"},
           {"haptex_version", kVersion},
           {"created_utc", created_utc},
-          {"inputs", {{"dataset", input_json(e.dataset)}, {"split", input_json(e.split)}, {"models", models}}},
+          {"inputs", {{"dataset", input_json(e.dataset)}, {"split", input_json(e.split)}, {"models", json_array(e.models, input_json)}}},
           {"settings", {{"baseline", e.baseline}, {"reconstruct", e.reconstruct}, {"repeats", e.repeats}}},
           {"significance", {{"test", "Welch's t-test, two-sided"}, {"level", kSignificanceLevel}}},
           {"seconds", json_number(e.seconds)},
           {"experiments", experiments},
-          {"speed", speed},
+          {"speed", json_array(e.speed, speed_json)},
+          {"floor_kind", e.floor_kind.empty() ? nlohmann::json(nullptr) : nlohmann::json(e.floor_kind)},
+          {"floors", json_array(e.floors, floor_json)},
+          {"realism", json_array(e.realism, realism_json)},
           {"examples", examples},
-          {"latents", latents},
+          {"latents", json_array(e.latents, latent_json)},
           {"notes", e.notes}};
+}
+
+Comparison comparison_of(std::string_view id) {
+  const std::string_view base = id.substr(0, id.find(" ("));
+  if (base.starts_with("stitched-")) return Comparison::stitched;
+  if (base.ends_with("-vs-expected-ar")) return Comparison::expected_ar;
+  if (base.ends_with("-vs-mean-spectrum")) return Comparison::mean_spectrum;
+  return Comparison::rendered_ar;
+}
+
+std::string_view comparison_name(Comparison c) {
+  switch (c) {
+    case Comparison::expected_ar: return "expected-ar";
+    case Comparison::mean_spectrum: return "mean-spectrum";
+    case Comparison::stitched: return "stitched";
+    case Comparison::rendered_ar: break;
+  }
+  return "rendered-ar";
+}
+
+std::size_t materials_with_floor(const Experiment& x) {
+  return std::size_t(std::count_if(x.materials.begin(), x.materials.end(),
+                                   [](const MaterialComparison& m) { return std::isfinite(m.floor_ratio()); }));
+}
+
+double closed_form_gap_percent(const MaterialFloor& f) { return 100 * std::fabs(f.closed_form - f.monte_carlo) / f.monte_carlo; }
+
+double rendered_ratio(const MaterialFloor& f) { return f.rendered / f.distance; }
+
+RealismMedians realism_medians(const Realism& r) {
+  RealismMedians m;
+  m.section_lsd_db = median_of(r.materials, [](const MaterialRealism& x) { return x.section_lsd_db; });
+  m.spread_ratio = median_of(r.materials, [](const MaterialRealism& x) { return x.spread_ratio; });
+  m.materials = std::size_t(std::count_if(r.materials.begin(), r.materials.end(),
+                                          [](const MaterialRealism& x) { return std::isfinite(x.spread_ratio); }));
+  return m;
 }
 
 }  // namespace haptex::evaluate

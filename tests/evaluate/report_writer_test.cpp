@@ -20,6 +20,7 @@
 #include "core/json/schema.hpp"
 #include "evaluate/report_csv.hpp"
 #include "evaluate/report_markdown.hpp"
+#include "evaluate/results_json.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::evaluate {
@@ -27,11 +28,20 @@ namespace {
 
 namespace fs = std::filesystem;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = kNotMeasured;
 
 MaterialComparison material(const std::string& id, const std::string& name, double model, double baseline,
                             Quartiles difference, double t, double p) {
   MaterialComparison m{id, name, 120, model, baseline, difference, {}};
   m.test = {t, 150.25, p, model, baseline, 120, 1200};
+  return m;
+}
+
+// The measures beside the distance: log-spectral distances, the noise floor, the mean spectrum.
+MaterialComparison measured(MaterialComparison m, double model_lsd_db, double baseline_lsd_db, double floor,
+                            double mean_spectrum, bool below_floor = false) {
+  m.model_lsd_db = model_lsd_db, m.baseline_lsd_db = baseline_lsd_db, m.floor = floor;
+  m.mean_spectrum = mean_spectrum, m.below_floor = below_floor;
   return m;
 }
 
@@ -50,8 +60,35 @@ Example example(const std::string& id, const std::string& name, std::size_t mode
   return x;
 }
 
+// Against the mean training spectrum: better on Book, significantly worse on Brick, 2 and Cork.
+Experiment mean_spectrum_experiment() {
+  Experiment x{"unified-new-actions-vs-mean-spectrum", "Unified model against the mean training spectrum", "unified model",
+               "mean training spectrum", {}};
+  x.materials = {material("book", "Book", 0.5, 0.8, {0.1, 0.3, 0.5}, -6.0, 1e-5),
+                 material("brick_2", "Brick, 2", 1.1, 0.9, {-0.4, -0.2, 0.0}, 2.5, 0.013),
+                 material("cork", "Cork", 0.61, 0.5, {-0.2, -0.1, 0.0}, 2.2, 0.03),
+                 material("glass", "Glass \"smooth\"", 0.4, 0.38, {-0.1, -0.02, 0.1}, 0.5, 0.6)};
+  return x;
+}
+
+// The noise floor: an oracle per material, one not measured (Brick, 2).
+std::vector<MaterialFloor> sample_floors() {
+  MaterialFloor book{"book", "Book", "oracle", "closed form", 120, 0.48, 2.5, 0.48, 0.5, 0.72, 0.5, 0.625};
+  MaterialFloor brick{"brick_2", "Brick, 2", "oracle", "Monte Carlo", 120};
+  MaterialFloor felt{"felt", "Felt", "oracle", "closed form", 120, 0.21, 1.75, 0.21, 0.2, 0.35, kNaN, 0.3};
+  return {book, brick, felt};
+}
+
+// Realism: the AR baseline as steady as the recording, FGLA too steady; Felt not measured.
+std::vector<Realism> sample_realism() {
+  return {{"AR baseline", "ar-refit", {{"book", "Book", 3.25, 1.25}, {"brick_2", "Brick, 2", 2.75, 0.75}, {"felt", "Felt", kNaN, kNaN}}},
+          {"unified + FGLA", "100 iterations", {{"book", "Book", 1.5, 0.375}, {"brick_2", "Brick, 2", 2.5, 0.625}}}};
+}
+
 // Five materials in the paper's experiment: better and significant (Book; Felt with t = -infinity),
-// significantly worse (Brick, 2), better and worse without significance; totals 3, 2, 1.
+// significantly worse (Brick, 2), better and worse without significance; totals 3, 2, 1. Against the
+// floor (0.48, not measured, 0.21, 0.35, 0.5): ratios 1.042, -, 0.952 (below the floor), 1.143,
+// 1.22: within 10 % on 2 of 4, within 15 % on 3, median 1.092, worst 1.22.
 Evaluation sample_evaluation() {
   Evaluation e;
   e.dataset = {"data/dataset.h5", std::string(64, 'a')};
@@ -62,23 +99,34 @@ Evaluation sample_evaluation() {
   e.repeats = 10;
   e.seconds = 123.456;
   Experiment actions{"unified-new-actions", "Unified model on new actions", "unified model models/unified.h5", "ar-refit", {}};
-  actions.materials = {material("book", "Book", 0.5, 0.9, {0.1, 0.35, 0.6}, -8.25, 1e-6),
-                       material("brick_2", "Brick, 2", 1.1, 0.7, {-0.6, -0.4, -0.1}, 3.1, 0.0021),
-                       material("felt", "Felt", 0.2, 0.3, {0.1, 0.1, 0.1}, -kInf, 0.0),
-                       material("glass", "Glass \"smooth\"", 0.4, 0.42, {-0.2, 0.02, 0.25}, -0.9, 0.37),
-                       material("cork", "Cork", 0.61, 0.6, {-0.3, -0.01, 0.2}, 0.2, 0.84)};
+  actions.materials = {measured(material("book", "Book", 0.5, 0.9, {0.1, 0.35, 0.6}, -8.25, 1e-6), 4.5, 6.25, 0.48, 0.8),
+                       measured(material("brick_2", "Brick, 2", 1.1, 0.7, {-0.6, -0.4, -0.1}, 3.1, 0.0021), 7.0, 5.5, kNaN, 0.9),
+                       measured(material("felt", "Felt", 0.2, 0.3, {0.1, 0.1, 0.1}, -kInf, 0.0), 3.0, 4.0, 0.21, kNaN, true),
+                       measured(material("glass", "Glass \"smooth\"", 0.4, 0.42, {-0.2, 0.02, 0.25}, -0.9, 0.37), kNaN, kNaN, 0.35, 0.38),
+                       measured(material("cork", "Cork", 0.61, 0.6, {-0.3, -0.01, 0.2}, 0.2, 0.84), 5.0, 5.0, 0.5, 0.5)};
   Experiment stitched{"stitched-fgla", "Stitched signals, fast Griffin-Lim", "unified model", "ar-refit", {}};
   stitched.materials = {material("book", "Book", 0.7, 0.9, {0.0, 0.2, 0.4}, -4.0, 0.0001),
                         material("felt", "Felt", 0.35, 0.3, {-0.1, -0.05, 0.0}, 1.2, 0.23)};
   Experiment per_material{"per-material (small.h5)", "Per-material models on new actions", "per-material", "ar-refit", {}};
   per_material.materials = {material("book", "Book", 0.45, 0.9, {0.2, 0.45, 0.7}, -9.0, 2e-9)};
   Experiment presses{"unified-new-presses", "Unified model on a new press", "unified model", "ar-refit", {}};
-  e.experiments = {actions, stitched, per_material, presses};
-  e.speed = {{"AR baseline", "ar-refit", 0.002, 0.9},       {"per-material", "small.h5, 64 hidden", 0.0005, 0.55},
-             {"unified", "unified.h5, 64 hidden", 0.0008, 0.5}, {"unified", "big.h5, 256 hidden", 0.003, 0.45},
-             {"unified + FGLA", "0 iterations", 0.0026, 0.8},  {"unified + FGLA", "8 iterations", 0.012, 0.7},
-             {"unified + FGLA", "32 iterations", 0.04, 0.65},  {"unified + FGLA", "100 iterations", 0.12, 0.6},
-             {"unified + online (RTISI-LA)", "look-ahead 3", 0.021, 0.66}};
+  Experiment expected{"unified-new-actions-vs-expected-ar", "Unified model against the AR expected spectrum", "unified model",
+                      "ar-refit, expected spectrum", {}};
+  expected.materials = {material("book", "Book", 0.5, 0.55, {0.0, 0.05, 0.1}, -2.5, 0.013)};
+  e.experiments = {actions, stitched, per_material, presses, mean_spectrum_experiment(), expected};
+  e.speed = {{"AR baseline", "ar-refit", 0.002, 0.9, "signal", 3.0, 1.0},
+             {"AR baseline", "expected spectrum", 0.0004, 0.52},
+             {"per-material", "small.h5, 64 hidden", 0.0005, 0.55},
+             {"unified", "unified.h5, 64 hidden", 0.0008, 0.5},
+             {"unified", "big.h5, 256 hidden", 0.003, 0.45},
+             {"unified + FGLA", "0 iterations", 0.0026, 0.8, "signal", kNaN, kNaN},
+             {"unified + FGLA", "8 iterations", 0.012, 0.7, "signal", 2.25, 0.5},
+             {"unified + FGLA", "32 iterations", 0.04, 0.65, "signal", 2.0, 0.45},
+             {"unified + FGLA", "100 iterations", 0.12, 0.6, "signal", 2.0, 0.5},
+             {"unified + online (RTISI-LA)", "look-ahead 3", 0.021, 0.66, "signal", 2.5, 0.75}};
+  e.floor_kind = "oracle";
+  e.floors = sample_floors();
+  e.realism = sample_realism();
   e.examples = {example("book", "Book", 500), example("brick_2", "Brick, 2", 400), example("felt", "Felt", 500),
                 example("glass", "Glass \"smooth\"", 500)};
   e.latents = {{"book", "Book", "training", 0.5, 0.25},     {"book", "Book", "test press", 0.45, 0.3},
@@ -157,6 +205,20 @@ void expect_row(const std::vector<std::string>& row, const std::vector<std::stri
   for (std::size_t i = 0; i < numbers.size(); ++i) EXPECT_EQ(number(row[text.size() + i]), numbers[i]) << "field " << text.size() + i;
 }
 
+// The first n cells of a row.
+std::vector<std::string> head(const std::vector<std::string>& row, std::size_t n) {
+  return {row.begin(), row.begin() + std::ptrdiff_t(std::min(n, row.size()))};
+}
+
+// The cells of a row from `first` on to its end: figures that may not have been measured (an empty cell for NaN).
+void expect_measured(const std::vector<std::string>& row, std::size_t first, const std::vector<double>& figures) {
+  ASSERT_EQ(row.size(), first + figures.size());
+  for (std::size_t i = 0; i < figures.size(); ++i) {
+    if (std::isnan(figures[i])) EXPECT_EQ(row[first + i], "") << "field " << first + i;
+    else EXPECT_EQ(number(row[first + i]), figures[i]) << "field " << first + i;
+  }
+}
+
 std::vector<std::string> partial_leftovers(const fs::path& dir) {
   std::vector<std::string> found;
   for (const auto& entry : fs::recursive_directory_iterator(dir))
@@ -214,9 +276,9 @@ TEST(ReportWriter, ResultsJsonFollowsTheSchemaAndCountsTheTotals) {
   const std::string path = dir + "/results.json";
   const nlohmann::json doc = json::read_file(path);
   EXPECT_NO_THROW(json::validate(doc, "results.schema.json", path));
-  EXPECT_EQ(doc["format"], "results/1");
+  EXPECT_EQ(doc["format"], "results/2");
   EXPECT_EQ(doc["inputs"]["dataset"]["sha256"], std::string(64, 'a'));
-  ASSERT_EQ(doc["experiments"].size(), 4u);
+  ASSERT_EQ(doc["experiments"].size(), 6u);
   const nlohmann::json& actions = doc["experiments"][0];
   EXPECT_EQ(actions["totals"]["materials"], 5);
   EXPECT_EQ(actions["totals"]["better"], 3);
@@ -271,17 +333,24 @@ TEST(ReportWriter, CsvRowsReadBackToTheSameNumbers) {
   ASSERT_EQ(rows.size(), 5u);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const MaterialComparison& m = e.experiments[0].materials[i];
-    expect_row(rows[i], {m.id, m.name},
+    expect_row(head(rows[i], 15), {m.id, m.name},
                {double(m.windows), m.model, m.baseline, m.difference.q1, m.difference.median, m.difference.q3, m.test.t,
                 m.test.df, m.test.p, double(m.test.n_a), double(m.test.n_b), double(m.better()), double(m.significant())});
+    expect_measured(rows[i], 15,
+                    {m.model_lsd_db, m.baseline_lsd_db, m.floor, m.floor_ratio(), m.mean_spectrum, m.mean_spectrum_ratio(),
+                     double(m.below_floor)});
   }
   EXPECT_EQ(rows[2][8], "-inf");
   EXPECT_EQ(rows[1][13] + rows[1][14], "01") << "Brick, 2: worse, significant";
 
   const auto speed = read_table(fs::path(dir) / "speed.csv", kSpeedColumns);
   ASSERT_EQ(speed.size(), e.speed.size());
-  for (std::size_t i = 0; i < speed.size(); ++i)
-    expect_row(speed[i], {e.speed[i].method, e.speed[i].setting}, {e.speed[i].seconds_per_second, e.speed[i].distance});
+  for (std::size_t i = 0; i < speed.size(); ++i) {
+    const SpeedPoint& p = e.speed[i];
+    expect_row(head(speed[i], 4), {p.method, p.setting}, {p.seconds_per_second, p.distance});
+    EXPECT_EQ(speed[i][4], p.kind);
+    expect_measured(speed[i], 5, {p.section_lsd_db, p.spread_ratio});
+  }
 
   const auto latents = read_table(fs::path(dir) / "latents.csv", kLatentColumns);
   ASSERT_EQ(latents.size(), e.latents.size());
@@ -337,6 +406,169 @@ TEST(ReportWriter, MarkdownGivesTotalsPaperFiguresAndTables) {
   }
 }
 
+TEST(ReportWriter, ResultsJsonHoldsFloorsRealismAndNullWhereNotMeasured) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  write_report(sample_evaluation(), dir, false);
+  const std::string path = dir + "/results.json";
+  const nlohmann::json doc = json::read_file(path);
+  EXPECT_NO_THROW(json::validate(doc, "results.schema.json", path)) << "NaN figures are null";
+  const nlohmann::json& actions = doc["experiments"][0];
+  EXPECT_EQ(actions["comparison"], "rendered-ar");
+  EXPECT_EQ(doc["experiments"][1]["comparison"], "stitched");
+  EXPECT_EQ(doc["experiments"][4]["comparison"], "mean-spectrum");
+  EXPECT_EQ(doc["experiments"][5]["comparison"], "expected-ar");
+  EXPECT_EQ(actions["totals"]["with_floor"], 4);
+  EXPECT_EQ(actions["totals"]["within_floor_10_percent"], 2);
+  EXPECT_EQ(actions["totals"]["within_floor_15_percent"], 3);
+  EXPECT_EQ(actions["totals"]["below_floor"], 1);
+  EXPECT_DOUBLE_EQ(actions["median_floor_ratio"].get<double>(), (0.5 / 0.48 + 0.4 / 0.35) / 2);
+  EXPECT_DOUBLE_EQ(actions["worst_floor_ratio"].get<double>(), 0.61 / 0.5);
+  EXPECT_TRUE(doc["experiments"][3]["median_floor_ratio"].is_null()) << "no materials, no floor";
+  const nlohmann::json& book = actions["materials"][0];
+  EXPECT_EQ(book["model_lsd_db"], 4.5);
+  EXPECT_EQ(book["baseline_lsd_db"], 6.25);
+  EXPECT_EQ(book["floor"], 0.48);
+  EXPECT_DOUBLE_EQ(book["floor_ratio"].get<double>(), 0.5 / 0.48);
+  EXPECT_DOUBLE_EQ(book["mean_spectrum_ratio"].get<double>(), 0.5 / 0.8);
+  EXPECT_EQ(book["below_floor"], false);
+  EXPECT_TRUE(actions["materials"][1]["floor"].is_null());
+  EXPECT_TRUE(actions["materials"][1]["floor_ratio"].is_null());
+  EXPECT_EQ(actions["materials"][2]["below_floor"], true);
+  EXPECT_TRUE(actions["materials"][3]["model_lsd_db"].is_null());
+
+  EXPECT_EQ(doc["floor_kind"], "oracle");
+  ASSERT_EQ(doc["floors"].size(), 3u);
+  EXPECT_EQ(doc["floors"][0]["method"], "closed form");
+  EXPECT_DOUBLE_EQ(doc["floors"][0]["closed_form_gap_percent"].get<double>(), 100 * 0.02 / 0.5);
+  EXPECT_DOUBLE_EQ(doc["floors"][0]["rendered_ratio"].get<double>(), 0.72 / 0.48);
+  for (const char* key : {"distance", "lsd_db", "closed_form", "monte_carlo", "closed_form_gap_percent", "rendered", "rendered_ratio",
+                          "estimate", "baseline_expected"})
+    EXPECT_TRUE(doc["floors"][1][key].is_null()) << key;
+  EXPECT_TRUE(doc["floors"][2]["estimate"].is_null());
+  EXPECT_EQ(doc["floors"][2]["baseline_expected"], 0.3);
+
+  ASSERT_EQ(doc["realism"].size(), 2u);
+  EXPECT_EQ(doc["realism"][0]["median_section_lsd_db"], 3.0);
+  EXPECT_EQ(doc["realism"][0]["median_spread_ratio"], 1.0);
+  EXPECT_TRUE(doc["realism"][0]["materials"][2]["spread_ratio"].is_null());
+  EXPECT_EQ(doc["realism"][1]["median_spread_ratio"], 0.5);
+  EXPECT_EQ(doc["speed"][0]["kind"], "signal");
+  EXPECT_EQ(doc["speed"][0]["spread_ratio"], 1.0);
+  EXPECT_EQ(doc["speed"][1]["kind"], "spectrum");
+  EXPECT_TRUE(doc["speed"][1]["spread_ratio"].is_null());
+
+  // Strict: a figure not measured is null, never "nan"; no field the schema does not name.
+  nlohmann::json bad = doc;
+  bad["experiments"][0]["materials"][1]["floor"] = "nan";
+  EXPECT_THROW(json::validate(bad, "results.schema.json", path), Error);
+  bad = doc;
+  bad["floors"][0]["distance"] = -0.5;
+  EXPECT_THROW(json::validate(bad, "results.schema.json", path), Error);
+  bad = doc;
+  bad["realism"][0]["materials"][0]["spread"] = 1.0;
+  EXPECT_THROW(json::validate(bad, "results.schema.json", path), Error);
+  bad = doc;
+  bad["speed"][0]["kind"] = "noise";
+  EXPECT_THROW(json::validate(bad, "results.schema.json", path), Error);
+  bad = doc;
+  bad["floor_kind"] = "guess";
+  EXPECT_THROW(json::validate(bad, "results.schema.json", path), Error);
+  bad = doc;
+  bad["experiments"][0]["totals"].erase("below_floor");
+  EXPECT_THROW(json::validate(bad, "results.schema.json", path), Error);
+}
+
+TEST(ReportWriter, FloorsAndRealismCsvsReadBack) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  const Evaluation e = sample_evaluation();
+  write_report(e, dir, false);
+  const auto floors = read_table(fs::path(dir) / "floors.csv", kFloorColumns);
+  ASSERT_EQ(floors.size(), e.floors.size());
+  for (std::size_t i = 0; i < floors.size(); ++i) {
+    const MaterialFloor& f = e.floors[i];
+    expect_row(head(floors[i], 5), {f.id, f.name, f.kind, f.method}, {double(f.windows)});
+    expect_measured(floors[i], 5,
+                    {f.distance, f.lsd_db, f.closed_form, f.monte_carlo, closed_form_gap_percent(f), f.rendered,
+                     rendered_ratio(f), f.estimate, f.baseline_expected});
+  }
+  EXPECT_EQ(floors[1][5], "") << "Brick, 2: not measured, an empty cell";
+
+  const auto realism = read_table(fs::path(dir) / "realism.csv", kRealismColumns);
+  std::size_t row = 0;
+  for (const Realism& r : e.realism)
+    for (const MaterialRealism& m : r.materials) {
+      ASSERT_LT(row, realism.size());
+      expect_row(head(realism[row], 4), {r.method, r.setting, m.id, m.name}, {});
+      expect_measured(realism[row++], 4, {m.section_lsd_db, m.spread_ratio});
+    }
+  EXPECT_EQ(row, realism.size());
+}
+
+TEST(ReportWriter, MarkdownShowsTheFloorRealismAndWhatEachComparisonAsks) {
+  test::TempDir tmp;
+  const std::string dir = tmp.file("report");
+  write_report(sample_evaluation(), dir, false);
+  const std::string md = read_text(dir + "/report.md");
+  const auto has = [&md](const std::string& text) { return md.find(text) != std::string::npos; };
+  // Per experiment: against the floor, the warning, and the materials worse than their mean spectrum.
+  EXPECT_TRUE(has("**Against the noise floor (oracle):** within 10 % of the floor on 2 of 4 materials, within 15 % on 3; "
+                  "model/floor median 1.092, worst 1.220; below the floor on 1. 1 material without a floor."));
+  EXPECT_TRUE(has("the oracle is wrong or the model saw the test data"));
+  EXPECT_TRUE(has("**Significantly worse than the material's mean training spectrum** (the model does not gain from the "
+                  "actions) on: Brick, 2; Cork."));
+  // The material table's new columns: LSD model and baseline, floor, model/floor († below it), model/mean spectrum.
+  EXPECT_TRUE(has("| better \\* | 4.500 | 6.250 | 0.4800 | 1.042 | 0.6250 |")) << "Book";
+  EXPECT_TRUE(has("| worse \\* | 7.000 | 5.500 | – | – | 1.222 |")) << "Brick, 2: no floor";
+  EXPECT_TRUE(has("| better \\* | 3.000 | 4.000 | 0.2100 | 0.9524 † | – |")) << "Felt: below the floor";
+  EXPECT_TRUE(has("| 0.5620 | 0.5840 | 1.092 |")) << "the totals table: mean model and baseline, median model/floor";
+  // The noise floor, with a floor that was not measured.
+  EXPECT_TRUE(has("## Noise floor\n\n**Oracle.**"));
+  EXPECT_TRUE(has("| Book | oracle | closed form | 120 | 0.4800 | 2.500 | 0.4800 | 0.5000 | 4.000 % | 0.7200 | 1.500 | 0.5000 | 0.6250 |"));
+  EXPECT_TRUE(has("| Brick, 2 | oracle | Monte Carlo | 120 | – | – | – | – | – | – | – | – | – |"));
+  EXPECT_TRUE(has("pays the randomness twice"));
+  // Realism: medians over the materials where each figure was measured.
+  EXPECT_TRUE(has("| AR baseline | ar-refit | 2 | 3.000 | 1.000 |"));
+  EXPECT_TRUE(has("| unified + FGLA | 100 iterations | 2 | 2.000 | 0.5000 |"));
+  EXPECT_TRUE(has("about 0.52 (Rayleigh amplitudes)"));
+  EXPECT_TRUE(has("| unified + FGLA | 100 iterations | 120.0 ms | 0.6000 | signal | 2.000 | 0.5000 |"));
+  EXPECT_TRUE(has("| AR baseline | expected spectrum | 0.4000 ms | 0.5200 | spectrum | – | – |"));
+  // Which comparison answers which question, naming this report's experiments.
+  EXPECT_TRUE(has("## Which comparison answers which question"));
+  EXPECT_TRUE(has("| `unified-new-actions-vs-expected-ar` | Which model knows the texture better? Like for like"));
+  EXPECT_TRUE(has("| `unified-new-actions-vs-mean-spectrum` | Does the model use the actions?"));
+  EXPECT_TRUE(has("| `stitched-fgla` | Signal against signal"));
+  EXPECT_TRUE(has("pays the texture's randomness twice"));
+  EXPECT_TRUE(has("`floors.csv`") && has("`realism.csv`"));
+}
+
+TEST(ReportWriter, TheSpeedChartReadsTheFloorFromItsCsv) {
+  test::TempDir tmp;
+  Evaluation e = sample_evaluation();
+  write_report(e, tmp.file("oracle"), false);
+  const std::string oracle = read_text(tmp.file("oracle/speed.gnuplot"));
+  EXPECT_NE(oracle.find("set multiplot layout 1,2"), std::string::npos) << oracle;
+  EXPECT_NE(oracle.find("stats 'floors.csv' using (finite(column('distance'))) nooutput"), std::string::npos) << oracle;
+  EXPECT_NE(oracle.find("floor with lines dt 2 lc rgb '#666666' title 'oracle'"), std::string::npos) << oracle;
+  EXPECT_NE(oracle.find(":'spread_ratio' with points"), std::string::npos) << oracle;
+  EXPECT_NE(oracle.find("1 with lines dt 2 lc rgb 'black' title 'the recording (1)'"), std::string::npos) << oracle;
+  EXPECT_EQ(oracle.find("0.345"), std::string::npos) << "the mean floor is computed by gnuplot, not written into the script";
+
+  e.floor_kind = "estimate";
+  write_report(e, tmp.file("estimate"), false);
+  EXPECT_NE(read_text(tmp.file("estimate/speed.gnuplot")).find("title 'floor (estimate)'"), std::string::npos);
+
+  e.floors.clear();
+  for (SpeedPoint& p : e.speed) p.kind = "spectrum";
+  write_report(e, tmp.file("none"), false);
+  const std::string none = read_text(tmp.file("none/speed.gnuplot"));
+  EXPECT_NE(none.find("set multiplot layout 1,1"), std::string::npos) << "only the spectrum panel";
+  EXPECT_EQ(none.find("floors.csv"), std::string::npos) << "no floor, no line";
+  EXPECT_EQ(none.find("floor with lines"), std::string::npos);
+  EXPECT_EQ(none.find("spread_ratio"), std::string::npos);
+}
+
 TEST(ReportWriter, ChartsAreValidPngsWhenGnuplotIsInstalled) {
   if (!gnuplot_installed()) GTEST_SKIP() << "gnuplot is not installed";
   test::TempDir tmp;
@@ -344,7 +576,9 @@ TEST(ReportWriter, ChartsAreValidPngsWhenGnuplotIsInstalled) {
   const ReportFiles files = write_report(sample_evaluation(), dir, false);
   EXPECT_EQ(files.note, "");
   const std::vector<std::string> expected = {"experiment-unified-new-actions.png", "experiment-stitched-fgla.png",
-                                             "experiment-per-material__small.h5_.png", "examples.png", "latents.png",
+                                             "experiment-per-material__small.h5_.png",
+                                             "experiment-unified-new-actions-vs-mean-spectrum.png",
+                                             "experiment-unified-new-actions-vs-expected-ar.png", "examples.png", "latents.png",
                                              "speed.png"};
   EXPECT_EQ(files.charts.size(), expected.size());
   for (const std::string& name : expected) {
