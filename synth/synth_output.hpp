@@ -3,7 +3,8 @@
 //   OUT/recordings/<material_id>_<k>.xml          HaTT recorded-data XML (haptex convert hatt OUT/recordings)
 //   OUT/gelsight/<Material name>/press_<j>/...    press videos as PNG sequences (haptex capture extract OUT/gelsight)
 //   OUT/gelsight/<Material name>/press_<j>.json   the true peak frame and contact interval
-//   OUT/truth.h5, OUT/materials.json              (synth materials) ground truth and recipes
+//   OUT/truth.h5                                  what generated each recording (synth/truth_file.hpp)
+//   OUT/materials.json                            (synth materials) the recipes
 #include <string>
 
 namespace haptex::synth {
