@@ -82,7 +82,7 @@ class EvaluateCommand : public Command {
                   x.significantly_better(), x.significantly_worse(), x.mean_model(), x.mean_baseline());
       if (std::isfinite(x.median_floor_ratio()))
         std::printf("  %s: within 10 %% of the %s on %zu of %zu materials (median ratio %.3g, worst %.3g)%s\n", x.id.c_str(),
-                    e.floor_kind == "oracle" ? "oracle" : "floor estimate", x.within_floor(0.10), x.materials.size(),
+                    e.floor_kind == "oracle" ? "floor (oracle where --truth knows the material)" : "floor estimate", x.within_floor(0.10), x.materials.size(),
                     x.median_floor_ratio(), x.worst_floor_ratio(), x.below_floor() ? "; BEATS THE ORACLE: the oracle is wrong" : "");
     }
     if (!files.note.empty()) std::cout << "note: " << files.note << "\n";

@@ -27,6 +27,23 @@ double mean_distance(const std::vector<std::vector<std::vector<double>>>& spectr
   return n ? sum / double(n) : 0.0;
 }
 
+// The closed form against Monte Carlo, spectrum against spectrum: per window, the closed form's
+// summed amplitude over Monte Carlo's, minus 1; the mean of its magnitude over the windows. Summing
+// the 100 bins averages Monte Carlo's own sampling error (0.52 / sqrt(renders) per bin) down to
+// about 0.7 % per window with 64 renders, and every window counts alike, so the quiet windows after a
+// stroke stops (where the closed form misses the ringing filter) weigh as much as loud ones.
+double spectrum_gap(const std::vector<std::vector<std::vector<double>>>& closed, const std::vector<std::vector<std::vector<double>>>& carlo) {
+  double sum = 0;
+  std::size_t n = 0;
+  for (std::size_t s = 0; s < closed.size(); ++s)
+    for (std::size_t j = 0; j < closed[s].size(); ++j, ++n) {
+      double c = 0, m = 0;
+      for (std::size_t k = 0; k < closed[s][j].size(); ++k) c += closed[s][j][k], m += carlo[s][j][k];
+      sum += m > 0 ? std::fabs(c / m - 1) : (c > 0 ? 1.0 : 0.0);
+    }
+  return n ? sum / double(n) : 0.0;
+}
+
 // Mean window spectra of `renders` renderings of one section (plus sensor noise); the first `kept` kept.
 std::vector<std::vector<double>> monte_carlo(const ar::PiecewiseArModel& model, const ArSection& s, const ArExpectationOptions& o,
                                              std::uint64_t seed, std::vector<std::vector<std::vector<double>>>& kept) {
@@ -91,7 +108,8 @@ ArExpectation expected_ar_spectra(const ar::PiecewiseArModel& model, const std::
     rendered += mean_distance(one, sections) / double(std::min(o.kept, o.renders));
   }
   e.rendered = rendered;
-  const bool agree = std::fabs(e.closed_form - e.monte_carlo) <= o.agreement * e.monte_carlo;
+  e.gap = spectrum_gap(closed, carlo);
+  const bool agree = e.gap <= o.agreement;
   e.method = agree ? "closed form" : "Monte Carlo";
   e.spectra = agree ? std::move(closed) : std::move(carlo);
   return e;

@@ -8,8 +8,8 @@
 //   still ringing after its excitation stopped (HaTT's poles reach radius 0.9986: ~70 ms);
 // - Monte Carlo: the model rendered many times along the action from its history, with fresh seeds,
 //   and the window spectra averaged.
-// expected_ar_spectra keeps the closed form where the two score the recording within 2 %, and
-// Monte Carlo otherwise.
+// expected_ar_spectra keeps the closed form where its window spectra agree with Monte Carlo's within
+// 2 % (ArExpectation::gap), and Monte Carlo otherwise.
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -40,7 +40,7 @@ struct ArExpectationOptions {
   std::size_t renders = 64;    // Monte Carlo renderings per section; 0: the closed form alone
   std::size_t kept = 10;       // renderings whose spectra are kept as "rendered" (ArExpectation::rendered)
   double noise_power = 0;      // white sensor noise variance per sample added to the vibration, (m/s^2)^2
-  double agreement = 0.02;     // closed form used while its score is within this of Monte Carlo's
+  double agreement = 0.02;     // closed form used while ArExpectation::gap is at most this
   std::uint64_t seed = 0;
 };
 
@@ -52,6 +52,8 @@ struct ArExpectation {
   std::string method;  // "closed form" or "Monte Carlo"
   // Mean distance to the recorded windows over all sections: each way, and the kept renderings'.
   double closed_form = 0, monte_carlo = kNoRenders, rendered = kNoRenders;
+  // Mean over the windows of |sum of the closed form's bins / sum of Monte Carlo's - 1|: the test.
+  double gap = kNoRenders;
   // Per section, per kept rendering, per window: the spectra of single renderings (realism).
   std::vector<std::vector<std::vector<std::vector<double>>>> rendered_spectra;
   double closed_form_seconds = 0;  // compute time of the closed form (thread CPU)

@@ -88,6 +88,7 @@ struct MaterialFloor {
   double rendered = kNotMeasured;  // AR oracles: the generating model rendered (mean over renders)
   double estimate = kNotMeasured;  // the empirical estimate's distance, beside an oracle to check it
   double baseline_expected = kNotMeasured;  // the AR baseline's expected spectrum at the recorded action
+  double closed_form_gap = kNotMeasured;    // AR oracles: how far the two ways' spectra differ (ArExpectation::gap)
 };
 
 // Figure 5: one test window of a material: frequencies 10..1000 Hz with true, model and baseline

@@ -7,6 +7,7 @@
 #include "convert/hatt_model_reader.hpp"
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
+#include "evaluate/summary_statistics.hpp"
 
 namespace haptex::evaluate {
 namespace {
@@ -81,6 +82,16 @@ ArSection true_action_section(const synth::TruthRecording& r, const SectionSigna
 }
 
 }  // namespace
+
+bool beats_oracle(const std::vector<double>& model, const std::vector<double>& oracle) {
+  if (model.size() != oracle.size())
+    throw failure("beats_oracle: " + std::to_string(model.size()) + " model windows against " + std::to_string(oracle.size()) + " oracle windows");
+  if (model.size() < 2) return false;
+  std::vector<double> d;
+  for (std::size_t j = 0; j < model.size(); ++j) d.push_back(model[j] - oracle[j]);
+  const double independent = std::max(1.0, double(d.size()) / 10);
+  return mean(d) < -3 * std::sqrt(sample_variance(d) / independent);
+}
 
 void add_sensor_noise(std::vector<double>& amplitude, double noise_power) {
   const double add = std::numbers::pi * noise_power / double(signal::kWindowSamples);

@@ -32,6 +32,11 @@ struct MaterialOracle {
 std::optional<MaterialOracle> material_oracle(const synth::Truth& truth, const std::string& truth_path, const MaterialSignals& m,
                                               const std::vector<std::vector<std::vector<double>>>& recorded, std::uint64_t seed);
 
+// Does a predictor beat the oracle beyond sampling error? Per-window distances of each on the same
+// windows, paired: the mean difference below -3 standard errors, counting one window in ten as
+// independent (neighbouring windows overlap by 90 %). Throws haptex::Error when the sizes differ.
+bool beats_oracle(const std::vector<double>& model, const std::vector<double>& oracle);
+
 // Expected amplitude spectrum of a noise-free truth-grid spectrum with white sensor noise of
 // `noise_power` (m/s^2)^2 per sample added, in a 1000-sample window: sqrt(a^2 + pi noise_power / N)
 // per bin (the Rayleigh mean of the summed power).

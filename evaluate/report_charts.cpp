@@ -179,7 +179,10 @@ std::string speed_script(const Evaluation& e, const std::string& terminal) {
   s << header(terminal, kSpeedStem, int(800 * panels.size()), 720, "speed against spectrum accuracy and signal realism");
   s << "finite(x) = abs(x) < 1e300 ? x : NaN  # inf and nan left out\n";
   if (any_finite_floor(e.floors))
-    s << "stats '" << kFloorsStem << ".csv' using (finite(column('distance'))) nooutput\nfloor = STATS_mean\n";
+    // Weighted by windows, as every point's distance pools its windows over the materials.
+    s << "stats '" << kFloorsStem << ".csv' using (finite(column('distance')) * column('windows')) nooutput prefix 'FLOORW'\n"
+      << "stats '" << kFloorsStem << ".csv' using (finite(column('distance')) * 0 + column('windows')) nooutput prefix 'WINDOWS'\n"
+      << "floor = FLOORW_sum / WINDOWS_sum\n";
   // On the log axis, from half the fastest time to twice the slowest or real time (1 s), whichever is
   // slower, over the times that are positive and finite.
   if (log_x)

@@ -205,7 +205,7 @@ std::size_t materials_with_floor(const Experiment& x) {
                                    [](const MaterialComparison& m) { return std::isfinite(m.floor_ratio()); }));
 }
 
-double closed_form_gap_percent(const MaterialFloor& f) { return 100 * std::fabs(f.closed_form - f.monte_carlo) / f.monte_carlo; }
+double closed_form_gap_percent(const MaterialFloor& f) { return 100 * f.closed_form_gap; }
 
 double rendered_ratio(const MaterialFloor& f) { return f.rendered / f.distance; }
 

@@ -237,7 +237,9 @@ void score_floor(MaterialRun& run, std::size_t m, const MaterialSignals& signals
     run.methods["floor"] = run.methods["floor-estimate"];
   } else {
     f.kind = "oracle", f.method = oracle->method;
-    if (oracle->ar) f.closed_form = oracle->ar->closed_form, f.monte_carlo = oracle->ar->monte_carlo, f.rendered = oracle->ar->rendered;
+    if (oracle->ar)
+      f.closed_form = oracle->ar->closed_form, f.monte_carlo = oracle->ar->monte_carlo, f.closed_form_gap = oracle->ar->gap,
+      f.rendered = oracle->ar->rendered;
   }
   const Scores& floor = run.methods["floor"];
   f.windows = floor.windows.size();
@@ -364,16 +366,6 @@ std::vector<LatentPoint> latent_map(const std::vector<Codes>& codes, const split
     points[i].y = projected.cols() > 1 ? projected(Eigen::Index(i), 1) : 0.0;
   }
   return points;
-}
-
-// Does the model beat the oracle beyond sampling error? Paired per window; neighbouring windows
-// overlap by 90 %, so about one in ten is independent. Three standard errors.
-bool beats_oracle(const std::vector<double>& model, const std::vector<double>& oracle) {
-  if (model.size() != oracle.size() || model.size() < 2) return false;
-  std::vector<double> d;
-  for (std::size_t j = 0; j < model.size(); ++j) d.push_back(model[j] - oracle[j]);
-  const double independent = std::max(1.0, double(d.size()) / 10);
-  return mean(d) < -3 * std::sqrt(sample_variance(d) / independent);
 }
 
 MaterialComparison compare(const MaterialSignals& m, const MaterialRun& run, const Scores& model, const Scores& baseline) {
@@ -544,6 +536,9 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
     }
   std::optional<synth::Truth> truth;
   if (!o.truth.empty()) truth = synth::read_truth_file(o.truth);
+  if (truth && truth->sample_rate_hz != kSampleRate)  // the oracle's windows and action points count 10 kHz samples
+    throw input_error(o.truth, "/@sample_rate_hz", "is " + std::to_string(truth->sample_rate_hz) + " Hz, not the evaluation's 10 kHz",
+                      "Give the truth.h5 written with the recordings of this dataset");
   Context c{models, codes, o, truth, {}, {}, stitched};
   if (stitched >= 0 && o.reconstruct != Reconstruction::none) {
     for (std::size_t n : o.fgla_iterations) c.stitched_keys.push_back("fgla:" + std::to_string(n));

@@ -17,10 +17,13 @@ constexpr const char* kHattModel = "hatt-model";
 constexpr const char* kSynthMaterial = "synth-material";
 constexpr std::size_t kBins = 100;
 constexpr const char* kRerun = "Run haptex synth again to write a new truth.h5";
-// Far beyond what haptex synth writes (600 s at 10 kHz; 10 x 8 grid points), small enough that a
-// damaged file's extents cannot make the reader allocate gigabytes.
-constexpr hsize_t kMostSamples = 100'000'000;
-constexpr hsize_t kMostGridPoints = 1000;
+// Beyond what haptex synth writes (600 s at 10 kHz per recording; 10 x 8 grid points; 60 HaTT
+// materials x 2 recordings x 10 s is 12 million samples in all), small enough that a damaged file's
+// extents cannot make the reader allocate gigabytes: at most 100 x 100 x 100 grid values, and 50
+// million samples per channel over the whole file (400 MB as double).
+constexpr hsize_t kMostSamples = 10'000'000;
+constexpr hsize_t kMostGridPoints = 100;
+constexpr std::size_t kMostTotalSamples = 50'000'000;
 
 // ---- writing
 
@@ -95,6 +98,7 @@ bool is_index(const std::string& s) {
 // and the fix is the same: the file is not what haptex synth writes, so write it again.
 struct Reader {
   std::string path;
+  mutable std::size_t total_samples = 0;  // speed samples read so far (kMostTotalSamples)
 
   Error error(const std::string& object, const std::string& what) const { return input_error(path, object, what, kRerun); }
 
@@ -182,6 +186,9 @@ struct Reader {
     if (!is_sha256(r.source_sha256))
       throw error(child(g, "@source_sha256"), "is '" + r.source_sha256 + "', not a SHA-256 (64 lower-case hex digits)");
     r.speed_mm_s = series<float>(g, "speed", "float32", kMostSamples, std::nullopt);
+    total_samples += r.speed_mm_s.size();
+    if (total_samples > kMostTotalSamples)
+      throw error(child(g, "speed"), "brings the file past " + std::to_string(kMostTotalSamples) + " samples in all");
     r.force_n = series<float>(g, "force", "float32", kMostSamples, r.speed_mm_s.size(), ": one value per speed sample");
     return r;
   }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "core/ar/gaussian_noise.hpp"
 #include "core/ar/texture_renderer.hpp"
@@ -36,6 +37,23 @@ TEST(TruthGridOracle, InterpolatesPowerAndFallsSilentAtRest) {
   add_sensor_noise(a, 0.02 * 0.02 * 3);
   EXPECT_NEAR(a[0], std::sqrt(std::numbers::pi * 0.0012 / 1000), 1e-15);
   EXPECT_NEAR(a[1], std::sqrt(9 + std::numbers::pi * 0.0012 / 1000), 1e-15);
+}
+
+// A predictor is flagged only when it is closer than the oracle by more than its sampling error.
+TEST(BeatsOracle, FlagsAWrongOracleNotChance) {
+  std::mt19937_64 rng(4);
+  std::normal_distribution<double> n(0, 0.3);
+  std::vector<double> oracle, close, better;
+  for (int j = 0; j < 180; ++j) {
+    oracle.push_back(1.0 + n(rng));
+    close.push_back(oracle.back() + 0.02 * n(rng) - 0.001);  // a hair below on average: chance
+    better.push_back(oracle.back() * 0.9);                     // 10 % closer on every window: the oracle is wrong
+  }
+  EXPECT_FALSE(beats_oracle(close, oracle));
+  EXPECT_FALSE(beats_oracle(oracle, oracle));
+  EXPECT_TRUE(beats_oracle(better, oracle));
+  EXPECT_FALSE(beats_oracle({0.1}, {1.0}));  // one window: no sampling error to judge by
+  EXPECT_THROW(beats_oracle({1, 2}, {1, 2, 3}), Error);
 }
 
 // A recording of the fixture model along a slow speed ramp at 2 N, with the sensor noise of three
@@ -71,12 +89,42 @@ TEST(HattOracle, ClosedFormAgreesWithMonteCarloAndBeatsTheModelRendered) {
   ASSERT_EQ(oracle->spectra.size(), 1u);
   EXPECT_EQ(oracle->spectra[0].size(), c.recorded[0].size());
   const ArExpectation& e = *oracle->ar;
+  EXPECT_LT(e.gap, 0.02);
   EXPECT_NEAR(e.closed_form / e.monte_carlo, 1.0, 0.02);
   // A renderer pays the texture's randomness twice: its own and the recording's.
   EXPECT_GT(e.rendered / e.closed_form, 1.2);
   EXPECT_LT(e.rendered / e.closed_form, 1.6);
   EXPECT_EQ(e.rendered_spectra.size(), 1u);
   EXPECT_EQ(e.rendered_spectra[0].size(), 10u);
+}
+
+// Strokes that stop and start every 0.2 s: the filter (pole 0.99657, ~15 ms of power) still rings
+// after its excitation stops and builds up after it starts, which the closed form cannot see; the
+// spectra disagree and Monte Carlo is used.
+TEST(HattOracle, StopAndStartFallsBackToMonteCarlo) {
+  ArSection s;
+  s.lead = kArLeadSamples;
+  for (std::size_t i = 0; i < s.lead + 20000; ++i) {
+    s.speed.push_back((i / 2000) % 2 ? 0.0 : 100.0);
+    s.force.push_back(2.0);
+  }
+  s.grid = section_grid(20000);
+  const auto x = ar::render_texture(test::ar_fixture(), s.speed, s.force, 9);
+  std::vector<std::size_t> shifted;
+  for (std::size_t t : s.grid) shifted.push_back(t + s.lead);
+  s.recorded = grid_spectra(x, shifted);
+  ArExpectationOptions o;
+  o.seed = 3;
+  const ArExpectation e = expected_ar_spectra(test::ar_fixture(), {s}, o);
+  EXPECT_GT(e.gap, 0.02);
+  EXPECT_EQ(e.method, "Monte Carlo");
+  EXPECT_EQ(e.spectra.size(), 1u);
+  ArExpectationOptions closed_only;
+  closed_only.renders = 0;
+  const ArExpectation c = expected_ar_spectra(test::ar_fixture(), {s}, closed_only);
+  EXPECT_EQ(c.method, "closed form");
+  EXPECT_TRUE(std::isnan(c.gap));
+  EXPECT_TRUE(std::isnan(c.monte_carlo));
 }
 
 TEST(HattOracle, KnowsOnlyTheRecordingsItGenerated) {
