@@ -81,6 +81,21 @@ TEST(EvaluateCli, WithTheTruthTheFloorIsTheOracle) {
   EXPECT_FALSE(results["realism"].empty());
 }
 
+// A --truth that is not a truth file (here the dataset itself, under a name with quotes and a
+// back-quote) is refused before anything is written, naming the file and the attribute.
+TEST(EvaluateCli, RefusesATruthThatIsNotOne) {
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  const std::string fake = copy_into(dir, p.dataset, "tru'th \"`x`\".h5");
+  const CommandResult r = run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", models().unified, "--truth", fake, "-o",
+                                      dir.file("report")});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(fake), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("not truth/2"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.file("report")));
+  EXPECT_FALSE(fs::exists(dir.file("report.partial")));
+}
+
 TEST(EvaluateCli, RefusesAModelTrainedOnAnotherSplit) {
   const TempDir dir;
   const SmallPipeline& p = small_pipeline();
