@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "evaluate/summary_statistics.hpp"
@@ -124,5 +125,34 @@ struct Evaluation {
   std::vector<std::string> notes;  // what was skipped and why
   double seconds = 0;              // wall-clock time of the evaluation
 };
+
+// --- Figures derived from an evaluation, the same for every writer and for the speed points -------
+
+// Which question an experiment answers, by its id without the " (model label)" suffix
+// (docs/evaluate.md, "Which comparison answers which question"):
+// - rendered_ar: predicted spectra against the AR baseline rendered (per-material, unified-new-*: the paper's protocol);
+// - expected_ar: predicted spectra against the AR baseline's expected spectrum (*-vs-expected-ar: like for like);
+// - mean_spectrum: predicted spectra against each material's mean training spectrum (*-vs-mean-spectrum);
+// - stitched: the stitched signal against the AR baseline rendered (stitched-*: signal against signal).
+enum class Comparison { rendered_ar, expected_ar, mean_spectrum, stitched };
+Comparison comparison_of(std::string_view experiment_id);
+std::string_view comparison_name(Comparison c);  // "rendered-ar", "expected-ar", "mean-spectrum", "stitched"
+
+// Materials whose model / floor ratio is a number (the floor was measured).
+std::size_t materials_with_floor(const Experiment& x);
+
+// An AR oracle's two ways apart: MaterialFloor::closed_form_gap in percent; NaN when not measured.
+double closed_form_gap_percent(const MaterialFloor& f);
+// The generating model rendered against the floor: rendered / distance (well above 1: it pays the
+// texture's randomness twice); NaN without both.
+double rendered_ratio(const MaterialFloor& f);
+
+// The medians over materials of a rendering's realism figures, each over the materials where it was
+// measured (NaN where none was); materials: how many have a spread ratio.
+struct RealismMedians {
+  double section_lsd_db = kNotMeasured, spread_ratio = kNotMeasured;
+  std::size_t materials = 0;
+};
+RealismMedians realism_medians(const Realism& r);
 
 }  // namespace haptex::evaluate

@@ -5,7 +5,6 @@
 
 #include "core/version.hpp"
 #include "evaluate/paper_figures.hpp"
-#include "evaluate/summary_statistics.hpp"
 
 namespace haptex::evaluate {
 namespace {
@@ -129,14 +128,6 @@ nlohmann::json json_array(const std::vector<T>& v, ToJson item_json) {
   return out;
 }
 
-// The finite values of figure(item), sorted, and their median; NaN when none is finite.
-template <typename T, typename Figure>
-double median_of(const std::vector<T>& v, Figure figure) {
-  std::vector<double> values;
-  for (const T& item : v)
-    if (std::isfinite(figure(item))) values.push_back(figure(item));
-  return values.empty() ? kNotMeasured : percentile(values, 50);
-}
 
 }  // namespace
 
@@ -180,42 +171,6 @@ nlohmann::json results_json(const Evaluation& e, const ReportLayout& layout, con
           {"examples", examples},
           {"latents", json_array(e.latents, latent_json)},
           {"notes", e.notes}};
-}
-
-Comparison comparison_of(std::string_view id) {
-  const std::string_view base = id.substr(0, id.find(" ("));
-  if (base.starts_with("stitched-")) return Comparison::stitched;
-  if (base.ends_with("-vs-expected-ar")) return Comparison::expected_ar;
-  if (base.ends_with("-vs-mean-spectrum")) return Comparison::mean_spectrum;
-  return Comparison::rendered_ar;
-}
-
-std::string_view comparison_name(Comparison c) {
-  switch (c) {
-    case Comparison::expected_ar: return "expected-ar";
-    case Comparison::mean_spectrum: return "mean-spectrum";
-    case Comparison::stitched: return "stitched";
-    case Comparison::rendered_ar: break;
-  }
-  return "rendered-ar";
-}
-
-std::size_t materials_with_floor(const Experiment& x) {
-  return std::size_t(std::count_if(x.materials.begin(), x.materials.end(),
-                                   [](const MaterialComparison& m) { return std::isfinite(m.floor_ratio()); }));
-}
-
-double closed_form_gap_percent(const MaterialFloor& f) { return 100 * f.closed_form_gap; }
-
-double rendered_ratio(const MaterialFloor& f) { return f.rendered / f.distance; }
-
-RealismMedians realism_medians(const Realism& r) {
-  RealismMedians m;
-  m.section_lsd_db = median_of(r.materials, [](const MaterialRealism& x) { return x.section_lsd_db; });
-  m.spread_ratio = median_of(r.materials, [](const MaterialRealism& x) { return x.spread_ratio; });
-  m.materials = std::size_t(std::count_if(r.materials.begin(), r.materials.end(),
-                                          [](const MaterialRealism& x) { return std::isfinite(x.spread_ratio); }));
-  return m;
 }
 
 }  // namespace haptex::evaluate

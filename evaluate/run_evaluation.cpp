@@ -449,11 +449,6 @@ std::string baseline_label(const std::string& key, const std::string& baseline, 
   return "mean training spectrum per material";
 }
 
-double median_of(std::vector<double> v) {
-  std::erase_if(v, [](double x) { return !std::isfinite(x); });
-  return v.empty() ? kNotMeasured : percentile(v, 50);
-}
-
 MaterialRealism material_realism(const MaterialSignals& m, const Scores& s) {
   std::vector<double> lsd, spread;
   for (const SectionRealism& r : s.realism)
@@ -477,9 +472,8 @@ Realism realism_of(const std::string& key, const std::string& method, const std:
 SpeedPoint point(const std::string& method, const std::string& setting, const Scores& s, const Realism* realism) {
   SpeedPoint p{method, setting, s.seconds / s.rendered_seconds, mean(s.windows)};
   if (!realism) return p;
-  std::vector<double> lsd, spread;
-  for (const MaterialRealism& r : realism->materials) lsd.push_back(r.section_lsd_db), spread.push_back(r.spread_ratio);
-  p.kind = "signal", p.section_lsd_db = median_of(lsd), p.spread_ratio = median_of(spread);
+  const RealismMedians medians = realism_medians(*realism);
+  p.kind = "signal", p.section_lsd_db = medians.section_lsd_db, p.spread_ratio = medians.spread_ratio;
   return p;
 }
 
