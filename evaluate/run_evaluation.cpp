@@ -223,8 +223,8 @@ void score_floor(MaterialRun& run, std::size_t m, const MaterialSignals& signals
   if (c.truth) oracle = material_oracle(*c.truth, c.options.truth, signals, recorded, derive_seed(c.options.seed, 11, m));
   for (std::size_t s = 0; s < signals.test.size(); ++s) {
     if (recorded[s].empty()) continue;
-    const WindowSet test = section_windows(signals.test[s]);
-    run.methods["floor-estimate"].add(score(nearest_action_spectra(ref.training, test.actions, kNearestWindows), recorded[s], ref.noise));
+    const auto estimate = nearest_action_spectra(ref.training, section_actions(signals.test[s]), kNearestWindows);
+    run.methods["floor-estimate"].add(score(estimate, recorded[s], ref.noise));
     if (!oracle) continue;
     run.methods["floor"].add(score(oracle->spectra[s], recorded[s], ref.noise));
     if (!oracle->ar) continue;

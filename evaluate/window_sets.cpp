@@ -34,10 +34,13 @@ void WindowSet::append(const WindowSet& other) {
 }
 
 WindowSet section_windows(const SectionSignals& s) {
-  const std::vector<std::size_t> grid = section_grid(s.accel.size());
-  WindowSet w{grid_spectra(s.accel, grid), {}};
-  for (std::size_t t : grid) w.actions.push_back(mean_action(s, t));
-  return w;
+  return {grid_spectra(s.accel, section_grid(s.accel.size())), section_actions(s)};
+}
+
+std::vector<ActionPoint> section_actions(const SectionSignals& s) {
+  std::vector<ActionPoint> actions;
+  for (std::size_t t : section_grid(s.accel.size())) actions.push_back(mean_action(s, t));
+  return actions;
 }
 
 WindowSet training_windows(const MaterialSignals& m) {

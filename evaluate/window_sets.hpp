@@ -23,6 +23,8 @@ struct WindowSet {
 
 // The windows of section_grid(s.accel.size()) on one section.
 WindowSet section_windows(const SectionSignals& s);
+// Their action points alone (no spectra computed).
+std::vector<ActionPoint> section_actions(const SectionSignals& s);
 
 // Every training (train and validation) section's windows of a material.
 WindowSet training_windows(const MaterialSignals& m);
