@@ -55,9 +55,9 @@ RecordingSignals read_recording(const h5::Group& recording, int material, int in
   if (s.accel.size() != s.force_lp.size() || s.accel.size() != s.speed_lp.size())
     throw input_error(recording.file(), recording.object_path(), "accel, force_normal_lp and speed_lp differ in length",
                       "Convert the recordings again with haptex convert");
-  if (s.accel.size() < kWindowSamples + kActionSamples - 1)
+  if (s.accel.size() < kWindowSamples)
     throw input_error(recording.file(), recording.object_path(), "only " + std::to_string(s.accel.size()) + " samples",
-                      "A recording needs at least 1009 samples for one window");
+                      "A recording needs at least " + std::to_string(kWindowSamples) + " samples for one window");
   return s;
 }
 
@@ -79,12 +79,13 @@ void write_windows(h5::Group root, const WindowTable& t, const std::vector<std::
   g.set_attr("stride", std::int64_t(stride));
   g.set_attr("action_samples", std::int64_t(kActionSamples));
   g.set_attr("window_samples", std::int64_t(kWindowSamples));
+  g.set_attr("action_end", std::int64_t(kActionEnd));
   g.write_strings("materials", ids);
   g.write("material", t.material);
   g.write("recording", t.recording);
   g.write("start", t.start);
   g.write_array<float>("action", t.action, {t.size(), kActionValues})
-      .set_attr("description", "10 low-passed normal-force samples (N) then 10 low-passed speed samples (mm/s) ending at start");
+      .set_attr("description", "10 low-passed normal-force samples (N) then 10 low-passed speed samples (mm/s) ending at start + 500, the window's middle");
   h5::Dataset target = g.write_array<float>("target", t.target, {t.size(), kTargetBins});
   target.set_attr("units", "m/s^2");
   target.set_attr("description", "single-sided amplitude spectrum 2|X_k|/N of accel[start, start + 1000), k = 1..100");

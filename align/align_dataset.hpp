@@ -10,7 +10,7 @@
 
 namespace haptex::align {
 
-inline constexpr const char* kDatasetFormat = "dataset/1";
+inline constexpr const char* kDatasetFormat = "dataset/2";  // 2: the action at the window's middle (1: before its start)
 
 struct AlignOptions {
   std::string recordings, gelsight, output;

@@ -16,7 +16,7 @@ WindowTable windows_of(const RecordingSignals& r, std::size_t stride) {
   table.target.resize(w * kTargetBins);
   std::vector<double> window(kWindowSamples), spectrum(kTargetBins);
   for (std::size_t i = 0; i < w; ++i) {
-    const std::size_t t = std::size_t(table.start[i]), first = t + 1 - kActionSamples;
+    const std::size_t t = std::size_t(table.start[i]), first = std::size_t(window_action_first(table.start[i]));
     float* action = &table.action[i * kActionValues];
     for (std::size_t k = 0; k < kActionSamples; ++k) {
       action[k] = r.force_lp[first + k];
@@ -43,7 +43,7 @@ std::string window_place(std::size_t w, std::string_view material, std::int64_t 
 
 std::vector<std::int64_t> window_starts(std::size_t samples, std::size_t stride) {
   std::vector<std::int64_t> starts;
-  for (std::size_t t = kActionSamples - 1; t + kWindowSamples <= samples; t += stride) starts.push_back(std::int64_t(t));
+  for (std::size_t t = 0; t + kWindowSamples <= samples; t += stride) starts.push_back(std::int64_t(t));
   return starts;
 }
 

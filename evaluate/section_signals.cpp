@@ -1,5 +1,6 @@
 #include "evaluate/section_signals.hpp"
 
+#include "align/window_table.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/signal/spectrum.hpp"
@@ -8,7 +9,8 @@
 namespace haptex::evaluate {
 namespace {
 
-constexpr std::size_t kActionSamples = 10;
+using align::kActionSamples;
+constexpr std::size_t kGridStride = 100;
 
 std::vector<double> read_signal(const h5::Group& recording, const char* name, const std::string& file) {
   if (!recording.has_dataset(name))
@@ -56,16 +58,15 @@ std::vector<MaterialSignals> read_section_signals(const split::DatasetSplit& spl
 }
 
 std::vector<std::size_t> section_grid(std::size_t samples) {
-  std::vector<std::size_t> out;
-  for (std::size_t t = kActionSamples - 1; t + signal::kWindowSamples <= samples; t += 100) out.push_back(t);
-  return out;
+  const std::vector<std::int64_t> starts = align::window_starts(samples, kGridStride);
+  return {starts.begin(), starts.end()};
 }
 
 Eigen::MatrixXf grid_actions(const SectionSignals& s, const std::vector<std::size_t>& grid) {
   Eigen::MatrixXf out(2 * Eigen::Index(kActionSamples), Eigen::Index(grid.size()));
   for (std::size_t j = 0; j < grid.size(); ++j)
     for (std::size_t k = 0; k < kActionSamples; ++k) {
-      const std::size_t i = grid[j] + 1 + k - kActionSamples;
+      const std::size_t i = std::size_t(align::window_action_first(std::int64_t(grid[j]))) + k;
       out(Eigen::Index(k), Eigen::Index(j)) = float(s.force[i]);
       out(Eigen::Index(kActionSamples + k), Eigen::Index(j)) = float(s.speed[i]);
     }

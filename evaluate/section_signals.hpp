@@ -29,11 +29,12 @@ struct MaterialSignals {
 // Throws haptex::Error (bad_input) naming the dataset and the object when a recording lacks a signal.
 std::vector<MaterialSignals> read_section_signals(const split::DatasetSplit& split);
 
-// Offsets (from the section's first sample) of the evaluation windows: t = 9, 109, 209, ... while the
-// window's 1000 target samples fit; each window's action is samples t-9..t. Empty for short sections.
+// Offsets (from the section's first sample) of the evaluation windows: t = 0, 100, 200, ... while the
+// window's 1000 samples fit (the rule of align::window_starts). Empty for short sections.
 std::vector<std::size_t> section_grid(std::size_t samples);
 
-// The 20 action values of each grid window (columns), as the model takes them.
+// The 20 action values of each grid window (columns), as the model takes them: the 1 ms ending at the
+// window's middle (align/window_table.hpp).
 Eigen::MatrixXf grid_actions(const SectionSignals& s, const std::vector<std::size_t>& grid);
 
 // The 100-bin amplitude spectra of signal[t - origin, t - origin + 1000) for each grid offset t (rows).

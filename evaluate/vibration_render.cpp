@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 
+#include "align/window_table.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
@@ -37,7 +38,7 @@ void render_offline(const predict::Model& model, const predict::TextureCode& cod
   predict::Predictor predictor(model);
   float action[predict::kActionValues];
   for (std::size_t m = 0; m < out.targets.frames; ++m) {
-    predict::action_at(trajectory, kFirstActionSample + m * kHop, action);
+    predict::action_at(trajectory, frame_action_sample(m, trajectory.force.size()), action);
     const auto row = std::span(out.spectra).subspan(m * predict::kSpectrumBins, predict::kSpectrumBins);
     if (predictor.predict(code, action, row)) ++out.saturated_frames;
     target_magnitude_frame(std::span<const float>(row), out.targets.row(m));
@@ -50,11 +51,11 @@ void render_online(const predict::Model& model, const predict::TextureCode& code
                    const RenderOptions& options, Rendering& out) {
   VibrationLoop loop(model, code, options.online);
   out.latency_samples = loop.latency_samples();
-  if (options.as_played) out.first_frame_sample += out.latency_samples + 1;
+  if (options.as_played) out.first_frame_sample += align::kActionEnd + out.latency_samples + 1;
   float action[predict::kActionValues];
   std::size_t position = out.first_frame_sample;  // where the next returned sample belongs
   for (std::size_t m = 0; m < out.targets.frames; ++m) {
-    predict::action_at(trajectory, kFirstActionSample + m * kHop, action);
+    predict::action_at(trajectory, frame_action_sample(m, trajectory.force.size()), action);
     const auto start = std::chrono::steady_clock::now();
     const std::span<const double> samples = loop.tick(action);
     out.slowest_frame_seconds =
@@ -81,7 +82,9 @@ Reconstruction parse_reconstruction(const std::string& name) {
                                           "'. Use fgla (offline fast Griffin-Lim) or online (RTISI-LA, as a live loop)");
 }
 
-std::size_t render_frames(std::size_t n) { return n <= kFirstActionSample ? 0 : (n - 1 - kFirstActionSample) / kHop + 1; }
+std::size_t render_frames(std::size_t n) { return n <= kFirstActionSample ? 0 : (n - 1) / kHop + 1; }
+
+std::size_t frame_action_sample(std::size_t m, std::size_t n) { return std::min(m * kHop + align::kActionEnd, n - 1); }
 
 Rendering render_vibration(const predict::Model& model, const predict::TextureCode& code, const predict::Trajectory& trajectory,
                            const RenderOptions& options) {

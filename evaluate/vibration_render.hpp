@@ -2,23 +2,24 @@
 // Rendering a force/speed trajectory into vibration (issue 7): what `haptex render` writes to a WAV
 // for a voice-coil actuator, and what a 1 kHz haptic loop plays.
 //
-// Along a trajectory of N samples at 10 kHz, every 100 samples from t = 9 on (the first sample with
-// a whole 1 ms action behind it), the model predicts the 100-bin amplitude spectrum of the 100 ms
-// starting at t (predict::action_at, Predictor::predict). Frame m, for t_m = 9 + 100 m <= N - 1, is
-// converted to Hann-STFT magnitudes (target_magnitude_frame) and given a phase by
+// Along a trajectory of N samples at 10 kHz, frame m covers the 1000 samples from s_m = 100 m, for
+// s_m <= N - 1; the model predicts its 100-bin amplitude spectrum from the action ending at its middle,
+// s_m + 500 (the model's sample, align/window_table.hpp; held at the trajectory's last sample for the
+// frames whose middle lies past it). Each frame is converted to Hann-STFT magnitudes
+// (target_magnitude_frame) and given a phase by
 //   - fgla: the offline fast Griffin-Lim over all frames at once (evaluate/griffin_lim.hpp), or
 //   - online: RTISI-LA, one frame pushed per 100 samples as a live loop would (VibrationLoop below,
 //     evaluate/online_reconstruction.hpp): nothing is allocated per frame.
 //
 // Timing. The returned signal has one sample per trajectory sample (m/s^2). Frame m starts at
-// sample first_frame_sample + 100 m: by default at t_m itself, where the model places the spectrum
-// it predicts, so samples 0..8 are silent and the first ~900 samples fade in (fewer frames overlap
-// there; evaluate/target_magnitudes.hpp, synthesis_gain). The online method's look-ahead (30 ms by
+// sample first_frame_sample + 100 m: by default at s_m itself, where the model places the spectrum
+// it predicts, so the first ~900 samples fade in (fewer frames overlap there;
+// evaluate/target_magnitudes.hpp, synthesis_gain). The online method's look-ahead (30 ms by
 // default) is compensated the same way: its samples are placed where they belong, not where they
 // came out, so fgla and online renderings line up with each other and with the trajectory. With
 // RenderOptions::as_played the online samples are instead placed where the live loop plays them:
-// the tick at t_m (when the action ending at t_m is known) plays its 100 samples from t_m + 1 on,
-// so everything comes latency_samples + 1 samples later.
+// the tick at s_m + 500 (when the action ending there is known) plays its 100 samples from the next
+// sample on, so everything comes 500 + latency_samples + 1 samples later.
 #include <cstddef>
 #include <span>
 #include <string>
@@ -32,8 +33,10 @@
 
 namespace haptex::evaluate {
 
-// The first trajectory sample with a whole action (10 samples) ending at it.
+// The first trajectory sample with a whole action (10 samples) ending at it: a rendering needs it.
 inline constexpr std::size_t kFirstActionSample = predict::kActionValues / 2 - 1;  // 9
+// The trajectory sample frame m's action ends at: its middle, or the trajectory's last sample.
+std::size_t frame_action_sample(std::size_t m, std::size_t n);
 
 enum class Reconstruction { fgla, online };
 std::string reconstruction_name(Reconstruction reconstruction);  // "fgla", "online"
@@ -51,13 +54,14 @@ struct Rendering {
   std::vector<double> signal;       // m/s^2, one sample per trajectory sample
   std::vector<float> spectra;       // frames x 100 predicted amplitudes (m/s^2, bins 10..1000 Hz), row-major
   MagnitudeFrames targets;          // the predicted frames (x 501 Hann magnitudes), frame m from
-  std::size_t first_frame_sample = kFirstActionSample;  // <- this sample + 100 m of `signal`
+  std::size_t first_frame_sample = 0;  // <- this sample + 100 m of `signal`
   std::size_t latency_samples = 0;  // online: look-ahead x 100 (compensated unless as_played); fgla: 0
   std::size_t saturated_frames = 0; // frames whose action lay outside the training range (saturated)
   double slowest_frame_seconds = 0; // online: the slowest predict + convert + push of one frame
 };
 
-// Number of frames along a trajectory of n samples: one per 100 samples from sample 9 on.
+// Number of frames along a trajectory of n samples: one per 100 samples from sample 0 on (none
+// when n < 10).
 std::size_t render_frames(std::size_t n);
 
 // Throws haptex::Error (bad_input) when the trajectory has fewer than 10 samples or its force and

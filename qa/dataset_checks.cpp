@@ -48,10 +48,12 @@ std::vector<CheckResult> check_dataset(const h5::Group& root) {
   const WindowTable& t = *table;
   std::vector<char> valid(t.size(), 0);
 
-  if (t.action_samples != std::int64_t(kActionSamples) || t.window_samples != std::int64_t(kTargetSamples))
-    windows.fail("/windows", "action_samples " + std::to_string(t.action_samples) + " and window_samples " +
-                                 std::to_string(t.window_samples) + ", expected " + std::to_string(kActionSamples) + " and " +
-                                 std::to_string(kTargetSamples) + " (DESIGN.md section 3)");
+  if (t.action_samples != std::int64_t(kActionSamples) || t.window_samples != std::int64_t(kTargetSamples) ||
+      t.action_end != std::int64_t(kActionEnd))
+    windows.fail("/windows", "action_samples " + std::to_string(t.action_samples) + ", window_samples " +
+                                 std::to_string(t.window_samples) + " and action_end " + std::to_string(t.action_end) + ", expected " +
+                                 std::to_string(kActionSamples) + ", " + std::to_string(kTargetSamples) + " and " +
+                                 std::to_string(kActionEnd) + " (docs/predict.md, \"The model's sample\")");
 
   // Every material of the file has windows, listed once.
   std::set<std::string> listed;
@@ -92,8 +94,8 @@ std::vector<CheckResult> check_dataset(const h5::Group& root) {
                               " does not exist (or has no samples attribute)");
       continue;
     }
-    // Starts t = a - 1, a - 1 + stride, ... while t + window_samples <= samples.
-    const std::int64_t t0 = t.action_samples - 1;
+    // Starts t = 0, stride, ... while t + window_samples <= samples.
+    const std::int64_t t0 = 0;
     const std::int64_t expected = *samples < t0 + t.window_samples ? 0 : (*samples - t0 - t.window_samples) / t.stride + 1;
     if (std::int64_t(run.windows.size()) != expected) {
       windows.fail(where, std::to_string(run.windows.size()) + " windows; a recording of " + std::to_string(*samples) +
@@ -144,7 +146,7 @@ std::vector<CheckResult> check_dataset(const h5::Group& root) {
       const std::size_t start = std::size_t(t.start[w]);
       const float* action = &t.action[w * t.action_width];
       for (std::size_t j = 0; j < a; ++j) {
-        const std::size_t sample = start + 1 - a + j;
+        const std::size_t sample = start + std::size_t(t.action_end) + 1 - a + j;
         if (!(std::abs(action[j] - force.values[sample]) <= force_tol)) {
           findings[k] = "action[" + std::to_string(j) + "] is " + number(action[j]) + ", force_normal_lp[" +
                         std::to_string(sample) + "] is " + number(force.values[sample]);

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "align/align_dataset.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "qa/checkers.hpp"
@@ -14,7 +15,7 @@ namespace {
 
 // The formats qa checks, by root attribute haptex_format.
 const std::vector<std::pair<std::string, FileKind>> kFormats = {
-    {"recordings/1", FileKind::recordings}, {"gelsight/1", FileKind::gelsight}, {"dataset/1", FileKind::dataset}};
+    {"recordings/1", FileKind::recordings}, {"gelsight/1", FileKind::gelsight}, {align::kDatasetFormat, FileKind::dataset}};
 
 bool looks_like_hdf5(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -42,7 +43,7 @@ Report check_hdf5(const QaOptions& options) {
   const auto known = std::find_if(kFormats.begin(), kFormats.end(), [&](const auto& f) { return f.first == format; });
   if (known == kFormats.end())
     throw input_error(options.file, "/@haptex_format", "'" + format + "' is not a format qa checks",
-                      "qa checks recordings/1, gelsight/1 and dataset/1 files and split manifests");
+                      "qa checks recordings/1, gelsight/1 and " + std::string(align::kDatasetFormat) + " files and split manifests");
   Report report{options.file, known->second, options.split, {}};
   if (options.split && report.kind != FileKind::dataset)
     throw input_error(options.file, "", "--split goes with a dataset file, this is a " + format + " file",

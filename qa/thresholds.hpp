@@ -2,14 +2,16 @@
 // Every threshold `haptex qa` applies, with the reason for its value. docs/qa.md quotes them.
 #include <cstddef>
 
+#include "align/window_table.hpp"
+
 namespace haptex::qa {
 
 // ---- recordings (DESIGN.md section 3)
 
 // The only rate the model, the filters and the window table are defined for.
 inline constexpr double kSampleRateHz = 10000.0;
-// One model window: 10 action samples ending at t plus 1000 target samples from t: [t - 9, t + 1000).
-inline constexpr std::size_t kWindowSpan = 1009;
+// One model window: 1000 samples, its action inside them (align/window_table.hpp).
+inline constexpr std::size_t kWindowSpan = align::kWindowSamples;
 // `haptex split` cuts every recording into 25 sections (DESIGN.md section 6); a window must fit in one.
 inline constexpr std::size_t kDefaultSections = 25;
 // A recording shorter than this cannot hold a single window in one of the 25 sections.
@@ -88,9 +90,8 @@ inline constexpr std::size_t kPressesPerMaterial = 5;
 
 // ---- dataset and split
 
-inline constexpr std::size_t kActionSamples = 10;
-inline constexpr std::size_t kTargetSamples = 1000;
-inline constexpr std::size_t kTargetBins = 100;
+using align::kActionSamples, align::kActionEnd, align::kTargetBins;
+inline constexpr std::size_t kTargetSamples = align::kWindowSamples;
 // Cached action and target values are float32 copies of computations on the stored signals: they
 // must agree to 1e-5 of the largest magnitude of the recording's signal (float32 rounding is 6e-8;
 // the margin allows for spectra computed in float32).

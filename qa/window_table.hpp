@@ -17,11 +17,11 @@ struct WindowTable {
   std::vector<float> action;             // W x action_width (empty when unreadable)
   std::vector<float> target;             // W x target_width (empty when unreadable)
   std::size_t action_width = 0, target_width = 0;
-  std::int64_t stride = 0, action_samples = 0, window_samples = 0;
+  std::int64_t stride = 0, action_samples = 0, window_samples = 0, action_end = 0;
 
   std::size_t size() const { return start.size(); }
-  // The first and one-past-last sample window w uses: [t - (action_samples - 1), t + window_samples).
-  std::int64_t first_sample(std::size_t w) const { return start[w] - (action_samples - 1); }
+  // The first and one-past-last sample window w uses: [t, t + window_samples); its action ends at t + action_end.
+  std::int64_t first_sample(std::size_t w) const { return start[w]; }
   std::int64_t end_sample(std::size_t w) const { return start[w] + window_samples; }
 };
 

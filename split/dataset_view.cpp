@@ -55,7 +55,7 @@ std::vector<MaterialWindows> read_dataset_windows(const std::string& path) {
   const h5::File file = h5::File::open(path);
   const h5::Group root = file.root();
   if (!root.has_attr("haptex_format") || root.attr_string("haptex_format") != align::kDatasetFormat)
-    throw input_error(path, "/", "not a dataset file (dataset/1)", "Give the file haptex align wrote");
+    throw input_error(path, "/", "not a dataset file (" + std::string(align::kDatasetFormat) + ")", "Give the file haptex align wrote");
   const h5::Group w = root.open_group("windows");
   const std::vector<std::string> ids = w.open_dataset("materials").read_strings();
   const auto start = column<std::int64_t>(w, "start", 0, std::size_t(-1), path);

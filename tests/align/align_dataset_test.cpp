@@ -55,11 +55,12 @@ TEST(AlignDataset, JoinsMaterialsByNormalisedNameAndListsTheRest) {
   EXPECT_EQ(r.match.only_gelsight[0].name, "Glass");
   EXPECT_EQ(r.recordings, 3u);
   EXPECT_EQ(r.presses, 10u);
-  // 5000 samples: starts 9, 109, ..., 3909 (t + 1000 <= 5000): 40 per recording.
-  EXPECT_EQ(r.windows, 120u);
+  // 5000 samples: starts 0, 100, ..., 4000 (t + 1000 <= 5000): 41 per recording.
+  EXPECT_EQ(r.windows, 123u);
 
   const h5::Group root = h5::File::open(in.dataset).root();
-  EXPECT_EQ(root.attr_string("haptex_format"), "dataset/1");
+  EXPECT_EQ(root.attr_string("haptex_format"), "dataset/2");
+  EXPECT_EQ(root.open_group("windows").attr_int("action_end"), 500);
   EXPECT_EQ(root.attr_string("recordings_sha256").size(), 64u);
   const h5::Group book = root.open_group("materials").open_group("book");
   EXPECT_EQ(book.open_group("recordings").children(), (std::vector<std::string>{"0", "1"}));
@@ -69,7 +70,7 @@ TEST(AlignDataset, JoinsMaterialsByNormalisedNameAndListsTheRest) {
             (std::vector<std::string>{"book", "sandpaper_100"}));
 }
 
-TEST(AlignDataset, WindowsHoldTheActionAndTheSpectrumOfTheNext100Ms) {
+TEST(AlignDataset, WindowsHoldTheSpectrumOf100MsAndTheActionAtItsMiddle) {
   Inputs in;
   make_inputs(in);
   align_dataset(options_for(in));
@@ -80,18 +81,18 @@ TEST(AlignDataset, WindowsHoldTheActionAndTheSpectrumOfTheNext100Ms) {
   const auto recording = w.open_dataset("recording").read<std::int32_t>();
   const auto action = w.open_dataset("action").read<float>();
   const auto target = w.open_dataset("target").read<float>();
-  const std::size_t i = 57;  // book, recording 1, the 18th window
+  const std::size_t i = 58;  // book, recording 1, the 18th window
   ASSERT_EQ(material[i], 0);
   ASSERT_EQ(recording[i], 1);
   const std::int64_t t = start[i];
-  EXPECT_EQ(t, 9 + 17 * 100);
+  EXPECT_EQ(t, 17 * 100);
   const h5::Group rec = root.open_group("materials").open_group("book").open_group("recordings").open_group("1");
   const auto force = rec.open_dataset("force_normal_lp").read<float>();
   const auto speed = rec.open_dataset("speed_lp").read<float>();
   const auto accel = rec.open_dataset("accel").read<float>();
   for (int k = 0; k < 10; ++k) {
-    EXPECT_EQ(action[i * 20 + std::size_t(k)], force[std::size_t(t - 9 + k)]);
-    EXPECT_EQ(action[i * 20 + 10 + std::size_t(k)], speed[std::size_t(t - 9 + k)]);
+    EXPECT_EQ(action[i * 20 + std::size_t(k)], force[std::size_t(t + 491 + k)]);
+    EXPECT_EQ(action[i * 20 + 10 + std::size_t(k)], speed[std::size_t(t + 491 + k)]);
   }
   // The target by the definition, a direct DFT sum: 2 |X_k| / N, k = 1..100, of accel[t, t + 1000).
   for (int k = 1; k <= 100; k += 11) {
@@ -146,12 +147,13 @@ TEST(AlignDataset, RefusesAnotherSampleRateAndSwappedFiles) {
   EXPECT_NE(error_of([&] { align_dataset(swapped); }).find("not recordings/1"), std::string::npos);
 }
 
-TEST(WindowTable, StartsLeaveRoomForActionAndTarget) {
-  EXPECT_EQ(window_starts(1008, 100).size(), 0u);
-  EXPECT_EQ(window_starts(1009, 100), (std::vector<std::int64_t>{9}));
-  EXPECT_EQ(window_starts(1300, 100), (std::vector<std::int64_t>{9, 109, 209}));
-  EXPECT_EQ(window_first_sample(9), 0);
+TEST(WindowTable, StartsLeaveRoomForTheWindowWithItsActionInside) {
+  EXPECT_EQ(window_starts(999, 100).size(), 0u);
+  EXPECT_EQ(window_starts(1000, 100), (std::vector<std::int64_t>{0}));
+  EXPECT_EQ(window_starts(1300, 100), (std::vector<std::int64_t>{0, 100, 200, 300}));
+  EXPECT_EQ(window_first_sample(9), 9);
   EXPECT_EQ(window_end_sample(9), 1009);
+  EXPECT_EQ(window_action_first(9), 500);  // samples 500..509, ending at the middle 509
 }
 
 }  // namespace

@@ -158,13 +158,13 @@ TEST(RenderCli, SpectralConvergenceOrdersTheReconstructions) {
   EXPECT_EQ(fgla["samples"], 20000);
   EXPECT_EQ(online["latency_samples"], 300);
   EXPECT_EQ(live["live"], true);
-  EXPECT_EQ(live["first_frame_sample"], 9 + 300 + 1);
+  EXPECT_EQ(live["first_frame_sample"], 500 + 300 + 1);  // the action at the frame's middle, the look-ahead, one sample
   EXPECT_NEAR(live["spectral_convergence_db"].get<double>(), sc_online, 0.5);
 
   const WavFile o = read_wav_file(dir.file("online.wav")), l = read_wav_file(dir.file("live.wav"));
   const double go = o.full_scale(), gl = l.full_scale();
-  for (std::size_t n = 0; n < 301; ++n) ASSERT_EQ(l.samples[n], 0.0) << n;
-  for (std::size_t n = 301; n < 20000; ++n) ASSERT_NEAR(l.samples[n] * gl, o.samples[n - 301] * go, (go + gl) * 0x1p-22) << n;
+  for (std::size_t n = 0; n < 801; ++n) ASSERT_EQ(l.samples[n], 0.0) << n;
+  for (std::size_t n = 801; n < 20000; ++n) ASSERT_NEAR(l.samples[n] * gl, o.samples[n - 801] * go, (go + gl) * 0x1p-22) << n;
 }
 
 // Standing still, the model sees force and speed below its training range and saturates them:

@@ -4,6 +4,7 @@
 #include <random>
 #include <set>
 
+#include "align/window_table.hpp"
 #include "core/error.hpp"
 #include "core/json/schema.hpp"
 #include "split/coverage.hpp"
@@ -78,7 +79,7 @@ TEST(SplitSearch, SetsAreDisjointCoveredAndSeeded) {
     EXPECT_EQ(s.presses.test.size(), 1u);
     // Sections are 4000 samples here: a window crosses one when its first and last samples differ in t / 4000.
     std::size_t crossing = 0;
-    for (std::int64_t t : materials[0].start) crossing += (t - 9) / 4000 != (t + 999) / 4000;
+    for (std::int64_t t : materials[0].start) crossing += align::window_first_sample(t) / 4000 != (align::window_end_sample(t) - 1) / 4000;
     EXPECT_EQ(s.train_windows + s.val_windows + s.test_windows + s.crossing_windows, materials[0].start.size());
     EXPECT_EQ(s.crossing_windows, crossing);
   }
