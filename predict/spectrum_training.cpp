@@ -16,6 +16,7 @@ namespace {
 // image latents from (seed, epoch, column); validation columns take their material's validation presses in turn.
 struct Batch {
   Eigen::MatrixXf latents, actions, targets;
+  Eigen::VectorXf weights;
 };
 
 Batch gather(const SpectrumProblem& p, const std::size_t* columns, std::size_t n, bool training, std::uint64_t draw_seed) {
@@ -24,8 +25,10 @@ Batch gather(const SpectrumProblem& p, const std::size_t* columns, std::size_t n
   b.latents.resize(latent, Eigen::Index(n));
   b.actions.resize(p.actions->rows(), Eigen::Index(n));
   b.targets.resize(p.targets->rows(), Eigen::Index(n));
+  b.weights.resize(Eigen::Index(n));
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t c = columns[i];
+    b.weights[Eigen::Index(i)] = p.weight.empty() ? 1.0f : p.weight[c];
     b.actions.col(Eigen::Index(i)) = p.actions->col(Eigen::Index(c));
     b.targets.col(Eigen::Index(i)) = p.targets->col(Eigen::Index(c));
     if (!latent) continue;
@@ -45,25 +48,48 @@ double batch_gradient(const SpectrumNet& net, const SpectrumProblem& p, const Ba
   const Eigen::MatrixXf& out = spectrum_forward(net, b.latents, b.actions, trace);
   const Eigen::MatrixXf error = p.target_scale.asDiagonal() * out - b.targets;
   const float unit = loss_unit(p);
-  Eigen::MatrixXf d = p.target_scale.asDiagonal() * error * (2.0f * scale / unit);
+  Eigen::MatrixXf d = p.target_scale.asDiagonal() * error * b.weights.asDiagonal() * (2.0f * scale / unit);
   spectrum_backward(net, trace, std::move(d), g);
   return error.colwise().norm().sum();  // reported in the validation's unit, not the loss's
 }
 
 }  // namespace
 
-double mean_distance(const SpectrumNet& net, const SpectrumProblem& p, const std::vector<std::size_t>& columns, bool training,
-                     unsigned threads) {
+Distances mean_distance(const SpectrumNet& net, const SpectrumProblem& p, const std::vector<std::size_t>& columns, bool training,
+                        unsigned threads) {
   const std::size_t chunks = (columns.size() + kChunkColumns - 1) / kChunkColumns;
-  std::vector<double> sums(chunks, 0.0);
+  std::vector<Distances> sums(chunks);
   parallel_for(chunks, [&](std::size_t c) {
     const std::size_t begin = c * kChunkColumns, n = std::min(columns.size(), begin + kChunkColumns) - begin;
     const Batch b = gather(p, columns.data() + begin, n, training, 0);
     SpectrumTrace trace;
     const Eigen::MatrixXf predicted = p.target_scale.asDiagonal() * spectrum_forward(net, b.latents, b.actions, trace);
-    sums[c] = (predicted - b.targets).colwise().norm().sum();
+    const Eigen::VectorXf distance = (predicted - b.targets).colwise().norm().transpose();
+    sums[c] = {distance.sum(), distance.dot(b.weights.cwiseSqrt())};
   }, threads);
-  return std::accumulate(sums.begin(), sums.end(), 0.0) / double(std::max<std::size_t>(1, columns.size()));
+  Distances total;
+  for (const Distances& d : sums) total.plain += d.plain, total.weighted += d.weighted;
+  const double n = double(std::max<std::size_t>(1, columns.size()));
+  return {total.plain / n, total.weighted / n};
+}
+
+std::vector<float> material_balance_weights(const Eigen::MatrixXf& targets, const std::vector<int>& material,
+                                            const std::vector<std::size_t>& train, std::size_t materials) {
+  std::vector<double> power(materials, 0.0), count(materials, 0.0);
+  for (std::size_t c : train) {
+    const auto m = std::size_t(material[c]);
+    power[m] += targets.col(Eigen::Index(c)).squaredNorm(), count[m] += 1;
+  }
+  std::vector<double> inverse(materials, 0.0);
+  double mean = 0;
+  for (std::size_t m = 0; m < materials; ++m) {
+    if (count[m] > 0) inverse[m] = count[m] / std::max(power[m], 1e-30);
+    mean += inverse[m] * count[m] / double(std::max<std::size_t>(1, train.size()));
+  }
+  std::vector<float> weight(material.size(), 1.0f);
+  for (std::size_t c = 0; c < material.size(); ++c)
+    if (material[c] >= 0 && mean > 0) weight[c] = float(inverse[std::size_t(material[c])] / mean);
+  return weight;
 }
 
 SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& o, const SpectrumSchedule& s,
@@ -98,10 +124,10 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& 
       adam_action.step(net.action, total.action);
       adam_predictor.step(net.predictor, total.predictor);
     }
-    const double val = mean_distance(net, p, p.val, false, s.threads);
-    EpochReport r{s.stage, epoch, s.max_epochs, train_loss / double(std::max<std::size_t>(1, order.size())), val, -1,
-                  stopping.improved(val), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
-    if (r.best) best = net;
+    const Distances val = mean_distance(net, p, p.val, false, s.threads);
+    EpochReport r{s.stage, epoch, s.max_epochs, train_loss / double(std::max<std::size_t>(1, order.size())), val.plain, -1,
+                  stopping.improved(val.weighted), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+    if (r.best) best = net, result.val_distance = val.plain;
     if (stopping.plateau())
       for (Adam* adam : {&adam_action, &adam_predictor}) adam->set_learning_rate(adam->learning_rate() / 2);
     result.epochs = epoch;
@@ -109,8 +135,7 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& 
   }
   result.net = std::move(best);
   result.best_epoch = stopping.best_epoch();
-  result.val_distance = stopping.best();
-  result.train_distance = mean_distance(result.net, p, p.train, true, s.threads);
+  result.train_distance = mean_distance(result.net, p, p.train, true, s.threads).plain;
   return result;
 }
 

@@ -22,6 +22,8 @@ struct SpectrumProblem {
   const std::vector<int>* material = nullptr;
   const std::vector<Eigen::MatrixXf>* train_latents = nullptr;
   const std::vector<Eigen::MatrixXf>* val_latents = nullptr;
+  // Per column, how much its squared error counts (empty: 1 each); see material_balance_weights.
+  std::vector<float> weight = {};
   int latent_size() const { return train_latents ? int(train_latents->front().rows()) : 0; }
 };
 
@@ -41,8 +43,19 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& problem, const TrainOpt
                                   const SpectrumSchedule& schedule, const EpochCallback& progress);
 
 // Mean Euclidean distance between the predicted and target spectra of `columns`, with training
-// image latents (training) or the validation presses' latents.
-double mean_distance(const SpectrumNet& net, const SpectrumProblem& problem, const std::vector<std::size_t>& columns,
-                     bool training, unsigned threads);
+// image latents (training) or the validation presses' latents: as it is (m/s^2), and with each
+// column's distance times the square root of its weight (what early stopping watches).
+struct Distances {
+  double plain = 0, weighted = 0;
+};
+Distances mean_distance(const SpectrumNet& net, const SpectrumProblem& problem, const std::vector<std::size_t>& columns,
+                        bool training, unsigned threads);
+
+// Weights that make every material count alike in the unified model's loss (TrainOptions::balance_materials):
+// a window's squared error is divided by its material's mean squared target norm over the training
+// windows, since the noise a perfect model is left with grows with the vibration level; scaled so that
+// the training columns' weights average 1. material: each column's material (-1: none).
+std::vector<float> material_balance_weights(const Eigen::MatrixXf& targets, const std::vector<int>& material,
+                                            const std::vector<std::size_t>& train, std::size_t materials);
 
 }  // namespace haptex::predict

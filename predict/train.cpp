@@ -63,6 +63,7 @@ void train_unified(const TrainingData& data, const TrainOptions& o, const Eigen:
   }
   SpectrumProblem p{&actions, &data.target, model.normalisation.target_scale, all_rows(data, split::kTrain),
                     all_rows(data, split::kVal), &material, &train_latents, &val_latents};
+  if (o.balance_materials) p.weight = material_balance_weights(data.target, material, p.train, data.materials.size());
   const SpectrumResult r = train_spectrum_net(p, o, {o.batch, o.max_epochs, o.patience, "spectrum", o.threads}, progress);
   model.nets = {r.net};
   model.metrics["spectrum"] = result_json(r);

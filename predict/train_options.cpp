@@ -20,6 +20,7 @@ nlohmann::json TrainOptions::to_json() const {
           {"texture_max_epochs", texture_max_epochs},
           {"texture_patience", texture_patience},
           {"learning_rate", learning_rate},
+          {"balance_materials", balance_materials},
           {"seed", seed}};
 }
 

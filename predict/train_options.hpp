@@ -22,6 +22,9 @@ struct TrainOptions {
   int per_material_batch = 64, per_material_max_epochs = 150, per_material_patience = 15;
   int texture_batch = 64, texture_max_epochs = 80, texture_patience = 10;
   float learning_rate = 1e-3f;
+  // Unified model: every material's windows weigh alike in the loss, whatever its vibration level
+  // (material_balance_weights in predict/spectrum_training.hpp); off, loud materials rule it.
+  bool balance_materials = true;
   std::uint64_t seed = 0;
   unsigned threads = 0;  // 0: every core this process may use
 

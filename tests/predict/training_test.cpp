@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "predict/predictor.hpp"
+#include "predict/spectrum_training.hpp"
 #include "tests/predict/synthetic_problem.hpp"
 
 namespace haptex::predict {
@@ -93,6 +94,26 @@ TEST(Training, SameSeedGivesIdenticalWeightsOnAnyThreadCount) {
   o.seed = 4;
   const Model other = train_model(data, o);
   EXPECT_FALSE(same_weights(one.nets[0].predictor, other.nets[0].predictor));
+}
+
+// Balancing: a window's weight is inverse to its material's mean squared target norm over the
+// training windows, and the training windows' weights average 1. A material 10 times louder weighs
+// 100 times less; validation windows take their material's weight; a column of no material weighs 1.
+TEST(Training, BalanceWeightsMakeEveryMaterialCountAlike) {
+  Eigen::MatrixXf targets(2, 6);
+  targets << 1, 1, 10, 10, 1, 7,
+             0, 0, 0, 0, 0, 7;
+  const std::vector<int> material{0, 0, 1, 1, 0, -1};
+  const std::vector<std::size_t> train{0, 1, 2, 3};
+  const std::vector<float> w = material_balance_weights(targets, material, train, 2);
+  ASSERT_EQ(w.size(), 6u);
+  EXPECT_NEAR(w[0] / w[2], 100.0, 1e-3);
+  EXPECT_FLOAT_EQ(w[0], w[1]);
+  EXPECT_FLOAT_EQ(w[4], w[0]);  // a validation window of material 0
+  EXPECT_FLOAT_EQ(w[5], 1.0f);
+  EXPECT_NEAR((w[0] + w[1] + w[2] + w[3]) / 4, 1.0, 1e-6);
+  // Each material's weighted squared targets are then alike.
+  EXPECT_NEAR(w[0] * 1.0, w[2] * 100.0, 1e-4);
 }
 
 TEST(Training, EarlyStoppingKeepsTheBestEpoch) {

@@ -1,0 +1,129 @@
+#include "evaluate/shaped_noise.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/signal/spectrum.hpp"
+#include "tests/support/allocation_counter.hpp"
+
+namespace haptex::evaluate {
+namespace {
+
+// A coloured texture spectrum (m/s^2 per bin, 10..1000 Hz): a floor with a resonance at 300 Hz.
+std::vector<double> texture(double scale) {
+  std::vector<double> a(signal::kSpectrumBins);
+  for (std::size_t k = 0; k < a.size(); ++k) a[k] = scale * (0.01 + 0.05 * std::exp(-std::pow((double(k) - 29.0) / 8.0, 2)));
+  return a;
+}
+
+MagnitudeFrames frames_of(const std::vector<double>& amplitudes, std::size_t frames) {
+  std::vector<double> all;
+  for (std::size_t m = 0; m < frames; ++m) all.insert(all.end(), amplitudes.begin(), amplitudes.end());
+  return target_magnitudes(all);
+}
+
+struct WindowStatistics {
+  std::vector<double> mean, variation;  // per bin: mean amplitude, coefficient of variation
+};
+
+// The 100-bin rectangular-window amplitudes of the windows [100 m, 100 m + 1000), first <= m < last.
+WindowStatistics statistics(const std::vector<double>& x, std::size_t first, std::size_t last) {
+  WindowStatistics s{std::vector<double>(signal::kSpectrumBins, 0.0), std::vector<double>(signal::kSpectrumBins, 0.0)};
+  std::vector<double> square(signal::kSpectrumBins, 0.0), a(signal::kSpectrumBins);
+  for (std::size_t m = first; m < last; ++m) {
+    signal::amplitude_spectrum(std::span(x).subspan(m * 100, signal::kWindowSamples), a);
+    for (std::size_t k = 0; k < a.size(); ++k) s.mean[k] += a[k], square[k] += a[k] * a[k];
+  }
+  const double n = double(last - first);
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    s.mean[k] /= n;
+    s.variation[k] = std::sqrt(std::max(0.0, square[k] / n - s.mean[k] * s.mean[k])) / s.mean[k];
+  }
+  return s;
+}
+
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+// Each window's spectrum scatters around the prediction as a noise-like recording's does: mean
+// amplitude the prediction (Rayleigh mean), coefficient of variation sqrt(4/pi - 1) = 0.52 per bin.
+// 20 s of one spectrum: the mean of ~2000 overlapping windows (~200 independent) is good to ~4 %.
+TEST(EvaluateShapedNoise, WindowsScatterAroundThePredictionLikeARecording) {
+  const std::vector<double> a = texture(1.0);
+  const std::size_t frames = 2000;
+  const std::vector<double> x = shaped_noise(frames_of(a, frames), covered_samples(frames), {7});
+  const WindowStatistics s = statistics(x, 10, frames - 10);
+  double predicted = 0, rendered = 0, worst = 0;
+  std::size_t worst_bin = 0;
+  // Bins 10 Hz and 1000 Hz sit next to DC and to the bins above 1000 Hz, which the frames leave empty.
+  for (std::size_t k = 1; k + 1 < a.size(); ++k) {
+    predicted += a[k], rendered += s.mean[k];
+    if (std::abs(s.mean[k] / a[k] - 1) > worst) worst = std::abs(s.mean[k] / a[k] - 1), worst_bin = k;
+  }
+  const double variation = median(s.variation);
+  std::printf("[ figures  ] summed amplitude %.4f of the prediction; worst bin %zu %.1f %% off; median variation %.3f\n",
+              rendered / predicted, worst_bin, 100 * worst, variation);
+  EXPECT_NEAR(rendered / predicted, 1.0, 0.03);
+  EXPECT_LT(worst, 0.12);
+  EXPECT_NEAR(variation, std::sqrt(4 / std::numbers::pi - 1), 0.04);
+}
+
+// A louder second half is louder by as much, and the change is placed where the frames change.
+TEST(EvaluateShapedNoise, FollowsTheFramesLevel) {
+  const std::vector<double> quiet = texture(1.0), loud = texture(4.0);
+  std::vector<double> all;
+  for (std::size_t m = 0; m < 600; ++m) all.insert(all.end(), (m < 300 ? quiet : loud).begin(), (m < 300 ? quiet : loud).end());
+  const std::vector<double> x = shaped_noise(target_magnitudes(all), covered_samples(600), {3});
+  const WindowStatistics before = statistics(x, 10, 280), after = statistics(x, 310, 590);
+  double ratio = 0;
+  for (std::size_t k = 1; k < quiet.size(); ++k) ratio += after.mean[k] / before.mean[k] / double(quiet.size() - 1);
+  EXPECT_NEAR(ratio, 4.0, 0.2);
+}
+
+TEST(EvaluateShapedNoise, StreamsWithoutLatencyOrAllocation) {
+  const MagnitudeFrames s = frames_of(texture(1.0), 50);
+  ShapedNoise noise({11});
+  std::vector<double> streamed;
+  streamed.reserve(covered_samples(s.frames));
+  {
+    const test::CountAllocations counter;
+    for (std::size_t m = 0; m < s.frames; ++m) {
+      const auto block = noise.push(s.row(m));
+      ASSERT_EQ(block.size(), 100u);  // frame m completes samples [100 m, 100 m + 100) at once
+      streamed.insert(streamed.end(), block.begin(), block.end());
+    }
+    const auto tail = noise.flush();
+    EXPECT_EQ(tail.size(), 900u);
+    streamed.insert(streamed.end(), tail.begin(), tail.end());
+    EXPECT_EQ(counter.count(), 0u);
+  }
+  EXPECT_TRUE(noise.flush().empty());
+  const std::vector<double> whole = shaped_noise(s, covered_samples(s.frames), {11});
+  for (std::size_t n = 0; n < streamed.size(); ++n) ASSERT_EQ(streamed[n], whole[n]) << n;
+  EXPECT_NE(shaped_noise(s, 5000, {12}), shaped_noise(s, 5000, {11}));
+  EXPECT_EQ(shaped_noise(s, 5000, {11}), shaped_noise(s, 5000, {11}));
+  EXPECT_EQ(shaped_noise(s, 10000, {11}).size(), 10000u);
+}
+
+TEST(EvaluateShapedNoise, SilentFramesGiveSilenceAndBadFramesAreRefused) {
+  for (double v : shaped_noise(frames_of(std::vector<double>(signal::kSpectrumBins, 0.0), 20), 2900)) ASSERT_EQ(v, 0.0);
+  ShapedNoise noise;
+  EXPECT_THROW(noise.push(std::vector<double>(kReconstructionBins - 1, 1.0)), Error);
+  std::vector<double> frame(kReconstructionBins, 1.0);
+  frame[3] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(noise.push(frame), Error);
+  frame[3] = -2.0;
+  EXPECT_THROW(noise.push(frame), Error);
+}
+
+}  // namespace
+}  // namespace haptex::evaluate
