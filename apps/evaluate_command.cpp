@@ -1,5 +1,5 @@
 // haptex evaluate dataset.h5 --split split.json --model model.h5 [--model ...] [--baseline ar-refit|hatt-published]
-//                [--hatt-models DIR] [--reconstruct fgla|online|none] [--repeats 10] -o report/
+//                [--hatt-models DIR] [--reconstruct fgla|online|noise|none] [--repeats 10] -o report/
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -37,7 +37,7 @@ class EvaluateCommand : public Command {
         ->transform(CLI::CheckedTransformer(baselines, CLI::ignore_case))->capture_default_str();
     app.add_option("--hatt-models", options_.hatt_models, "Folder of the HaTT model XMLs for hatt-published")->check(CLI::ExistingDirectory);
     const std::map<std::string, evaluate::Reconstruction> methods{
-        {"fgla", evaluate::Reconstruction::fgla}, {"online", evaluate::Reconstruction::online}, {"none", evaluate::Reconstruction::none}};
+        {"fgla", evaluate::Reconstruction::fgla}, {"online", evaluate::Reconstruction::online}, {"noise", evaluate::Reconstruction::noise}, {"none", evaluate::Reconstruction::none}};
     app.add_option("--reconstruct", options_.reconstruct, "Phase reconstruction of the stitched-signal experiment")
         ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case))->capture_default_str();
     app.add_option("--repeats", options_.repeats, "Baseline renderings (seeds) per test section")->capture_default_str()->check(CLI::Range(2, 1000));

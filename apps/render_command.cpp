@@ -1,5 +1,5 @@
 // haptex render model.h5 (--image IMG [--reference REF] | --material ID) --trajectory traj.csv -o out.wav [--csv out.csv]
-//               [--reconstruct fgla|online] [--iterations N] [--look-ahead F] [--live] [--full-scale A] [--seed S] [--force]
+//               [--reconstruct fgla|online|noise] [--iterations N] [--look-ahead F] [--live] [--full-scale A] [--seed S] [--force]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -34,16 +34,18 @@ class RenderCommand : public Command {
         ->required()->check(CLI::ExistingFile);
     app.add_option("-o,--output", output_, "WAV file to write (mono, 10 kHz, 24-bit PCM)")->required();
     app.add_option("--csv", csv_, "Also write the vibration as CSV: time_s, force_n, speed_mm_s, accel_m_s2");
-    auto* reconstruct = app.add_option("--reconstruct", reconstruction_, "Phase reconstruction: fgla (offline fast Griffin-Lim) or online (RTISI-LA)")
-        ->capture_default_str()->check(CLI::IsMember({"fgla", "online"}));
+    reconstruct_option_ = app.add_option("--reconstruct", reconstruction_,
+                                       "Phase reconstruction: fgla (offline fast Griffin-Lim), online (RTISI-LA) or noise "
+                                       "(white noise shaped to each frame: no phase, the surface's randomness)")
+        ->capture_default_str()->check(CLI::IsMember({"fgla", "online", "noise"}));
     app.add_option("--iterations", iterations_, "fgla: iterations (default 100; 0 keeps the random initial phase); online: passes per frame (default 4)")
         ->check(CLI::Range(0, 100000));
     app.add_option("--look-ahead", look_ahead_, "online: frames of look-ahead (latency 10 ms each)")->capture_default_str()->check(CLI::Range(0, 100));
-    app.add_flag("--live", live_, "Render as a live haptic loop plays it: online, one frame per 10 ms, output delayed by its latency")
-        ->excludes(reconstruct);
+    app.add_flag("--live", live_, "Render as a live haptic loop plays it: one frame per 10 ms (online, or noise with "
+                                  "--reconstruct noise), output delayed as played");
     app.add_option("--full-scale", full_scale_, "m/s^2 at WAV full scale (default: the peak, rounded up to 3 digits)")
         ->check(CLI::PositiveNumber);
-    app.add_option("--seed", seed_, "fgla: seed of the random initial phase")->capture_default_str();
+    app.add_option("--seed", seed_, "fgla: seed of the random initial phase; noise: seed of the noise")->capture_default_str();
     app.add_flag("--force", force_, "Replace the output files if they exist");
   }
 
@@ -99,9 +101,11 @@ class RenderCommand : public Command {
 
   evaluate::RenderOptions render_options() const {
     evaluate::RenderOptions o;
-    o.reconstruction = evaluate::parse_reconstruction(live_ ? "online" : reconstruction_);
+    if (live_ && reconstruction_ == "fgla" && reconstruct_option_->count() > 0)
+      throw Error(Error::Kind::bad_input, "render: --live plays frame by frame: use --reconstruct online or noise, not fgla");
+    o.reconstruction = evaluate::parse_reconstruction(live_ && reconstruction_ == "fgla" ? "online" : reconstruction_);
     o.as_played = live_;
-    o.fgla.seed = seed_;
+    o.fgla.seed = o.noise.seed = seed_;
     o.online.look_ahead = std::size_t(look_ahead_);
     if (iterations_ >= 0) o.fgla.iterations = o.online.iterations = std::size_t(iterations_);
     if (o.reconstruction == evaluate::Reconstruction::online && iterations_ == 0)
@@ -111,6 +115,8 @@ class RenderCommand : public Command {
 
   std::string method(const evaluate::RenderOptions& o) const {
     if (o.reconstruction == evaluate::Reconstruction::fgla) return "fgla " + std::to_string(o.fgla.iterations) + " iterations";
+    if (o.reconstruction == evaluate::Reconstruction::noise)
+      return "shaped noise, seed " + std::to_string(o.noise.seed) + (o.as_played ? " (live: delayed as played)" : "");
     return "online look-ahead " + std::to_string(o.online.look_ahead * 10) + " ms " + std::to_string(o.online.iterations) + " passes" +
            (o.as_played ? " (live: delayed as played)" : " (latency compensated)");
   }
@@ -135,7 +141,7 @@ class RenderCommand : public Command {
                 << " frames had force or speed outside the training range; the model saturated them to the nearest trained value\n";
     if (texture_.reference.empty() && !texture_.image.empty())
       std::cerr << "note: no --reference: the image's own blur stands in for the no-contact frame\n";
-    if (r.options.reconstruction == evaluate::Reconstruction::online)
+    if (r.options.reconstruction != evaluate::Reconstruction::fgla)
       std::cerr << format("note: slowest frame (predict + reconstruct) %.3f ms of the 10 ms budget; latency %zu ms\n",
                           r.rendering.slowest_frame_seconds * 1e3, r.rendering.latency_samples / 10);
   }
@@ -160,7 +166,8 @@ class RenderCommand : public Command {
     if (r.options.reconstruction == evaluate::Reconstruction::fgla) {
       out["iterations"] = r.options.fgla.iterations;
     } else {
-      out["passes_per_frame"] = r.options.online.iterations;
+      if (r.options.reconstruction == evaluate::Reconstruction::online) out["passes_per_frame"] = r.options.online.iterations;
+      else out["seed"] = r.options.noise.seed;
       out["latency_samples"] = r.rendering.latency_samples;
       out["slowest_frame_seconds"] = r.rendering.slowest_frame_seconds;
     }
@@ -177,6 +184,7 @@ class RenderCommand : public Command {
   }
 
   std::string model_path_, trajectory_path_, output_, csv_, reconstruction_ = "fgla";
+  CLI::Option* reconstruct_option_ = nullptr;
   predict::TextureChoice texture_;
   int iterations_ = -1, look_ahead_ = 3;
   bool live_ = false, force_ = false;

@@ -22,16 +22,6 @@ std::size_t check_iterations(std::size_t iterations) {
   return iterations;
 }
 
-void check_frame(std::span<const double> magnitudes) {
-  if (magnitudes.size() != kReconstructionBins)
-    throw failure("online reconstruction: a frame has " + std::to_string(magnitudes.size()) + " magnitudes, expected " +
-                  std::to_string(kReconstructionBins));
-  for (std::size_t k = 0; k < magnitudes.size(); ++k)
-    if (!(magnitudes[k] >= 0.0 && std::isfinite(magnitudes[k])))
-      throw failure("online reconstruction: magnitude " + std::to_string(k) + " is " + std::to_string(magnitudes[k]) +
-                    "; magnitudes must be finite and non-negative");
-}
-
 // The newest frame has no successors yet: its overlay is the earlier frames' tails, complete at
 // its start and empty towards its end. PhaseRet weights it not by the Hann window but by the summed
 // windows of the frames still to come (specg1; specg2 adds the frame's own window once it has an
@@ -70,7 +60,7 @@ void OnlineReconstruction::reset() {
 }
 
 std::span<const double> OnlineReconstruction::push(std::span<const double> magnitudes) {
-  check_frame(magnitudes);
+  check_magnitude_frame(magnitudes, "online reconstruction");
   shift_in(magnitudes);
   ++received_;
   refine();

@@ -38,7 +38,7 @@ std::optional<PaperFigure> paper_figure(std::string_view id) {
   if (base == "per-material") return PaperFigure{93, 75, std::nullopt, 65, std::nullopt};
   if (base == "unified-new-actions") return PaperFigure{93, 82, std::nullopt, 78, std::nullopt};
   if (base == "unified-new-presses") return PaperFigure{93, 77, std::nullopt, 71, std::nullopt};
-  if (base == "stitched-fgla" || base == "stitched-online") return PaperFigure{93, std::nullopt, 86.02, 52, 2};
+  if (base == "stitched-fgla" || base == "stitched-online" || base == "stitched-noise") return PaperFigure{93, std::nullopt, 86.02, 52, 2};
   return std::nullopt;
 }
 

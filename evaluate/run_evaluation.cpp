@@ -22,6 +22,7 @@
 #include "evaluate/online_reconstruction.hpp"
 #include "evaluate/oracle.hpp"
 #include "evaluate/section_signals.hpp"
+#include "evaluate/shaped_noise.hpp"
 #include "evaluate/spectral_distance.hpp"
 #include "evaluate/window_sets.hpp"
 #include "predict/predictor.hpp"
@@ -149,7 +150,8 @@ Scores stitched_scores(const std::vector<std::vector<double>>& spectra, const st
   const MagnitudeFrames frames = frames_of(spectra);
   const std::size_t length = covered_samples(frames.frames);
   const double start = thread_seconds();
-  std::vector<double> x = key == "online" ? online_signal(frames, length)
+  std::vector<double> x = key == "online"  ? online_signal(frames, length)
+                         : key == "noise" ? shaped_noise(frames, length, {seed})
                                           : griffin_lim(frames, length, {std::stoul(key.substr(5)), 0.99, InitialPhase::random, seed});
   const double seconds = thread_seconds() - start + predict_seconds;
   std::vector<std::size_t> local;
@@ -338,8 +340,7 @@ std::vector<Codes> unified_codes(const ModelInput& input, const split::DatasetSp
   for (const split::MaterialSets& m : split.materials) {
     Codes c{p.material_code(input.model.material_index(m.id)), {}};
     for (int press : m.presses[split::kTest])
-      for (const auto& d : predict::press_descriptors(split.dataset_path, m.id, press, false, input.model.descriptor))
-        c.test_presses.push_back(p.encode_descriptor(d));
+      c.test_presses.push_back(p.encode_descriptors(predict::press_descriptors(split.dataset_path, m.id, press, true, input.model.descriptor)));
     out.push_back(std::move(c));
   }
   return out;
@@ -421,9 +422,11 @@ std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& mode
   }
   if (c.stitched_model >= 0 && !c.stitched_key.empty()) {
     const std::string& key = c.stitched_key;
-    out.push_back({key == "online" ? "stitched-online" : "stitched-fgla",
+    out.push_back({key == "online" ? "stitched-online" : key == "noise" ? "stitched-noise" : "stitched-fgla",
                    "Stitched time signal: the unified model's spectra on new actions and a new press, turned into vibration by " +
-                       (key == "online" ? std::string("the online method (RTISI-LA)") : "fast Griffin-Lim, " + key.substr(5) + " iterations"),
+                       (key == "online"  ? std::string("the online method (RTISI-LA)")
+                        : key == "noise" ? std::string("white noise shaped to each frame (no phase reconstruction)")
+                                         : "fast Griffin-Lim, " + key.substr(5) + " iterations"),
                    key, "unified model " + models[std::size_t(c.stitched_model)].label, ""});
   }
   return out;
@@ -433,6 +436,7 @@ std::string method_setting(const std::string& key, const std::vector<ModelInput>
   const auto colon = key.find(':');
   if (key.rfind("fgla:", 0) == 0) return key.substr(5) + " iterations";
   if (key == "online") return "look-ahead 3 frames";
+  if (key == "noise") return "frame by frame, no look-ahead";
   const ModelInput& m = models[std::stoul(key.substr(colon + 1))];
   return m.label + ", " + std::to_string(m.model.config.value("predictor_hidden", 0)) + " hidden";
 }
@@ -440,6 +444,7 @@ std::string method_setting(const std::string& key, const std::vector<ModelInput>
 std::string method_name(const std::string& key) {
   if (key.rfind("fgla:", 0) == 0) return "unified + FGLA";
   if (key == "online") return "unified + online (RTISI-LA)";
+  if (key == "noise") return "unified + shaped noise";
   return key.substr(0, key.find(':'));
 }
 
@@ -518,7 +523,10 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   e.split = {split.manifest_path, split.manifest_sha256};
   for (const ModelInput& input : models) e.models.push_back({input.path, sha256_file(input.path)});
   e.baseline = o.baseline == Baseline::ar_refit ? "ar-refit" : "hatt-published";
-  e.reconstruct = o.reconstruct == Reconstruction::fgla ? "fgla" : o.reconstruct == Reconstruction::online ? "online" : "none";
+  e.reconstruct = o.reconstruct == Reconstruction::fgla     ? "fgla"
+                  : o.reconstruct == Reconstruction::online ? "online"
+                  : o.reconstruct == Reconstruction::noise  ? "noise"
+                                                            : "none";
   e.repeats = o.repeats;
 
   std::vector<std::vector<Codes>> codes(models.size());
@@ -537,8 +545,10 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   if (stitched >= 0 && o.reconstruct != Reconstruction::none) {
     for (std::size_t n : o.fgla_iterations) c.stitched_keys.push_back("fgla:" + std::to_string(n));
     c.stitched_keys.push_back("online");
-    c.stitched_key = o.reconstruct == Reconstruction::online
-                         ? "online"
+    c.stitched_keys.push_back("noise");
+    c.stitched_key = o.reconstruct == Reconstruction::online ? "online"
+                     : o.reconstruct == Reconstruction::noise
+                         ? "noise"
                          : "fgla:" + std::to_string(*std::max_element(o.fgla_iterations.begin(), o.fgla_iterations.end()));
   }
   if (stitched < 0) e.notes.push_back("no unified model: the new-press and stitched-signal experiments and the latent map are left out");

@@ -14,7 +14,7 @@
 namespace haptex::evaluate {
 
 enum class Baseline { ar_refit, hatt_published };
-enum class Reconstruction { fgla, online, none };
+enum class Reconstruction { fgla, online, noise, none };
 
 struct EvaluationOptions {
   Baseline baseline = Baseline::ar_refit;

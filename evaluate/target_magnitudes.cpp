@@ -49,6 +49,16 @@ std::size_t covered_samples(std::size_t frames) {
   return frames == 0 ? 0 : (frames - 1) * kReconstructionHop + kWindowSamples;
 }
 
+void check_magnitude_frame(std::span<const double> magnitudes, const char* who) {
+  if (magnitudes.size() != kReconstructionBins)
+    throw failure(std::string(who) + ": a frame has " + std::to_string(magnitudes.size()) + " magnitudes, expected " +
+                  std::to_string(kReconstructionBins));
+  for (std::size_t k = 0; k < magnitudes.size(); ++k)
+    if (!(magnitudes[k] >= 0.0 && std::isfinite(magnitudes[k])))
+      throw failure(std::string(who) + ": magnitude " + std::to_string(k) + " is " + std::to_string(magnitudes[k]) +
+                    "; magnitudes must be finite and non-negative");
+}
+
 double synthesis_gain(std::span<const double> window, std::size_t n, std::size_t frames) {
   // Frames m with m * hop <= n < m * hop + window, and m < frames.
   const std::size_t last = std::min(n / kReconstructionHop, frames == 0 ? 0 : frames - 1);

@@ -51,6 +51,9 @@ double hann_rms_gain();
 void target_magnitude_frame(std::span<const double> amplitudes, std::span<double> out);
 void target_magnitude_frame(std::span<const float> amplitudes, std::span<double> out);
 
+// Throws haptex::Error, naming `who`, unless `magnitudes` is one frame of 501 finite, non-negative values.
+void check_magnitude_frame(std::span<const double> magnitudes, const char* who);
+
 // frames x 100 amplitudes (row-major) -> frames x 501 magnitudes. Throws haptex::Error when the
 // size is not a multiple of 100.
 MagnitudeFrames target_magnitudes(std::span<const double> amplitudes);

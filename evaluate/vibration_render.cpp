@@ -49,7 +49,8 @@ void render_offline(const predict::Model& model, const predict::TextureCode& cod
 
 void render_online(const predict::Model& model, const predict::TextureCode& code, const predict::Trajectory& trajectory,
                    const RenderOptions& options, Rendering& out) {
-  VibrationLoop loop(model, code, options.online);
+  VibrationLoop loop = options.reconstruction == Reconstruction::noise ? VibrationLoop(model, code, options.noise)
+                                                                       : VibrationLoop(model, code, options.online);
   out.latency_samples = loop.latency_samples();
   if (options.as_played) out.first_frame_sample += align::kActionEnd + out.latency_samples + 1;
   float action[predict::kActionValues];
@@ -72,14 +73,16 @@ void render_online(const predict::Model& model, const predict::TextureCode& code
 }  // namespace
 
 std::string reconstruction_name(Reconstruction reconstruction) {
-  return reconstruction == Reconstruction::fgla ? "fgla" : "online";
+  return reconstruction == Reconstruction::fgla ? "fgla" : reconstruction == Reconstruction::online ? "online" : "noise";
 }
 
 Reconstruction parse_reconstruction(const std::string& name) {
   if (name == "fgla") return Reconstruction::fgla;
   if (name == "online") return Reconstruction::online;
+  if (name == "noise") return Reconstruction::noise;
   throw Error(Error::Kind::bad_input, "render: unknown reconstruction '" + name +
-                                          "'. Use fgla (offline fast Griffin-Lim) or online (RTISI-LA, as a live loop)");
+                                          "'. Use fgla (offline fast Griffin-Lim), online (RTISI-LA, as a live loop) or noise "
+                                          "(white noise shaped to each frame)");
 }
 
 std::size_t render_frames(std::size_t n) { return n <= kFirstActionSample ? 0 : (n - 1) / kHop + 1; }
@@ -156,10 +159,18 @@ VibrationLoop::VibrationLoop(const predict::Model& model, const predict::Texture
       spectrum_(predict::kSpectrumBins),
       magnitudes_(kReconstructionBins) {}
 
+VibrationLoop::VibrationLoop(const predict::Model& model, const predict::TextureCode& code, const ShapedNoiseOptions& options)
+    : predictor_(model),
+      code_(code),
+      shaped_(options),
+      noise_(true),
+      spectrum_(predict::kSpectrumBins),
+      magnitudes_(kReconstructionBins) {}
+
 std::span<const double> VibrationLoop::tick(std::span<const float> action) {
   saturated_ = predictor_.predict(code_, action, spectrum_);
   target_magnitude_frame(std::span<const float>(spectrum_), magnitudes_);
-  return reconstruction_.push(magnitudes_);
+  return noise_ ? shaped_.push(magnitudes_) : reconstruction_.push(magnitudes_);
 }
 
 }  // namespace haptex::evaluate

@@ -9,7 +9,9 @@
 // (target_magnitude_frame) and given a phase by
 //   - fgla: the offline fast Griffin-Lim over all frames at once (evaluate/griffin_lim.hpp), or
 //   - online: RTISI-LA, one frame pushed per 100 samples as a live loop would (VibrationLoop below,
-//     evaluate/online_reconstruction.hpp): nothing is allocated per frame.
+//     evaluate/online_reconstruction.hpp): nothing is allocated per frame;
+//   - noise: no phase at all: white noise shaped to each frame (evaluate/shaped_noise.hpp), which
+//     varies from window to window as a surface does; offline and live alike, without look-ahead.
 //
 // Timing. The returned signal has one sample per trajectory sample (m/s^2). Frame m starts at
 // sample first_frame_sample + 100 m: by default at s_m itself, where the model places the spectrum
@@ -27,6 +29,7 @@
 
 #include "evaluate/griffin_lim.hpp"
 #include "evaluate/online_reconstruction.hpp"
+#include "evaluate/shaped_noise.hpp"
 #include "evaluate/target_magnitudes.hpp"
 #include "predict/predictor.hpp"
 #include "predict/trajectory.hpp"
@@ -38,8 +41,8 @@ inline constexpr std::size_t kFirstActionSample = predict::kActionValues / 2 - 1
 // The trajectory sample frame m's action ends at: its middle, or the trajectory's last sample.
 std::size_t frame_action_sample(std::size_t m, std::size_t n);
 
-enum class Reconstruction { fgla, online };
-std::string reconstruction_name(Reconstruction reconstruction);  // "fgla", "online"
+enum class Reconstruction { fgla, online, noise };
+std::string reconstruction_name(Reconstruction reconstruction);  // "fgla", "online", "noise"
 // Throws haptex::Error (bad_input) for another name.
 Reconstruction parse_reconstruction(const std::string& name);
 
@@ -47,7 +50,8 @@ struct RenderOptions {
   Reconstruction reconstruction = Reconstruction::fgla;
   GriffinLimOptions fgla;              // 100 iterations, momentum 0.99, seeded random initial phase
   OnlineReconstructionOptions online;  // look-ahead 3 frames (30 ms), 4 passes per frame
-  bool as_played = false;              // online only: place samples where a live loop plays them
+  ShapedNoiseOptions noise;            // noise: the noise's seed
+  bool as_played = false;              // online and noise: place samples where a live loop plays them
 };
 
 struct Rendering {
@@ -55,7 +59,7 @@ struct Rendering {
   std::vector<float> spectra;       // frames x 100 predicted amplitudes (m/s^2, bins 10..1000 Hz), row-major
   MagnitudeFrames targets;          // the predicted frames (x 501 Hann magnitudes), frame m from
   std::size_t first_frame_sample = 0;  // <- this sample + 100 m of `signal`
-  std::size_t latency_samples = 0;  // online: look-ahead x 100 (compensated unless as_played); fgla: 0
+  std::size_t latency_samples = 0;  // online: look-ahead x 100 (compensated unless as_played); fgla, noise: 0
   std::size_t saturated_frames = 0; // frames whose action lay outside the training range (saturated)
   double slowest_frame_seconds = 0; // online: the slowest predict + convert + push of one frame
 };
@@ -89,14 +93,16 @@ void write_vibration_csv(const std::string& path, const predict::Trajectory& tra
                          bool overwrite);
 
 // The live loop, one tick per 100 samples (10 ms): predict the spectrum for the action just
-// measured, convert it, push it through the online reconstruction and return the samples to play
-// next. Everything is sized at construction; tick() allocates nothing. Keeps a reference to the
-// model, which must outlive the loop.
+// measured, convert it, push it through the online reconstruction (or the shaped noise, with
+// `noise`) and return the samples to play next. Everything is sized at construction; tick()
+// allocates nothing. Keeps a reference to the model, which must outlive the loop.
 class VibrationLoop {
  public:
   VibrationLoop(const predict::Model& model, const predict::TextureCode& code, const OnlineReconstructionOptions& options = {});
+  // Shaped noise instead of RTISI-LA: no latency.
+  VibrationLoop(const predict::Model& model, const predict::TextureCode& code, const ShapedNoiseOptions& options);
 
-  std::size_t latency_samples() const { return reconstruction_.latency_samples(); }
+  std::size_t latency_samples() const { return noise_ ? 0 : reconstruction_.latency_samples(); }
 
   // action: predict::kActionValues values (10 force in N, then 10 speed in mm/s, the newest last).
   // Returns the next 100 samples (m/s^2) once look_ahead frames are queued; before that, nothing.
@@ -107,13 +113,15 @@ class VibrationLoop {
   // The last tick's frame: 100 amplitudes (m/s^2) and 501 Hann magnitudes.
   std::span<const float> spectrum() const { return spectrum_; }
   std::span<const double> magnitudes() const { return magnitudes_; }
-  // Ends the stream: the samples still held (OnlineReconstruction::flush).
-  std::span<const double> flush() { return reconstruction_.flush(); }
+  // Ends the stream: the samples still held (OnlineReconstruction::flush, ShapedNoise::flush).
+  std::span<const double> flush() { return noise_ ? shaped_.flush() : reconstruction_.flush(); }
 
  private:
   predict::Predictor predictor_;
   predict::TextureCode code_;
   OnlineReconstruction reconstruction_;
+  ShapedNoise shaped_;
+  bool noise_ = false;
   std::vector<float> spectrum_;
   std::vector<double> magnitudes_;
   bool saturated_ = false;

@@ -45,6 +45,13 @@ TextureCode Predictor::encode_descriptor(std::span<const float> descriptor) cons
   return encode_latent(trace.out.back().col(0));
 }
 
+TextureCode Predictor::encode_descriptors(const std::vector<std::vector<float>>& descriptors) const {
+  if (descriptors.empty()) throw failure("encode: no descriptors");
+  Eigen::VectorXf sum = Eigen::VectorXf::Zero(model_.latent_size());
+  for (const std::vector<float>& d : descriptors) sum += encode_descriptor(d).latent;
+  return encode_latent(sum / float(descriptors.size()));
+}
+
 TextureCode Predictor::encode_latent(const Eigen::VectorXf& latent) const {
   const DenseLayer& first = model_.nets.at(0).predictor.layers.front();
   TextureCode code;

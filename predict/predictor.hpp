@@ -25,6 +25,10 @@ class Predictor {
   // dataset stores them, one size). Throws haptex::Error for the per-material variant.
   TextureCode encode(const cv::Mat& peak, const cv::Mat& reference) const;
   TextureCode encode_descriptor(std::span<const float> descriptor) const;
+  // Several views of one press (its frames around the peak, each in the 8 augmentations): the code
+  // of their mean latent, which lies where the material's training latents are averaged, not at one
+  // view's chance place (docs/predict.md, "A new press"). Throws haptex::Error for none.
+  TextureCode encode_descriptors(const std::vector<std::vector<float>>& descriptors) const;
   TextureCode encode_latent(const Eigen::VectorXf& latent) const;
   // A training material's code: per-material, its own network; unified, its mean training latent.
   TextureCode material_code(int material) const;

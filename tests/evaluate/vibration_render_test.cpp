@@ -94,10 +94,11 @@ TEST(EvaluateVibrationRender, OneFramePerHundredSamplesFromSampleZero) {
   }
 }
 
-// The offline method with its full 100 iterations is the most consistent with the predicted
-// spectra, the live one (a few frames at a time) next, and both far better than the random initial
-// phase alone, in spectral convergence and in the evaluation's spectral distance.
-TEST(EvaluateVibrationRender, FglaBeatsOnlineBeatsRandomPhase) {
+// The offline method with its full 100 iterations and the live one (a few frames at a time) are about
+// as consistent with the predicted spectra (on this problem within 0.3 dB of each other, either way
+// depending on the model), and both far better than the random initial phase alone, in spectral
+// convergence and in the evaluation's spectral distance.
+TEST(EvaluateVibrationRender, FglaAndOnlineBeatRandomPhase) {
   const predict::Trajectory t = stroke(30000);
   double sc[3], distance[3];
   const RenderOptions options[3] = {with(Reconstruction::fgla, 100), with(Reconstruction::online, 4), with(Reconstruction::fgla, 0)};
@@ -120,9 +121,9 @@ TEST(EvaluateVibrationRender, FglaBeatsOnlineBeatsRandomPhase) {
   }
   // The model's spectra are expected values, smoother than any signal's, so no signal has them
   // exactly: FGLA levels off near -15 dB (300 iterations gain 0.1 dB) and the online method comes
-  // close. Both are far from the random initial phase, in the evaluation's distance too.
+  // as close. Both are far from the random initial phase, in the evaluation's distance too.
   EXPECT_LT(sc[0], -12.0);
-  EXPECT_LT(sc[0], sc[1] - 0.2);
+  EXPECT_LT(sc[1], -12.0);
   EXPECT_LT(sc[1], sc[2] - 6.0);
   EXPECT_LT(std::max(distance[0], distance[1]), 0.6 * distance[2]);
   EXPECT_LT(sc[2], 0.0);
@@ -211,7 +212,8 @@ TEST(EvaluateVibrationRender, ReconstructionNames) {
   EXPECT_THROW(parse_reconstruction("pghi"), Error);
 }
 
-// The live loop's tick predicts, converts and pushes without touching the heap.
+// The live loop's tick predicts, converts and pushes without touching the heap, with RTISI-LA or
+// shaped noise; the noise has no look-ahead, so every tick returns its 100 samples.
 TEST(EvaluateVibrationRender, LiveTicksDoNotAllocate) {
   {
     const test::CountAllocations probe;
@@ -219,17 +221,19 @@ TEST(EvaluateVibrationRender, LiveTicksDoNotAllocate) {
     ASSERT_GT(probe.count(), 0u) << "the allocation counter sees nothing";
   }
   const predict::Trajectory t = stroke(3000);
-  VibrationLoop loop(model(), code(), {});
-  float action[predict::kActionValues];
-  std::size_t samples = 0;
-  for (std::size_t m = 0; m < render_frames(t.force.size()); ++m) {
-    predict::action_at(t, 9 + 100 * m, action);
-    const test::CountAllocations counter;
-    samples += loop.tick(action).size();
-    ASSERT_EQ(counter.count(), 0u) << "tick " << m << " allocated";
+  for (const bool noise : {false, true}) {
+    VibrationLoop loop = noise ? VibrationLoop(model(), code(), ShapedNoiseOptions{}) : VibrationLoop(model(), code(), OnlineReconstructionOptions{});
+    float action[predict::kActionValues];
+    std::size_t samples = 0;
+    for (std::size_t m = 0; m < render_frames(t.force.size()); ++m) {
+      predict::action_at(t, frame_action_sample(m, t.force.size()), action);
+      const test::CountAllocations counter;
+      samples += loop.tick(action).size();
+      ASSERT_EQ(counter.count(), 0u) << "tick " << m << " allocated" << (noise ? " (noise)" : "");
+    }
+    EXPECT_EQ(samples, (render_frames(t.force.size()) - (noise ? 0 : 3)) * 100);
+    EXPECT_EQ(loop.flush().size(), (noise ? 0u : 300u) + 900u);
   }
-  EXPECT_EQ(samples, (render_frames(t.force.size()) - 3) * 100);
-  EXPECT_EQ(loop.flush().size(), 300u + 900u);
 }
 
 TEST(EvaluateVibrationRender, TextureChoiceNamesTheModel) {
