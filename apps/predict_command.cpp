@@ -110,6 +110,8 @@ class PredictCommand : public Command {
     if (!image_.empty()) out["image"] = image_, out["reference"] = reference_.empty() ? nlohmann::json(nullptr) : nlohmann::json(reference_);
     if (!descriptor_.empty()) out["descriptor"] = descriptor_;
     if (code.latent.size()) out["latent"] = std::vector<float>(code.latent.data(), code.latent.data() + code.latent.size());
+    if (code.image_latent.size())
+      out["image_latent"] = std::vector<float>(code.image_latent.data(), code.image_latent.data() + code.image_latent.size());
     for (const Query& q : queries)
       out["queries"].push_back({{"sample", q.sample}, {"force_n", q.force}, {"speed_mm_s", q.speed}, {"out_of_range", q.out_of_range},
                                 {"spectrum", q.spectrum}});

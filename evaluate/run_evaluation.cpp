@@ -354,7 +354,7 @@ std::vector<LatentPoint> latent_map(const std::vector<Codes>& codes, const split
     const split::MaterialSets& s = split.materials[m];
     latents.push_back(codes[m].training.latent);
     points.push_back({s.id, s.name, "training", 0, 0});
-    for (const auto& press : codes[m].test_presses) latents.push_back(press.latent), points.push_back({s.id, s.name, "test press", 0, 0});
+    for (const auto& press : codes[m].test_presses) latents.push_back(press.image_latent), points.push_back({s.id, s.name, "test press", 0, 0});
   }
   if (latents.size() < 2) return points;
   Eigen::MatrixXf x(latents.size(), latents.front().size());
@@ -402,7 +402,7 @@ std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& mode
       continue;
     }
     out.push_back({"unified-new-actions" + suffix, "Unified model on new actions, with the training presses' texture", "unified-new-actions" + tag, label, ""});
-    out.push_back({"unified-new-presses" + suffix, "Unified model on new actions and a new press (the test press)", "unified-new-presses" + tag, label, ""});
+    out.push_back({"unified-new-presses" + suffix, "Unified model on new actions and a new press (the test press, recognised)", "unified-new-presses" + tag, label, ""});
   }
   // Against the action-blind predictor: does the model use the actions at all?
   for (std::size_t i = 0; i < models.size(); ++i) {

@@ -44,7 +44,7 @@ struct Model {
   TextureDescriptorSpec descriptor;
   Normalisation normalisation;
   Mlp texture;     // normalised descriptor -> latent (unified only)
-  Mlp classifier;  // latent -> material logits: stage 1's head, kept for inspection
+  Mlp classifier;  // latent -> material logits: stage 1's head; recognises a new press (Predictor::recognised)
   std::vector<std::string> material_ids, material_names;
   Eigen::MatrixXf material_latents;  // latent x materials: mean over each material's training images
   std::vector<SpectrumNet> nets;     // unified: 1; per-material: one per material, in material order

@@ -42,14 +42,27 @@ TextureCode Predictor::encode_descriptor(std::span<const float> descriptor) cons
   x = (x - n.descriptor_mean).cwiseQuotient(n.descriptor_scale);
   MlpTrace trace;
   forward(model_.texture, x, trace);
-  return encode_latent(trace.out.back().col(0));
+  const Eigen::VectorXf image_latent = trace.out.back().col(0);
+  TextureCode code = encode_latent(recognised(image_latent));
+  code.image_latent = image_latent;
+  return code;
 }
 
 TextureCode Predictor::encode_descriptors(const std::vector<std::vector<float>>& descriptors) const {
   if (descriptors.empty()) throw failure("encode: no descriptors");
   Eigen::VectorXf sum = Eigen::VectorXf::Zero(model_.latent_size());
-  for (const std::vector<float>& d : descriptors) sum += encode_descriptor(d).latent;
-  return encode_latent(sum / float(descriptors.size()));
+  for (const std::vector<float>& d : descriptors) sum += encode_descriptor(d).image_latent;
+  const Eigen::VectorXf image_latent = sum / float(descriptors.size());
+  TextureCode code = encode_latent(recognised(image_latent));
+  code.image_latent = image_latent;
+  return code;
+}
+
+Eigen::VectorXf Predictor::recognised(const Eigen::VectorXf& image_latent) const {
+  const DenseLayer& head = model_.classifier.layers.at(0);
+  Eigen::VectorXf logits = head.weight * image_latent + head.bias;
+  const Eigen::ArrayXf p = (logits.array() - logits.maxCoeff()).exp();
+  return model_.material_latents * (p / p.sum()).matrix();
 }
 
 TextureCode Predictor::encode_latent(const Eigen::VectorXf& latent) const {

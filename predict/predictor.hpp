@@ -12,7 +12,8 @@ namespace haptex::predict {
 
 struct TextureCode {
   int net = 0;                  // which SpectrumNet predicts (per-material: the material)
-  Eigen::VectorXf latent;       // unified: the texture latent; per-material: empty
+  Eigen::VectorXf latent;       // unified: the texture latent the predictor sees; per-material: empty
+  Eigen::VectorXf image_latent; // from an image: the texture encoder's own output, before recognition
   Eigen::VectorXf first_layer;  // the predictor's first layer applied to the latent, plus its bias
 };
 
@@ -23,12 +24,15 @@ class Predictor {
 
   // Unified model: the code of a GelSight press (peak frame and no-contact reference, RGB as the
   // dataset stores them, one size). Throws haptex::Error for the per-material variant.
+  // An image is recognised (docs/predict.md, "A new press"): its latent is the training materials'
+  // mean latents weighted by the classifier's probabilities for the image's encoder output.
   TextureCode encode(const cv::Mat& peak, const cv::Mat& reference) const;
   TextureCode encode_descriptor(std::span<const float> descriptor) const;
-  // Several views of one press (its frames around the peak, each in the 8 augmentations): the code
-  // of their mean latent, which lies where the material's training latents are averaged, not at one
-  // view's chance place (docs/predict.md, "A new press"). Throws haptex::Error for none.
+  // Several views of one press (its frames around the peak, each in the 8 augmentations): their mean
+  // encoder output, recognised. Throws haptex::Error for none.
   TextureCode encode_descriptors(const std::vector<std::vector<float>>& descriptors) const;
+  // The latent the predictor sees for an encoder output: material_latents x softmax(classifier(x)).
+  Eigen::VectorXf recognised(const Eigen::VectorXf& image_latent) const;
   TextureCode encode_latent(const Eigen::VectorXf& latent) const;
   // A training material's code: per-material, its own network; unified, its mean training latent.
   TextureCode material_code(int material) const;

@@ -27,8 +27,8 @@ struct SpectrumProblem {
   int latent_size() const { return train_latents ? int(train_latents->front().rows()) : 0; }
 };
 
-struct SpectrumSchedule {
-  int batch = 256, max_epochs = 60, patience = 8;
+struct SpectrumSchedule {  // from TrainOptions (unified or per-material)
+  int batch = 0, max_epochs = 0, patience = 0;
   std::string stage = "spectrum";
   unsigned threads = 0;
 };

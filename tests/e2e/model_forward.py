@@ -4,7 +4,8 @@ and compares with what `haptex predict --json` printed.
 Usage: /usr/bin/python3 model_forward.py MODEL.h5 PREDICT.json
 
 Reads the file with h5py and numpy only, nothing from haptex. For the unified model the latent is
-recomputed from the JSON's descriptor (an --image query) or taken from /material_latents (a --material
+recomputed from the JSON's descriptor (an --image query: the encoder's output, compared with the JSON's
+image_latent, then recognised through the classifier) or taken from /material_latents (a --material
 query) and compared with the JSON's latent; every query's spectrum is recomputed from its force and
 speed (held for the 10 samples, as `haptex predict --force F --speed V` does) and compared with the
 JSON's, as max |numpy - haptex| / max |haptex| <= 1e-4; the saturation flag must agree too.
@@ -98,7 +99,13 @@ def main():
                     problems.append(f"descriptor: {d.size} values, /feature_spec@length is {length}")
                 else:
                     x = (d - np.asarray(n["descriptor_mean"], np.float64)) / np.asarray(n["descriptor_scale"], np.float64)
-                    latent = run(layers(f, "texture_encoder"), x)
+                    image_latent = run(layers(f, "texture_encoder"), x)
+                    image_error = scaled_error(image_latent, result.get("image_latent", []))
+                    if not image_error <= TOLERANCE:
+                        problems.append(f"image_latent: scaled error {image_error:.3g} > {TOLERANCE:g}")
+                    logits = run(layers(f, "classifier"), image_latent)
+                    p = np.exp(logits - logits.max())
+                    latent = np.asarray(f["material_latents"], np.float64).T @ (p / p.sum())
             else:
                 latent = np.asarray(f["material_latents"], np.float64)[ids.index(result["material"])]
             latent_error = scaled_error(latent, result.get("latent", []))

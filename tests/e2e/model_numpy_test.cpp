@@ -192,10 +192,17 @@ TEST_F(ModelFile, TheCheckFailsOnAPerturbedResult) {
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("mismatch: query 0: spectrum"), std::string::npos) << r.out << r.err;
 
-  // A descriptor value changed: the recomputed latent no longer matches the printed one.
+  // A descriptor value changed: the recomputed encoder output no longer matches the printed one.
   nlohmann::json descriptor = out;
   descriptor["descriptor"][3] = descriptor["descriptor"][3].get<double>() + 5.0;
   r = check(model, write_json(dir_, "descriptor.json", descriptor));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("mismatch: image_latent"), std::string::npos) << r.out << r.err;
+
+  // The recognised latent changed: numpy's recognition disagrees.
+  nlohmann::json recognised = out;
+  recognised["latent"][0] = recognised["latent"][0].get<double>() + 1.0;
+  r = check(model, write_json(dir_, "recognised.json", recognised));
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("mismatch: latent"), std::string::npos) << r.out << r.err;
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/QR>
+
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -58,6 +60,43 @@ TEST(Predictor, SingleQueriesMatchTheBatchPathAndDoNotAllocate) {
       EXPECT_EQ(counter.count(), 0u) << "predict() allocated";
       for (int k = 0; k < kSpectrumBins; ++k) EXPECT_NEAR(out[std::size_t(k)], batch(k, c), 1e-5f * (1 + std::abs(batch(k, c))));
     }
+  }
+}
+
+// Several views of one press give the code of their mean latent; none is refused.
+TEST(Predictor, ViewsOfAPressAreEncodedByTheirMeanLatent) {
+  const Predictor p(trained(Variant::unified));
+  const TrainingData data = test::synthetic_problem();
+  const auto& views = data.materials[1].images[0];
+  ASSERT_GE(views.size(), 3u);
+  const std::vector<std::vector<float>> three(views.begin(), views.begin() + 3);
+  Eigen::VectorXf mean = Eigen::VectorXf::Zero(p.model().latent_size());
+  for (const auto& d : three) mean += p.encode_descriptor(d).image_latent / 3.0f;
+  const TextureCode code = p.encode_descriptors(three);
+  EXPECT_LT((code.image_latent - mean).norm(), 1e-5f * (1 + mean.norm()));
+  EXPECT_LT((code.latent - p.recognised(mean)).norm(), 1e-5f * (1 + mean.norm()));
+  EXPECT_LT((code.first_layer - p.encode_latent(p.recognised(mean)).first_layer).norm(), 1e-4f * (1 + code.first_layer.norm()));
+  EXPECT_GT((code.image_latent - p.encode_descriptor(three[0]).image_latent).norm(), 0.0f);
+  EXPECT_THROW(p.encode_descriptors({}), Error);
+}
+
+// A press is recognised: its latent is the materials' mean latents weighted by the classifier's
+// probabilities (a distribution), most by the material the classifier ranks first.
+TEST(Predictor, APressIsRecognisedAsTheMaterialsItResembles) {
+  const Predictor p(trained(Variant::unified));
+  const Model& m = p.model();
+  const TrainingData data = test::synthetic_problem();
+  for (std::size_t i = 0; i < data.materials.size(); ++i) {
+    const TextureCode code = p.encode_descriptor(data.materials[i].images[2][0]);  // a test press
+    // Recognised latents lie in the convex hull of the material latents: solve for the weights.
+    const Eigen::VectorXf weights = m.material_latents.colPivHouseholderQr().solve(code.latent);
+    EXPECT_NEAR(weights.sum(), 1.0f, 1e-3f) << i;
+    EXPECT_GT(weights.minCoeff(), -1e-3f) << i;
+    const DenseLayer& head = m.classifier.layers.at(0);
+    Eigen::Index best, ranked_first;
+    weights.maxCoeff(&best);
+    (head.weight * code.image_latent + head.bias).maxCoeff(&ranked_first);
+    EXPECT_EQ(best, ranked_first) << "the test press of material " << i;
   }
 }
 
