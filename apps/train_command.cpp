@@ -26,6 +26,7 @@ nlohmann::json epoch_json(const predict::EpochReport& r) {
   nlohmann::json e = {{"stage", r.stage}, {"epoch", r.epoch}, {"train_loss", r.train_loss}, {"val_loss", r.val_loss},
                       {"best", r.best}, {"seconds", r.seconds}};
   if (r.val_accuracy >= 0) e["val_accuracy"] = r.val_accuracy;
+  if (r.val_weighted >= 0) e["val_weighted"] = r.val_weighted;
   return e;
 }
 
@@ -112,8 +113,8 @@ class TrainCommand : public Command {
       std::fprintf(stderr, "%-10s epoch %3d/%d  train %.4f  val %.4f  val accuracy %.3f  %6.1f s%s\n", r.stage.c_str(), r.epoch,
                    r.max_epochs, r.train_loss, r.val_loss, r.val_accuracy, r.seconds, r.best ? "  *" : "");
     else
-      std::fprintf(stderr, "%-10s epoch %3d/%d  train %.5f  val %.5f m/s^2  %6.1f s%s\n", r.stage.c_str(), r.epoch, r.max_epochs,
-                   r.train_loss, r.val_loss, r.seconds, r.best ? "  *" : "");
+      std::fprintf(stderr, "%-10s epoch %3d/%d  train %.5f  val %.5f m/s^2 (weighted %.5f)  %6.1f s%s\n", r.stage.c_str(), r.epoch,
+                   r.max_epochs, r.train_loss, r.val_loss, r.val_weighted, r.seconds, r.best ? "  *" : "");
   }
 
   void print_summary(const predict::Model& m, double seconds) const {

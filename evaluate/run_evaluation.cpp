@@ -144,6 +144,7 @@ std::vector<double> online_signal(const MagnitudeFrames& frames, std::size_t len
 }
 
 // The stitched signal of the predicted spectra, scored on the same windows (offset grid[0] = frame 0).
+static_assert(kSectionGridStride == kReconstructionHop, "stitching takes grid window m as reconstruction frame m");
 Scores stitched_scores(const std::vector<std::vector<double>>& spectra, const std::vector<std::size_t>& grid,
                        const std::vector<std::vector<double>>& truth, const std::vector<double>& floor, double predict_seconds,
                        const std::string& key, std::uint64_t seed, std::vector<double>* signal) {

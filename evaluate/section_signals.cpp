@@ -10,7 +10,6 @@ namespace haptex::evaluate {
 namespace {
 
 using align::kActionSamples;
-constexpr std::size_t kGridStride = 100;
 
 std::vector<double> read_signal(const h5::Group& recording, const char* name, const std::string& file) {
   if (!recording.has_dataset(name))
@@ -58,7 +57,7 @@ std::vector<MaterialSignals> read_section_signals(const split::DatasetSplit& spl
 }
 
 std::vector<std::size_t> section_grid(std::size_t samples) {
-  const std::vector<std::int64_t> starts = align::window_starts(samples, kGridStride);
+  const std::vector<std::int64_t> starts = align::window_starts(samples, kSectionGridStride);
   return {starts.begin(), starts.end()};
 }
 

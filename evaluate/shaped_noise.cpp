@@ -60,6 +60,7 @@ std::span<const double> ShapedNoise::flush() {
   const std::size_t first = frames_ * kHop;  // the last frame's samples not yet returned
   for (std::size_t i = 0; i < output_.size(); ++i) output_[i] = sum_[kHop + i] * synthesis_gain(window_, first + i, frames_);
   std::fill(sum_.begin(), sum_.end(), 0.0);
+  for (double& x : noise_) x = normal_(random_);  // the next stream's first frame: fresh noise
   frames_ = 0;
   return output_;
 }

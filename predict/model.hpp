@@ -57,4 +57,9 @@ struct Model {
   int material_index(const std::string& id) const;
 };
 
+// For texture encoder outputs (columns), the latents the predictor sees: the training materials' mean
+// latents weighted by the classifier's probabilities, material_latents x softmax(classifier(x))
+// (docs/predict.md, "A new press"). Unified models only.
+Eigen::MatrixXf recognised_latents(const Model& model, const Eigen::MatrixXf& image_latents);
+
 }  // namespace haptex::predict

@@ -199,7 +199,8 @@ Model read_model(const std::string& path) {
   const h5::File file = h5::File::open(path);
   const h5::Group root = file.root();
   if (!root.has_attr("haptex_format") || root.attr_string("haptex_format") != kModelFormat)
-    throw input_error(path, "/", "not a model file (model/1)", "Give the file haptex train wrote");
+    throw input_error(path, "/", "not a model file (" + std::string(kModelFormat) + ")",
+                      "Give the file haptex train wrote; a model/1 file (the action before its window) needs training again");
   const Reader r{path};
   Model m;
   const std::string variant = root.attr_string("variant");
@@ -235,6 +236,12 @@ Model read_model(const std::string& path) {
     if (m.texture.inputs() != length || m.material_latents.rows() != m.texture.outputs() ||
         m.material_latents.cols() != Eigen::Index(m.material_ids.size()))
       throw input_error(path, "/texture_encoder", "the texture encoder does not fit the descriptor or the materials", "Train the model again");
+    if (m.classifier.inputs() != m.texture.outputs() || m.classifier.outputs() != Eigen::Index(m.material_ids.size()))
+      throw input_error(path, "/classifier", "takes " + std::to_string(m.classifier.inputs()) + " values to " +
+                                                 std::to_string(m.classifier.outputs()) + " materials; the latent has " +
+                                                 std::to_string(m.texture.outputs()) + " and the model " +
+                                                 std::to_string(m.material_ids.size()) + " materials",
+                        "Train the model again");
   }
   const h5::Group nets = root.open_group("nets");
   for (const std::string& k : nets.children())

@@ -1,5 +1,5 @@
 #pragma once
-// The model file (haptex_format model/1; schemas/hdf5-layout.md): weights, normalisation
+// The model file (haptex_format model/2; schemas/hdf5-layout.md): weights, normalisation
 // statistics, the texture descriptor's spec, the training options and metrics, and the hashes of
 // the dataset and split it was trained on. Plain float32 arrays and attributes, so numpy can run
 // the network from it.
@@ -9,7 +9,8 @@
 
 namespace haptex::predict {
 
-inline constexpr const char* kModelFormat = "model/1";
+// 2: the action at the window's middle, a new press recognised (1: the action before the window).
+inline constexpr const char* kModelFormat = "model/2";
 
 // Written to PATH.partial and renamed (core/h5/atomic_file.hpp). Throws haptex::Error (bad_input)
 // when the output exists and overwrite is false.

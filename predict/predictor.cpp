@@ -59,10 +59,7 @@ TextureCode Predictor::encode_descriptors(const std::vector<std::vector<float>>&
 }
 
 Eigen::VectorXf Predictor::recognised(const Eigen::VectorXf& image_latent) const {
-  const DenseLayer& head = model_.classifier.layers.at(0);
-  Eigen::VectorXf logits = head.weight * image_latent + head.bias;
-  const Eigen::ArrayXf p = (logits.array() - logits.maxCoeff()).exp();
-  return model_.material_latents * (p / p.sum()).matrix();
+  return recognised_latents(model_, image_latent).col(0);
 }
 
 TextureCode Predictor::encode_latent(const Eigen::VectorXf& latent) const {

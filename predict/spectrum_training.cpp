@@ -4,6 +4,7 @@
 #include <numeric>
 #include <random>
 
+#include "core/error.hpp"
 #include "core/random_seeds.hpp"
 #include "predict/adam.hpp"
 #include "predict/chunked_batch.hpp"
@@ -80,10 +81,13 @@ std::vector<float> material_balance_weights(const Eigen::MatrixXf& targets, cons
     const auto m = std::size_t(material[c]);
     power[m] += targets.col(Eigen::Index(c)).squaredNorm(), count[m] += 1;
   }
+  // A near-silent material must not take all the weight: its level counts as at least 1e-3 of the mean level.
+  double level = 0;
+  for (std::size_t m = 0; m < materials; ++m) level += power[m] / double(std::max<std::size_t>(1, train.size()));
   std::vector<double> inverse(materials, 0.0);
   double mean = 0;
   for (std::size_t m = 0; m < materials; ++m) {
-    if (count[m] > 0) inverse[m] = count[m] / std::max(power[m], 1e-30);
+    if (count[m] > 0) inverse[m] = 1.0 / std::max(power[m] / count[m], std::max(1e-3 * level, 1e-30));
     mean += inverse[m] * count[m] / double(std::max<std::size_t>(1, train.size()));
   }
   std::vector<float> weight(material.size(), 1.0f);
@@ -94,6 +98,9 @@ std::vector<float> material_balance_weights(const Eigen::MatrixXf& targets, cons
 
 SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& o, const SpectrumSchedule& s,
                                   const EpochCallback& progress) {
+  if (s.batch <= 0 || s.max_epochs <= 0 || s.patience <= 0)
+    throw failure("train: batch, epochs and patience must be positive (" + std::to_string(s.batch) + ", " + std::to_string(s.max_epochs) +
+                  ", " + std::to_string(s.patience) + ")");
   std::vector<int> action_sizes{int(p.actions->rows())}, predictor_sizes;
   for (int i = 0; i < o.action_layers; ++i) action_sizes.push_back(o.action_hidden);
   predictor_sizes.push_back(p.latent_size() + action_sizes.back());
@@ -125,7 +132,7 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& 
       adam_predictor.step(net.predictor, total.predictor);
     }
     const Distances val = mean_distance(net, p, p.val, false, s.threads);
-    EpochReport r{s.stage, epoch, s.max_epochs, train_loss / double(std::max<std::size_t>(1, order.size())), val.plain, -1,
+    EpochReport r{s.stage, epoch, s.max_epochs, train_loss / double(std::max<std::size_t>(1, order.size())), val.plain, -1, val.weighted,
                   stopping.improved(val.weighted), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
     if (r.best) best = net, result.val_distance = val.plain;
     if (stopping.plateau())
@@ -135,6 +142,7 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& 
   }
   result.net = std::move(best);
   result.best_epoch = stopping.best_epoch();
+  if (result.best_epoch == 0) result.val_distance = stopping.best();  // no epoch improved (a NaN loss): "never" 
   result.train_distance = mean_distance(result.net, p, p.train, true, s.threads).plain;
   return result;
 }

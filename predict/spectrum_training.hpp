@@ -2,7 +2,8 @@
 // Stage 2: the action encoder and predictor learn the target spectra (Euclidean loss) with Adam
 // on mini-batches, stopping early on the validation windows' loss. The texture encoder is frozen:
 // a training window sees the latent of a random augmented image of one of its material's training
-// presses (a new draw every epoch); a validation window sees its material's validation press.
+// presses (a new draw every epoch); a validation window sees its material's validation press,
+// recognised as any new press is (recognised_latents).
 #include <Eigen/Core>
 #include <string>
 #include <vector>

@@ -114,7 +114,7 @@ Mlp fit(const Labelled& train, const Labelled& val, const TrainOptions& o, std::
       adam.step(net, total);
     }
     const Evaluation v = evaluate(net, val);
-    EpochReport r{"texture", epoch, o.texture_max_epochs, train_loss / double(order.size()), v.loss, v.accuracy,
+    EpochReport r{"texture", epoch, o.texture_max_epochs, train_loss / double(order.size()), v.loss, v.accuracy, -1,
                   stopping.improved(v.loss), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
     if (r.best) best = net;
     if (stopping.plateau()) adam.set_learning_rate(adam.learning_rate() / 2);

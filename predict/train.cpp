@@ -59,7 +59,8 @@ void train_unified(const TrainingData& data, const TrainOptions& o, const Eigen:
     for (std::size_t set : {split::kTrain, split::kVal, split::kTest})
       for (std::size_t c : data.materials[m].rows[set]) material[c] = int(m);
     train_latents.push_back(texture_latents(model, data.materials[m].images[split::kTrain]));
-    val_latents.push_back(texture_latents(model, data.materials[m].images[split::kVal]));
+    // Validation presses as prediction sees a new press: recognised (the classifier is frozen now).
+    val_latents.push_back(recognised_latents(model, texture_latents(model, data.materials[m].images[split::kVal])));
   }
   SpectrumProblem p{&actions, &data.target, model.normalisation.target_scale, all_rows(data, split::kTrain),
                     all_rows(data, split::kVal), &material, &train_latents, &val_latents};

@@ -36,7 +36,8 @@ struct EpochReport {
   int epoch = 0, max_epochs = 0;
   double train_loss = 0, val_loss = 0;  // stage 1: cross-entropy; stage 2: mean Euclidean distance (m/s^2)
   double val_accuracy = -1;             // stage 1 only
-  bool best = false;                    // the best validation loss so far (these weights are kept)
+  double val_weighted = -1;             // stage 2: val_loss weighted as the loss is (what `best` follows); -1: none
+  bool best = false;                    // the best validation loss (stage 2: val_weighted) so far: these weights are kept
   double seconds = 0;                   // since training started
 };
 using EpochCallback = std::function<void(const EpochReport&)>;

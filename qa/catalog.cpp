@@ -79,7 +79,7 @@ const std::vector<CheckInfo>& all_checks() {
        "Copy the video again from the sensor's machine (a damaged frame is never kept, but the press may be cut short)"},
       // dataset
       {"dataset.windows", error,
-       "the window table's materials, recordings and starts exist and follow the stride (t = 9, 9 + stride, ...)",
+       "the window table's materials, recordings and starts exist and follow the stride (t = 0, stride, ...)",
        "Build the dataset again with haptex align"},
       {"dataset.cache", error, "cached action and target equal the low-passed signals and spectra they came from",
        "Build the dataset again with haptex align from the unchanged recordings"},

@@ -209,6 +209,7 @@ TEST(EvaluateVibrationRender, ShortTrajectories) {
 TEST(EvaluateVibrationRender, ReconstructionNames) {
   EXPECT_EQ(parse_reconstruction("fgla"), Reconstruction::fgla);
   EXPECT_EQ(parse_reconstruction(reconstruction_name(Reconstruction::online)), Reconstruction::online);
+  EXPECT_EQ(parse_reconstruction(reconstruction_name(Reconstruction::noise)), Reconstruction::noise);
   EXPECT_THROW(parse_reconstruction("pghi"), Error);
 }
 

@@ -116,6 +116,32 @@ TEST(Training, BalanceWeightsMakeEveryMaterialCountAlike) {
   EXPECT_NEAR(w[0] * 1.0, w[2] * 100.0, 1e-4);
 }
 
+// Stage 2 keeps the epoch with the best validation distance weighted as the loss is (every
+// material alike), and reports the plain distance beside it; the two differ when materials differ
+// in level, as the synthetic ones do.
+TEST(Training, StageTwoStopsOnTheWeightedValidationDistance) {
+  test::SyntheticSpec spec;
+  spec.windows = 200;
+  const TrainingData data = test::synthetic_problem(spec);
+  TrainOptions o = small_options(Variant::unified);
+  o.max_epochs = 12, o.texture_max_epochs = 5;
+  std::vector<EpochReport> reports;
+  const Model m = train_model(data, o, [&](const EpochReport& r) {
+    if (r.stage == "spectrum") reports.push_back(r);
+  });
+  ASSERT_FALSE(reports.empty());
+  double best = 1e300, best_plain = 0;
+  bool differ = false;
+  for (const EpochReport& r : reports) {
+    ASSERT_GE(r.val_weighted, 0.0);
+    EXPECT_EQ(r.best, r.val_weighted < best) << "epoch " << r.epoch;
+    if (r.best) best = r.val_weighted, best_plain = r.val_loss;
+    differ |= std::abs(r.val_weighted - r.val_loss) > 1e-6 * r.val_loss;
+  }
+  EXPECT_TRUE(differ);
+  EXPECT_DOUBLE_EQ(m.metrics["spectrum"]["val_distance"].get<double>(), best_plain);
+}
+
 TEST(Training, EarlyStoppingKeepsTheBestEpoch) {
   EarlyStopping s(2);
   EXPECT_TRUE(s.improved(3.0));

@@ -52,7 +52,7 @@ MaterialWindows wandering(const std::string& id, bool ring = false) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<float> unit(0, 1);
   for (int r = 0; r < 2; ++r)
-    for (std::int64_t t = 9; t + 1000 <= 100000; t += 100) {
+    for (std::int64_t t : align::window_starts(100000, 100)) {
       m.recording.push_back(r);
       m.start.push_back(t);
       const float angle = 2 * float(M_PI) * float(t) / 100000.0f;
