@@ -63,6 +63,7 @@ TEST(NonFinite, EveryCommandRefusesAModelWithNaNInfinityOrAZeroScale) {
       {"nets/0/predictor/layers/0/weight", kNaN, "not a finite number"},
       {"nets/0/action_encoder/layers/0/bias", kInf, "not a finite number"},
       {"material_latents", kInf, "not a finite number"},
+      {"classifier/layers/0/weight", kNaN, "not a finite number"},
       {"normalisation/action_scale", 0.0f, "must be positive"},
       {"normalisation/target_scale", -1.0f, "must be positive"},
       {"normalisation/action_mean", kNaN, "not a finite number"},

@@ -158,6 +158,25 @@ TEST(ModelFile, OtherFilesAreRefusedWithTheirName) {
   }
 }
 
+// Recognition needs a classifier from the latent to the model's materials: one that does not fit is
+// refused on load, naming it, before any press could reach it.
+TEST(ModelFile, AClassifierThatDoesNotFitIsRefused) {
+  const test::TempDir dir;
+  Model m = trained(Variant::unified);
+  DenseLayer& head = m.classifier.layers.at(0);
+  head.weight.conservativeResize(head.weight.rows() - 1, Eigen::NoChange);
+  head.bias.conservativeResize(head.bias.size() - 1);
+  write_model(m, dir.file("fewer.h5"), false, "test");
+  try {
+    read_model(dir.file("fewer.h5"));
+    FAIL() << "a classifier for fewer materials was read";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("/classifier"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("fewer.h5"), std::string::npos) << e.what();
+  }
+}
+
 // Low-passed force rings slightly below zero after a stroke's turn (the 60 HaTT-driven materials' model
 // has force_min = -0.0003 N): a range end below zero is fine, a reversed or infinite range is not.
 TEST(ModelFile, ATrainingRangeMayDipBelowZeroButNotReverse) {
