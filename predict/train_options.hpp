@@ -18,7 +18,7 @@ struct TrainOptions {
   int predictor_hidden = 256, predictor_layers = 1;
   // Optimisation. Per-material models see about 1/60 of the windows, so they take smaller batches
   // and more epochs (per_material_* below).
-  int batch = 256, max_epochs = 200, patience = 30;
+  int batch = 256, max_epochs = 200, patience = 60;
   int per_material_batch = 64, per_material_max_epochs = 150, per_material_patience = 15;
   int texture_batch = 64, texture_max_epochs = 80, texture_patience = 10;
   float learning_rate = 1e-3f;
