@@ -79,7 +79,7 @@ constexpr std::pair<std::string_view, std::string_view> kExplanations[] = {
      "saw: does it generalise to a new image of a known surface?"},
     {"stitched-",
      "Above, predicted spectra are compared with the recording window by window. Here the model's spectra for a whole "
-     "test section are first turned into one vibration signal by phase reconstruction, and that signal is scored "
+     "test section are first turned into one vibration signal (by phase reconstruction, or by shaping noise), and that signal is scored "
      "exactly like the baseline's rendering: the vibration a haptic device would play."},
 };
 

@@ -1,7 +1,6 @@
 #include "predict/spectrum_training.hpp"
 
 #include <chrono>
-#include <numeric>
 #include <random>
 
 #include "core/error.hpp"
@@ -142,7 +141,7 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& 
   }
   result.net = std::move(best);
   result.best_epoch = stopping.best_epoch();
-  if (result.best_epoch == 0) result.val_distance = stopping.best();  // no epoch improved (a NaN loss): "never" 
+  if (result.best_epoch == 0) result.val_distance = stopping.best();  // no epoch improved (a NaN loss)
   result.train_distance = mean_distance(result.net, p, p.train, true, s.threads).plain;
   return result;
 }
