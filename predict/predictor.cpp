@@ -33,7 +33,7 @@ TextureCode Predictor::encode(const cv::Mat& peak, const cv::Mat& reference) con
   return encode_descriptor(d);
 }
 
-TextureCode Predictor::encode_descriptor(std::span<const float> descriptor) const {
+Eigen::VectorXf Predictor::image_latent(std::span<const float> descriptor) const {
   const Normalisation& n = model_.normalisation;
   if (Eigen::Index(descriptor.size()) != n.descriptor_mean.size())
     throw failure("encode: the descriptor has " + std::to_string(descriptor.size()) + " values, the model expects " +
@@ -42,20 +42,22 @@ TextureCode Predictor::encode_descriptor(std::span<const float> descriptor) cons
   x = (x - n.descriptor_mean).cwiseQuotient(n.descriptor_scale);
   MlpTrace trace;
   forward(model_.texture, x, trace);
-  const Eigen::VectorXf image_latent = trace.out.back().col(0);
+  return trace.out.back().col(0);
+}
+
+TextureCode Predictor::image_code(const Eigen::VectorXf& image_latent) const {
   TextureCode code = encode_latent(recognised(image_latent));
   code.image_latent = image_latent;
   return code;
 }
 
+TextureCode Predictor::encode_descriptor(std::span<const float> descriptor) const { return image_code(image_latent(descriptor)); }
+
 TextureCode Predictor::encode_descriptors(const std::vector<std::vector<float>>& descriptors) const {
   if (descriptors.empty()) throw failure("encode: no descriptors");
   Eigen::VectorXf sum = Eigen::VectorXf::Zero(model_.latent_size());
-  for (const std::vector<float>& d : descriptors) sum += encode_descriptor(d).image_latent;
-  const Eigen::VectorXf image_latent = sum / float(descriptors.size());
-  TextureCode code = encode_latent(recognised(image_latent));
-  code.image_latent = image_latent;
-  return code;
+  for (const std::vector<float>& d : descriptors) sum += image_latent(d);  // recognised once, for the mean
+  return image_code(sum / float(descriptors.size()));
 }
 
 Eigen::VectorXf Predictor::recognised(const Eigen::VectorXf& image_latent) const {

@@ -49,6 +49,9 @@ class Predictor {
   const Model& model() const { return model_; }
 
  private:
+  Eigen::VectorXf image_latent(std::span<const float> descriptor) const;  // the texture encoder's output
+  TextureCode image_code(const Eigen::VectorXf& image_latent) const;     // recognised, with image_latent kept
+
   const Model& model_;
   Eigen::VectorXf action_;
   std::vector<Eigen::VectorXf> layer_;  // action encoder outputs, then predictor outputs
