@@ -132,15 +132,7 @@ MagnitudeFrames frames_of(const std::vector<std::vector<double>>& spectra) {
 
 std::vector<double> online_signal(const MagnitudeFrames& frames, std::size_t length) {
   OnlineReconstruction online;
-  std::vector<double> out;
-  for (std::size_t f = 0; f < frames.frames; ++f) {
-    const auto hop = online.push(frames.row(f));
-    out.insert(out.end(), hop.begin(), hop.end());
-  }
-  const auto rest = online.flush();
-  out.insert(out.end(), rest.begin(), rest.end());
-  out.resize(length, 0.0);
-  return out;
+  return stream_frames(online, frames, length);
 }
 
 // The stitched signal of the predicted spectra, scored on the same windows (offset grid[0] = frame 0).

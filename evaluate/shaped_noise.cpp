@@ -67,16 +67,7 @@ std::span<const double> ShapedNoise::flush() {
 
 std::vector<double> shaped_noise(const MagnitudeFrames& s, std::size_t length, const ShapedNoiseOptions& options) {
   ShapedNoise noise(options);
-  std::vector<double> out;
-  out.reserve(covered_samples(s.frames));
-  for (std::size_t m = 0; m < s.frames; ++m) {
-    const std::span<const double> samples = noise.push(s.row(m));
-    out.insert(out.end(), samples.begin(), samples.end());
-  }
-  const std::span<const double> tail = noise.flush();
-  out.insert(out.end(), tail.begin(), tail.end());
-  out.resize(length, 0.0);
-  return out;
+  return stream_frames(noise, s, length);
 }
 
 }  // namespace haptex::evaluate

@@ -54,6 +54,22 @@ void target_magnitude_frame(std::span<const float> amplitudes, std::span<double>
 // Throws haptex::Error, naming `who`, unless `magnitudes` is one frame of 501 finite, non-negative values.
 void check_magnitude_frame(std::span<const double> magnitudes, const char* who);
 
+// The whole signal of a streaming synthesis (OnlineReconstruction, ShapedNoise: push(frame) and flush()
+// returning samples): every frame pushed, then flushed, cut or padded with zeros to `length`.
+template <typename Stream>
+std::vector<double> stream_frames(Stream& stream, const MagnitudeFrames& s, std::size_t length) {
+  std::vector<double> out;
+  out.reserve(covered_samples(s.frames));
+  for (std::size_t m = 0; m < s.frames; ++m) {
+    const std::span<const double> samples = stream.push(s.row(m));
+    out.insert(out.end(), samples.begin(), samples.end());
+  }
+  const std::span<const double> tail = stream.flush();
+  out.insert(out.end(), tail.begin(), tail.end());
+  out.resize(length, 0.0);
+  return out;
+}
+
 // frames x 100 amplitudes (row-major) -> frames x 501 magnitudes. Throws haptex::Error when the
 // size is not a multiple of 100.
 MagnitudeFrames target_magnitudes(std::span<const double> amplitudes);
