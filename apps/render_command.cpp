@@ -45,7 +45,10 @@ class RenderCommand : public Command {
                                   "--reconstruct noise), output delayed as played");
     app.add_option("--full-scale", full_scale_, "m/s^2 at WAV full scale (default: the peak, rounded up to 3 digits)")
         ->check(CLI::PositiveNumber);
-    app.add_option("--seed", seed_, "fgla: seed of the random initial phase; noise: seed of the noise")->capture_default_str();
+    app.add_flag("--steady", steady_, "online: play the predicted spectra as they are, without drawing each frame's magnitudes "
+                                      "around them (steadier than any surface; docs/render.md)");
+    app.add_option("--seed", seed_, "fgla: seed of the random initial phase; online: of the frames' scatter; noise: of the noise")
+        ->capture_default_str();
     app.add_flag("--force", force_, "Replace the output files if they exist");
   }
 
@@ -105,7 +108,8 @@ class RenderCommand : public Command {
       throw Error(Error::Kind::bad_input, "render: --live plays frame by frame: use --reconstruct online or noise, not fgla");
     o.reconstruction = evaluate::parse_reconstruction(live_ && reconstruction_ == "fgla" ? "online" : reconstruction_);
     o.as_played = live_;
-    o.fgla.seed = o.noise.seed = seed_;
+    o.fgla.seed = o.noise.seed = o.online.seed = seed_;
+    o.online.scatter = !steady_;
     o.online.look_ahead = std::size_t(look_ahead_);
     if (iterations_ >= 0) o.fgla.iterations = o.online.iterations = std::size_t(iterations_);
     if (o.reconstruction == evaluate::Reconstruction::online && iterations_ == 0)
@@ -118,6 +122,7 @@ class RenderCommand : public Command {
     if (o.reconstruction == evaluate::Reconstruction::noise)
       return "shaped noise, seed " + std::to_string(o.noise.seed) + (o.as_played ? " (live: delayed as played)" : "");
     return "online look-ahead " + std::to_string(o.online.look_ahead * 10) + " ms " + std::to_string(o.online.iterations) + " passes" +
+           (o.online.scatter ? ", scattered (seed " + std::to_string(o.online.seed) + ")" : ", steady") +
            (o.as_played ? " (live: delayed as played)" : " (latency compensated)");
   }
 
@@ -166,8 +171,13 @@ class RenderCommand : public Command {
     if (r.options.reconstruction == evaluate::Reconstruction::fgla) {
       out["iterations"] = r.options.fgla.iterations;
     } else {
-      if (r.options.reconstruction == evaluate::Reconstruction::online) out["passes_per_frame"] = r.options.online.iterations;
-      else out["seed"] = r.options.noise.seed;
+      if (r.options.reconstruction == evaluate::Reconstruction::online) {
+        out["passes_per_frame"] = r.options.online.iterations;
+        out["scatter"] = r.options.online.scatter;
+        out["seed"] = r.options.online.seed;
+      } else {
+        out["seed"] = r.options.noise.seed;
+      }
       out["latency_samples"] = r.rendering.latency_samples;
       out["slowest_frame_seconds"] = r.rendering.slowest_frame_seconds;
     }
@@ -187,7 +197,7 @@ class RenderCommand : public Command {
   CLI::Option* reconstruct_option_ = nullptr;
   predict::TextureChoice texture_;
   int iterations_ = -1, look_ahead_ = 3;
-  bool live_ = false, force_ = false;
+  bool live_ = false, steady_ = false, force_ = false;
   double full_scale_ = 0;
   std::uint64_t seed_ = 0;
 };

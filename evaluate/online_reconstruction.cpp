@@ -48,7 +48,10 @@ OnlineReconstruction::OnlineReconstruction(const OnlineReconstructionOptions& op
       magnitudes_((options.look_ahead + 1) * kReconstructionBins, 0.0),
       overlay_(kWindowSamples, 0.0),
       output_(options.look_ahead * kHop + kWindowSamples - kHop, 0.0),
-      spectrum_(kReconstructionBins) {
+      spectrum_(kReconstructionBins),
+      scatter_(options.scatter),
+      noise_(options.seed),
+      scattered_(kReconstructionBins) {
   fft_.inverse(spectrum_, overlay_);  // sizes FFTW's per-thread scratch on this thread now
 }
 
@@ -57,11 +60,12 @@ void OnlineReconstruction::reset() {
   std::fill(magnitudes_.begin(), magnitudes_.end(), 0.0);
   shifts_ = received_ = emitted_ = 0;
   flushing_ = false;
+  noise_.restart();
 }
 
 std::span<const double> OnlineReconstruction::push(std::span<const double> magnitudes) {
   check_magnitude_frame(magnitudes, "online reconstruction");
-  shift_in(magnitudes);
+  shift_in(scatter_ ? scattered(magnitudes) : magnitudes);
   ++received_;
   refine();
   if (frame_at(kLookback) < 0) return {};
@@ -87,6 +91,12 @@ std::span<const double> OnlineReconstruction::flush() {
   }
   reset();
   return std::span(output_).first(produced);
+}
+
+std::span<const double> OnlineReconstruction::scattered(std::span<const double> magnitudes) {
+  const std::span<const std::complex<double>> noise = noise_.next();
+  for (std::size_t k = 0; k < kReconstructionBins; ++k) scattered_[k] = magnitudes[k] * std::abs(noise[k]) * noise_.unit_gain();
+  return scattered_;
 }
 
 // One slot to the left; the new last slot is empty, its target `magnitudes` (zeros when empty).

@@ -16,10 +16,12 @@
 // Hann-windowed result. The oldest look-ahead frame is then final, and so are the 100 samples where
 // it starts: every frame overlapping them is final too.
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
 #include "core/signal/fft.hpp"
+#include "evaluate/noise_frames.hpp"
 #include "evaluate/target_magnitudes.hpp"
 
 namespace haptex::evaluate {
@@ -27,6 +29,12 @@ namespace haptex::evaluate {
 struct OnlineReconstructionOptions {
   std::size_t look_ahead = 3;  // frames after the one being finished; latency = look_ahead * 100 samples
   std::size_t iterations = 4;  // passes over the look-ahead frames per new frame, >= 1
+  // Draw each frame's targets around the pushed magnitudes with a noise-like texture's spread
+  // before finding their phase: every bin times |N_k| / E|N_k| of a white-noise stream's frame
+  // (evaluate/noise_frames.hpp; mean 1, Rayleigh, correlated from frame to frame as a recording's
+  // windows are). Without it RTISI-LA plays the expected spectrum, steadier than any surface.
+  bool scatter = false;
+  std::uint64_t seed = 0;  // the scatter's noise
 };
 
 // For a haptic loop: construct once, push one magnitude frame every 100 samples (10 ms), play what
@@ -52,10 +60,11 @@ class OnlineReconstruction {
   // object starts a new stream.
   std::span<const double> flush();
 
-  // Forgets the stream.
+  // Forgets the stream (the scatter goes on with fresh noise).
   void reset();
 
  private:
+  std::span<const double> scattered(std::span<const double> magnitudes);
   void shift_in(std::span<const double> magnitudes);
   void refine();
   void update_slot(std::size_t slot, std::span<const double> analysis_window);
@@ -69,6 +78,9 @@ class OnlineReconstruction {
   std::vector<double> magnitudes_;  // (look_ahead_ + 1) x 501: the look-ahead frames' targets
   std::vector<double> overlay_, output_;
   std::vector<std::complex<double>> spectrum_;
+  bool scatter_;
+  NoiseFrames noise_;
+  std::vector<double> scattered_;  // the newest frame's targets, drawn around the pushed magnitudes
   std::size_t shifts_ = 0, received_ = 0, emitted_ = 0;
   bool flushing_ = false;
 };

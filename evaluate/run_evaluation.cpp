@@ -130,8 +130,8 @@ MagnitudeFrames frames_of(const std::vector<std::vector<double>>& spectra) {
   return target_magnitudes(std::span<const double>(flat));
 }
 
-std::vector<double> online_signal(const MagnitudeFrames& frames, std::size_t length) {
-  OnlineReconstruction online;
+std::vector<double> online_signal(const MagnitudeFrames& frames, std::size_t length, std::uint64_t seed) {
+  OnlineReconstruction online({.scatter = true, .seed = seed});
   return stream_frames(online, frames, length);
 }
 
@@ -143,7 +143,7 @@ Scores stitched_scores(const std::vector<std::vector<double>>& spectra, const st
   const MagnitudeFrames frames = frames_of(spectra);
   const std::size_t length = covered_samples(frames.frames);
   const double start = thread_seconds();
-  std::vector<double> x = key == "online"  ? online_signal(frames, length)
+  std::vector<double> x = key == "online"  ? online_signal(frames, length, seed)
                          : key == "noise" ? shaped_noise(frames, length, {seed})
                                           : griffin_lim(frames, length, {std::stoul(key.substr(5)), 0.99, InitialPhase::random, seed});
   const double seconds = thread_seconds() - start + predict_seconds;
@@ -428,7 +428,7 @@ std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& mode
 std::string method_setting(const std::string& key, const std::vector<ModelInput>& models) {
   const auto colon = key.find(':');
   if (key.rfind("fgla:", 0) == 0) return key.substr(5) + " iterations";
-  if (key == "online") return "look-ahead 3 frames";
+  if (key == "online") return "look-ahead 3 frames, scattered";
   if (key == "noise") return "frame by frame, no look-ahead";
   const ModelInput& m = models[std::stoul(key.substr(colon + 1))];
   return m.label + ", " + std::to_string(m.model.config.value("predictor_hidden", 0)) + " hidden";

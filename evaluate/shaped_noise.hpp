@@ -19,11 +19,11 @@
 // pushing frame m completes samples [100 m, 100 m + 100).
 #include <cstddef>
 #include <cstdint>
-#include <random>
 #include <span>
 #include <vector>
 
 #include "core/signal/fft.hpp"
+#include "evaluate/noise_frames.hpp"
 #include "evaluate/target_magnitudes.hpp"
 
 namespace haptex::evaluate {
@@ -48,11 +48,9 @@ class ShapedNoise {
 
  private:
   const signal::RealFft<double>& fft_;
-  std::vector<double> window_, noise_, frame_, sum_, output_;
+  NoiseFrames noise_;
+  std::vector<double> frame_, sum_, output_;
   std::vector<std::complex<double>> spectrum_;
-  double gain_;  // per unit target magnitude
-  std::mt19937_64 random_;
-  std::normal_distribution<double> normal_;
   std::size_t frames_ = 0;
 };
 

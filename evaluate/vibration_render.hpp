@@ -49,7 +49,8 @@ Reconstruction parse_reconstruction(const std::string& name);
 struct RenderOptions {
   Reconstruction reconstruction = Reconstruction::fgla;
   GriffinLimOptions fgla;              // 100 iterations, momentum 0.99, seeded random initial phase
-  OnlineReconstructionOptions online;  // look-ahead 3 frames (30 ms), 4 passes per frame
+  // look-ahead 3 frames (30 ms), 4 passes per frame, each frame drawn around the prediction (scatter)
+  OnlineReconstructionOptions online{.scatter = true};
   ShapedNoiseOptions noise;            // noise: the noise's seed
   bool as_played = false;              // online and noise: place samples where a live loop plays them
 };

@@ -138,9 +138,10 @@ TEST(RenderCli, SpectralConvergenceOrdersTheReconstructions) {
   const TempDir dir;
   const std::string traj = write_trajectory(dir, 20000);
   const nlohmann::json fgla = render_json(dir, traj, "fgla.wav", {});
-  const nlohmann::json online = render_json(dir, traj, "online.wav", {"--reconstruct", "online"});
+  // Steady: the reconstruction's own consistency (the default scatter moves it off the prediction on purpose).
+  const nlohmann::json online = render_json(dir, traj, "online.wav", {"--reconstruct", "online", "--steady"});
   const nlohmann::json random = render_json(dir, traj, "random.wav", {"--iterations", "0"});
-  const nlohmann::json live = render_json(dir, traj, "live.wav", {"--live"});
+  const nlohmann::json live = render_json(dir, traj, "live.wav", {"--live", "--steady"});
   ASSERT_TRUE(fgla.contains("spectral_convergence_db") && online.contains("spectral_convergence_db") &&
               random.contains("spectral_convergence_db") && live.contains("spectral_convergence_db"));
   const double sc_fgla = fgla["spectral_convergence_db"], sc_online = online["spectral_convergence_db"],
@@ -185,6 +186,31 @@ TEST(RenderCli, ShapedNoiseRendersOfflineAndLiveAlike) {
   EXPECT_NE(read_wav_file(dir.file("other.wav")).samples, o.samples);
   EXPECT_GT(noise["spectral_convergence_db"].get<double>(), -12.0);  // not the expected spectrum, window by window
   EXPECT_LT(noise["spectral_convergence_db"].get<double>(), 0.0);
+}
+
+// The online method draws each frame's targets around the prediction by default: seeded, further
+// from the prediction than the steady reconstruction, still far better than the random phase, and
+// live it is the same rendering later by the latency and half a frame.
+TEST(RenderCli, OnlineScattersByDefaultAndSteadyTurnsItOff) {
+  const TempDir dir;
+  const std::string traj = write_trajectory(dir, 20000);
+  const nlohmann::json scattered = render_json(dir, traj, "scattered.wav", {"--reconstruct", "online", "--seed", "3"});
+  const nlohmann::json steady = render_json(dir, traj, "steady.wav", {"--reconstruct", "online", "--steady"});
+  const nlohmann::json live = render_json(dir, traj, "live.wav", {"--live", "--seed", "3"});
+  const nlohmann::json random = render_json(dir, traj, "random.wav", {"--iterations", "0"});
+  EXPECT_EQ(scattered["scatter"], true);
+  EXPECT_EQ(scattered["seed"], 3);
+  EXPECT_EQ(steady["scatter"], false);
+  const double sc_scattered = scattered["spectral_convergence_db"], sc_steady = steady["spectral_convergence_db"],
+               sc_random = random["spectral_convergence_db"];
+  std::printf("[ figures  ] online SC %.1f dB scattered, %.1f dB steady; random phase %.1f dB\n", sc_scattered, sc_steady, sc_random);
+  EXPECT_GT(sc_scattered, sc_steady + 3.0);
+  EXPECT_LT(sc_scattered, sc_random - 2.0);
+  const WavFile o = read_wav_file(dir.file("scattered.wav")), l = read_wav_file(dir.file("live.wav"));
+  const double go = o.full_scale(), gl = l.full_scale();
+  for (std::size_t n = 801; n < 20000; ++n) ASSERT_NEAR(l.samples[n] * gl, o.samples[n - 801] * go, (go + gl) * 0x1p-22) << n;
+  render_json(dir, traj, "other.wav", {"--reconstruct", "online", "--seed", "4"});
+  EXPECT_NE(read_wav_file(dir.file("other.wav")).samples, o.samples);
 }
 
 // Standing still, the model sees force and speed below its training range and saturates them:

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 #include <cstdlib>
 #include <limits>
 #include <new>
@@ -14,6 +16,7 @@
 #include "core/error.hpp"
 #include "evaluate/spectral_convergence.hpp"
 #include "tests/evaluate/texture_signal.hpp"
+#include "tests/evaluate/window_statistics.hpp"
 #include "tests/support/allocation_counter.hpp"
 #include "tests/support/npy.hpp"
 
@@ -144,7 +147,9 @@ TEST(EvaluateOnlineReconstruction, FlushStartsANewStream) {
 
 TEST(EvaluateOnlineReconstruction, PushDoesNotAllocate) {
   const auto s = golden_s();
-  OnlineReconstruction online(options(3, 4));
+  OnlineReconstructionOptions o = options(3, 4);
+  o.scatter = true;
+  OnlineReconstruction online(o);
   std::size_t returned = 0;
   {
     const test::CountAllocations counter;
@@ -157,6 +162,32 @@ TEST(EvaluateOnlineReconstruction, PushDoesNotAllocate) {
   const test::CountAllocations counter;
   OnlineReconstruction another(options(3, 4));
   EXPECT_GT(counter.count(), 0u);
+}
+
+// Without scatter RTISI-LA plays one steady spectrum steadier than noise (0.39 here); with it, each window's amplitudes
+// scatter around the prediction about as a noise-like recording's do (coefficient of variation
+// sqrt(4/pi - 1) = 0.52 per bin), and the level stays the prediction's.
+TEST(EvaluateOnlineReconstruction, ScatterVariesLikeARecording) {
+  using namespace test_windows;
+  const std::vector<double> a = texture(1.0);
+  const std::size_t frames = 400;
+  const MagnitudeFrames s = frames_of(a, frames);
+  OnlineReconstructionOptions scattered = options(3, 4);
+  scattered.scatter = true;
+  scattered.seed = 5;
+  const WindowStatistics steady = statistics(run(s, options(3, 4)).samples, 10, frames - 10);
+  const WindowStatistics varied = statistics(run(s, scattered).samples, 10, frames - 10);
+  double predicted = 0, rendered = 0;
+  for (std::size_t k = 1; k + 1 < a.size(); ++k) predicted += a[k], rendered += varied.mean[k];
+  std::printf("[ figures  ] median variation %.3f steady, %.3f with scatter; summed amplitude %.3f of the prediction\n",
+              median(steady.variation), median(varied.variation), rendered / predicted);
+  EXPECT_LT(median(steady.variation), 0.45);
+  EXPECT_NEAR(median(varied.variation), std::sqrt(4 / std::numbers::pi - 1), 0.1);
+  EXPECT_NEAR(rendered / predicted, 1.0, 0.1);
+  // The same seed gives the same signal, another seed another one.
+  EXPECT_EQ(run(s, scattered).samples, run(s, scattered).samples);
+  scattered.seed = 6;
+  EXPECT_NE(run(s, scattered).samples, run(frames_of(a, frames), options(3, 4)).samples);
 }
 
 TEST(EvaluateOnlineReconstruction, RejectsBadFrames) {
