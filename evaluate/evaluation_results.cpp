@@ -101,8 +101,13 @@ RealismMedians realism_medians(const Realism& r) {
   RealismMedians m;
   m.section_lsd_db = median_of(r.materials, [](const MaterialRealism& x) { return x.section_lsd_db; });
   m.spread_ratio = median_of(r.materials, [](const MaterialRealism& x) { return x.spread_ratio; });
-  m.materials = std::size_t(std::count_if(r.materials.begin(), r.materials.end(),
-                                          [](const MaterialRealism& x) { return std::isfinite(x.spread_ratio); }));
+  m.floor_ratio = median_of(r.materials, [](const MaterialRealism& x) { return x.floor_ratio; });
+  m.rendered_floor_ratio = median_of(r.materials, [](const MaterialRealism& x) { return x.rendered_floor_ratio; });
+  for (const MaterialRealism& x : r.materials) {
+    m.materials += std::isfinite(x.spread_ratio);
+    m.spread_in_range += x.spread_ratio >= kSpreadLow && x.spread_ratio <= kSpreadHigh;
+    m.near_rendered_floor += x.rendered_floor_ratio <= kRenderedFloorMargin;
+  }
   return m;
 }
 

@@ -72,6 +72,10 @@ struct SpeedPoint {
 struct MaterialRealism {
   std::string id, name;
   double section_lsd_db = kNotMeasured, spread_ratio = kNotMeasured;
+  // The rendering's mean window distance to the recording, over the oracle's, and over the
+  // generating model's own renderings' (AR oracles): the best a rendering that varies like the
+  // surface can score is the latter, about sqrt(2) times the oracle (docs/evaluate.md, "Realism").
+  double distance = kNotMeasured, floor_ratio = kNotMeasured, rendered_floor_ratio = kNotMeasured;
 };
 struct Realism {
   std::string method, setting;
@@ -151,8 +155,13 @@ double rendered_ratio(const MaterialFloor& f);
 // measured (NaN where none was); materials: how many have a spread ratio.
 struct RealismMedians {
   double section_lsd_db = kNotMeasured, spread_ratio = kNotMeasured;
+  double floor_ratio = kNotMeasured, rendered_floor_ratio = kNotMeasured;
   std::size_t materials = 0;
+  std::size_t spread_in_range = 0;        // materials with a spread ratio in [kSpreadLow, kSpreadHigh]
+  std::size_t near_rendered_floor = 0;    // materials within kRenderedFloorMargin of the rendered floor
 };
+// What "varies like the surface" and "scores like the best rendering" mean in the counts above.
+inline constexpr double kSpreadLow = 0.8, kSpreadHigh = 1.2, kRenderedFloorMargin = 1.25;
 RealismMedians realism_medians(const Realism& r);
 
 }  // namespace haptex::evaluate

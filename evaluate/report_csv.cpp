@@ -106,7 +106,7 @@ std::string write_realism(const std::string& path, const std::vector<Realism>& r
   for (const Realism& r : realism)
     for (const MaterialRealism& m : r.materials)
       out.row(csv_field(r.method), csv_field(r.setting), csv_field(m.id), csv_field(m.name), csv_measured(m.section_lsd_db),
-              csv_measured(m.spread_ratio));
+              csv_measured(m.spread_ratio), csv_measured(m.distance), csv_measured(m.floor_ratio), csv_measured(m.rendered_floor_ratio));
   return out.close();
 }
 

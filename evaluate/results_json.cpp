@@ -111,12 +111,19 @@ nlohmann::json realism_json(const Realism& r) {
     materials.push_back({{"id", m.id},
                          {"name", m.name},
                          {"section_lsd_db", json_measured(m.section_lsd_db)},
-                         {"spread_ratio", json_measured(m.spread_ratio)}});
+                         {"spread_ratio", json_measured(m.spread_ratio)},
+                         {"distance", json_measured(m.distance)},
+                         {"floor_ratio", json_measured(m.floor_ratio)},
+                         {"rendered_floor_ratio", json_measured(m.rendered_floor_ratio)}});
   const RealismMedians medians = realism_medians(r);
   return {{"method", r.method},
           {"setting", r.setting},
           {"median_section_lsd_db", json_measured(medians.section_lsd_db)},
           {"median_spread_ratio", json_measured(medians.spread_ratio)},
+          {"median_floor_ratio", json_measured(medians.floor_ratio)},
+          {"median_rendered_floor_ratio", json_measured(medians.rendered_floor_ratio)},
+          {"spread_in_range", medians.spread_in_range},
+          {"near_rendered_floor", medians.near_rendered_floor},
           {"materials", materials}};
 }
 

@@ -447,12 +447,14 @@ std::string baseline_label(const std::string& key, const std::string& baseline, 
   return "mean training spectrum per material";
 }
 
-MaterialRealism material_realism(const MaterialSignals& m, const Scores& s) {
+MaterialRealism material_realism(const MaterialSignals& m, const Scores& s, const MaterialFloor& floor) {
   std::vector<double> lsd, spread;
   for (const SectionRealism& r : s.realism)
     if (std::isfinite(r.section_lsd_db) && std::isfinite(r.spread_ratio)) lsd.push_back(r.section_lsd_db), spread.push_back(r.spread_ratio);
   if (lsd.empty()) return {m.id, m.name};
-  return {m.id, m.name, mean(lsd), mean(spread)};
+  const double distance = mean(s.windows);
+  return {m.id, m.name, mean(lsd), mean(spread), distance, floor.kind == "oracle" ? distance / floor.distance : kNotMeasured,
+          distance / floor.rendered};
 }
 
 // One time-domain method's realism over the materials; key "" is the AR baseline as rendered.
@@ -462,7 +464,7 @@ Realism realism_of(const std::string& key, const std::string& method, const std:
   for (std::size_t m = 0; m < runs.size(); ++m) {
     const auto it = runs[m].methods.find(key);
     const Scores* s = key.empty() ? &runs[m].baseline : it == runs[m].methods.end() ? nullptr : &it->second;
-    if (s && !s->realism.empty()) r.materials.push_back(material_realism(signals[m], *s));
+    if (s && !s->realism.empty()) r.materials.push_back(material_realism(signals[m], *s, runs[m].floor));
   }
   return r;
 }

@@ -82,7 +82,7 @@ std::vector<MaterialFloor> sample_floors() {
 // Realism: the AR baseline as steady as the recording, FGLA too steady; Felt not measured.
 std::vector<Realism> sample_realism() {
   return {{"AR baseline", "ar-refit", {{"book", "Book", 3.25, 1.25}, {"brick_2", "Brick, 2", 2.75, 0.75}, {"felt", "Felt", kNaN, kNaN}}},
-          {"unified + FGLA", "100 iterations", {{"book", "Book", 1.5, 0.375}, {"brick_2", "Brick, 2", 2.5, 0.625}}}};
+          {"unified + FGLA", "100 iterations", {{"book", "Book", 1.5, 0.375, 0.9, 1.5, 1.1}, {"brick_2", "Brick, 2", 2.5, 0.625, 1.0, 1.8, 1.3}}}};
 }
 
 // Five materials in the paper's experiment: better and significant (Book; Felt with t = -infinity),
@@ -501,7 +501,7 @@ TEST(ReportWriter, FloorsAndRealismCsvsReadBack) {
     for (const MaterialRealism& m : r.materials) {
       ASSERT_LT(row, realism.size());
       expect_row(head(realism[row], 4), {r.method, r.setting, m.id, m.name}, {});
-      expect_measured(realism[row++], 4, {m.section_lsd_db, m.spread_ratio});
+      expect_measured(realism[row++], 4, {m.section_lsd_db, m.spread_ratio, m.distance, m.floor_ratio, m.rendered_floor_ratio});
     }
   EXPECT_EQ(row, realism.size());
 }
@@ -529,8 +529,10 @@ TEST(ReportWriter, MarkdownShowsTheFloorRealismAndWhatEachComparisonAsks) {
   EXPECT_TRUE(has("| Brick, 2 | oracle | Monte Carlo | 120 | – | – | – | – | – | – | – | – | – |"));
   EXPECT_TRUE(has("pays the randomness twice"));
   // Realism: medians over the materials where each figure was measured.
-  EXPECT_TRUE(has("| AR baseline | ar-refit | 2 | 3.000 | 1.000 |"));
-  EXPECT_TRUE(has("| unified + FGLA | 100 iterations | 2 | 2.000 | 0.5000 |"));
+  // Spread in range: neither 1.25 nor 0.75 (AR), neither 0.375 nor 0.625; within 25 % of the
+  // rendered floor: 1.1 but not 1.3; the AR rows have no distance ("–").
+  EXPECT_TRUE(has("| AR baseline | ar-refit | 2 | 3.000 | 1.000 | 0 | – | – | – |"));
+  EXPECT_TRUE(has("| unified + FGLA | 100 iterations | 2 | 2.000 | 0.5000 | 0 | 1.650 | 1.200 | 1 |"));
   EXPECT_TRUE(has("about 0.52 (Rayleigh amplitudes)"));
   EXPECT_TRUE(has("| unified + FGLA | 100 iterations | 120.0 ms | 0.6000 | signal | 2.000 | 0.5000 |"));
   EXPECT_TRUE(has("| AR baseline | expected spectrum | 0.4000 ms | 0.5200 | spectrum | – | – |"));
