@@ -1,12 +1,12 @@
 #pragma once
-// The 8 training variants of a GelSight frame (DESIGN.md section 6): the four 90-degree rotations,
+// The 8 training variants of a GelSight frame (docs/predict.md): the four 90-degree rotations,
 // each with and without mirroring, i.e. the symmetries of the square. A texture has no preferred
 // orientation on the sensor, so all 8 are equally real images of it.
 #include <vector>
 
 #include <opencv2/core.hpp>
 
-namespace haptex::capture {
+namespace haptex::predict {
 
 constexpr int kAugmentations = 8;
 
@@ -16,4 +16,4 @@ constexpr int kAugmentations = 8;
 cv::Mat augment(const cv::Mat& image, int variant);
 std::vector<cv::Mat> all_augmentations(const cv::Mat& image);
 
-}  // namespace haptex::capture
+}  // namespace haptex::predict

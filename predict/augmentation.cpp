@@ -1,8 +1,8 @@
-#include "capture/augmentation.hpp"
+#include "predict/augmentation.hpp"
 
 #include "core/error.hpp"
 
-namespace haptex::capture {
+namespace haptex::predict {
 
 cv::Mat augment(const cv::Mat& image, int variant) {
   if (variant < 0 || variant >= kAugmentations)
@@ -24,4 +24,4 @@ std::vector<cv::Mat> all_augmentations(const cv::Mat& image) {
   return out;
 }
 
-}  // namespace haptex::capture
+}  // namespace haptex::predict

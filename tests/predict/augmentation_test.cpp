@@ -1,9 +1,9 @@
 #include <gtest/gtest.h>
 
-#include "capture/augmentation.hpp"
 #include "core/error.hpp"
+#include "predict/augmentation.hpp"
 
-namespace haptex::capture {
+namespace haptex::predict {
 namespace {
 
 // A 2 x 3 image with distinct pixels, so every symmetry gives a different image.
@@ -42,4 +42,4 @@ TEST(Augmentation, KeepsColourImagesAndRefusesUnknownVariants) {
 }
 
 }  // namespace
-}  // namespace haptex::capture
+}  // namespace haptex::predict
