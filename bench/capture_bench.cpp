@@ -14,8 +14,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "capture/contact_score.hpp"
+#include "capture/device/fake_camera.hpp"
 #include "capture/extract_presses.hpp"
-#include "capture/fake_camera.hpp"
 #include "capture/press_recorder.hpp"
 #include "capture/scoring_image.hpp"
 #include "tests/support/temp_dir.hpp"

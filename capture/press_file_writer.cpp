@@ -6,7 +6,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "capture/fourcc.hpp"
+#include "capture/device/fourcc.hpp"
 #include "capture/image_datasets.hpp"
 #include "core/naming.hpp"
 

@@ -11,8 +11,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "capture/drop_counter.hpp"
-#include "capture/frame.hpp"
+#include "capture/device/drop_counter.hpp"
+#include "capture/device/frame.hpp"
 #include "capture/vlen_bytes.hpp"
 #include "core/h5/atomic_file.hpp"
 

@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <thread>
 
-#include "capture/camera_controls.hpp"
-#include "capture/fourcc.hpp"
+#include "capture/device/camera_controls.hpp"
+#include "capture/device/fourcc.hpp"
+#include "capture/device/v4l2_device.hpp"
 #include "capture/frame_queue.hpp"
-#include "capture/v4l2_device.hpp"
 #include "core/error.hpp"
 
 namespace haptex::capture {

@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "capture/format_negotiation.hpp"
-#include "capture/kernel_interface.hpp"
+#include "capture/device/format_negotiation.hpp"
+#include "capture/device/kernel_interface.hpp"
+#include "capture/device/v4l2_stream.hpp"
 #include "capture/session_manifest.hpp"
 #include "capture/take_processor.hpp"
-#include "capture/v4l2_stream.hpp"
 #include "core/progress.hpp"
 
 namespace haptex::capture {

@@ -3,7 +3,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "capture/fourcc.hpp"
+#include "capture/device/fourcc.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"

@@ -8,9 +8,9 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "capture/camera_controls.hpp"
-#include "capture/format_negotiation.hpp"
-#include "capture/v4l2_device.hpp"
+#include "capture/device/camera_controls.hpp"
+#include "capture/device/format_negotiation.hpp"
+#include "capture/device/v4l2_device.hpp"
 
 namespace haptex::capture {
 

@@ -13,8 +13,8 @@
 #include <opencv2/core.hpp>
 
 #include "capture/contact_score.hpp"
-#include "capture/drop_counter.hpp"
-#include "capture/frame.hpp"
+#include "capture/device/drop_counter.hpp"
+#include "capture/device/frame.hpp"
 #include "capture/press_file_writer.hpp"
 #include "capture/press_segmenter.hpp"
 #include "capture/session_manifest.hpp"

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 #include <linux/videodev2.h>
 
-#include "capture/camera_controls.hpp"
+#include "capture/device/camera_controls.hpp"
 #include "core/error.hpp"
 #include "tests/capture/fake_setup.hpp"
 

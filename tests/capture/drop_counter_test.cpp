@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "capture/drop_counter.hpp"
+#include "capture/device/drop_counter.hpp"
 
 namespace haptex::capture {
 namespace {

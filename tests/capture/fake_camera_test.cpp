@@ -6,7 +6,7 @@
 
 #include <cerrno>
 
-#include "capture/fake_camera.hpp"
+#include "capture/device/fake_camera.hpp"
 #include "tests/capture/fake_setup.hpp"
 
 namespace haptex::capture {

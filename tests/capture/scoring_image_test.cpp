@@ -4,7 +4,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "capture/fake_scene.hpp"
+#include "capture/device/fake_scene.hpp"
 #include "capture/scoring_image.hpp"
 
 namespace haptex::capture {

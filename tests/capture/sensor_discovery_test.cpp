@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "capture/sensor_discovery.hpp"
+#include "capture/device/sensor_discovery.hpp"
 #include "core/error.hpp"
 #include "tests/support/temp_dir.hpp"
 

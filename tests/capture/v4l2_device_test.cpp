@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 #include <linux/videodev2.h>
 
-#include "capture/format_negotiation.hpp"
-#include "capture/v4l2_device.hpp"
+#include "capture/device/format_negotiation.hpp"
+#include "capture/device/v4l2_device.hpp"
 #include "core/error.hpp"
 #include "tests/capture/fake_setup.hpp"
 

@@ -4,8 +4,8 @@
 
 #include <thread>
 
-#include "capture/format_negotiation.hpp"
-#include "capture/v4l2_stream.hpp"
+#include "capture/device/format_negotiation.hpp"
+#include "capture/device/v4l2_stream.hpp"
 #include "core/error.hpp"
 #include "tests/capture/fake_setup.hpp"
 

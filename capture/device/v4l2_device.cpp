@@ -1,4 +1,4 @@
-#include "capture/v4l2_device.hpp"
+#include "capture/device/v4l2_device.hpp"
 
 #include <fcntl.h>
 #include <linux/videodev2.h>

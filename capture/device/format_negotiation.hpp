@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "capture/v4l2_device.hpp"
+#include "capture/device/v4l2_device.hpp"
 
 namespace haptex::capture {
 

@@ -1,4 +1,4 @@
-#include "capture/format_negotiation.hpp"
+#include "capture/device/format_negotiation.hpp"
 
 #include <linux/videodev2.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "capture/fourcc.hpp"
+#include "capture/device/fourcc.hpp"
 #include "core/error.hpp"
 
 namespace haptex::capture {

@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "capture/drop_counter.hpp"
-#include "capture/format_negotiation.hpp"
-#include "capture/frame.hpp"
-#include "capture/v4l2_device.hpp"
+#include "capture/device/drop_counter.hpp"
+#include "capture/device/format_negotiation.hpp"
+#include "capture/device/frame.hpp"
+#include "capture/device/v4l2_device.hpp"
 
 namespace haptex::capture {
 

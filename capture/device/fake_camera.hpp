@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "capture/fake_scene.hpp"
-#include "capture/kernel_interface.hpp"
+#include "capture/device/fake_scene.hpp"
+#include "capture/device/kernel_interface.hpp"
 
 namespace haptex::capture {
 

@@ -1,4 +1,4 @@
-#include "capture/sensor_discovery.hpp"
+#include "capture/device/sensor_discovery.hpp"
 
 #include <algorithm>
 #include <filesystem>

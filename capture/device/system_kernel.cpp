@@ -1,4 +1,4 @@
-#include "capture/system_kernel.hpp"
+#include "capture/device/system_kernel.hpp"
 
 #include <fcntl.h>
 #include <sys/ioctl.h>

@@ -1,4 +1,4 @@
-#include "capture/drop_counter.hpp"
+#include "capture/device/drop_counter.hpp"
 
 #include <algorithm>
 #include <cmath>

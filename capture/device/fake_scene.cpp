@@ -1,4 +1,4 @@
-#include "capture/fake_scene.hpp"
+#include "capture/device/fake_scene.hpp"
 
 #include <linux/videodev2.h>
 

@@ -1,10 +1,10 @@
-#include "capture/fake_device_spec.hpp"
+#include "capture/device/fake_device_spec.hpp"
 
 #include <linux/videodev2.h>
 
 #include <sstream>
 
-#include "capture/fourcc.hpp"
+#include "capture/device/fourcc.hpp"
 #include "core/error.hpp"
 
 namespace haptex::capture {

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "capture/fake_camera.hpp"
+#include "capture/device/fake_camera.hpp"
 
 namespace haptex::capture {
 

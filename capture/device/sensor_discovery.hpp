@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "capture/sensor_catalog.hpp"
-#include "capture/usb_discovery.hpp"
+#include "capture/device/sensor_catalog.hpp"
+#include "capture/device/usb_discovery.hpp"
 
 namespace haptex::capture {
 

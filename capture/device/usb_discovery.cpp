@@ -1,4 +1,4 @@
-#include "capture/usb_discovery.hpp"
+#include "capture/device/usb_discovery.hpp"
 
 #include <libusb-1.0/libusb.h>
 

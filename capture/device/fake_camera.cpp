@@ -1,4 +1,4 @@
-#include "capture/fake_camera.hpp"
+#include "capture/device/fake_camera.hpp"
 
 #include <linux/videodev2.h>
 #include <sys/mman.h>

@@ -1,4 +1,4 @@
-#include "capture/sensor_catalog.hpp"
+#include "capture/device/sensor_catalog.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "capture/kernel_interface.hpp"
+#include "capture/device/kernel_interface.hpp"
 
 namespace haptex::capture {
 

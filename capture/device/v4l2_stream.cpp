@@ -1,4 +1,4 @@
-#include "capture/v4l2_stream.hpp"
+#include "capture/device/v4l2_stream.hpp"
 
 #include <linux/videodev2.h>
 #include <sys/mman.h>

@@ -1,4 +1,4 @@
-#include "capture/fourcc.hpp"
+#include "capture/device/fourcc.hpp"
 
 #include <cctype>
 

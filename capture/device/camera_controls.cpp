@@ -1,4 +1,4 @@
-#include "capture/camera_controls.hpp"
+#include "capture/device/camera_controls.hpp"
 
 #include <linux/videodev2.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 // The real system calls behind KernelInterface.
-#include "capture/kernel_interface.hpp"
+#include "capture/device/kernel_interface.hpp"
 
 namespace haptex::capture {
 

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "capture/v4l2_device.hpp"
+#include "capture/device/v4l2_device.hpp"
 
 namespace haptex::capture {
 
