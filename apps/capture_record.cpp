@@ -13,7 +13,7 @@
 #include "capture/device/fourcc.hpp"
 #include "capture/device/sensor_discovery.hpp"
 #include "capture/device/system_kernel.hpp"
-#include "capture/press_recorder.hpp"
+#include "capture/recording/press_recorder.hpp"
 #include "core/error.hpp"
 #include "core/text/utf8.hpp"
 

@@ -16,7 +16,7 @@
 #include "capture/contact_score.hpp"
 #include "capture/device/fake_camera.hpp"
 #include "capture/extract_presses.hpp"
-#include "capture/press_recorder.hpp"
+#include "capture/recording/press_recorder.hpp"
 #include "capture/scoring_image.hpp"
 #include "tests/support/temp_dir.hpp"
 

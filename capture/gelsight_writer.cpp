@@ -1,6 +1,6 @@
 #include "capture/gelsight_writer.hpp"
 
-#include "capture/image_datasets.hpp"
+#include "capture/recording/image_datasets.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"
 

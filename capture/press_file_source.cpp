@@ -2,9 +2,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "capture/frame_source.hpp"
-#include "capture/image_datasets.hpp"
+#include "capture/recording/image_datasets.hpp"
 #include "capture/scoring_image.hpp"
-#include "capture/vlen_bytes.hpp"
+#include "capture/recording/vlen_bytes.hpp"
 #include "core/error.hpp"
 #include "core/sha256.hpp"
 #include "core/h5/file.hpp"

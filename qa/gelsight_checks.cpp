@@ -10,7 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/contact_score.hpp"
-#include "capture/image_datasets.hpp"
+#include "capture/recording/image_datasets.hpp"
 #include "capture/scoring_image.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"

@@ -9,7 +9,7 @@
 
 #include "capture/capture_inputs.hpp"
 #include "capture/extract_presses.hpp"
-#include "capture/press_recorder.hpp"
+#include "capture/recording/press_recorder.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "tests/capture/fake_setup.hpp"

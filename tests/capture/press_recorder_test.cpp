@@ -11,8 +11,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/extract_presses.hpp"
-#include "capture/press_recorder.hpp"
-#include "capture/vlen_bytes.hpp"
+#include "capture/recording/press_recorder.hpp"
+#include "capture/recording/vlen_bytes.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"

@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "capture/session_manifest.hpp"
+#include "capture/recording/session_manifest.hpp"
 #include "core/error.hpp"
 #include "core/json/schema.hpp"
 #include "tests/support/temp_dir.hpp"

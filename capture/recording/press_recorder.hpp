@@ -16,8 +16,8 @@
 #include "capture/device/format_negotiation.hpp"
 #include "capture/device/kernel_interface.hpp"
 #include "capture/device/v4l2_stream.hpp"
-#include "capture/session_manifest.hpp"
-#include "capture/take_processor.hpp"
+#include "capture/recording/session_manifest.hpp"
+#include "capture/recording/take_processor.hpp"
 #include "core/progress.hpp"
 
 namespace haptex::capture {

@@ -1,4 +1,4 @@
-#include "capture/press_file_writer.hpp"
+#include "capture/recording/press_file_writer.hpp"
 
 #include <linux/videodev2.h>
 
@@ -7,7 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/device/fourcc.hpp"
-#include "capture/image_datasets.hpp"
+#include "capture/recording/image_datasets.hpp"
 #include "core/naming.hpp"
 
 namespace haptex::capture {

@@ -15,9 +15,9 @@
 #include "capture/contact_score.hpp"
 #include "capture/device/drop_counter.hpp"
 #include "capture/device/frame.hpp"
-#include "capture/press_file_writer.hpp"
 #include "capture/press_segmenter.hpp"
-#include "capture/session_manifest.hpp"
+#include "capture/recording/press_file_writer.hpp"
+#include "capture/recording/session_manifest.hpp"
 #include "core/progress.hpp"
 
 namespace haptex::capture {

@@ -1,4 +1,4 @@
-#include "capture/session_manifest.hpp"
+#include "capture/recording/session_manifest.hpp"
 
 #include <fstream>
 #include <nlohmann/json.hpp>

@@ -1,4 +1,4 @@
-#include "capture/press_recorder.hpp"
+#include "capture/recording/press_recorder.hpp"
 
 #include <linux/videodev2.h>
 #include <sys/resource.h>
@@ -11,7 +11,7 @@
 #include "capture/device/camera_controls.hpp"
 #include "capture/device/fourcc.hpp"
 #include "capture/device/v4l2_device.hpp"
-#include "capture/frame_queue.hpp"
+#include "capture/recording/frame_queue.hpp"
 #include "core/error.hpp"
 
 namespace haptex::capture {

@@ -1,4 +1,4 @@
-#include "capture/take_processor.hpp"
+#include "capture/recording/take_processor.hpp"
 
 #include <linux/videodev2.h>
 
