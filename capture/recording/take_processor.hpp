@@ -12,10 +12,10 @@
 
 #include <opencv2/core.hpp>
 
-#include "capture/contact_score.hpp"
 #include "capture/device/drop_counter.hpp"
 #include "capture/device/frame.hpp"
-#include "capture/press_segmenter.hpp"
+#include "capture/extraction/contact_score.hpp"
+#include "capture/extraction/press_segmenter.hpp"
 #include "capture/recording/press_file_writer.hpp"
 #include "capture/recording/session_manifest.hpp"
 #include "core/progress.hpp"

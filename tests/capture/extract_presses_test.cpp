@@ -7,8 +7,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "capture/capture_inputs.hpp"
-#include "capture/extract_presses.hpp"
+#include "capture/extraction/capture_inputs.hpp"
+#include "capture/extraction/extract_presses.hpp"
 #include "capture/recording/press_recorder.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"

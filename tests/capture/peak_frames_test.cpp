@@ -5,7 +5,7 @@
 #include <limits>
 #include <map>
 
-#include "capture/peak_frames.hpp"
+#include "capture/extraction/peak_frames.hpp"
 #include "core/error.hpp"
 #include "tests/capture/fake_setup.hpp"
 #include "tests/capture/press_videos.hpp"

@@ -10,7 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "capture/extract_presses.hpp"
+#include "capture/extraction/extract_presses.hpp"
 #include "capture/recording/press_recorder.hpp"
 #include "capture/recording/vlen_bytes.hpp"
 #include "core/error.hpp"

@@ -1,9 +1,9 @@
 // Press files written by `haptex capture record`, read back for extraction.
 #include <opencv2/imgcodecs.hpp>
 
-#include "capture/frame_source.hpp"
+#include "capture/extraction/frame_source.hpp"
+#include "capture/extraction/scoring_image.hpp"
 #include "capture/recording/image_datasets.hpp"
-#include "capture/scoring_image.hpp"
 #include "capture/recording/vlen_bytes.hpp"
 #include "core/error.hpp"
 #include "core/sha256.hpp"

@@ -1,4 +1,4 @@
-#include "capture/peak_frames.hpp"
+#include "capture/extraction/peak_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <map>
 #include <opencv2/imgproc.hpp>
 
-#include "capture/scoring_image.hpp"
+#include "capture/extraction/scoring_image.hpp"
 #include "core/error.hpp"
 
 namespace haptex::capture {

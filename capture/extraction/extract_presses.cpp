@@ -1,12 +1,12 @@
-#include "capture/extract_presses.hpp"
+#include "capture/extraction/extract_presses.hpp"
 
 #include <filesystem>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 
-#include "capture/capture_inputs.hpp"
-#include "capture/contact_sheet.hpp"
-#include "capture/gelsight_writer.hpp"
+#include "capture/extraction/capture_inputs.hpp"
+#include "capture/extraction/contact_sheet.hpp"
+#include "capture/extraction/gelsight_writer.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"

@@ -1,4 +1,4 @@
-#include "capture/gelsight_writer.hpp"
+#include "capture/extraction/gelsight_writer.hpp"
 
 #include "capture/recording/image_datasets.hpp"
 #include "core/error.hpp"

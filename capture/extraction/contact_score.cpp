@@ -1,4 +1,4 @@
-#include "capture/contact_score.hpp"
+#include "capture/extraction/contact_score.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "capture/contact_sheet.hpp"
+#include "capture/extraction/contact_sheet.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "capture/capture_inputs.hpp"
+#include "capture/extraction/capture_inputs.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -7,9 +7,9 @@
 #include <iterator>
 #include <opencv2/imgcodecs.hpp>
 
-#include "capture/capture_inputs.hpp"
-#include "capture/frame_source.hpp"
-#include "capture/scoring_image.hpp"
+#include "capture/extraction/capture_inputs.hpp"
+#include "capture/extraction/frame_source.hpp"
+#include "capture/extraction/scoring_image.hpp"
 #include "core/error.hpp"
 #include "core/sha256.hpp"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "capture/peak_frames.hpp"
+#include "capture/extraction/peak_frames.hpp"
 #include "core/progress.hpp"
 
 namespace haptex::capture {

@@ -3,8 +3,8 @@
 #include <vector>
 #include <opencv2/videoio.hpp>
 
-#include "capture/frame_source.hpp"
-#include "capture/scoring_image.hpp"
+#include "capture/extraction/frame_source.hpp"
+#include "capture/extraction/scoring_image.hpp"
 #include "core/error.hpp"
 #include "core/sha256.hpp"
 
