@@ -1,8 +1,8 @@
 #pragma once
-// The gelsight file (DESIGN.md section 5; schemas/hdf5-layout.md "GelSight file"): per material and
-// press, the no-contact reference, the peak frame and its index, the 12 frames around the peak, and
-// the contact score of every frame in the press's range, with the source file and frame range as
-// attributes. `haptex align` and the dataset builder read it.
+// The gelsight file (schemas/hdf5-layout.md "GelSight file"): per material and press, the no-contact
+// reference, the peak frame and its index, the 12 frames around the peak, and the contact score of
+// every frame in the press's range, with the source file and frame range as attributes. `haptex align`
+// and the dataset builder read it.
 #include <cstdint>
 #include <memory>
 #include <string>

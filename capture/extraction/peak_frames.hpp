@@ -1,7 +1,7 @@
 #pragma once
 // From a source's frames to its presses: score every frame against the no-contact reference, cut the
 // scores into presses, and per press keep its peak (the highest-scoring frame) and the peak's
-// neighbours, 12 frames in all (DESIGN.md section 6: training presses contribute 12 frames).
+// neighbours, 12 frames in all (schemas/hdf5-layout.md "GelSight file": training presses use all 12).
 #include <cstdint>
 #include <functional>
 #include <optional>

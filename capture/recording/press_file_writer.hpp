@@ -1,9 +1,9 @@
 #pragma once
-// One press file (DESIGN.md section 5, schemas/hdf5-layout.md "Press file"): the frames of one press
-// as the sensor sent them (MJPG bytes untouched; raw formats as lossless PNG), their timestamps,
-// sequence numbers, flags and live contact scores, the session's no-contact reference, and the
-// device, format, controls, material and loss counts as attributes. Frames are appended as they
-// come; the file appears under its final name only at finish().
+// One press file (schemas/hdf5-layout.md "Press file"): the frames of one press as the sensor sent
+// them (MJPG bytes untouched; raw formats as lossless PNG), their timestamps, sequence numbers, flags
+// and live contact scores, the session's no-contact reference, and the device, format, controls,
+// material and loss counts as attributes. Frames are appended as they come; the file appears under its
+// final name only at finish().
 #include <cstdint>
 #include <memory>
 #include <string>
