@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/capture_subcommands.hpp"
-#include "capture/sensor_discovery.hpp"
+#include "capture/device/sensor_discovery.hpp"
 
 namespace haptex::apps {
 namespace {

@@ -7,7 +7,7 @@
 #include "apps/capture_subcommands.hpp"
 #include "core/output_is_input.hpp"
 #include "apps/terminal_progress.hpp"
-#include "capture/extract_presses.hpp"
+#include "capture/extraction/extract_presses.hpp"
 
 namespace haptex::apps {
 namespace {

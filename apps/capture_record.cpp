@@ -8,12 +8,12 @@
 
 #include "apps/capture_subcommands.hpp"
 #include "apps/terminal_progress.hpp"
-#include "capture/camera_controls.hpp"
-#include "capture/fake_device_spec.hpp"
-#include "capture/fourcc.hpp"
-#include "capture/press_recorder.hpp"
-#include "capture/sensor_discovery.hpp"
-#include "capture/system_kernel.hpp"
+#include "capture/device/camera_controls.hpp"
+#include "capture/device/fake_device_spec.hpp"
+#include "capture/device/fourcc.hpp"
+#include "capture/device/sensor_discovery.hpp"
+#include "capture/device/system_kernel.hpp"
+#include "capture/recording/press_recorder.hpp"
 #include "core/error.hpp"
 #include "core/text/utf8.hpp"
 

@@ -13,11 +13,11 @@
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "capture/contact_score.hpp"
-#include "capture/extract_presses.hpp"
-#include "capture/fake_camera.hpp"
-#include "capture/press_recorder.hpp"
-#include "capture/scoring_image.hpp"
+#include "capture/device/fake_camera.hpp"
+#include "capture/extraction/contact_score.hpp"
+#include "capture/extraction/extract_presses.hpp"
+#include "capture/extraction/scoring_image.hpp"
+#include "capture/recording/press_recorder.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace {

@@ -3,10 +3,10 @@
 #include <mutex>
 
 #include "align/window_table.hpp"
-#include "capture/augmentation.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/parallel.hpp"
+#include "predict/augmentation.hpp"
 
 namespace haptex::predict {
 namespace {
@@ -68,9 +68,9 @@ Descriptors press_descriptors(const std::string& dataset_path, const std::string
     out.push_back(texture_descriptor(image_at(g.open_dataset("peak")), reference, spec));
     return out;
   }
-  const std::vector<cv::Mat> augmented_references = capture::all_augmentations(reference);
+  const std::vector<cv::Mat> augmented_references = all_augmentations(reference);
   for (const cv::Mat& frame : images(g.open_dataset("frames"))) {
-    const std::vector<cv::Mat> augmented = capture::all_augmentations(frame);
+    const std::vector<cv::Mat> augmented = all_augmentations(frame);
     for (std::size_t v = 0; v < augmented.size(); ++v)
       out.push_back(texture_descriptor(augmented[v], augmented_references[v], spec));
   }

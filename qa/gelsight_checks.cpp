@@ -9,9 +9,9 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "capture/contact_score.hpp"
-#include "capture/image_datasets.hpp"
-#include "capture/scoring_image.hpp"
+#include "capture/extraction/contact_score.hpp"
+#include "capture/extraction/scoring_image.hpp"
+#include "capture/recording/image_datasets.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "qa/checkers.hpp"

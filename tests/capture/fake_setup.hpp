@@ -3,7 +3,7 @@
 // through the reduced-size JPEG decoding (2x) the recorder uses at full size.
 #include <linux/videodev2.h>
 
-#include "capture/fake_camera.hpp"
+#include "capture/device/fake_camera.hpp"
 
 namespace haptex::capture::fixtures {
 

@@ -8,7 +8,7 @@
 
 #include <opencv2/videoio.hpp>
 
-#include "capture/fake_scene.hpp"
+#include "capture/device/fake_scene.hpp"
 
 namespace haptex::capture::fixtures {
 

@@ -3,7 +3,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "capture/image_datasets.hpp"
+#include "capture/recording/image_datasets.hpp"
 #include "qa/run_qa.hpp"
 #include "tests/support/mutations.hpp"
 #include "tests/qa/qa_fixture.hpp"

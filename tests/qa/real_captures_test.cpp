@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
-#include "capture/contact_score.hpp"
-#include "capture/gelsight_writer.hpp"
-#include "capture/scoring_image.hpp"
+#include "capture/extraction/contact_score.hpp"
+#include "capture/extraction/gelsight_writer.hpp"
+#include "capture/extraction/scoring_image.hpp"
 #include "qa/run_qa.hpp"
 #include "tests/qa/qa_fixture.hpp"
 #include "tests/support/npy.hpp"

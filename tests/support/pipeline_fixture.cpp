@@ -4,7 +4,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "align/align_dataset.hpp"
-#include "capture/gelsight_writer.hpp"
+#include "capture/extraction/gelsight_writer.hpp"
 #include "convert/convert_recordings.hpp"
 #include "tests/support/sample_recording.hpp"
 

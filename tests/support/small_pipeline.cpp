@@ -13,9 +13,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "capture/contact_score.hpp"
-#include "capture/gelsight_writer.hpp"
-#include "capture/scoring_image.hpp"
+#include "capture/extraction/contact_score.hpp"
+#include "capture/extraction/gelsight_writer.hpp"
+#include "capture/extraction/scoring_image.hpp"
 #include "core/sha256.hpp"
 #include "tests/support/run_haptex.hpp"
 
@@ -32,7 +32,7 @@ void run_or_fail(const std::vector<std::string>& args) {
   }
 }
 
-// What capture extract does with one press video (capture/peak_frames.hpp), for synth's PNG sequence
+// What capture extract does with one press video (capture/extraction/peak_frames.hpp), for synth's PNG sequence
 // press_<j>/frame_%04d.png: reference = mean of the 10 leading no-contact frames, contact score of
 // every frame, the peak and the 12 highest-scoring consecutive frames around it. The pixel threshold
 // is 4 x the frames' noise without capture's 6-grey-level floor, which is meant for full-size frames:

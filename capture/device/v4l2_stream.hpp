@@ -1,0 +1,67 @@
+#pragma once
+// Memory-mapped V4L2 streaming: 4 to 8 driver buffers, waited for with poll on a non-blocking
+// node. Each frame is copied out of its buffer and the buffer is queued again at once, so the
+// driver always has free buffers and never drops a frame because we held on to one.
+#include <cstdint>
+#include <vector>
+
+#include "capture/device/drop_counter.hpp"
+#include "capture/device/format_negotiation.hpp"
+#include "capture/device/frame.hpp"
+#include "capture/device/v4l2_device.hpp"
+
+namespace haptex::capture {
+
+struct StreamStats {
+  std::uint64_t frames = 0;          // delivered to the caller
+  std::uint64_t error_buffers = 0;   // flagged V4L2_BUF_FLAG_ERROR, empty, or DQBUF EIO: requeued, not delivered
+  std::uint64_t poll_timeouts = 0;   // polls that saw no frame within the timeout
+};
+
+enum class StreamStatus { frame, timeout, disconnected };
+
+class V4l2Stream {
+ public:
+  static constexpr unsigned kMinBuffers = 4, kMaxBuffers = 8;
+
+  // Requests `buffers` (clamped to 4..8) mmap buffers and maps them. Throws haptex::Error (failed)
+  // when the driver grants fewer than 4.
+  V4l2Stream(const V4l2Device& device, const StreamFormat& format, unsigned buffers = 6);
+  ~V4l2Stream();  // stops streaming, unmaps and frees the buffers
+  V4l2Stream(const V4l2Stream&) = delete;
+  V4l2Stream& operator=(const V4l2Stream&) = delete;
+
+  void start();  // queues every buffer, STREAMON
+  void stop();   // STREAMOFF; safe to call twice and after a disconnect
+
+  // Waits up to poll_timeout_ms() for the next good frame. `disconnected` (ENODEV, or a queue the
+  // driver has put in its error state) ends the take; frames delivered before stay the caller's.
+  StreamStatus next(Frame& out);
+  // Three frame periods, at least 50 ms: long enough for jitter, short enough to notice a stall.
+  int poll_timeout_ms() const;
+
+  unsigned buffer_count() const { return static_cast<unsigned>(buffers_.size()); }
+  const StreamStats& stats() const { return stats_; }
+  const DropCounter& drops() const { return drops_; }
+  const StreamFormat& format() const { return format_; }
+
+ private:
+  struct Mapped {
+    void* start = nullptr;
+    std::size_t length = 0;
+  };
+  enum class Dequeue { frame, skipped, empty, disconnected };
+  Dequeue dequeue(Frame& out);
+  void queue(std::uint32_t index);
+  void release_buffers() noexcept;
+
+  const V4l2Device& device_;
+  StreamFormat format_;
+  std::vector<Mapped> buffers_;
+  DropCounter drops_;
+  StreamStats stats_;
+  bool streaming_ = false;
+  int consecutive_queue_errors_ = 0;
+};
+
+}  // namespace haptex::capture

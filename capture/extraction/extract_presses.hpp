@@ -1,0 +1,49 @@
+#pragma once
+// `haptex capture extract`: press files and videos -> the gelsight file, plus one contact sheet PNG
+// per press. Nothing is written under the final names unless every input was read: the gelsight file
+// goes through NAME.partial and the sheets through a DIR.partial folder renamed at the end.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "capture/extraction/peak_frames.hpp"
+#include "core/progress.hpp"
+
+namespace haptex::capture {
+
+struct ExtractOptions {
+  ExtractSettings settings;
+  std::optional<std::string> material;        // names every input's material
+  std::optional<std::string> reference_path;  // a no-contact image replacing the leading frames
+  bool overwrite = false;
+  bool sheets = true;
+  std::string sheets_dir;  // default: <output without extension>_sheets beside the output
+  std::string provenance;
+};
+
+struct ExtractedPressSummary {
+  std::string material, material_id, source;
+  int press = 0, press_in_source = 0;
+  std::int64_t frame_start = 0, frame_end = 0, contact_first = 0, contact_last = 0, peak_index = 0;
+  float peak_score = 0;
+  std::string contact_sheet;
+};
+
+struct ExtractResult {
+  std::vector<ExtractedPressSummary> presses;
+  std::vector<std::string> sources_without_press;
+  std::size_t sources = 0;
+  std::int64_t frames_scored = 0;
+  // Frames that did not decode (damaged, or announced by a video cut short): never a peak or kept.
+  std::int64_t frames_unreadable = 0;
+  std::string sheets_dir;  // empty without sheets
+};
+
+// Throws haptex::Error: bad_input for unreadable inputs or outputs, failed when no input holds a press.
+ExtractResult extract_presses(const std::vector<std::string>& inputs, const std::string& output,
+                              const ExtractOptions& options, const Progress& progress = {});
+
+std::string default_sheets_dir(const std::string& output);
+
+}  // namespace haptex::capture

@@ -1,0 +1,59 @@
+#pragma once
+// Where `capture extract` reads frames from: a video file (anything OpenCV's FFmpeg backend reads), a
+// folder of frame images (a PNG sequence), or a press file. Extraction reads a source twice: once for every frame's small scoring image, then
+// once more for the few full frames it keeps, so memory stays small however long the video is.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "capture/extraction/contact_score.hpp"
+
+namespace haptex::capture {
+
+class FrameSource {
+ public:
+  virtual ~FrameSource() = default;
+  virtual const std::string& path() const = 0;
+  virtual cv::Size frame_size() const = 0;
+  virtual double fps() const = 0;  // 0 when the source does not say
+  // True when frames reach us exactly as the sensor (or renderer) made them: no compression artefacts.
+  virtual bool lossless() const = 0;
+  // SHA-256 of the source's bytes (for a folder of images: of the images' bytes in frame order).
+  virtual std::string sha256() const = 0;
+
+  // Calls visit(index, scoring image, full frame) for every frame in order. The scoring image is
+  // empty for a frame that does not decode. `full` is the decoded BGR frame when decoding it was
+  // needed anyway (videos), else empty; with need_full (the first frames, for a reference) it is
+  // always decoded.
+  using Visitor = std::function<void(std::int64_t index, const cv::Mat& scoring, const cv::Mat& full)>;
+  virtual void scan(const Visitor& visit, const std::function<bool(std::int64_t)>& need_full) = 0;
+  // Full BGR frames at the given indices (ascending), delivered in order.
+  virtual void read(const std::vector<std::int64_t>& indices,
+                    const std::function<void(std::int64_t index, const cv::Mat& bgr)>& deliver) = 0;
+
+  // A source that carries its own no-contact reference and thresholds (press files).
+  struct StoredReference {
+    cv::Mat image;  // BGR
+    float noise = 0, pixel_threshold = 0, trigger = 0;
+  };
+  virtual std::optional<StoredReference> stored_reference() const { return std::nullopt; }
+  // The material a source names itself (press files); empty for videos.
+  virtual std::string material() const { return {}; }
+  // After scan: frames the source announced but that never decoded (a video cut short or damaged).
+  virtual std::int64_t frames_missing() const { return 0; }
+};
+
+// Throws haptex::Error (bad_input) naming the file when OpenCV cannot open it or it has no frames.
+std::unique_ptr<FrameSource> open_video(const std::string& path);
+// The images of a folder, in name order (numbers compared by value), as the frames of a video.
+// Throws haptex::Error (bad_input) naming the folder or image when one does not read or sizes differ.
+std::unique_ptr<FrameSource> open_image_sequence(const std::string& folder);
+// Throws haptex::Error (bad_input) naming the file and object when it is not a press file.
+std::unique_ptr<FrameSource> open_press_file(const std::string& path);
+
+}  // namespace haptex::capture

@@ -1,0 +1,76 @@
+#include "capture/extraction/gelsight_writer.hpp"
+
+#include "capture/recording/image_datasets.hpp"
+#include "core/error.hpp"
+#include "core/naming.hpp"
+
+namespace haptex::capture {
+namespace {
+
+void set_press_attributes(h5::Group& g, const GelsightPress& p) {
+  g.set_attr("source_file", p.source_file);
+  g.set_attr("source_sha256", p.source_sha256);
+  g.set_attr("press_in_source", p.press_in_source);
+  g.set_attr("frame_start", p.frame_start);
+  g.set_attr("frame_end", p.frame_end);
+  g.set_attr("samples", std::int64_t(p.contrast.size()));
+  g.set_attr("contact_first", p.contact_first);
+  g.set_attr("contact_last", p.contact_last);
+  g.set_attr("peak_score", double(p.peak_score));
+  g.set_attr("height", std::int64_t(p.peak.rows));
+  g.set_attr("width", std::int64_t(p.peak.cols));
+  g.set_attr("channel_order", "RGB");
+  if (p.fps > 0) g.set_attr("fps", p.fps);
+  g.set_attr("reference_source", p.reference_note);
+  g.set_attr("score_method", "mean over the grey image averaged in 2, 4 or 8 pixel blocks of max(0, |d - median(d)| - pixel_threshold), "
+                             "d = frame - reference (docs/capture.md)");
+  g.set_attr("noise", double(p.noise));
+  g.set_attr("pixel_threshold", double(p.pixel_threshold));
+  g.set_attr("trigger", double(p.trigger));
+  g.set_attr("release", double(p.release));
+  if (!p.contact_sheet.empty()) g.set_attr("contact_sheet", p.contact_sheet);
+  g.set_attr("source_frames_unreadable", p.source_frames_unreadable);
+}
+
+void set_description(h5::Dataset d, const std::string& units, const std::string& description) {
+  if (!units.empty()) d.set_attr("units", units);
+  d.set_attr("description", description);
+}
+
+}  // namespace
+
+GelsightWriter::GelsightWriter(const std::string& path, bool overwrite, const std::string& provenance)
+    : file_(path, overwrite) {
+  h5::stamp_root(file_.root(), "gelsight/1", provenance);
+}
+
+int GelsightWriter::add_press(const std::string& material_name, const GelsightPress& p) {
+  const std::string id = material_id(material_name);
+  if (id.empty())
+    throw input_error(p.source_file, "material name",
+                      "'" + material_name + "' has no letters or digits to make a material id from",
+                      "Name the material's folder (or --material) with at least one ASCII letter or digit");
+  h5::Group materials = file_.root().require_group("materials");
+  const bool first = !materials.has_group(id);
+  h5::Group material = materials.require_group(id);
+  if (first) material.set_attr("name", material_name);  // the first spelling of a name is kept
+  h5::Group presses = material.require_group("presses");
+  const int j = int(presses.children().size());
+  h5::Group g = presses.create_group(std::to_string(j));
+  set_press_attributes(g, p);
+  write_image(g, "reference", p.reference, "no-contact reference (" + p.reference_note + ")");
+  write_image(g, "peak", p.peak, "the press's highest-scoring frame");
+  // A scalar dataset: one number, as h5py users expect (f[...]["peak_index"][()]).
+  set_description(g.write_array<std::int64_t>("peak_index", std::span<const std::int64_t>(&p.peak_index, 1), {},
+                                              h5::DatasetOptions{.compress = false, .gzip_level = 0, .chunk = {}}),
+                  "", "frame number of the peak in the source file");
+  write_image_stack(g, "frames", p.frames, "the peak and its neighbours: consecutive frames of the source");
+  set_description(g.write("frame_indices", p.frame_indices), "", "frame numbers of `frames` in the source file");
+  set_description(g.write("contrast", p.contrast), "grey levels",
+                  "contact score of each frame from frame_start to frame_end (docs/capture.md)");
+  return j;
+}
+
+void GelsightWriter::commit() { file_.commit(); }
+
+}  // namespace haptex::capture

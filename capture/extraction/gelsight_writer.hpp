@@ -1,0 +1,48 @@
+#pragma once
+// The gelsight file (schemas/hdf5-layout.md "GelSight file"): per material and press, the no-contact
+// reference, the peak frame and its index, the 12 frames around the peak, and the contact score of
+// every frame in the press's range, with the source file and frame range as attributes. `haptex align`
+// and the dataset builder read it.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "core/h5/atomic_file.hpp"
+
+namespace haptex::capture {
+
+struct GelsightPress {
+  std::string source_file, source_sha256;
+  int press_in_source = 0;
+  std::int64_t frame_start = 0, frame_end = 0;      // the range `contrast` covers (inclusive)
+  std::int64_t contact_first = 0, contact_last = 0;
+  std::int64_t peak_index = 0;                      // frame number in the source
+  float peak_score = 0;
+  std::vector<std::int64_t> frame_indices;          // frame numbers of `frames`
+  std::vector<cv::Mat> frames;                      // BGR
+  cv::Mat peak, reference;                          // BGR
+  std::vector<float> contrast;                      // scores of frame_start..frame_end
+  double fps = 0;                                   // 0: unknown
+  std::string reference_note;
+  float noise = 0, pixel_threshold = 0, trigger = 0, release = 0;
+  std::string contact_sheet;                        // path of its PNG relative to the gelsight file, or empty
+  std::int64_t source_frames_unreadable = 0;        // frames of the source that did not decode (none is kept)
+};
+
+class GelsightWriter {
+ public:
+  GelsightWriter(const std::string& path, bool overwrite, const std::string& provenance);
+  // Adds a press to the material (created on first use with its name); returns its press number.
+  // Throws haptex::Error (bad_input) when the name has no letter or digit to make an id from.
+  int add_press(const std::string& material_name, const GelsightPress& press);
+  void commit();
+  const std::string& path() const { return file_.final_path(); }
+
+ private:
+  h5::AtomicFile file_;
+};
+
+}  // namespace haptex::capture

@@ -1,0 +1,90 @@
+// A folder of frame images read as a video: how `haptex synth` writes press videos (press_<j>/frame_0000.png ...),
+// and how many tactile datasets are published.
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <opencv2/imgcodecs.hpp>
+
+#include "capture/extraction/capture_inputs.hpp"
+#include "capture/extraction/frame_source.hpp"
+#include "capture/extraction/scoring_image.hpp"
+#include "core/error.hpp"
+#include "core/sha256.hpp"
+
+namespace haptex::capture {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ImageSequenceSource : public FrameSource {
+ public:
+  explicit ImageSequenceSource(std::string folder) : path_(std::move(folder)) {
+    for (const auto& entry : fs::directory_iterator(path_))
+      if (entry.is_regular_file() && is_image_name(entry.path().string())) files_.push_back(entry.path().string());
+    std::sort(files_.begin(), files_.end(), [](const std::string& a, const std::string& b) {
+      return natural_less(fs::path(a).filename().string(), fs::path(b).filename().string());
+    });
+    if (files_.empty())
+      throw input_error(path_, "", "the folder holds no frame images", "Give a folder of PNG or JPEG frames, or a video file");
+    size_ = load(0).size();
+  }
+
+  const std::string& path() const override { return path_; }
+  cv::Size frame_size() const override { return size_; }
+  double fps() const override { return 0.0; }  // images carry no frame rate
+  bool lossless() const override {
+    for (const auto& f : files_) {
+      std::string ext = fs::path(f).extension().string();
+      for (auto& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+      if (ext == ".jpg" || ext == ".jpeg") return false;
+    }
+    return true;
+  }
+
+  std::string sha256() const override {
+    Sha256 hash;
+    for (const auto& f : files_) {
+      std::ifstream in(f, std::ios::binary);
+      std::vector<char> bytes((std::istreambuf_iterator<char>(in)), {});
+      hash.update(std::string_view(bytes.data(), bytes.size()));
+    }
+    return hash.hex_digest();
+  }
+
+  void scan(const Visitor& visit, const std::function<bool(std::int64_t)>&) override {
+    for (std::size_t i = 0; i < files_.size(); ++i) {
+      const cv::Mat frame = load(i);
+      visit(std::int64_t(i), scoring_image(frame), frame);
+    }
+  }
+
+  void read(const std::vector<std::int64_t>& indices,
+            const std::function<void(std::int64_t, const cv::Mat&)>& deliver) override {
+    for (std::int64_t i : indices) deliver(i, load(std::size_t(i)));
+  }
+
+ private:
+  cv::Mat load(std::size_t i) const {
+    const cv::Mat image = cv::imread(files_[i], cv::IMREAD_COLOR);
+    if (image.empty())
+      throw input_error(files_[i], "frame " + std::to_string(i), "cannot read the image", "Replace the damaged frame file");
+    if (!size_.empty() && image.size() != size_)
+      throw input_error(files_[i], "frame " + std::to_string(i), "the frame size differs from the first frame's",
+                        "Every frame of a press must have one size");
+    return image;
+  }
+
+  std::string path_;
+  std::vector<std::string> files_;
+  cv::Size size_;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameSource> open_image_sequence(const std::string& folder) {
+  return std::make_unique<ImageSequenceSource>(folder);
+}
+
+}  // namespace haptex::capture

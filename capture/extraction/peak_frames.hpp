@@ -1,0 +1,63 @@
+#pragma once
+// From a source's frames to its presses: score every frame against the no-contact reference, cut the
+// scores into presses, and per press keep its peak (the highest-scoring frame) and the peak's
+// neighbours, 12 frames in all (schemas/hdf5-layout.md "GelSight file": training presses use all 12).
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "capture/extraction/contact_score.hpp"
+#include "capture/extraction/frame_source.hpp"
+#include "capture/extraction/press_segmenter.hpp"
+
+namespace haptex::capture {
+
+struct ExtractSettings {
+  int reference_frames = 10;   // leading no-contact frames averaged into the reference
+  int frames_per_press = 12;   // the peak and its neighbours
+  int margin_frames = 10;      // frames before and after the contact kept in each press's score curve
+  // Floors of the score (contact_score.hpp); unset: score_settings_for(the source is lossless).
+  std::optional<float> pixel_floor, trigger_floor;
+  SegmenterSettings segmenter; // its trigger and release come from the reference
+  cv::Mat reference_image;     // BGR; when given it replaces the leading frames and stored references
+  std::string reference_image_path;
+};
+
+struct SourceScores {
+  std::vector<float> scores;  // one per frame; NaN for black start-up frames and frames that do not decode
+  cv::Mat reference;          // BGR, frame size
+  std::optional<ContactReference> contact;
+  std::string reference_note; // where the reference came from, for the file's attributes
+  std::int64_t black_frames = 0, unreadable_frames = 0;
+};
+
+// The score settings for a source: its defaults (lossy or lossless) and the overrides.
+ScoreSettings score_settings(const FrameSource& source, const ExtractSettings& settings);
+
+// First pass. Throws haptex::Error (bad_input) naming the source when it is too short, when its
+// leading frames are not a steady no-contact stretch, or when a given reference has another size.
+SourceScores score_source(FrameSource& source, const ExtractSettings& settings);
+
+struct PressPlan {
+  int press_in_source = 0;
+  PressInterval contact;
+  std::int64_t range_first = 0, range_last = 0;  // the frames whose scores are stored with the press
+  std::vector<std::int64_t> frame_indices;       // the frames kept: consecutive, containing the peak
+};
+
+// The presses in the scores, with the frames each keeps: the run of frames_per_press consecutive
+// frames that contains the peak and scores highest in total, inside the press's own range when it
+// is long enough (so neighbouring presses never share frames).
+std::vector<PressPlan> plan_presses(const std::vector<float>& scores, const SegmenterSettings& segmenter,
+                                    int frames_per_press, int margin_frames);
+
+// Second pass: reads every planned frame once, in order, and hands each press over as soon as its
+// frames are in (frames in frame_indices order, plus the peak frame).
+using PressFramesHandler = std::function<void(const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak)>;
+void read_press_frames(FrameSource& source, const std::vector<PressPlan>& plans, const PressFramesHandler& handle);
+
+}  // namespace haptex::capture

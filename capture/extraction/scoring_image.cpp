@@ -1,0 +1,76 @@
+#include "capture/extraction/scoring_image.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace haptex::capture {
+namespace {
+
+constexpr int kMinimumWidth = 160;
+
+cv::Mat to_float(const cv::Mat& grey) {
+  cv::Mat out;
+  grey.convertTo(out, CV_32F);
+  return out;
+}
+
+}  // namespace
+
+int jpeg_reduction(cv::Size frame) {
+  const int f = std::max(1, int(std::lround(double(frame.width) / kMinimumWidth)));
+  return f >= 8 ? 8 : f >= 4 ? 4 : f >= 2 ? 2 : 1;
+}
+
+cv::Size scoring_size(cv::Size frame) {
+  // DCT scaling rounds up: 3280 / 8 -> 410.
+  const int r = jpeg_reduction(frame);
+  return {(frame.width + r - 1) / r, (frame.height + r - 1) / r};
+}
+
+cv::Mat scoring_image(const cv::Mat& frame) {
+  cv::Mat grey = frame;
+  if (frame.channels() != 1) cv::cvtColor(frame, grey, frame.channels() == 4 ? cv::COLOR_BGRA2GRAY : cv::COLOR_BGR2GRAY);
+  const cv::Size size = scoring_size(frame.size());
+  if (grey.size() == size) return to_float(grey);
+  cv::Mat reduced;
+  cv::resize(grey, reduced, size, 0, 0, cv::INTER_AREA);
+  return to_float(reduced);
+}
+
+bool is_complete_jpeg(std::span<const std::uint8_t> jpeg) {
+  if (jpeg.size() < 4 || jpeg[0] != 0xFF || jpeg[1] != 0xD8) return false;
+  const std::size_t tail = std::min<std::size_t>(jpeg.size(), 4096);
+  for (std::size_t i = jpeg.size() - 1; i + tail > jpeg.size() && i > 0; --i)
+    if (jpeg[i - 1] == 0xFF && jpeg[i] == 0xD9) return true;
+  return false;
+}
+
+cv::Mat scoring_image_from_jpeg(std::span<const std::uint8_t> jpeg, cv::Size frame) {
+  if (!is_complete_jpeg(jpeg)) return {};
+  const int r = jpeg_reduction(frame);
+  const int flag = r == 8 ? cv::IMREAD_REDUCED_GRAYSCALE_8
+                 : r == 4 ? cv::IMREAD_REDUCED_GRAYSCALE_4
+                 : r == 2 ? cv::IMREAD_REDUCED_GRAYSCALE_2
+                          : cv::IMREAD_GRAYSCALE;
+  const cv::Mat bytes(1, int(jpeg.size()), CV_8U, const_cast<std::uint8_t*>(jpeg.data()));
+  cv::Mat grey;
+  try {
+    grey = cv::imdecode(bytes, flag);
+  } catch (const cv::Exception&) {
+    return {};
+  }
+  if (grey.empty() || grey.size() != scoring_size(frame)) return {};
+  return to_float(grey);
+}
+
+cv::Mat scoring_image_from_yuyv(std::span<const std::uint8_t> yuyv, cv::Size frame) {
+  if (yuyv.size() != std::size_t(frame.width) * frame.height * 2) return {};
+  const cv::Mat packed(frame.height, frame.width, CV_8UC2, const_cast<std::uint8_t*>(yuyv.data()));
+  cv::Mat grey;
+  cv::extractChannel(packed, grey, 0);
+  return scoring_image(grey);
+}
+
+}  // namespace haptex::capture

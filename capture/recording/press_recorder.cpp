@@ -1,0 +1,230 @@
+#include "capture/recording/press_recorder.hpp"
+
+#include <linux/videodev2.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include "capture/device/camera_controls.hpp"
+#include "capture/device/fourcc.hpp"
+#include "capture/device/v4l2_device.hpp"
+#include "capture/recording/frame_queue.hpp"
+#include "core/error.hpp"
+
+namespace haptex::capture {
+namespace fs = std::filesystem;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+bool is_session_file(const fs::path& p) {
+  const std::string name = p.filename().string();
+  return name == "session.json" || (name.rfind("press_", 0) == 0 && p.extension() == ".h5");
+}
+
+// The processing thread: pops frames until the queue closes. An exception stops it and is kept for
+// the capture thread, which ends the take.
+class Worker {
+ public:
+  Worker(TakeProcessor& processor, FrameQueue<TakeFrame>& queue) : processor_(processor), queue_(queue) {
+    thread_ = std::thread([this] { run(); });
+  }
+  ~Worker() { join(); }
+  void join() {
+    if (thread_.joinable()) thread_.join();
+  }
+  bool should_stop() const { return stop_.load(); }
+  std::exception_ptr error() const { return error_; }  // read after join()
+
+ private:
+  void run() {
+    try {
+      while (auto frame = queue_.pop()) {
+        processor_.process(std::move(*frame));
+        if (processor_.enough_presses()) stop_ = true;
+      }
+    } catch (...) {
+      error_ = std::current_exception();
+      stop_ = true;
+      while (queue_.pop()) {  // let the capture thread finish; the frames are lost with the failed work
+      }
+    }
+  }
+  TakeProcessor& processor_;
+  FrameQueue<TakeFrame>& queue_;
+  std::atomic<bool> stop_{false};
+  std::exception_ptr error_;
+  std::thread thread_;
+};
+
+std::string error_text(std::exception_ptr error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::exception& e) {
+    return e.what();
+  } catch (...) {
+    return "unknown error";
+  }
+}
+
+// The capture thread's loop; returns why the take ended.
+std::string capture_loop(V4l2Stream& stream, FrameQueue<TakeFrame>& queue, const Worker& worker,
+                         const RecorderOptions& options, const std::atomic<bool>* stop) {
+  const Clock::time_point start = Clock::now();
+  // Time without a frame, counted in poll timeouts (each one waited that long) rather than read
+  // from the clock, so a stall means the same to a fake camera whose time is simulated.
+  double quiet_seconds = 0;
+  std::int64_t index = 0;
+  for (;;) {
+    const Clock::time_point now = Clock::now();
+    if (stop && stop->load()) return "interrupted";
+    if (worker.should_stop()) return "presses";
+    if (options.seconds > 0 && now - start >= std::chrono::duration<double>(options.seconds)) return "time limit";
+    Frame frame;
+    switch (stream.next(frame)) {
+      case StreamStatus::frame:
+        queue.push({std::move(frame), index++, stream.stats().error_buffers, stream.stats().poll_timeouts});
+        quiet_seconds = 0;
+        break;
+      case StreamStatus::timeout:
+        quiet_seconds += stream.poll_timeout_ms() / 1000.0;
+        if (quiet_seconds >= options.stall_seconds) return "stalled";
+        break;
+      case StreamStatus::disconnected: return "disconnected";
+    }
+  }
+}
+
+}  // namespace
+
+void check_recorder_options(const RecorderOptions& o) {
+  const auto refuse = [](const std::string& option, const std::string& what, const std::string& fix) {
+    throw input_error(option, "", what, fix);
+  };
+  if (o.material.empty()) refuse("--material", "the material name is empty", "Name the material you press, e.g. --material \"Brick 2\"");
+  if (o.presses < 1) refuse("--presses", "must be at least 1", "Give the number of presses to record");
+  if (o.reference_frames < 10 || o.reference_frames > 250)
+    refuse("--reference-frames", "must be 10 to 250", "At least 10 frames make a reference whose noise can be measured");
+  if (o.warmup_frames < 0 || o.pre_frames < 0 || o.post_frames < 0)
+    refuse("--warmup/--pre-frames/--post-frames", "must not be negative", "Give 0 or more frames");
+  if (o.seconds < 0) refuse("--seconds", "must not be negative", "Give a time limit in seconds, or 0 for none");
+}
+
+std::vector<fs::path> session_files(const std::string& dir) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return found;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (is_session_file(entry.path())) found.push_back(entry.path());
+  return found;
+}
+
+void check_session_dir(const std::string& dir, bool overwrite) {
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw input_error(dir, "", "exists and is not a folder", "Give a folder for the session with -o");
+  // The nearest existing folder must be writable: the session folder is made inside it.
+  fs::path existing = fs::absolute(dir);
+  while (!fs::exists(existing, ec) && existing.has_parent_path() && existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (::access(existing.c_str(), W_OK) != 0)
+    throw input_error(dir, "", existing.string() + " is not writable", "Choose a folder you can write to with -o");
+  const auto existing_files = session_files(dir);
+  if (!existing_files.empty() && !overwrite)
+    throw input_error(dir, "", "already holds a capture session (" + existing_files.front().filename().string() + ")",
+                      "Record into a new folder with -o, or pass --force to replace the old session");
+}
+
+void prepare_session_dir(const std::string& dir, bool overwrite) {
+  check_session_dir(dir, overwrite);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw input_error(dir, "", "cannot create the session folder: " + ec.message(), "Choose a folder you can write to with -o");
+  for (const auto& p : session_files(dir)) fs::remove(p);
+}
+
+RecordingResult record_take(V4l2Stream& stream, const SessionDescription& session, const std::string& output_dir,
+                            const RecorderOptions& options, const std::atomic<bool>* stop, const Progress& progress) {
+  const double cpu_start = cpu_seconds();
+  const Clock::time_point wall_start = Clock::now();
+  TakeProcessor processor(session, output_dir, options, progress);
+  FrameQueue<TakeFrame> queue;
+  std::string ended_by;
+  {
+    Worker worker(processor, queue);
+    try {
+      stream.start();
+      ended_by = capture_loop(stream, queue, worker, options, stop);
+    } catch (...) {
+      stream.stop();
+      queue.close();
+      worker.join();
+      throw;
+    }
+    stream.stop();
+    queue.close();
+    worker.join();
+    if (worker.error()) ended_by = "error";
+    RecordingResult result;
+    result.totals.frames = stream.stats().frames;
+    result.totals.dropped_frames = stream.drops().dropped();
+    result.totals.error_buffers = stream.stats().error_buffers;
+    result.totals.poll_timeouts = stream.stats().poll_timeouts;
+    result.totals.max_queue_depth = queue.max_depth();
+    result.totals.wall_seconds = std::chrono::duration<double>(Clock::now() - wall_start).count();
+    result.totals.cpu_seconds = cpu_seconds() - cpu_start;
+    if (worker.error()) {
+      try {  // best effort: the manifest says what was saved before the failure
+        processor.end_of_take("error", result.totals, error_text(worker.error()));
+      } catch (...) {
+      }
+      std::rethrow_exception(worker.error());
+    }
+    processor.end_of_take(ended_by, result.totals);
+    result.session = session;
+    result.presses = processor.presses();
+    result.totals.corrupt_frames = processor.corrupt_frames();
+    result.reference = processor.reference_summary();
+    result.ended_by = ended_by;
+    result.manifest = processor.manifest_path();
+    return result;
+  }
+}
+
+RecordingResult record_session(KernelInterface& kernel, const SessionRequest& request, const RecorderOptions& options,
+                               const std::atomic<bool>* stop, const Progress& progress) {
+  check_recorder_options(options);
+  check_session_dir(request.output_dir, request.overwrite);  // refused before the device is touched
+  V4l2Device device(kernel, request.node);
+  const StreamFormat format = negotiate_format(device, request.format);
+  if (format.fourcc != V4L2_PIX_FMT_MJPEG && format.fourcc != V4L2_PIX_FMT_YUYV)
+    throw input_error(request.node, "pixel format", fourcc_text(format.fourcc) + " frames cannot be recorded",
+                      "Choose MJPG (stored as sent) or YUYV (stored as lossless PNG) with --format");
+  SessionDescription session;
+  session.command = request.command;
+  session.material = options.material;
+  session.identity = device.identity();
+  session.serial = request.serial;
+  session.model = request.model;
+  session.format = format;
+  session.controls = lock_controls(device, request.controls);
+  session.warmup_frames = options.warmup_frames;
+  session.reference_frames = options.reference_frames;
+  session.pre_frames = options.pre_frames;
+  session.post_frames = options.post_frames;
+  V4l2Stream stream(device, format, request.buffers);
+  session.buffers = stream.buffer_count();
+  prepare_session_dir(request.output_dir, request.overwrite);  // only now, so a refused device leaves nothing
+  return record_take(stream, session, request.output_dir, options, stop, progress);
+}
+
+}  // namespace haptex::capture

@@ -1,0 +1,62 @@
+#pragma once
+// `haptex capture record`: one take from a sensor, cut live into one press file per press, plus the
+// session manifest. Two threads: the capture thread only waits for frames, copies them out of the
+// driver's buffers and queues the buffers again; the processing thread decodes, scores, segments and
+// writes (take_processor.hpp). The capture thread never waits on the other, so a slow disk or decoder
+// delays the files, never the driver.
+//
+// Ctrl-C (the stop flag), an unplugged sensor, a stall or the time limit end the take cleanly: the
+// press being recorded is closed with every frame taken so far, and the manifest says how it ended.
+#include <atomic>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "capture/device/format_negotiation.hpp"
+#include "capture/device/kernel_interface.hpp"
+#include "capture/device/v4l2_stream.hpp"
+#include "capture/recording/session_manifest.hpp"
+#include "capture/recording/take_processor.hpp"
+#include "core/progress.hpp"
+
+namespace haptex::capture {
+
+struct SessionRequest {
+  std::string node;           // the capture node, /dev/videoN
+  std::string serial, model;  // from USB discovery, when known
+  FormatRequest format;
+  std::map<std::uint32_t, std::int64_t> controls;  // by control ID
+  unsigned buffers = 6;
+  std::string output_dir;
+  bool overwrite = false;
+  std::string command;  // provenance
+};
+
+struct RecordingResult {
+  SessionDescription session;
+  std::vector<RecordedPress> presses;
+  TakeTotals totals;
+  ReferenceSummary reference;
+  std::string ended_by;  // presses, time limit, interrupted, disconnected, stalled
+  std::string manifest;
+  bool device_fault() const { return ended_by == "disconnected" || ended_by == "stalled"; }
+};
+
+// Opens, negotiates, locks controls and records. Throws haptex::Error: bad_input for bad options,
+// devices and output folders (before anything is written), failed when the work fails.
+RecordingResult record_session(KernelInterface& kernel, const SessionRequest& request, const RecorderOptions& options,
+                               const std::atomic<bool>* stop = nullptr, const Progress& progress = {});
+
+// The take alone, on a stream set up by the caller (tests and benchmarks use it directly).
+RecordingResult record_take(V4l2Stream& stream, const SessionDescription& session, const std::string& output_dir,
+                            const RecorderOptions& options, const std::atomic<bool>* stop = nullptr,
+                            const Progress& progress = {});
+
+// Refuses a folder that cannot be made or already holds a session (unless overwrite), touching nothing.
+void check_session_dir(const std::string& dir, bool overwrite);
+// Creates the folder and, with overwrite, removes the old session's files.
+void prepare_session_dir(const std::string& dir, bool overwrite);
+void check_recorder_options(const RecorderOptions& options);
+
+}  // namespace haptex::capture

@@ -1,0 +1,133 @@
+// USB discovery against a fake sysfs tree, as libusb would list the devices.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "capture/device/sensor_discovery.hpp"
+#include "core/error.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::capture {
+namespace {
+
+namespace fs = std::filesystem;
+
+// /sys/bus/usb/devices/<usb>:1.0/video4linux/videoN/{name,index}, as uvcvideo makes them.
+void add_node(const fs::path& sysfs, const std::string& usb, const std::string& node, int index, const std::string& name) {
+  const fs::path dir = sysfs / "bus/usb/devices" / (usb + ":1.0") / "video4linux" / node;
+  fs::create_directories(dir);
+  std::ofstream(dir / "name") << name << "\n";
+  std::ofstream(dir / "index") << index << "\n";
+}
+
+UsbDevice usb(std::uint16_t vendor, std::uint16_t product, int bus, std::vector<int> ports, std::string name,
+              std::string serial = {}) {
+  UsbDevice d;
+  d.vendor_id = vendor;
+  d.product_id = product;
+  d.bus = bus;
+  d.ports = std::move(ports);
+  d.product = std::move(name);
+  d.serial = std::move(serial);
+  return d;
+}
+
+class Discovery : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    add_node(sysfs(), "1-2", "video2", 0, "GelSight Mini R0B 2BNK-CE6G: Ge");
+    add_node(sysfs(), "1-2", "video3", 1, "GelSight Mini R0B 2BNK-CE6G: Ge");
+    add_node(sysfs(), "3-1.4", "video0", 0, "DIGIT: DIGIT");
+    add_node(sysfs(), "1-5", "video4", 0, "Integrated Webcam");
+  }
+  fs::path sysfs() const { return dir_.path() / "sys"; }
+  std::vector<UsbDevice> devices() const {
+    return {usb(0x0c45, 0x636d, 1, {2}, "GelSight Mini R0B 2BNK-CE6G"),
+            usb(0x2833, 0x0209, 3, {1, 4}, "DIGIT", "D20345"),
+            usb(0x0c45, 0x636d, 1, {5}, "Integrated Webcam"),  // the same generic ID: not a GelSight
+            usb(0x046d, 0xc52b, 1, {3}, "USB Receiver")};
+  }
+  haptex::test::TempDir dir_;
+};
+
+TEST_F(Discovery, FindsKnownSensorsTheirSerialsAndCaptureNodes) {
+  const auto sensors = discover_sensors(devices(), SensorCatalog::builtin(), sysfs().string());
+  ASSERT_EQ(sensors.size(), 2u);
+  EXPECT_EQ(sensors[0].model, "GelSight Mini");
+  EXPECT_EQ(sensors[0].serial, "2BNK-CE6G") << "from inside the product string";
+  EXPECT_EQ(sensors[0].capture_node, "/dev/video2");
+  ASSERT_EQ(sensors[0].nodes.size(), 2u);
+  EXPECT_FALSE(sensors[0].nodes[1].capture) << "video3 is the metadata node";
+  EXPECT_EQ(sensors[1].model, "DIGIT");
+  EXPECT_EQ(sensors[1].serial, "D20345") << "the USB serial number";
+  EXPECT_EQ(sensors[1].usb.sysfs_name(), "3-1.4");
+  EXPECT_EQ(sensors[1].capture_node, "/dev/video0");
+}
+
+TEST_F(Discovery, ASensorWithoutANodeIsListedWithoutOne) {
+  const auto sensors = discover_sensors({usb(0x2833, 0x0209, 2, {7}, "DIGIT", "D1")}, SensorCatalog::builtin(),
+                                        sysfs().string());
+  ASSERT_EQ(sensors.size(), 1u);
+  EXPECT_TRUE(sensors[0].capture_node.empty());
+  try {
+    find_sensor_by_serial(sensors, "D1");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("has no video node"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(Discovery, FindsASensorBySerialOrSaysWhichThereAre) {
+  const auto sensors = discover_sensors(devices(), SensorCatalog::builtin(), sysfs().string());
+  EXPECT_EQ(find_sensor_by_serial(sensors, "D20345").capture_node, "/dev/video0");
+  try {
+    find_sensor_by_serial(sensors, "XXXX");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("found: GelSight Mini 2BNK-CE6G, DIGIT D20345"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(Discovery, UsersAddTheirOwnSensors) {
+  std::ofstream(dir_.file("mine.json")) << R"({"format": "tactile-sensors/1", "sensors": [
+      {"model": "Lab webcam GelSight", "vendor_id": "0c45", "product_id": "636d", "product_pattern": "^Integrated"}]})";
+  SensorCatalog catalog = SensorCatalog::builtin();
+  catalog.prepend(SensorCatalog::from_file(dir_.file("mine.json")));
+  const auto sensors = discover_sensors(devices(), catalog, sysfs().string());
+  ASSERT_EQ(sensors.size(), 3u);
+  EXPECT_EQ(sensors[1].model, "Lab webcam GelSight");
+  EXPECT_EQ(sensors[1].capture_node, "/dev/video4");
+}
+
+TEST_F(Discovery, RefusesABadSensorList) {
+  std::ofstream(dir_.file("bad.json")) << R"({"format": "tactile-sensors/1", "sensors": [{"model": "X", "vendor_id": "0C45", "product_id": "636d"}]})";
+  try {
+    SensorCatalog::from_file(dir_.file("bad.json"));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("bad.json: /sensors/0/vendor_id"), std::string::npos) << e.what();
+  }
+  std::ofstream(dir_.file("regex.json")) << R"({"format": "tactile-sensors/1", "sensors": [{"model": "X", "vendor_id": "0c45", "product_id": "636d", "product_pattern": "(["}]})";
+  try {
+    SensorCatalog::from_file(dir_.file("regex.json"));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/sensors/0/product_pattern"), std::string::npos) << e.what();
+  }
+}
+
+TEST(UsbDevices, ListingWorksWithoutAnySensor) {
+  // The test machine has no tactile sensor; listing must still work (or fail with a clear error).
+  try {
+    const auto devices = list_usb_devices();
+    for (const auto& d : devices) EXPECT_FALSE(d.ports.empty());
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("libusb"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace haptex::capture

@@ -1,0 +1,163 @@
+// Streaming through the fake camera: every frame with its metadata, and every kind of loss counted.
+#include <gtest/gtest.h>
+#include <linux/videodev2.h>
+
+#include <thread>
+
+#include "capture/device/format_negotiation.hpp"
+#include "capture/device/v4l2_stream.hpp"
+#include "core/error.hpp"
+#include "tests/capture/fake_setup.hpp"
+
+namespace haptex::capture {
+namespace {
+
+struct Streamed {
+  std::vector<Frame> frames;
+  StreamStatus last = StreamStatus::frame;
+  int timeouts = 0;
+};
+
+// Reads until `frames` frames arrived, the device is gone, or too many timeouts in a row.
+Streamed stream_frames(V4l2Stream& stream, std::size_t frames) {
+  Streamed out;
+  int quiet = 0;
+  while (out.frames.size() < frames && quiet < 50) {
+    Frame f;
+    out.last = stream.next(f);
+    if (out.last == StreamStatus::disconnected) break;
+    if (out.last == StreamStatus::timeout) {
+      ++out.timeouts;
+      ++quiet;
+      continue;
+    }
+    quiet = 0;
+    out.frames.push_back(std::move(f));
+  }
+  return out;
+}
+
+class StreamTest : public ::testing::Test {
+ protected:
+  void open(FakeCameraConfig config, unsigned buffers = 6) {
+    stream_.reset();
+    device_.reset();
+    camera_ = std::make_unique<FakeCamera>(std::move(config));
+    device_ = std::make_unique<V4l2Device>(*camera_, "/dev/video0");
+    stream_ = std::make_unique<V4l2Stream>(*device_, negotiate_format(*device_, {}), buffers);
+    stream_->start();
+  }
+  std::unique_ptr<FakeCamera> camera_;
+  std::unique_ptr<V4l2Device> device_;
+  std::unique_ptr<V4l2Stream> stream_;
+};
+
+TEST_F(StreamTest, FramesKeepSequenceTimestampFlagsAndBytes) {
+  open(fixtures::small_camera());
+  const Streamed s = stream_frames(*stream_, 12);
+  ASSERT_EQ(s.frames.size(), 12u);
+  for (std::size_t i = 0; i < s.frames.size(); ++i) {
+    const Frame& f = s.frames[i];
+    EXPECT_EQ(f.sequence, i);
+    EXPECT_TRUE(f.flags & V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC);
+    EXPECT_EQ(f.bytes, camera_->scene()->payload(i)) << "frame " << i << " is the sensor's payload, byte for byte";
+    if (i > 0) {
+      EXPECT_NEAR(double(f.timestamp_ns - s.frames[i - 1].timestamp_ns), 1e9 / 30, 1000);
+    }
+  }
+  EXPECT_EQ(stream_->drops().dropped(), 0u);
+  EXPECT_EQ(stream_->stats().frames, 12u);
+}
+
+TEST_F(StreamTest, AsksForFourToEightBuffers) {
+  open(fixtures::small_camera(), 2);
+  EXPECT_EQ(stream_->buffer_count(), 4u);
+  open(fixtures::small_camera(), 20);
+  EXPECT_EQ(stream_->buffer_count(), 8u);
+  EXPECT_EQ(camera_->mapped_buffers(), 8u);
+  stream_.reset();
+  EXPECT_EQ(camera_->mapped_buffers(), 0u) << "unmapped when the stream ends";
+}
+
+TEST(Stream, RefusesADriverGrantingTooFewBuffers) {
+  FakeCameraConfig config = fixtures::small_camera();
+  config.max_buffers = 3;
+  FakeCamera camera(config);
+  V4l2Device device(camera, "/dev/video0");
+  try {
+    V4l2Stream stream(device, negotiate_format(device, {}));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("granted 3 capture buffers"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(camera.mapped_buffers(), 0u);
+}
+
+TEST_F(StreamTest, LostFramesAreCountedFromSequenceGaps) {
+  FakeCameraConfig config = fixtures::small_camera();
+  config.drop_percent = 20;
+  open(config);
+  const Streamed s = stream_frames(*stream_, 200);
+  ASSERT_EQ(s.frames.size(), 200u);
+  EXPECT_GT(camera_->stats().camera_drops, 10u);
+  // Frames the camera lost between the first and last delivered ones: all of them seen as gaps.
+  const std::uint64_t lost_before_last = s.frames.back().sequence - s.frames.front().sequence + 1 - s.frames.size();
+  EXPECT_EQ(stream_->drops().dropped(), lost_before_last);
+  EXPECT_EQ(stream_->drops().sequence_gaps(), lost_before_last);
+}
+
+TEST_F(StreamTest, StallsAreTimeoutsAndTimestampGaps) {
+  FakeCameraConfig config = fixtures::small_camera();
+  config.stalls = {{20, 1000}};  // frame 20 comes a second late
+  open(config);
+  const Streamed s = stream_frames(*stream_, 30);
+  ASSERT_EQ(s.frames.size(), 30u);
+  EXPECT_EQ(stream_->poll_timeout_ms(), 100);  // 3 periods at 30 fps
+  EXPECT_GE(s.timeouts, 9);
+  EXPECT_EQ(stream_->stats().poll_timeouts, std::uint64_t(s.timeouts));
+  EXPECT_EQ(stream_->drops().sequence_gaps(), 0u);
+  EXPECT_EQ(stream_->drops().timestamp_gaps(), 30u) << "a second at 30 fps";
+}
+
+TEST_F(StreamTest, ErrorFlaggedBuffersAreCountedRequeuedAndNotDelivered) {
+  FakeCameraConfig config = fixtures::small_camera();
+  config.error_percent = 10;
+  open(config, 4);
+  const Streamed s = stream_frames(*stream_, 300);
+  ASSERT_EQ(s.frames.size(), 300u) << "buffers came back: the stream never starved";
+  const auto& fake = camera_->stats();
+  EXPECT_GT(fake.error_buffers, 10u);
+  EXPECT_EQ(stream_->stats().error_buffers, fake.error_buffers);
+  for (const auto& f : s.frames) EXPECT_FALSE(f.flags & V4L2_BUF_FLAG_ERROR);
+  EXPECT_EQ(stream_->drops().dropped(), 0u) << "a flagged buffer is an error, not also a loss";
+  EXPECT_EQ(fake.delivered, s.frames.size() + fake.error_buffers);
+}
+
+TEST_F(StreamTest, DisconnectEndsTheStreamAfterEveryFrameTaken) {
+  FakeCameraConfig config = fixtures::small_camera();
+  config.disconnect_after = 37;
+  open(config);
+  const Streamed s = stream_frames(*stream_, 1000);
+  EXPECT_EQ(s.last, StreamStatus::disconnected);
+  EXPECT_EQ(s.frames.size(), 37u);
+  Frame f;
+  EXPECT_EQ(stream_->next(f), StreamStatus::disconnected) << "and it stays gone";
+  stream_.reset();  // STREAMOFF and REQBUFS fail with ENODEV; tearing down must not throw
+  EXPECT_EQ(camera_->mapped_buffers(), 0u);
+}
+
+TEST_F(StreamTest, RealTimeCameraLosesFramesTheHostDoesNotCollect) {
+  FakeCameraConfig config = fixtures::small_camera(V4L2_PIX_FMT_MJPEG, 320, 240, 200);
+  config.realtime = true;
+  open(config, 4);
+  Frame f;
+  ASSERT_EQ(stream_->next(f), StreamStatus::frame);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // 20 frames due, 4 buffers
+  const Streamed s = stream_frames(*stream_, 10);
+  ASSERT_EQ(s.frames.size(), 10u);
+  EXPECT_GE(camera_->stats().host_drops, 10u);
+  EXPECT_GE(stream_->drops().dropped(), 10u) << "the host sees the gap in sequence numbers";
+}
+
+}  // namespace
+}  // namespace haptex::capture

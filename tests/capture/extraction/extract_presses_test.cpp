@@ -1,0 +1,271 @@
+// capture extract: videos and press files -> the gelsight file and contact sheets, or nothing at all.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <cmath>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "capture/extraction/capture_inputs.hpp"
+#include "capture/extraction/extract_presses.hpp"
+#include "capture/recording/press_recorder.hpp"
+#include "core/error.hpp"
+#include "core/h5/file.hpp"
+#include "tests/capture/fake_setup.hpp"
+#include "tests/capture/press_videos.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::capture {
+namespace {
+
+namespace fs = std::filesystem;
+using fixtures::quick_presses;
+
+class Extract : public ::testing::Test {
+ protected:
+  std::string video(const std::string& material, const std::string& name, int presses, int frames = 60) {
+    fs::create_directories(dir_.path() / "videos" / material);
+    const std::string path = (dir_.path() / "videos" / material / name).string();
+    fixtures::write_press_video(path, quick_presses(presses), frames);
+    return path;
+  }
+  std::string out(const std::string& name = "gelsight.h5") const { return dir_.file(name); }
+  void expect_nothing_written() const {
+    EXPECT_FALSE(fs::exists(out()));
+    EXPECT_FALSE(fs::exists(out() + ".partial"));
+    EXPECT_FALSE(fs::exists(dir_.file("gelsight_sheets")));
+    EXPECT_FALSE(fs::exists(dir_.file("gelsight_sheets.partial")));
+  }
+  haptex::test::TempDir dir_;
+};
+
+TEST_F(Extract, AFolderOfMaterialFoldersGivesStablePressNumbers) {
+  video("Cork", "press_10.mkv", 1);
+  video("Cork", "press_2.mkv", 2, 75);
+  video("Brick 2", "press_0.mkv", 1);
+  const ExtractResult r = extract_presses({dir_.file("videos")}, out(), {});
+  ASSERT_EQ(r.presses.size(), 4u);
+  EXPECT_EQ(r.sources, 3u);
+  // Materials in folder order; files by number: press_2 before press_10.
+  EXPECT_EQ(r.presses[0].material, "Brick 2");
+  EXPECT_EQ(r.presses[0].material_id, "brick_2");
+  EXPECT_EQ(r.presses[1].material, "Cork");
+  EXPECT_NE(r.presses[1].source.find("press_2.mkv"), std::string::npos);
+  EXPECT_EQ(r.presses[2].press_in_source, 1);
+  EXPECT_NE(r.presses[3].source.find("press_10.mkv"), std::string::npos);
+  EXPECT_EQ(r.presses[3].press, 2);
+  h5::File f = h5::File::open(out());
+  EXPECT_EQ(f.root().attr_string("haptex_format"), "gelsight/1");
+  const h5::Group cork = f.root().open_group("materials").open_group("cork");
+  EXPECT_EQ(cork.attr_string("name"), "Cork");
+  EXPECT_EQ(cork.open_group("presses").children(), (std::vector<std::string>{"0", "1", "2"}));
+  for (const auto& p : r.presses) EXPECT_TRUE(fs::exists(dir_.path() / p.contact_sheet)) << p.contact_sheet;
+}
+
+// Issue 11 point 5: a video cut off in the middle of a press (MJPG: its last frame's JPEG is cut
+// short and would decode, concealed, into a half-grey frame that scores as the strongest contact).
+// No frame that did not decode whole is a peak or kept, and the result counts the lost frames.
+TEST_F(Extract, AVideoCutShortKeepsNoDamagedFrame) {
+  fs::create_directories(dir_.path() / "videos");
+  const std::string full = dir_.file("videos/full.avi"), cut = dir_.file("videos/cut.avi");
+  fixtures::write_press_video(full, quick_presses(1), 45, 160, 120, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'));
+  std::vector<cv::Mat> frames;
+  cv::VideoCapture reader(full, cv::CAP_FFMPEG);
+  for (cv::Mat f; reader.read(f);) frames.push_back(f.clone());
+  ASSERT_EQ(frames.size(), 45u);
+  fs::copy_file(full, cut);
+  fs::resize_file(cut, fs::file_size(full) * 81 / 100);  // inside frame 36's JPEG, during the press's hold
+
+  const ExtractResult r = extract_presses({cut}, out(), {});
+  ASSERT_EQ(r.presses.size(), 1u);
+  EXPECT_GT(r.frames_unreadable, 0) << "the frames the container announced but that never decoded";
+  const h5::Group press = h5::File::open(out()).root().open_group("materials/videos/presses/0");
+  const auto indices = press.open_dataset("frame_indices").read<std::int64_t>();
+  const std::vector<std::uint8_t> kept = press.open_dataset("frames").read<std::uint8_t>();
+  const std::size_t one = 160 * 120 * 3;
+  ASSERT_EQ(kept.size(), indices.size() * one);
+  for (std::size_t k = 0; k < indices.size(); ++k) {
+    cv::Mat rgb(120, 160, CV_8UC3, const_cast<std::uint8_t*>(kept.data() + k * one)), bgr;
+    cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+    ASSERT_LT(std::size_t(indices[k]), frames.size());
+    EXPECT_EQ(cv::norm(bgr, frames[std::size_t(indices[k])], cv::NORM_INF), 0.0) << "kept frame " << indices[k] << " is damaged";
+  }
+  const std::int64_t peak = press.open_dataset("peak_index").read<std::int64_t>().at(0);
+  EXPECT_EQ(press.attr_int("source_frames_unreadable"), r.frames_unreadable) << "the gelsight file records them for qa";
+  EXPECT_LT(peak, 36) << "the cut frame (36) or later";
+}
+
+TEST_F(Extract, EachPressHoldsReferencePeakTwelveFramesAndScores) {
+  const std::string path = video("Cork", "press_0.mkv", 1);
+  const ExtractResult r = extract_presses({path}, out(), {});
+  ASSERT_EQ(r.presses.size(), 1u);
+  h5::File f = h5::File::open(out());
+  const h5::Group g = f.root().open_group("materials").open_group("cork").open_group("presses").open_group("0");
+  EXPECT_EQ(g.attr_string("source_file"), path);
+  EXPECT_EQ(g.attr_string("source_sha256").size(), 64u);
+  const std::int64_t start = g.attr_int("frame_start"), end = g.attr_int("frame_end");
+  const auto contrast = g.open_dataset("contrast").read<float>();
+  EXPECT_EQ(std::int64_t(contrast.size()), end - start + 1);
+  EXPECT_EQ(g.attr_int("samples"), std::int64_t(contrast.size()));
+  const auto peak_index = g.open_dataset("peak_index");
+  EXPECT_TRUE(peak_index.shape().empty()) << "a scalar";
+  const std::int64_t peak = peak_index.read<std::int64_t>()[0];
+  EXPECT_GE(peak, g.attr_int("contact_first"));
+  EXPECT_LE(peak, g.attr_int("contact_last"));
+  EXPECT_FLOAT_EQ(contrast[std::size_t(peak - start)], float(g.attr_double("peak_score")));
+  EXPECT_EQ(g.open_dataset("frames").shape(), (h5::Shape{12, 120, 160, 3}));
+  EXPECT_EQ(g.open_dataset("peak").shape(), (h5::Shape{120, 160, 3}));
+  EXPECT_EQ(g.open_dataset("reference").shape(), (h5::Shape{120, 160, 3}));
+  EXPECT_EQ(g.open_dataset("peak").attr_string("channel_order"), "RGB");
+  // The peak is one of the 12 frames, bit for bit.
+  const auto indices = g.open_dataset("frame_indices").read<std::int64_t>();
+  const auto frames = g.open_dataset("frames").read<std::uint8_t>();
+  const auto peak_rgb = g.open_dataset("peak").read<std::uint8_t>();
+  const auto at = std::find(indices.begin(), indices.end(), peak) - indices.begin();
+  ASSERT_LT(at, 12);
+  const std::size_t image = 120 * 160 * 3;
+  EXPECT_TRUE(std::equal(peak_rgb.begin(), peak_rgb.end(), frames.begin() + std::ptrdiff_t(std::size_t(at) * image)));
+}
+
+TEST_F(Extract, PressFilesFromTheRecorderNameTheirMaterial) {
+  FakeCamera camera(fixtures::small_camera());
+  SessionRequest request;
+  request.node = "/dev/video0";
+  request.output_dir = dir_.file("session");
+  RecorderOptions options;
+  options.material = "Sandpaper 100";
+  options.presses = 2;
+  record_session(camera, request, options);
+  const ExtractResult r = extract_presses({dir_.file("session")}, out(), {});
+  ASSERT_EQ(r.presses.size(), 2u);
+  EXPECT_EQ(r.presses[0].material, "Sandpaper 100") << "from the file, not the folder 'session'";
+  h5::File f = h5::File::open(out());
+  const h5::Group g = f.root().open_group("materials").open_group("sandpaper_100").open_group("presses").open_group("1");
+  EXPECT_NE(g.attr_string("reference_source").find("stored in the press file"), std::string::npos);
+  EXPECT_EQ(g.open_dataset("frames").shape()[0], 12u);
+}
+
+TEST_F(Extract, NoPressAnywhereIsAFailureThatWritesNothing) {
+  const std::string still = video("Glass", "still.mkv", 0, 30);
+  try {
+    extract_presses({still}, out(), {});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::failed);
+    EXPECT_NE(std::string(e.what()).find("no press found"), std::string::npos) << e.what();
+  }
+  expect_nothing_written();
+}
+
+TEST_F(Extract, AnUnreadableInputLeavesNothingBehind) {
+  const std::string good = video("Cork", "press_0.mkv", 1);
+  std::ofstream(dir_.file("videos/Cork/press_1.mkv")) << "not a video";
+  try {
+    extract_presses({dir_.file("videos")}, out(), {});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("press_1.mkv"), std::string::npos) << e.what();
+  }
+  expect_nothing_written();
+}
+
+TEST_F(Extract, RefusesToOverwriteWithoutForce) {
+  const std::string path = video("Cork", "press_0.mkv", 1);
+  extract_presses({path}, out(), {});
+  EXPECT_THROW(extract_presses({path}, out(), {}), Error);
+  ExtractOptions force;
+  force.overwrite = true;
+  EXPECT_NO_THROW(extract_presses({path}, out(), force));
+}
+
+TEST_F(Extract, AGivenReferenceImageReplacesTheLeadingFrames) {
+  const std::string path = video("Cork", "press_0.mkv", 1);
+  const FakeScene scene(V4L2_PIX_FMT_MJPEG, 160, 120, quick_presses(1));
+  cv::imwrite(dir_.file("ref.png"), scene.image(0, 0));
+  ExtractOptions options;
+  options.reference_path = dir_.file("ref.png");
+  options.sheets = false;
+  const ExtractResult r = extract_presses({path}, out(), options);
+  ASSERT_EQ(r.presses.size(), 1u);
+  EXPECT_TRUE(r.sheets_dir.empty());
+  h5::File f = h5::File::open(out());
+  const h5::Group g = f.root().open_group("materials").open_group("cork").open_group("presses").open_group("0");
+  EXPECT_EQ(g.attr_string("reference_source"), "image " + dir_.file("ref.png"));
+  EXPECT_FALSE(g.has_attr("contact_sheet"));
+}
+
+// A press video as a folder of PNG frames, as `haptex synth` writes them.
+void write_png_sequence(const fs::path& folder, int presses, int frames, const std::string& ext = ".png") {
+  fs::create_directories(folder);
+  const FakeScene scene(V4L2_PIX_FMT_MJPEG, 160, 120, quick_presses(presses));
+  for (int i = 0; i < frames; ++i) {
+    const int level = int(std::lround(scene.depth(std::uint64_t(i)) * FakeScene::kDepthLevels));
+    const cv::Mat frame = scene.black(std::uint64_t(i)) ? cv::Mat::zeros(120, 160, CV_8UC3) : scene.image(level, i % 2);
+    cv::imwrite((folder / ("frame_" + std::to_string(1000 + i).substr(1) + ext)).string(), frame);
+  }
+}
+
+TEST_F(Extract, FoldersOfFrameImagesAreVideos) {
+  write_png_sequence(dir_.path() / "gelsight" / "Woven 1" / "press_0", 1, 50);
+  write_png_sequence(dir_.path() / "gelsight" / "Woven 1" / "press_1", 1, 50);
+  std::ofstream(dir_.file("gelsight/Woven 1/press_0.json")) << "{}";  // sidecars are ignored
+  const ExtractResult r = extract_presses({dir_.file("gelsight")}, out(), {});
+  ASSERT_EQ(r.presses.size(), 2u);
+  EXPECT_EQ(r.presses[1].material, "Woven 1");
+  EXPECT_EQ(r.presses[1].press, 1);
+  const FakeScene scene(V4L2_PIX_FMT_MJPEG, 16, 16, quick_presses(1));
+  EXPECT_EQ(scene.depth(std::uint64_t(r.presses[0].peak_index)), 1.0) << "the peak is a frame at full depth";
+  // One sequence folder given directly: its material is the folder above it.
+  ExtractOptions force;
+  force.overwrite = true;
+  const ExtractResult one = extract_presses({dir_.file("gelsight/Woven 1/press_1/")}, out(), force);
+  ASSERT_EQ(one.presses.size(), 1u);
+  EXPECT_EQ(one.presses[0].material, "Woven 1");
+  h5::File f = h5::File::open(out());
+  EXPECT_EQ(f.root().open_group("materials/woven_1/presses/0").attr_string("source_sha256").size(), 64u);
+}
+
+TEST_F(Extract, LosslessSourcesGetLowerFloorsThanLossyOnes) {
+  write_png_sequence(dir_.path() / "png", 1, 12);
+  write_png_sequence(dir_.path() / "jpg", 1, 12, ".jpg");
+  const auto png = open_image_sequence(dir_.file("png"));
+  const auto jpg = open_image_sequence(dir_.file("jpg"));
+  EXPECT_TRUE(png->lossless());
+  EXPECT_FALSE(jpg->lossless());
+  EXPECT_FLOAT_EQ(score_settings(*png, {}).pixel_floor, 1.0f);
+  EXPECT_FLOAT_EQ(score_settings(*png, {}).trigger_floor, 0.02f);
+  EXPECT_FLOAT_EQ(score_settings(*jpg, {}).pixel_floor, 6.0f);
+  EXPECT_FLOAT_EQ(score_settings(*jpg, {}).trigger_floor, 0.25f);
+  ExtractSettings chosen;
+  chosen.pixel_floor = 3.0f;
+  EXPECT_FLOAT_EQ(score_settings(*png, chosen).pixel_floor, 3.0f);
+  EXPECT_TRUE(open_video(video("Cork", "press_0.mkv", 1))->lossless()) << "FFV1";
+  const std::string mjpg = dir_.file("mjpg.avi");
+  fixtures::write_press_video(mjpg, quick_presses(1), 12, 160, 120, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'));
+  EXPECT_FALSE(open_video(mjpg)->lossless());
+}
+
+TEST(CaptureInputs, NumbersInFileNamesCompareByValue) {
+  EXPECT_TRUE(natural_less("press_2.mkv", "press_10.mkv"));
+  EXPECT_FALSE(natural_less("press_10.mkv", "press_2.mkv"));
+  EXPECT_TRUE(natural_less("press_02.mkv", "press_3.mkv"));
+  EXPECT_TRUE(natural_less("a.mkv", "b.mkv"));
+  EXPECT_FALSE(natural_less("a.mkv", "a.mkv"));
+}
+
+TEST(CaptureInputs, RefusesMissingPathsAndEmptyFolders) {
+  haptex::test::TempDir dir;
+  EXPECT_THROW(expand_capture_inputs({dir.file("nowhere")}, std::nullopt), Error);
+  std::ofstream(dir.file("notes.txt")) << "x";
+  try {
+    expand_capture_inputs({dir.path().string()}, std::nullopt);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("holds no video"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace haptex::capture

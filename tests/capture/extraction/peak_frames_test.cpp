@@ -1,0 +1,185 @@
+// Scoring a source, cutting presses and choosing the 12 frames around each peak.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "capture/extraction/peak_frames.hpp"
+#include "core/error.hpp"
+#include "tests/capture/fake_setup.hpp"
+#include "tests/capture/press_videos.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::capture {
+namespace {
+
+using fixtures::quick_presses;
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+SegmenterSettings segmenter() { return SegmenterSettings{}; }
+
+bool consecutive(const std::vector<std::int64_t>& v) {
+  for (std::size_t i = 1; i < v.size(); ++i)
+    if (v[i] != v[i - 1] + 1) return false;
+  return true;
+}
+
+TEST(PlanPresses, KeepsTwelveConsecutiveFramesAroundThePeakThatScoreHighest) {
+  std::vector<float> s(60, 0.0f);
+  for (int i = 20; i < 40; ++i) s[std::size_t(i)] = 1.0f + 0.1f * float(i - 20);  // rising to the peak at 39
+  for (int i = 40; i < 45; ++i) s[std::size_t(i)] = 0.5f;
+  const auto plans = plan_presses(s, segmenter(), 12, 10);
+  ASSERT_EQ(plans.size(), 1u);
+  const PressPlan& p = plans[0];
+  EXPECT_EQ(p.contact.peak, 39);
+  ASSERT_EQ(p.frame_indices.size(), 12u);
+  EXPECT_TRUE(consecutive(p.frame_indices));
+  // The best-scoring run ending at the peak: the rising frames, not the release.
+  EXPECT_EQ(p.frame_indices.front(), 28);
+  EXPECT_EQ(p.frame_indices.back(), 39);
+  EXPECT_EQ(p.range_first, 10);
+  EXPECT_EQ(p.range_last, 54);
+}
+
+TEST(PlanPresses, CentresThePeakWhenScoresAreEvenAndStaysInsideTheSource) {
+  std::vector<float> s(40, 0.0f);
+  for (int i = 0; i < 30; ++i) s[std::size_t(i)] = 2.0f;
+  s[4] = 3.0f;  // the peak near the start: centred, the run would begin at frame -1
+  const auto plans = plan_presses(s, segmenter(), 12, 10);
+  ASSERT_EQ(plans.size(), 1u);
+  EXPECT_EQ(plans[0].frame_indices.front(), 0) << "cannot start before frame 0";
+  std::vector<float> even(60, 0.0f);
+  for (int i = 10; i < 50; ++i) even[std::size_t(i)] = 2.0f;
+  even[30] = 2.5f;
+  const auto centred = plan_presses(even, segmenter(), 12, 10);
+  const std::int64_t start = centred[0].frame_indices.front();
+  EXPECT_TRUE(start == 24 || start == 25) << "peak at position 5 or 6 of 12, not " << start;
+}
+
+TEST(PlanPresses, AvoidsFramesThatDidNotDecodeAndNeverSharesFrames) {
+  std::vector<float> s(80, 0.0f);
+  for (int i = 10; i < 30; ++i) s[std::size_t(i)] = 3.0f;
+  s[20] = 4.0f;
+  s[24] = kNaN;
+  for (int i = 34; i < 60; ++i) s[std::size_t(i)] = 3.0f;
+  const auto plans = plan_presses(s, segmenter(), 12, 10);
+  ASSERT_EQ(plans.size(), 2u);
+  for (std::int64_t k : plans[0].frame_indices) EXPECT_NE(k, 24);
+  EXPECT_LT(plans[0].range_last, plans[1].range_first);
+  EXPECT_LT(plans[0].frame_indices.back(), plans[1].frame_indices.front());
+}
+
+// An in-memory source: frames are solid images whose grey level is their index.
+class MemorySource : public FrameSource {
+ public:
+  explicit MemorySource(int frames) : frames_(frames) {}
+  const std::string& path() const override { return path_; }
+  cv::Size frame_size() const override { return {32, 24}; }
+  double fps() const override { return 30; }
+  std::string sha256() const override { return {}; }
+  bool lossless() const override { return true; }
+  void scan(const Visitor&, const std::function<bool(std::int64_t)>&) override {}
+  void read(const std::vector<std::int64_t>& indices,
+            const std::function<void(std::int64_t, const cv::Mat&)>& deliver) override {
+    requested = indices;
+    for (auto i : indices) deliver(i, cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(double(i))));
+  }
+  std::vector<std::int64_t> requested;
+
+ private:
+  int frames_;
+  std::string path_ = "memory";
+};
+
+TEST(ReadPressFrames, ReadsEachFrameOnceAndHandsOverEveryPressInOrder) {
+  MemorySource source(100);
+  PressPlan a, b;
+  a.contact = {10, 20, 15, 1};
+  a.frame_indices = {12, 13, 14, 15, 16};
+  b.contact = {40, 50, 44, 1};
+  b.frame_indices = {42, 43, 44, 45};
+  std::vector<std::int64_t> seen_peaks;
+  read_press_frames(source, {a, b}, [&](const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak) {
+    ASSERT_EQ(frames.size(), plan.frame_indices.size());
+    for (std::size_t i = 0; i < frames.size(); ++i) EXPECT_EQ(frames[i].at<cv::Vec3b>(0, 0)[0], plan.frame_indices[i]);
+    seen_peaks.push_back(peak.at<cv::Vec3b>(0, 0)[0]);
+  });
+  EXPECT_EQ(seen_peaks, (std::vector<std::int64_t>{15, 44}));
+  EXPECT_EQ(source.requested, (std::vector<std::int64_t>{12, 13, 14, 15, 16, 42, 43, 44, 45}));
+}
+
+class VideoScores : public ::testing::Test {
+ protected:
+  haptex::test::TempDir dir_;
+};
+
+TEST_F(VideoScores, SkipsBlackFramesAveragesTheNextTenAndFindsEveryPress) {
+  const std::string video = dir_.file("press_0.mkv");
+  const auto depth = fixtures::write_press_video(video, quick_presses(2), 90);
+  auto source = open_video(video);
+  EXPECT_EQ(source->frame_size(), cv::Size(160, 120));
+  EXPECT_NEAR(source->fps(), 30.0, 0.01);
+  const SourceScores scores = score_source(*source, {});
+  ASSERT_EQ(scores.scores.size(), 90u);
+  EXPECT_EQ(scores.black_frames, 5);
+  EXPECT_EQ(scores.reference_note, "mean of frames 5-14");
+  for (int i = 0; i < 5; ++i) EXPECT_TRUE(std::isnan(scores.scores[std::size_t(i)]));
+  const auto plans = plan_presses(scores.scores, SegmenterSettings{scores.contact->trigger(), scores.contact->release()}, 12, 10);
+  ASSERT_EQ(plans.size(), 2u);
+  for (const auto& p : plans) {
+    EXPECT_EQ(depth[std::size_t(p.contact.peak)], 1.0) << "the peak is a fully pressed frame";
+    EXPECT_GT(depth[std::size_t(p.contact.first)], 0.0);
+    EXPECT_LE(depth[std::size_t(p.contact.last + 1)], 0.2) << "contact ends with the release";
+  }
+}
+
+TEST_F(VideoScores, RefusesAVideoThatStartsWithContact) {
+  const std::string video = dir_.file("touched.mkv");
+  PressSchedule s = quick_presses(1);
+  s.black_frames = 0;
+  s.idle_frames = 3;
+  fixtures::write_press_video(video, s, 40);
+  auto source = open_video(video);
+  try {
+    score_source(*source, {});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    const std::string m = e.what();
+    EXPECT_NE(m.find("touched.mkv: frames 0-9: the first 10 frames are not a steady no-contact stretch"), std::string::npos) << m;
+    EXPECT_NE(m.find("--reference"), std::string::npos) << m;
+  }
+}
+
+TEST_F(VideoScores, AGivenReferenceMustHaveTheFrameSize) {
+  const std::string video = dir_.file("v.mkv");
+  fixtures::write_press_video(video, quick_presses(1), 40);
+  auto source = open_video(video);
+  ExtractSettings settings;
+  settings.reference_image = cv::Mat(100, 100, CV_8UC3, cv::Scalar::all(90));
+  settings.reference_image_path = "ref.png";
+  try {
+    score_source(*source, settings);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("ref.png: the reference image is 100x100 but the frames of"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(VideoScores, RefusesFilesThatAreNotVideos) {
+  const std::string path = dir_.file("notes.avi");
+  FILE* f = std::fopen(path.c_str(), "w");
+  std::fputs("not a video", f);
+  std::fclose(f);
+  try {
+    open_video(path);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("notes.avi"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace haptex::capture
