@@ -28,7 +28,7 @@ std::vector<CheckResult> check_layout(const h5::Group& root, const std::string& 
 // (qa/recording_checks.hpp).
 std::vector<CheckResult> check_recordings(const h5::Group& root);
 
-// gelsight.*: every press of a gelsight or dataset file.
+// gelsight.*: every press of a gelsight or dataset file (qa/gelsight_checks.hpp).
 std::vector<CheckResult> check_gelsight(const h5::Group& root);
 
 // dataset.*: the window table of a dataset file against its recordings.

@@ -1,0 +1,64 @@
+#pragma once
+// gelsight.* (docs/qa.md, "GelSight presses"): every press (/materials/{material}/presses/{j}) of a
+// gelsight or dataset file is read once into a Press; each check_gelsight_* function is one check
+// of the catalog, judging all of them.
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "core/h5/node.hpp"
+#include "qa/check.hpp"
+
+namespace haptex::qa {
+
+// What the checks need of one press, measured as it is read: its images are not kept, so a file of
+// thousands of full-size frames is checked in the memory of one press.
+struct Press {
+  std::string path, material;
+  std::optional<double> trigger, pixel_threshold;
+  bool has_reference = false, has_peak = false;
+  cv::Size reference_size, peak_size, frames_size;
+  bool sizes_agree = false;
+  cv::Mat reference_scoring;            // CV_32F scoring image of the reference
+  double reference_sharpness = 0;       // variance of its Laplacian
+  std::optional<double> peak_score;     // the peak against the reference, recomputed
+  struct Image {
+    std::string where;
+    cv::Size size;
+    double sharpness = 0, saturated = 0;
+  };
+  std::vector<Image> images;            // the peak and every frame
+  // capture extract records how many frames of the press's source did not decode.
+  std::int64_t source_frames_unreadable = 0;
+  std::string source_frames_problem;    // why that count is unknown; empty when it was read
+};
+
+struct GelsightPresses {
+  std::vector<Press> presses;                       // in file order
+  std::map<std::string, std::size_t> per_material;  // presses per material group (0: none)
+};
+GelsightPresses read_presses(const h5::Group& root);
+
+// Per image size (one sensor mode), what the file's no-contact references look like: their per-pixel
+// median scoring image (only with kMinReferencesForMedian or more) and their median sharpness.
+using ImageSize = std::pair<int, int>;  // width, height
+struct NoContactBaselines {
+  std::map<ImageSize, cv::Mat> reference;
+  std::map<ImageSize, double> sharpness;
+};
+NoContactBaselines no_contact_baselines(const std::vector<Press>& presses);
+
+CheckResult check_gelsight_reference(const std::vector<Press>& presses, const NoContactBaselines& baselines);
+CheckResult check_gelsight_peak_score(const std::vector<Press>& presses);
+CheckResult check_gelsight_saturation(const std::vector<Press>& presses);
+CheckResult check_gelsight_blur(const std::vector<Press>& presses, const NoContactBaselines& baselines);
+CheckResult check_gelsight_resolution(const GelsightPresses& file);
+CheckResult check_gelsight_press_count(const std::map<std::string, std::size_t>& per_material);
+CheckResult check_gelsight_source_damage(const std::vector<Press>& presses);
+
+}  // namespace haptex::qa
