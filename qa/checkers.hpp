@@ -34,7 +34,7 @@ std::vector<CheckResult> check_gelsight(const h5::Group& root);
 // dataset.*: the window table of a dataset file against its recordings.
 std::vector<CheckResult> check_dataset(const h5::Group& root);
 
-// split.*: a manifest, with the dataset file it was made from when that is at hand.
+// split.*: a manifest, with the dataset file it was made from when that is at hand (qa/split_checks.hpp).
 std::vector<CheckResult> check_split(const SplitManifestDocument& manifest, const std::optional<std::string>& dataset_path);
 
 }  // namespace haptex::qa
