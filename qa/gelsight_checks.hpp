@@ -1,48 +1,18 @@
 #pragma once
-// gelsight.* (docs/qa.md, "GelSight presses"): every press (/materials/{material}/presses/{j}) of a
-// gelsight or dataset file is read once into a Press; each check_gelsight_* function is one check
-// of the catalog, judging all of them.
-#include <cstdint>
+// gelsight.* (docs/qa.md, "GelSight presses"): every press of a gelsight or dataset file is read
+// once (qa/press_data.hpp); each check_gelsight_* function is one check of the catalog, judging all
+// of them.
 #include <map>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
-#include "core/h5/node.hpp"
 #include "qa/check.hpp"
+#include "qa/press_data.hpp"
 
 namespace haptex::qa {
-
-// What the checks need of one press, measured as it is read: its images are not kept, so a file of
-// thousands of full-size frames is checked in the memory of one press.
-struct Press {
-  std::string path, material;
-  std::optional<double> trigger, pixel_threshold;
-  bool has_reference = false, has_peak = false;
-  cv::Size reference_size, peak_size, frames_size;
-  bool sizes_agree = false;
-  cv::Mat reference_scoring;            // CV_32F scoring image of the reference
-  double reference_sharpness = 0;       // variance of its Laplacian
-  std::optional<double> peak_score;     // the peak against the reference, recomputed
-  struct Image {
-    std::string where;
-    cv::Size size;
-    double sharpness = 0, saturated = 0;
-  };
-  std::vector<Image> images;            // the peak and every frame
-  // capture extract records how many frames of the press's source did not decode.
-  std::int64_t source_frames_unreadable = 0;
-  std::string source_frames_problem;    // why that count is unknown; empty when it was read
-};
-
-struct GelsightPresses {
-  std::vector<Press> presses;                       // in file order
-  std::map<std::string, std::size_t> per_material;  // presses per material group (0: none)
-};
-GelsightPresses read_presses(const h5::Group& root);
 
 // Per image size (one sensor mode), what the file's no-contact references look like: their per-pixel
 // median scoring image (only with kMinReferencesForMedian or more) and their median sharpness.
