@@ -21,8 +21,7 @@ struct RecordingTallies {
   CheckTally raw{"filter.raw", "raw signals"};
   CheckTally duplicate{"recordings.duplicate", "recordings"};
   Seen flat_share, force, speed, band_share, lowpass_share, raw_share;
-  Seen energy_ratio{INFINITY, 0};  // energies: never below 0
-
+  Seen energy_ratio{INFINITY, 0};  // a ratio of energies: never below 0
   SeenHashes hashes;
 };
 
@@ -45,9 +44,18 @@ std::vector<CheckResult> check_recordings(const h5::Group& root) {
     check_filter_raw(r, t.raw, t.raw_share);
     check_recordings_duplicate(r, t.duplicate, t.hashes);
   }
-  return {t.nan.result(),      t.sample_rate.result(),    t.duration.result(),         t.short_recording.result(),
-          t.clipping.result(), t.force_range.result(),    t.speed_range.result(),      t.accel_spectrum.result(),
-          t.reduction_energy.result(), t.lowpass.result(), t.raw.result(),             t.duplicate.result()};
+  return {t.nan.result(),
+          t.sample_rate.result(),
+          t.duration.result(),
+          t.short_recording.result(),
+          t.clipping.result(),
+          t.force_range.result(),
+          t.speed_range.result(),
+          t.accel_spectrum.result(),
+          t.reduction_energy.result(),
+          t.lowpass.result(),
+          t.raw.result(),
+          t.duplicate.result()};
 }
 
 }  // namespace haptex::qa

@@ -161,6 +161,7 @@ std::vector<Recount> recount_windows(const SplitManifest& m, const std::vector<M
   for (std::size_t i = 0; i < m.materials.size(); ++i) index_of.emplace(m.materials[i].id, i);
   std::vector<std::array<std::vector<cv::Point2f>, 3>> points(m.materials.size());  // (speed, force)
   std::map<std::pair<std::int32_t, std::int32_t>, std::optional<std::int64_t>> samples_cache;
+  const bool actions = has_actions(t);
   for (std::size_t w = 0; w < t.size(); ++w) {
     if (t.material[w] < 0 || std::size_t(t.material[w]) >= t.materials.size()) continue;
     const auto it = index_of.find(t.materials[std::size_t(t.material[w])]);
@@ -176,7 +177,7 @@ std::vector<Recount> recount_windows(const SplitManifest& m, const std::vector<M
     const int set = (*sections[it->second].set_of)[std::size_t(section)];
     if (set < 0) continue;
     ++r.windows[std::size_t(set)];
-    if (has_actions(t)) points[it->second][std::size_t(set)].push_back(window_point(t, w));
+    if (actions) points[it->second][std::size_t(set)].push_back(window_point(t, w));
   }
   for (std::size_t i = 0; i < m.materials.size(); ++i) {
     Recount& r = recount[i];
