@@ -1,48 +1,47 @@
 // recordings.duplicate: the same source file converted twice, or the same samples under two names.
-#include <algorithm>
+#include <span>
 
 #include "core/sha256.hpp"
-#include "qa/checkers.hpp"
+#include "qa/recording_checks.hpp"
 
 namespace haptex::qa {
 namespace {
 
-const std::string* find_hash(const std::vector<std::pair<std::string, std::string>>& seen, const std::string& hash) {
+using Hashes = std::vector<std::pair<std::string, std::string>>;
+
+const std::string* find_hash(const Hashes& seen, const std::string& hash) {
   for (const auto& [h, path] : seen)
     if (h == hash) return &path;
   return nullptr;
 }
 
-}  // namespace
-
-DuplicateCheck::DuplicateCheck() : tally_("recordings.duplicate", "recordings") {}
-
-void DuplicateCheck::add(const LoadedRecording& r) {
-  const Signal& accel = r.signals.at("accel_xyz").ok() ? r.signals.at("accel_xyz") : r.signals.at("accel");
-  if (!r.source_sha256 && !accel.ok()) {
-    tally_.skip(r.path + ": neither source_sha256 nor acceleration to compare");
-    return;
-  }
-  std::string problem;
-  if (r.source_sha256 && !r.source_sha256->empty()) {
-    if (const std::string* first = find_hash(source_hashes_, *r.source_sha256))
-      problem = "the same source file (SHA-256 " + r.source_sha256->substr(0, 12) + "...) as " + *first;
-    else source_hashes_.emplace_back(*r.source_sha256, r.path);
-  }
-  if (accel.ok()) {
-    Sha256 hash;
-    hash.update(std::span(reinterpret_cast<const std::uint8_t*>(accel.values.data()), accel.values.size() * sizeof(double)));
-    const std::string data_hash = hash.hex_digest();
-    if (const std::string* first = find_hash(data_hashes_, data_hash)) {
-      if (problem.empty()) problem = "the same acceleration samples as " + *first;
-    } else {
-      data_hashes_.emplace_back(data_hash, r.path);
-    }
-  }
-  if (problem.empty()) tally_.pass();
-  else tally_.fail(r.path, problem);
+// The recording that first had `hash`, or nullptr after remembering `path` as that recording.
+const std::string* first_with(Hashes& seen, const std::string& hash, const std::string& path) {
+  if (const std::string* first = find_hash(seen, hash)) return first;
+  seen.emplace_back(hash, path);
+  return nullptr;
 }
 
-std::vector<CheckResult> DuplicateCheck::results() const { return {tally_.result()}; }
+std::string data_hash(const Signal& s) {
+  Sha256 hash;
+  hash.update(std::span(reinterpret_cast<const std::uint8_t*>(s.values.data()), s.values.size() * sizeof(double)));
+  return hash.hex_digest();
+}
+
+}  // namespace
+
+void check_recordings_duplicate(const LoadedRecording& r, CheckTally& tally, SeenHashes& seen) {
+  const Signal& accel = r.signals.at("accel_xyz").ok() ? r.signals.at("accel_xyz") : r.signals.at("accel");
+  if (!r.source_sha256 && !accel.ok()) return tally.skip(r.path + ": neither source_sha256 nor acceleration to compare");
+  std::string problem;
+  if (r.source_sha256 && !r.source_sha256->empty())
+    if (const std::string* first = first_with(seen.source, *r.source_sha256, r.path))
+      problem = "the same source file (SHA-256 " + r.source_sha256->substr(0, 12) + "...) as " + *first;
+  if (accel.ok())
+    if (const std::string* first = first_with(seen.data, data_hash(accel), r.path); first && problem.empty())
+      problem = "the same acceleration samples as " + *first;
+  if (problem.empty()) tally.pass();
+  else tally.fail(r.path, problem);
+}
 
 }  // namespace haptex::qa

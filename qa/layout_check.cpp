@@ -1,6 +1,8 @@
 // layout.*: a file against the tables of schemas/hdf5-layout.md (the same rules as
 // tests/e2e/check_layout.py, plus: a missing group on a required path is reported, not skipped).
+// The objects every row describes are looked up once (find_rows); each check then judges them.
 #include <map>
+#include <optional>
 #include <set>
 
 #include "core/error.hpp"
@@ -28,154 +30,197 @@ bool is_number(const std::string& s) {
   return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
 }
 
-struct FoundDataset {
+// One object a row describes, as the file holds it.
+struct FoundObject {
+  std::string where;  // the dataset's path, or OWNER/@attribute
+  bool present = false;  // the attribute exists; the path is a dataset (not a group)
+  std::string dtype;
+  bool scalar = true;  // an attribute holding one value (datasets: always)
+  h5::Shape shape;     // datasets
+  std::optional<std::string> units;  // datasets whose row names units: their `units` attribute, when they have one
+};
+
+struct RowFindings {
   const LayoutRow* row;
-  std::string path;
-  h5::Shape shape;
+  std::vector<std::string> missing;  // missing groups on the row's path (rows required `always`; each path once)
+  std::vector<FoundObject> found;
 };
 
-class LayoutChecker {
- public:
-  explicit LayoutChecker(const h5::Group& root)
-      : root_(root),
-        required_("layout.required", "objects and attributes"),
-        dtype_("layout.dtype", "objects and attributes"),
-        shape_("layout.shape", "datasets"),
-        units_("layout.units", "datasets") {}
+bool is_attribute_row(const LayoutRow& row) { return !row.attribute.empty(); }
 
-  void check(const LayoutRow& row) {
-    const PatternMatch match = match_pattern(root_, row.owner);
-    for (const auto& missing : match.missing)
-      if (row.always && reported_missing_.insert(missing).second)
-        required_.fail(missing, "missing (schemas/hdf5-layout.md line " + std::to_string(row.line) + ": " + row.path +
-                                    ")");
-    for (const auto& path : match.paths) {
-      if (row.attribute.empty()) check_dataset(row, path);
-      else check_attribute(row, path);
-    }
-  }
+FoundObject find_attribute(const h5::Group& root, const LayoutRow& row, const std::string& owner) {
+  FoundObject f;
+  f.where = (owner == "/" ? "/" : owner + "/") + "@" + row.attribute;
+  const h5::Node node = open_node(root, owner);
+  if (!node.has_attr(row.attribute)) return f;
+  const AttributeInfo info = attribute_info(node, row.attribute);
+  f.present = true;
+  f.dtype = info.dtype;
+  f.scalar = info.scalar;
+  return f;
+}
 
-  std::vector<CheckResult> results() {
-    check_shapes();
-    return {required_.result(), dtype_.result(), shape_.result(), units_.result()};
-  }
-
- private:
-  void check_attribute(const LayoutRow& row, const std::string& owner) {
-    const h5::Node node = open_node(root_, owner);
-    const std::string where = (owner == "/" ? "/" : owner + "/") + "@" + row.attribute;
-    if (!node.has_attr(row.attribute)) {
-      if (row.always) required_.fail(where, "attribute missing");
-      return;
-    }
-    required_.pass();
-    const AttributeInfo info = attribute_info(node, row.attribute);
-    if (info.dtype != row.dtype) dtype_.fail(where, "dtype " + info.dtype + ", expected " + row.dtype);
-    else if (row.shape.empty() && !info.scalar) dtype_.fail(where, "holds several values, expected one " + row.dtype);
-    else dtype_.pass();
-  }
-
-  void check_dataset(const LayoutRow& row, const std::string& path) {
-    const ObjectType type = object_type(root_, path);
-    if (type != ObjectType::dataset) {
-      required_.fail(path, "is a group, expected a " + row.dtype + " dataset");
-      return;
-    }
-    required_.pass();
-    const h5::Dataset d = open_dataset_at(root_, path);
-    const std::string dtype = d.dtype();
-    if (dtype != row.dtype) dtype_.fail(path, "dtype " + dtype + ", expected " + row.dtype);
-    else dtype_.pass();
-    if (!row.units.empty()) {
-      if (!d.has_attr("units")) units_.fail(path, "no units attribute, expected '" + row.units + "'");
-      else {
-        std::string units;
-        try {
-          units = d.attr_string("units");
-        } catch (const Error&) {
-          units = "(not a string)";
-        }
-        if (units != row.units) units_.fail(path, "units '" + units + "', expected '" + row.units + "'");
-        else units_.pass();
-      }
-    }
-    datasets_.push_back({&row, path, d.shape()});
-  }
-
-  // Symbolic extents: N, H and W are attributes of the parent group (when it has them as integers);
-  // any other letter must take one value over the datasets of a group (the most common one wins,
-  // so the odd dataset out is the one reported).
-  void check_shapes() {
-    std::map<std::string, std::map<std::string, std::map<hsize_t, int>>> votes;  // group -> symbol -> extent -> count
-    for (const auto& d : datasets_)
-      if (d.shape.size() == d.row->shape.size())
-        for (std::size_t i = 0; i < d.shape.size(); ++i)
-          if (!is_number(d.row->shape[i])) ++votes[parent_of(d.path)][d.row->shape[i]][d.shape[i]];
-    for (const auto& d : datasets_) {
-      const std::string group = parent_of(d.path);
-      if (d.shape.size() != d.row->shape.size()) {
-        shape_.fail(d.path, "shape " + shape_text(d.shape) + ", expected " + shape_text(d.row->shape));
-        continue;
-      }
-      bool ok = true, known = true;
-      std::vector<std::string> expected;
-      for (std::size_t i = 0; i < d.shape.size(); ++i) {
-        const std::string& symbol = d.row->shape[i];
-        std::optional<hsize_t> want;
-        if (is_number(symbol)) want = std::stoull(symbol);
-        else if (const char* attr = attribute_for(symbol)) want = int_attribute(group, attr);
-        if (!want) {
-          const auto& candidates = votes[group][symbol];
-          int best = -1;
-          for (const auto& [extent, count] : candidates)
-            if (count > best) best = count, want = extent;
-        }
-        if (!want) known = false;
-        expected.push_back(want ? std::to_string(*want) : symbol);
-        if (want && d.shape[i] != *want) ok = false;
-      }
-      if (!known) shape_.skip(d.path + ": extent of " + shape_text(d.row->shape) + " unknown");
-      else if (!ok)
-        shape_.fail(d.path, "shape " + shape_text(d.shape) + ", expected " + shape_text(expected) + " = " +
-                                shape_text(d.row->shape));
-      else shape_.pass();
-    }
-  }
-
-  // The extents schemas/hdf5-layout.md defines by an attribute of the dataset's group: N its
-  // `samples`, H and W its `height` and `width` (where the group has them: in /windows, W is the
-  // window count, bound by vote).
-  static const char* attribute_for(const std::string& symbol) {
-    if (symbol == "N") return "samples";
-    if (symbol == "H") return "height";
-    if (symbol == "W") return "width";
-    return nullptr;
-  }
-
-  std::optional<hsize_t> int_attribute(const std::string& group, const char* name) {
-    const h5::Node node = open_node(root_, group);
-    if (!node.has_attr(name)) return std::nullopt;
+FoundObject find_dataset(const h5::Group& root, const LayoutRow& row, const std::string& path) {
+  FoundObject f;
+  f.where = path;
+  if (object_type(root, path) != ObjectType::dataset) return f;
+  const h5::Dataset d = open_dataset_at(root, path);
+  f.present = true;
+  f.dtype = d.dtype();
+  if (!row.units.empty() && d.has_attr("units")) {
     try {
-      const std::int64_t n = node.attr_int(name);
-      if (n >= 0) return hsize_t(n);
+      f.units = d.attr_string("units");
     } catch (const Error&) {
+      f.units = "(not a string)";
     }
-    return std::nullopt;
   }
+  f.shape = d.shape();
+  return f;
+}
 
-  const h5::Group& root_;
-  CheckTally required_, dtype_, shape_, units_;
-  std::set<std::string> reported_missing_;
-  std::vector<FoundDataset> datasets_;
-};
+std::vector<RowFindings> find_rows(const h5::Group& root, const std::vector<LayoutRow>& rows) {
+  std::vector<RowFindings> out;
+  std::set<std::string> reported_missing;
+  for (const auto& row : rows) {
+    RowFindings& r = out.emplace_back(RowFindings{&row, {}, {}});
+    const PatternMatch match = match_pattern(root, row.owner);
+    for (const auto& missing : match.missing)
+      if (row.always && reported_missing.insert(missing).second) r.missing.push_back(missing);
+    for (const auto& path : match.paths)
+      r.found.push_back(is_attribute_row(row) ? find_attribute(root, row, path) : find_dataset(root, row, path));
+  }
+  return out;
+}
+
+// The extents schemas/hdf5-layout.md defines by an attribute of the dataset's group: N its
+// `samples`, H and W its `height` and `width` (where the group has them: in /windows, W is the
+// window count, bound by vote).
+const char* attribute_for(const std::string& symbol) {
+  if (symbol == "N") return "samples";
+  if (symbol == "H") return "height";
+  if (symbol == "W") return "width";
+  return nullptr;
+}
+
+std::optional<hsize_t> int_attribute(const h5::Group& root, const std::string& group, const char* name) {
+  const h5::Node node = open_node(root, group);
+  if (!node.has_attr(name)) return std::nullopt;
+  try {
+    const std::int64_t n = node.attr_int(name);
+    if (n >= 0) return hsize_t(n);
+  } catch (const Error&) {
+  }
+  return std::nullopt;
+}
+
+// Per group and shape symbol, how many of the group's datasets have each extent there.
+using ExtentVotes = std::map<std::string, std::map<std::string, std::map<hsize_t, int>>>;
+
+ExtentVotes count_extents(const std::vector<RowFindings>& rows) {
+  ExtentVotes votes;
+  for (const auto& r : rows)
+    for (const auto& d : r.found)
+      if (!is_attribute_row(*r.row) && d.present && d.shape.size() == r.row->shape.size())
+        for (std::size_t i = 0; i < d.shape.size(); ++i)
+          if (!is_number(r.row->shape[i])) ++votes[parent_of(d.where)][r.row->shape[i]][d.shape[i]];
+  return votes;
+}
+
+// What a shape symbol stands for in a group: a number as written; N, H and W the group's attribute
+// (when it has it as an integer); any other letter the extent most of the group's datasets have
+// there (so the odd dataset out is the one reported).
+std::optional<hsize_t> extent_of(const h5::Group& root, const std::string& group, const std::string& symbol,
+                                 const ExtentVotes& votes) {
+  if (is_number(symbol)) return std::stoull(symbol);
+  if (const char* attr = attribute_for(symbol))
+    if (const auto n = int_attribute(root, group, attr)) return n;
+  std::optional<hsize_t> want;
+  const auto in_group = votes.find(group);
+  if (in_group == votes.end()) return want;
+  const auto candidates = in_group->second.find(symbol);
+  if (candidates == in_group->second.end()) return want;
+  int best = -1;
+  for (const auto& [extent, count] : candidates->second)
+    if (count > best) best = count, want = extent;
+  return want;
+}
+
+// layout.shape for one dataset.
+void judge_shape(const h5::Group& root, const LayoutRow& row, const FoundObject& d, const ExtentVotes& votes,
+                 CheckTally& tally) {
+  if (d.shape.size() != row.shape.size())
+    return tally.fail(d.where, "shape " + shape_text(d.shape) + ", expected " + shape_text(row.shape));
+  const std::string group = parent_of(d.where);
+  bool ok = true, known = true;
+  std::vector<std::string> expected;
+  for (std::size_t i = 0; i < d.shape.size(); ++i) {
+    const std::optional<hsize_t> want = extent_of(root, group, row.shape[i], votes);
+    if (!want) known = false;
+    expected.push_back(want ? std::to_string(*want) : row.shape[i]);
+    if (want && d.shape[i] != *want) ok = false;
+  }
+  if (!known) tally.skip(d.where + ": extent of " + shape_text(row.shape) + " unknown");
+  else if (!ok)
+    tally.fail(d.where, "shape " + shape_text(d.shape) + ", expected " + shape_text(expected) + " = " + shape_text(row.shape));
+  else tally.pass();
+}
+
+CheckResult check_layout_required(const std::vector<RowFindings>& rows) {
+  CheckTally tally("layout.required", "objects and attributes");
+  for (const auto& [row, missing, found] : rows) {
+    for (const auto& path : missing)
+      tally.fail(path, "missing (schemas/hdf5-layout.md line " + std::to_string(row->line) + ": " + row->path + ")");
+    for (const auto& f : found)
+      if (f.present) tally.pass();
+      else if (!is_attribute_row(*row)) tally.fail(f.where, "is a group, expected a " + row->dtype + " dataset");
+      else if (row->always) tally.fail(f.where, "attribute missing");
+  }
+  return tally.result();
+}
+
+CheckResult check_layout_dtype(const std::vector<RowFindings>& rows) {
+  CheckTally tally("layout.dtype", "objects and attributes");
+  for (const auto& r : rows)
+    for (const auto& f : r.found) {
+      if (!f.present) continue;
+      if (f.dtype != r.row->dtype) tally.fail(f.where, "dtype " + f.dtype + ", expected " + r.row->dtype);
+      else if (r.row->shape.empty() && !f.scalar) tally.fail(f.where, "holds several values, expected one " + r.row->dtype);
+      else tally.pass();
+    }
+  return tally.result();
+}
+
+CheckResult check_layout_shape(const h5::Group& root, const std::vector<RowFindings>& rows) {
+  CheckTally tally("layout.shape", "datasets");
+  const ExtentVotes votes = count_extents(rows);
+  for (const auto& r : rows)
+    for (const auto& d : r.found)
+      if (!is_attribute_row(*r.row) && d.present) judge_shape(root, *r.row, d, votes, tally);
+  return tally.result();
+}
+
+CheckResult check_layout_units(const std::vector<RowFindings>& rows) {
+  CheckTally tally("layout.units", "datasets");
+  for (const auto& r : rows) {
+    const std::string& wanted = r.row->units;
+    if (is_attribute_row(*r.row) || wanted.empty()) continue;
+    for (const auto& d : r.found) {
+      if (!d.present) continue;
+      if (!d.units) tally.fail(d.where, "no units attribute, expected '" + wanted + "'");
+      else if (*d.units != wanted) tally.fail(d.where, "units '" + *d.units + "', expected '" + wanted + "'");
+      else tally.pass();
+    }
+  }
+  return tally.result();
+}
 
 }  // namespace
 
 std::vector<CheckResult> check_layout(const h5::Group& root, const std::string& format) {
-  const auto rows = rows_for_format(embedded_layout(), format);
-  LayoutChecker checker(root);
-  for (const auto& row : rows) checker.check(row);
-  return checker.results();
+  const std::vector<LayoutRow> rows = rows_for_format(embedded_layout(), format);
+  const std::vector<RowFindings> found = find_rows(root, rows);
+  return {check_layout_required(found), check_layout_dtype(found), check_layout_shape(root, found),
+          check_layout_units(found)};
 }
 
 }  // namespace haptex::qa

@@ -1,14 +1,30 @@
-// signal.*: NaN/Inf, sample rate, duration, clipping, physical force and speed, acceleration band.
+// signal.*: NaN/Inf, sample rate, duration, clipping, physical force and speed, acceleration band,
+// energy kept by the DFT321 reduction; one recording per call (docs/qa.md, "Recordings").
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "qa/band_power.hpp"
-#include "qa/checkers.hpp"
+#include "qa/recording_checks.hpp"
 #include "qa/thresholds.hpp"
 
 namespace haptex::qa {
 namespace {
+
+// "NAME has N NaN/Inf values, the first at ..."; empty when every value is finite.
+std::string non_finite_values(const std::string& name, const Signal& s) {
+  const auto not_finite = [](double v) { return !std::isfinite(v); };
+  const auto it = std::find_if(s.values.begin(), s.values.end(), not_finite);
+  if (it == s.values.end()) return "";
+  const std::size_t index = std::size_t(it - s.values.begin());
+  const auto count = std::count_if(s.values.begin(), s.values.end(), not_finite);
+  return name + " has " + std::to_string(count) + " NaN/Inf values, the first at sample " +
+         std::to_string(index / s.columns) + " (" + number(*it, 4) + ")";
+}
+
+// signal.duration and signal.short need the samples, the duration and a positive rate.
+bool has_timing(const LoadedRecording& r) {
+  return r.samples && r.duration_s && r.sample_rate_hz && *r.sample_rate_hz > 0;
+}
 
 // Samples sitting in flat tops: runs of >= kClipRunSamples identical values at the maximum or minimum.
 std::size_t flat_top_samples(const std::vector<double>& x) {
@@ -31,28 +47,41 @@ std::size_t flat_top_samples(const std::vector<double>& x) {
   return flat;
 }
 
-void check_range(CheckTally& tally, const LoadedRecording& r, const char* name, double low, double high,
-                 double peak_at_least, const char* units, double& seen_lo, double& seen_hi) {
-  const Signal& s = r.signals.at(name);
-  if (!s.ok()) {
-    tally.skip(r.path + "/" + name + " " + s.problem);
-    return;
-  }
-  double lo = INFINITY, hi = -INFINITY;
+// The three axes and their reduction, by name.
+std::vector<std::pair<std::string, std::vector<double>>> acceleration_channels(const LoadedRecording& r) {
+  const Signal& xyz = r.signals.at("accel_xyz");
+  const Signal& accel = r.signals.at("accel");
+  std::vector<std::pair<std::string, std::vector<double>>> channels;
+  if (xyz.ok())
+    for (std::size_t c = 0; c < 3; ++c) channels.emplace_back("accel_xyz[:, " + std::to_string(c) + "]", xyz.column(c));
+  if (accel.ok()) channels.emplace_back("accel", accel.values);
+  return channels;
+}
+
+// The physical range of a raw signal (signal.force_range, signal.speed_range).
+struct Range {
+  const char* name;
+  double low, high, peak_at_least;
+  const char* units;
+};
+
+void check_range(const LoadedRecording& r, const Range& range, CheckTally& tally, Seen& seen) {
+  const Signal& s = r.signals.at(range.name);
+  const std::string where = r.path + "/" + range.name;
+  if (!s.ok()) return tally.skip(where + " " + s.problem);
+  Seen here;
   for (double v : s.values)
-    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-  if (!std::isfinite(lo)) {
-    tally.skip(r.path + "/" + name + " has no finite value");
-    return;
-  }
-  seen_lo = std::min(seen_lo, lo);
-  seen_hi = std::max(seen_hi, hi);
-  const std::string range = "ranges " + number(lo, 4) + " .. " + number(hi, 4) + " " + units;
-  if (lo < low) tally.fail(r.path + "/" + name, range + ", below " + number(low, 4) + " " + units);
-  else if (hi > high) tally.fail(r.path + "/" + name, range + ", above " + number(high, 4) + " " + units);
-  else if (hi < peak_at_least)
-    tally.fail(r.path + "/" + name, range + ", never reaching " + number(peak_at_least, 4) + " " + units);
+    if (std::isfinite(v)) here.add(v);
+  if (!std::isfinite(here.low)) return tally.skip(where + " has no finite value");
+  seen.add(here.low);
+  seen.add(here.high);
+  const std::string units = std::string(" ") + range.units;
+  const std::string ranges = "ranges " + number(here.low, 4) + " .. " + number(here.high, 4) + units;
+  if (here.low < range.low) tally.fail(where, ranges + ", below " + number(range.low, 4) + units);
+  else if (here.high > range.high) tally.fail(where, ranges + ", above " + number(range.high, 4) + units);
+  else if (here.high < range.peak_at_least) tally.fail(where, ranges + ", never reaching " + number(range.peak_at_least, 4) + units);
   else tally.pass();
+  tally.set_pass_message(std::string(range.name) + " ranges " + number(seen.low, 4) + " .. " + number(seen.high, 4) + units);
 }
 
 // Per 100 ms window, the energy of accel over that of the three axes (quiet windows left out).
@@ -79,125 +108,103 @@ std::vector<std::pair<std::size_t, double>> reduction_ratios(const Signal& accel
 
 }  // namespace
 
-SignalChecks::SignalChecks()
-    : nan_("signal.nan", "recordings"),
-      rate_("signal.sample_rate", "recordings"),
-      duration_("signal.duration", "recordings"),
-      short_("signal.short", "recordings"),
-      clipping_("signal.clipping", "acceleration channels"),
-      force_("signal.force_range", "recordings"),
-      speed_("signal.speed_range", "recordings"),
-      spectrum_("signal.accel_spectrum", "recordings"),
-      reduction_("signal.reduction_energy", "recordings") {}
-
-void SignalChecks::add(const LoadedRecording& r) {
-  // NaN / Inf in any signal.
+void check_signal_nan(const LoadedRecording& r, CheckTally& tally) {
   std::size_t readable = 0;
   std::string bad;
   for (const auto& [name, s] : r.signals) {
     if (!s.ok()) continue;
     ++readable;
-    const auto it = std::find_if(s.values.begin(), s.values.end(), [](double v) { return !std::isfinite(v); });
-    if (it != s.values.end() && bad.empty()) {
-      const std::size_t index = std::size_t(it - s.values.begin());
-      const auto count = std::count_if(s.values.begin(), s.values.end(), [](double v) { return !std::isfinite(v); });
-      bad = name + " has " + std::to_string(count) + " NaN/Inf values, the first at sample " +
-            std::to_string(index / s.columns) + " (" + number(*it, 4) + ")";
-    }
+    if (bad.empty()) bad = non_finite_values(name, s);
   }
-  if (!bad.empty()) nan_.fail(r.path, bad);
-  else if (readable) nan_.pass();
-  else nan_.skip(r.path + ": no readable signal");
-
-  // Sample rate.
-  if (!r.sample_rate_hz) rate_.skip(r.path + ": no sample_rate_hz attribute");
-  else if (std::abs(*r.sample_rate_hz - kSampleRateHz) > 1e-6 * kSampleRateHz)
-    rate_.fail(r.path, "sample_rate_hz is " + number(*r.sample_rate_hz, 8) + ", expected " + number(kSampleRateHz, 8));
-  else rate_.pass();
-
-  // Duration: consistent with the file's own rate, and at least one model window.
-  if (!r.samples || !r.duration_s || !r.sample_rate_hz || *r.sample_rate_hz <= 0) {
-    duration_.skip(r.path + ": samples, duration_s or sample_rate_hz missing");
-    short_.skip(r.path + ": no samples attribute");
-  } else {
-    const double expected = double(*r.samples) / *r.sample_rate_hz;
-    if (std::abs(*r.duration_s - expected) > 0.5 / *r.sample_rate_hz)
-      duration_.fail(r.path, "duration_s is " + number(*r.duration_s, 8) + " s, but " + std::to_string(*r.samples) +
-                                 " samples at " + number(*r.sample_rate_hz, 8) + " Hz last " + number(expected, 8) + " s");
-    else if (*r.samples < std::int64_t(kWindowSpan))
-      duration_.fail(r.path, std::to_string(*r.samples) + " samples, fewer than one model window (" +
-                                 std::to_string(kWindowSpan) + ")");
-    else duration_.pass();
-    if (*r.samples < std::int64_t(kShortRecordingSamples))
-      short_.fail(r.path, std::to_string(*r.samples) + " samples (" + number(expected, 3) + " s): a " +
-                              std::to_string(kDefaultSections) + "-section split leaves sections too short for a window");
-    else short_.pass();
-  }
-
-  // Clipping of the acceleration axes and their DFT321 reduction.
-  const Signal& xyz = r.signals.at("accel_xyz");
-  const Signal& accel = r.signals.at("accel");
-  std::vector<std::pair<std::string, std::vector<double>>> channels;
-  if (xyz.ok())
-    for (std::size_t c = 0; c < 3; ++c) channels.emplace_back("accel_xyz[:, " + std::to_string(c) + "]", xyz.column(c));
-  if (accel.ok()) channels.emplace_back("accel", accel.values);
-  if (channels.empty()) clipping_.skip(r.path + ": no readable acceleration");
-  for (const auto& [name, x] : channels) {
-    const std::size_t flat = flat_top_samples(x);
-    worst_clip_share_ = std::max(worst_clip_share_, double(flat) / double(std::max<std::size_t>(1, x.size())));
-    if (double(flat) > kClipMaxShare * double(x.size()))
-      clipping_.fail(r.path + "/" + name.substr(0, name.find('[')),
-                     name + ": " + std::to_string(flat) + " of " + std::to_string(x.size()) +
-                         " samples in flat tops at its extremes (" + number(100.0 * double(flat) / double(x.size()), 3) +
-                         "%, at most " + number(100 * kClipMaxShare, 4) + "%)");
-    else clipping_.pass();
-  }
-
-  // DFT321 keeps each window's energy.
-  if (!accel.ok() || !xyz.ok()) {
-    reduction_.skip(r.path + ": accel or accel_xyz unreadable");
-  } else {
-    std::pair<std::size_t, double> worst{0, 1.0};
-    for (const auto& [start, ratio] : reduction_ratios(accel, xyz)) {
-      reduction_lo_ = std::min(reduction_lo_, ratio);
-      reduction_hi_ = std::max(reduction_hi_, ratio);
-      if (!(std::abs(std::log(ratio)) <= std::abs(std::log(worst.second)))) worst = {start, ratio};
-    }
-    if (!(worst.second >= kReductionEnergyLow && worst.second <= kReductionEnergyHigh))
-      reduction_.fail(r.path + "/accel", "the 100 ms window at sample " + std::to_string(worst.first) + " holds " +
-                                             number(worst.second, 3) + " x the energy of the three axes (0.8 to 1.25 expected)");
-    else reduction_.pass();
-  }
-
-  check_range(force_, r, "force_normal", kForceMinN, kForceMaxN, kForcePeakAtLeastN, "N", force_lo_, force_hi_);
-  check_range(speed_, r, "speed", kSpeedMinMmS, kSpeedMaxMmS, kSpeedPeakAtLeastMmS, "mm/s", speed_lo_, speed_hi_);
-
-  // Acceleration band 100 Hz .. 1 kHz.
-  if (!accel.ok()) {
-    spectrum_.skip(r.path + "/accel " + accel.problem);
-  } else {
-    const BandPower p = band_power(accel.values, r.analysis_rate(), kAccelBandLowHz, kAccelBandHighHz);
-    const double rms = std::sqrt(p.band);
-    if (std::isfinite(p.total)) lowest_band_share_ = std::min(lowest_band_share_, p.share());
-    if (!std::isfinite(p.total)) spectrum_.skip(r.path + "/accel is not finite");
-    else if (p.share() < kAccelBandMinShare || rms < kAccelBandMinRms)
-      spectrum_.fail(r.path + "/accel", "100-1000 Hz holds " + number(100 * p.share(), 3) + "% of the power (" +
-                                            number(rms, 3) + " m/s^2 RMS); at least " + number(100 * kAccelBandMinShare, 4) +
-                                            "% and " + number(kAccelBandMinRms, 4) + " m/s^2 expected");
-    else spectrum_.pass();
-  }
+  if (!bad.empty()) tally.fail(r.path, bad);
+  else if (readable) tally.pass();
+  else tally.skip(r.path + ": no readable signal");
 }
 
-std::vector<CheckResult> SignalChecks::results() const {
-  CheckTally clipping = clipping_, force = force_, speed = speed_, spectrum = spectrum_, reduction = reduction_;
-  reduction.set_pass_message("every 100 ms window of accel holds " + number(reduction_lo_, 3) + " to " + number(reduction_hi_, 3) +
-                             " x the axes' energy");
-  clipping.set_pass_message("at most " + number(100 * worst_clip_share_, 3) + "% of any channel's samples in flat tops");
-  force.set_pass_message("force_normal ranges " + number(force_lo_, 4) + " .. " + number(force_hi_, 4) + " N");
-  speed.set_pass_message("speed ranges " + number(speed_lo_, 4) + " .. " + number(speed_hi_, 4) + " mm/s");
-  spectrum.set_pass_message("100-1000 Hz holds at least " + number(100 * lowest_band_share_, 3) + "% of the power");
-  return {nan_.result(),      rate_.result(),  duration_.result(), short_.result(),
-          clipping.result(),  force.result(),  speed.result(),     spectrum.result(), reduction.result()};
+void check_signal_sample_rate(const LoadedRecording& r, CheckTally& tally) {
+  if (!r.sample_rate_hz) tally.skip(r.path + ": no sample_rate_hz attribute");
+  else if (std::abs(*r.sample_rate_hz - kSampleRateHz) > 1e-6 * kSampleRateHz)
+    tally.fail(r.path, "sample_rate_hz is " + number(*r.sample_rate_hz, 8) + ", expected " + number(kSampleRateHz, 8));
+  else tally.pass();
+}
+
+// Consistent with the file's own rate, and at least one model window.
+void check_signal_duration(const LoadedRecording& r, CheckTally& tally) {
+  if (!has_timing(r)) return tally.skip(r.path + ": samples, duration_s or sample_rate_hz missing");
+  const double expected = double(*r.samples) / *r.sample_rate_hz;
+  if (std::abs(*r.duration_s - expected) > 0.5 / *r.sample_rate_hz)
+    tally.fail(r.path, "duration_s is " + number(*r.duration_s, 8) + " s, but " + std::to_string(*r.samples) +
+                           " samples at " + number(*r.sample_rate_hz, 8) + " Hz last " + number(expected, 8) + " s");
+  else if (*r.samples < std::int64_t(kWindowSpan))
+    tally.fail(r.path, std::to_string(*r.samples) + " samples, fewer than one model window (" +
+                           std::to_string(kWindowSpan) + ")");
+  else tally.pass();
+}
+
+void check_signal_short(const LoadedRecording& r, CheckTally& tally) {
+  if (!has_timing(r)) return tally.skip(r.path + ": no samples attribute");
+  if (*r.samples < std::int64_t(kShortRecordingSamples))
+    tally.fail(r.path, std::to_string(*r.samples) + " samples (" + number(double(*r.samples) / *r.sample_rate_hz, 3) +
+                           " s): a " + std::to_string(kDefaultSections) +
+                           "-section split leaves sections too short for a window");
+  else tally.pass();
+}
+
+void check_signal_clipping(const LoadedRecording& r, CheckTally& tally, Seen& flat_share) {
+  const auto channels = acceleration_channels(r);
+  if (channels.empty()) return tally.skip(r.path + ": no readable acceleration");
+  for (const auto& [name, x] : channels) {
+    const std::size_t flat = flat_top_samples(x);
+    flat_share.add(double(flat) / double(std::max<std::size_t>(1, x.size())));
+    if (double(flat) > kClipMaxShare * double(x.size()))
+      tally.fail(r.path + "/" + name.substr(0, name.find('[')),
+                 name + ": " + std::to_string(flat) + " of " + std::to_string(x.size()) +
+                     " samples in flat tops at its extremes (" + number(100.0 * double(flat) / double(x.size()), 3) +
+                     "%, at most " + number(100 * kClipMaxShare, 4) + "%)");
+    else tally.pass();
+  }
+  tally.set_pass_message("at most " + number(100 * flat_share.high, 3) + "% of any channel's samples in flat tops");
+}
+
+void check_signal_force_range(const LoadedRecording& r, CheckTally& tally, Seen& force) {
+  check_range(r, {"force_normal", kForceMinN, kForceMaxN, kForcePeakAtLeastN, "N"}, tally, force);
+}
+
+void check_signal_speed_range(const LoadedRecording& r, CheckTally& tally, Seen& speed) {
+  check_range(r, {"speed", kSpeedMinMmS, kSpeedMaxMmS, kSpeedPeakAtLeastMmS, "mm/s"}, tally, speed);
+}
+
+void check_signal_accel_spectrum(const LoadedRecording& r, CheckTally& tally, Seen& band_share) {
+  const Signal& accel = r.signals.at("accel");
+  if (!accel.ok()) return tally.skip(r.path + "/accel " + accel.problem);
+  const BandPower p = band_power(accel.values, r.analysis_rate(), kAccelBandLowHz, kAccelBandHighHz);
+  if (!std::isfinite(p.total)) return tally.skip(r.path + "/accel is not finite");
+  band_share.add(p.share());
+  const double rms = std::sqrt(p.band);
+  if (p.share() < kAccelBandMinShare || rms < kAccelBandMinRms)
+    tally.fail(r.path + "/accel", "100-1000 Hz holds " + number(100 * p.share(), 3) + "% of the power (" +
+                                      number(rms, 3) + " m/s^2 RMS); at least " + number(100 * kAccelBandMinShare, 4) +
+                                      "% and " + number(kAccelBandMinRms, 4) + " m/s^2 expected");
+  else tally.pass();
+  tally.set_pass_message("100-1000 Hz holds at least " + number(100 * band_share.low, 3) + "% of the power");
+}
+
+// Judged by the window furthest from the axes' energy (on a log scale: half and double are as far).
+void check_signal_reduction_energy(const LoadedRecording& r, CheckTally& tally, Seen& energy_ratio) {
+  const Signal& accel = r.signals.at("accel");
+  const Signal& xyz = r.signals.at("accel_xyz");
+  if (!accel.ok() || !xyz.ok()) return tally.skip(r.path + ": accel or accel_xyz unreadable");
+  std::pair<std::size_t, double> worst{0, 1.0};
+  for (const auto& [start, ratio] : reduction_ratios(accel, xyz)) {
+    energy_ratio.add(ratio);
+    if (!(std::abs(std::log(ratio)) <= std::abs(std::log(worst.second)))) worst = {start, ratio};
+  }
+  if (!(worst.second >= kReductionEnergyLow && worst.second <= kReductionEnergyHigh))
+    tally.fail(r.path + "/accel", "the 100 ms window at sample " + std::to_string(worst.first) + " holds " +
+                                      number(worst.second, 3) + " x the energy of the three axes (0.8 to 1.25 expected)");
+  else tally.pass();
+  tally.set_pass_message("every 100 ms window of accel holds " + number(energy_ratio.low, 3) + " to " +
+                         number(energy_ratio.high, 3) + " x the axes' energy");
 }
 
 }  // namespace haptex::qa

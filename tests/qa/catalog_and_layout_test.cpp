@@ -2,6 +2,8 @@
 // need them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -42,6 +44,24 @@ TEST(Catalog, EveryCheckIsDocumentedWithItsSeverityAndFix) {
   const std::regex documented("\\| `([a-z]+\\.[a-z_]+)` \\| (error|warning) \\|");
   for (auto it = std::sregex_iterator(page.begin(), page.end(), documented); it != std::sregex_iterator(); ++it)
     EXPECT_TRUE(ids.count((*it)[1])) << (*it)[1] << " is documented but not in the catalog";
+}
+
+// docs/qa.md, "The checks": the catalog and the code read side by side.
+TEST(Catalog, EveryCheckIsOneFunctionNamedAfterIt) {
+  std::string sources;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(HAPTEX_SCHEMA_DIR) + "/../qa"))
+    if (entry.path().extension() == ".cpp") {
+      std::ifstream in(entry.path());
+      sources += std::string(std::istreambuf_iterator<char>(in), {});
+    }
+  ASSERT_FALSE(sources.empty());
+  for (const auto& c : qa::all_checks()) {
+    std::string name = "check_" + std::string(c.id);
+    std::replace(name.begin(), name.end(), '.', '_');
+    const bool defined = sources.find("\nCheckResult " + name + "(") != std::string::npos ||
+                         sources.find("\nvoid " + name + "(") != std::string::npos;
+    EXPECT_TRUE(defined) << c.id << ": no function " << name << " in qa/*.cpp";
+  }
 }
 
 TEST(Catalog, ReportsListEveryApplicableCheckOnceInCatalogOrder) {

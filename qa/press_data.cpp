@@ -1,0 +1,149 @@
+#include "qa/press_data.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include <opencv2/imgproc.hpp>
+
+#include "capture/extraction/contact_score.hpp"
+#include "capture/extraction/scoring_image.hpp"
+#include "capture/recording/image_datasets.hpp"
+#include "core/error.hpp"
+#include "core/parallel.hpp"
+#include "qa/thresholds.hpp"
+
+namespace haptex::qa {
+namespace {
+
+double laplacian_variance(const cv::Mat& bgr) {
+  cv::Mat grey, lap;
+  cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
+  cv::Laplacian(grey, lap, CV_64F);
+  cv::Scalar mean, stddev;
+  cv::meanStdDev(lap, mean, stddev);
+  return stddev[0] * stddev[0];
+}
+
+double saturated_share(const cv::Mat& bgr) {
+  std::vector<cv::Mat> channels;
+  cv::split(bgr, channels);
+  const cv::Mat brightest = cv::max(cv::max(channels[0], channels[1]), channels[2]);
+  return double(cv::countNonZero(brightest >= kSaturatedLevel)) / double(bgr.total());
+}
+
+// N x H x W x 3 uint8 (RGB) -> N BGR images; empty when the dataset has another form.
+std::vector<cv::Mat> read_stack(const h5::Group& press, const std::string& name) {
+  if (!press.has_dataset(name)) return {};
+  const h5::Dataset d = press.open_dataset(name);
+  const h5::Shape shape = d.shape();
+  if (shape.size() != 4 || shape[3] != 3 || d.dtype() != "uint8" || shape[0] == 0) return {};
+  const std::vector<std::uint8_t> rgb = d.read<std::uint8_t>();
+  const std::size_t frame_bytes = shape[1] * shape[2] * 3;
+  std::vector<cv::Mat> frames;
+  for (std::size_t i = 0; i < shape[0]; ++i) {
+    cv::Mat image(static_cast<int>(shape[1]), static_cast<int>(shape[2]), CV_8UC3);
+    std::memcpy(image.data, rgb.data() + i * frame_bytes, frame_bytes);
+    cv::cvtColor(image, image, cv::COLOR_RGB2BGR);
+    frames.push_back(image);
+  }
+  return frames;
+}
+
+std::optional<cv::Mat> read_single(const h5::Group& press, const std::string& name) {
+  if (!press.has_dataset(name)) return std::nullopt;
+  try {
+    return capture::read_image(press.open_dataset(name));
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
+std::optional<double> number_attr(const h5::Group& g, const char* name) {
+  if (!g.has_attr(name)) return std::nullopt;
+  try {
+    return g.attr_double(name);
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
+// layout.* reports a missing or mistyped attribute; source_damage skips the press then.
+void read_source_frames_unreadable(const h5::Group& g, Press& p) {
+  try {
+    if (!g.has_attr("source_frames_unreadable")) {
+      p.source_frames_problem = p.path + ": no source_frames_unreadable attribute";
+      return;
+    }
+    p.source_frames_unreadable = g.attr_int("source_frames_unreadable");
+  } catch (const Error&) {
+    p.source_frames_problem = p.path + "/@source_frames_unreadable is not an integer";
+  }
+}
+
+Press summarize_press(const h5::Group& g, std::string path, std::string material) {
+  Press p;
+  p.path = std::move(path);
+  p.material = std::move(material);
+  p.trigger = number_attr(g, "trigger");
+  p.pixel_threshold = number_attr(g, "pixel_threshold");
+  const std::optional<cv::Mat> reference = read_single(g, "reference"), peak = read_single(g, "peak");
+  const std::vector<cv::Mat> frames = read_stack(g, "frames");
+  std::vector<cv::Size> sizes;
+  if (reference) {
+    p.has_reference = true;
+    p.reference_size = reference->size();
+    p.reference_scoring = capture::scoring_image(*reference);
+    p.reference_sharpness = laplacian_variance(*reference);
+    sizes.push_back(p.reference_size);
+  }
+  std::vector<const cv::Mat*> images;
+  if (peak) {
+    p.has_peak = true;
+    p.peak_size = peak->size();
+    sizes.push_back(p.peak_size);
+    images.push_back(&*peak);
+    p.images.push_back({p.path + "/peak", p.peak_size, 0, 0});
+    if (reference && p.pixel_threshold && reference->size() == peak->size())
+      p.peak_score = capture::contact_score(capture::scoring_image(*peak), p.reference_scoring, float(*p.pixel_threshold));
+  }
+  if (!frames.empty()) {
+    p.frames_size = frames.front().size();
+    sizes.push_back(p.frames_size);
+  }
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    images.push_back(&frames[i]);
+    p.images.push_back({p.path + "/frames[" + std::to_string(i) + "]", frames[i].size(), 0, 0});
+  }
+  p.sizes_agree = !sizes.empty() && std::all_of(sizes.begin(), sizes.end(), [&](cv::Size s) { return s == sizes.front(); });
+  parallel_for(images.size(), [&](std::size_t i) {
+    p.images[i].sharpness = laplacian_variance(*images[i]);
+    p.images[i].saturated = saturated_share(*images[i]);
+  });
+  read_source_frames_unreadable(g, p);
+  return p;
+}
+
+
+}  // namespace
+
+GelsightPresses read_presses(const h5::Group& root) {
+  GelsightPresses file;
+  if (!root.has_group("materials")) return file;
+  const h5::Group materials = root.open_group("materials");
+  for (const auto& id : materials.children()) {
+    if (!materials.has_group(id)) continue;
+    const h5::Group material = materials.open_group(id);
+    std::size_t& count = file.per_material[id];
+    if (!material.has_group("presses")) continue;
+    const h5::Group group = material.open_group("presses");
+    for (const auto& j : group.children()) {
+      if (!group.has_group(j)) continue;
+      file.presses.push_back(summarize_press(group.open_group(j), "/materials/" + id + "/presses/" + j, id));
+      ++count;
+    }
+  }
+  return file;
+}
+
+
+}  // namespace haptex::qa
