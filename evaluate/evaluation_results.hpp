@@ -94,6 +94,7 @@ struct MaterialFloor {
   double estimate = kNotMeasured;  // the empirical estimate's distance, beside an oracle to check it
   double baseline_expected = kNotMeasured;  // the AR baseline's expected spectrum at the recorded action
   double closed_form_gap = kNotMeasured;    // AR oracles: how far the two ways' spectra differ (ArExpectation::gap)
+  double input_floor = kNotMeasured;  // oracles: the generating process given only the model's input (MaterialOracle)
 };
 
 // Figure 5: one test window of a material: frequencies 10..1000 Hz with true, model and baseline

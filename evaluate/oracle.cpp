@@ -4,7 +4,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "align/window_table.hpp"
 #include "convert/hatt_model_reader.hpp"
+#include "core/ar/expected_spectrum.hpp"
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
 #include "evaluate/summary_statistics.hpp"
@@ -60,6 +62,29 @@ std::vector<std::vector<double>> grid_section(const synth::TruthGrid& grid, cons
     out.push_back(std::move(power));
   }
   return out;
+}
+
+// The grid's spectrum at the window's middle alone, held over the window.
+std::vector<std::vector<double>> grid_input_section(const synth::TruthGrid& grid, const SectionSignals& s,
+                                                    const std::vector<std::size_t>& windows, double noise_power) {
+  std::vector<std::vector<double>> out;
+  for (std::size_t t : windows) {
+    std::vector<double> a = grid_power_at(grid, s.speed[t + align::kActionEnd], s.force[t + align::kActionEnd]);
+    for (double& v : a) v = std::sqrt(v);
+    add_sensor_noise(a, noise_power);
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+// The closed form with one blend per window, at its middle: the model's action held over the window.
+static_assert(align::kActionEnd == signal::kWindowSamples / 2, "one blend per window falls on the model's action");
+std::vector<std::vector<double>> ar_input_section(const ar::PiecewiseArModel& model, const SectionSignals& s, double noise_power) {
+  ar::ExpectedSpectrumOptions o;
+  o.update = signal::kWindowSamples;
+  o.noise_power = noise_power;
+  const std::vector<std::size_t> grid = section_grid(s.accel.size());
+  return ar::expected_window_spectra(model, s.speed, s.force, grid, o);
 }
 
 void check_length(const synth::TruthRecording& r, const SectionSignals& s, const std::string& path, const std::string& material) {
@@ -121,8 +146,11 @@ std::optional<MaterialOracle> material_oracle(const synth::Truth& truth, const s
   MaterialOracle o;
   if (t->generator == "synth-material") {
     o.method = "truth grid";
-    for (std::size_t s = 0; s < m.test.size(); ++s)
-      o.spectra.push_back(grid_section(*t->grid, *recordings[s], m.test[s].begin, section_grid(m.test[s].accel.size()), dft321_noise_power(truth)));
+    for (std::size_t s = 0; s < m.test.size(); ++s) {
+      const std::vector<std::size_t> grid = section_grid(m.test[s].accel.size());
+      o.spectra.push_back(grid_section(*t->grid, *recordings[s], m.test[s].begin, grid, dft321_noise_power(truth)));
+      o.input_spectra.push_back(grid_input_section(*t->grid, m.test[s], grid, dft321_noise_power(truth)));
+    }
     return o;
   }
   const ar::PiecewiseArModel model(convert::parse_hatt_model(t->model_xml, truth_path + ":/materials/" + m.id + "/@model_xml"));
@@ -134,6 +162,7 @@ std::optional<MaterialOracle> material_oracle(const synth::Truth& truth, const s
   o.ar = expected_ar_spectra(model, sections, options);
   o.method = o.ar->method;
   o.spectra = o.ar->spectra;
+  for (const SectionSignals& s : m.test) o.input_spectra.push_back(ar_input_section(model, s, options.noise_power));
   return o;
 }
 

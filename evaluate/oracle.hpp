@@ -22,6 +22,10 @@ struct MaterialOracle {
   std::string method;  // "closed form", "Monte Carlo" or "truth grid"
   // Per test section (MaterialSignals::test order), per section_grid window: the expected spectrum.
   std::vector<std::vector<std::vector<double>>> spectra;
+  // The same process knowing only what the model is given: the recorded action at the window's
+  // middle (align/window_table.hpp), held over the window, with the sensor noise (closed form or
+  // the grid). How far the oracle lies below it is what the model's input cannot tell.
+  std::vector<std::vector<std::vector<double>>> input_spectra;
   std::optional<ArExpectation> ar;  // hatt-model only: both ways and the renderings
 };
 

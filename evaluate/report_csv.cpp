@@ -97,7 +97,7 @@ std::string write_floors(const std::string& path, const std::vector<MaterialFloo
     out.row(csv_field(f.id), csv_field(f.name), csv_field(f.kind), csv_field(f.method), f.windows, csv_measured(f.distance),
             csv_measured(f.lsd_db), csv_measured(f.closed_form), csv_measured(f.monte_carlo),
             csv_measured(closed_form_gap_percent(f)), csv_measured(f.rendered), csv_measured(rendered_ratio(f)),
-            csv_measured(f.estimate), csv_measured(f.baseline_expected));
+            csv_measured(f.estimate), csv_measured(f.baseline_expected), csv_measured(f.input_floor));
   return out.close();
 }
 

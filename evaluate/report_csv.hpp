@@ -37,7 +37,7 @@ inline constexpr std::string_view kExperimentColumns =
 inline constexpr std::string_view kSpeedColumns = "method,setting,seconds_per_second,distance,kind,section_lsd_db,spread_ratio";
 inline constexpr std::string_view kFloorColumns =
     "material_id,name,kind,method,windows,distance,lsd_db,closed_form,monte_carlo,closed_form_gap_percent,rendered,"
-    "rendered_ratio,estimate,baseline_expected";
+    "rendered_ratio,estimate,baseline_expected,input_floor";
 inline constexpr std::string_view kRealismColumns =
     "method,setting,material_id,name,section_lsd_db,spread_ratio,distance,floor_ratio,rendered_floor_ratio";
 inline constexpr std::string_view kLatentColumns = "material_id,name,kind,x,y";

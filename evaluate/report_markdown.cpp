@@ -289,13 +289,14 @@ void floor_section(std::ostringstream& s, const Evaluation& e) {
   if (!section(s, "Noise floor", e.floors.empty(), "No noise floor was computed.")) return;
   s << floor_kind_text(e.floor_kind) << "\n\n"
     << "| material | kind | method | windows | floor (m/s^2) | floor LSD (dB) | closed form | Monte Carlo "
-       "| closed form vs Monte Carlo | rendered | rendered/floor | estimate | AR baseline expected |\n"
-       "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "| closed form vs Monte Carlo | rendered | rendered/floor | estimate | AR baseline expected | input floor |\n"
+       "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const MaterialFloor& f : e.floors)
     s << "| " << shown_name(f.name, f.id) << " | " << escaped(f.kind) << " | " << escaped(f.method) << " | " << f.windows
       << " | " << measured(f.distance) << " | " << measured(f.lsd_db) << " | " << measured(f.closed_form) << " | "
       << measured(f.monte_carlo) << " | " << measured_percent(closed_form_gap_percent(f)) << " | " << measured(f.rendered)
-      << " | " << measured(rendered_ratio(f)) << " | " << measured(f.estimate) << " | " << measured(f.baseline_expected) << " |\n";
+      << " | " << measured(rendered_ratio(f)) << " | " << measured(f.estimate) << " | " << measured(f.baseline_expected) << " | " << measured(f.input_floor)
+      << " |\n";
   s << "\nFloor: the floor's mean spectral distance to the recording over the material's test windows, and as "
        "log-spectral distance (for scale, not a bound: the LSD is lowest for a predictor about 0.85 times the oracle). Closed form and Monte Carlo (AR oracles): the expected spectra computed both ways, "
        "their distances, and how far apart their spectra are (the mean over windows of the closed form's summed "
@@ -304,7 +305,9 @@ void floor_section(std::ostringstream& s, const Evaluation& e) {
        "well above 1 because the generating model rendered pays the randomness twice, once in the recording and once "
        "in its own rendering. Estimate: the empirical estimate (nearest training windows) beside the oracle, to "
        "check it. AR baseline expected: the baseline's expected spectrum at the recorded action, on the same windows, "
-       "for scale. – not measured. Data: " << code(std::string(kFloorsStem) + ".csv") << ".\n\n";
+       "for scale. Input floor (oracles): the generating process knowing only what the model is given, the recorded "
+       "action at each window's middle held over the window; a model above it has learning left to do, the floor below "
+       "it is what the model's input cannot tell. – not measured. Data: " << code(std::string(kFloorsStem) + ".csv") << ".\n\n";
 }
 
 void realism_section(std::ostringstream& s, const Evaluation& e) {

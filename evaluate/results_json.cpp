@@ -102,7 +102,8 @@ nlohmann::json floor_json(const MaterialFloor& f) {
           {"rendered", json_measured(f.rendered)},
           {"rendered_ratio", json_measured(rendered_ratio(f))},
           {"estimate", json_measured(f.estimate)},
-          {"baseline_expected", json_measured(f.baseline_expected)}};
+          {"baseline_expected", json_measured(f.baseline_expected)},
+          {"input_floor", json_measured(f.input_floor)}};
 }
 
 nlohmann::json realism_json(const Realism& r) {

@@ -50,7 +50,7 @@ struct Scores {
 struct MaterialRun {
   Scores baseline;
   // By method key: the models (see method_keys), fgla:<n>, online, and the references
-  // mean-spectrum, floor, floor-estimate, expected-ar, oracle-rendered.
+  // mean-spectrum, floor, input-floor, floor-estimate, expected-ar, oracle-rendered.
   std::map<std::string, Scores> methods;
   MaterialFloor floor;
   Example example;
@@ -222,6 +222,7 @@ void score_floor(MaterialRun& run, std::size_t m, const MaterialSignals& signals
     run.methods["floor-estimate"].add(score(estimate, recorded[s], ref.noise));
     if (!oracle) continue;
     run.methods["floor"].add(score(oracle->spectra[s], recorded[s], ref.noise));
+    run.methods["input-floor"].add(score(oracle->input_spectra[s], recorded[s], ref.noise));
     if (!oracle->ar) continue;
     std::vector<Scores> each;
     for (const auto& rendering : oracle->ar->rendered_spectra[s]) each.push_back(signal_scores(rendering, recorded[s], ref.noise));
@@ -232,6 +233,7 @@ void score_floor(MaterialRun& run, std::size_t m, const MaterialSignals& signals
     run.methods["floor"] = run.methods["floor-estimate"];
   } else {
     f.kind = "oracle", f.method = oracle->method;
+    f.input_floor = mean(run.methods["input-floor"].windows);
     if (oracle->ar)
       f.closed_form = oracle->ar->closed_form, f.monte_carlo = oracle->ar->monte_carlo, f.closed_form_gap = oracle->ar->gap,
       f.rendered = oracle->ar->rendered;

@@ -66,6 +66,8 @@ TEST(EvaluateCli, WithTheTruthTheFloorIsTheOracle) {
     EXPECT_EQ(f["kind"], "oracle");
     EXPECT_EQ(f["method"], "truth grid");
     EXPECT_GT(f["distance"].get<double>(), 0.0);
+    // Knowing only the action at each window's middle cannot beat knowing the whole window's.
+    EXPECT_GE(f["input_floor"].get<double>(), 0.99 * f["distance"].get<double>()) << f["id"];
   }
   std::set<std::string> ids;
   for (const auto& e : results["experiments"]) {

@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 
+#include "core/ar/expected_spectrum.hpp"
 #include "core/ar/gaussian_noise.hpp"
 #include "core/ar/texture_renderer.hpp"
 #include "core/error.hpp"
@@ -64,10 +66,12 @@ struct HattCase {
   std::vector<std::vector<std::vector<double>>> recorded;
 };
 
-HattCase hatt_case() {
+double slow_ramp(std::size_t i) { return 60 + 40 * double(i) / 30000.0; }
+
+HattCase hatt_case(double (*speed_at)(std::size_t) = slow_ramp) {
   const std::size_t n = 30000, begin = 6000, length = 20000;
   std::vector<double> speed(n), force(n, 2.0);
-  for (std::size_t i = 0; i < n; ++i) speed[i] = 60 + 40 * double(i) / double(n);
+  for (std::size_t i = 0; i < n; ++i) speed[i] = speed_at(i);
   auto accel = ar::render_texture(test::ar_fixture(), speed, force, 5);
   ar::GaussianNoise noise(6);
   for (double& v : accel) v += std::sqrt(3.0) * 0.02 * noise.next();
@@ -125,6 +129,44 @@ TEST(HattOracle, StopAndStartFallsBackToMonteCarlo) {
   EXPECT_EQ(c.method, "closed form");
   EXPECT_TRUE(std::isnan(c.gap));
   EXPECT_TRUE(std::isnan(c.monte_carlo));
+}
+
+double mean_distance(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b) {
+  double sum = 0;
+  for (std::size_t j = 0; j < a.size(); ++j) sum += spectrum_distance(a[j], b[j]);
+  return sum / double(a.size());
+}
+
+// The input floor is the generating model at each window's middle action held over the window
+// (checked against the closed form on a constant action); it is as close as the oracle on a slow
+// ramp and farther on a stroke whose speed swings within a window.
+double swinging(std::size_t i) { return 90 + 60 * std::sin(2 * std::numbers::pi * 4.0 * double(i) / 10000.0); }
+
+TEST(HattOracle, InputFloorHoldsTheModelsActionAndCostsWhereTheActionMoves) {
+  for (const auto speed_at : {slow_ramp, swinging}) {
+    const HattCase c = hatt_case(speed_at);
+    const auto oracle = material_oracle(c.truth, "truth.h5", c.signals, c.recorded, 1);
+    ASSERT_TRUE(oracle);
+    ASSERT_EQ(oracle->input_spectra.size(), 1u);
+    const auto& input = oracle->input_spectra[0];
+    ASSERT_EQ(input.size(), c.recorded[0].size());
+    const std::vector<std::size_t> grid = section_grid(c.signals.test[0].accel.size());
+    ar::ExpectedSpectrumOptions held;
+    held.noise_power = 3 * 0.02 * 0.02;
+    for (std::size_t j : {std::size_t(0), input.size() / 2, input.size() - 1}) {
+      const std::size_t middle = grid[j] + 500;
+      const std::vector<double> speed(1000, c.signals.test[0].speed[middle]), force(1000, c.signals.test[0].force[middle]);
+      const std::size_t start = 0;
+      const auto expected = ar::expected_window_spectra(test::ar_fixture(), speed, force, std::span(&start, 1), held)[0];
+      for (std::size_t k = 0; k < expected.size(); ++k) ASSERT_NEAR(input[j][k], expected[k], 1e-9 * expected[k]) << j << " " << k;
+    }
+    const double ratio = mean_distance(input, c.recorded[0]) / mean_distance(oracle->spectra[0], c.recorded[0]);
+    std::printf("[ figures  ] input floor / oracle %.4f (%s)\n", ratio, speed_at == slow_ramp ? "slow ramp" : "4 Hz swing");
+    if (speed_at == slow_ramp)
+      EXPECT_NEAR(ratio, 1.0, 0.005);
+    else
+      EXPECT_GT(ratio, 1.02);
+  }
 }
 
 TEST(HattOracle, KnowsOnlyTheRecordingsItGenerated) {

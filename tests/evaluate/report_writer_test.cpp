@@ -73,7 +73,7 @@ Experiment mean_spectrum_experiment() {
 
 // The noise floor: an oracle per material, one not measured (Brick, 2).
 std::vector<MaterialFloor> sample_floors() {
-  MaterialFloor book{"book", "Book", "oracle", "closed form", 120, 0.48, 2.5, 0.48, 0.5, 0.72, 0.5, 0.625, 0.012};
+  MaterialFloor book{"book", "Book", "oracle", "closed form", 120, 0.48, 2.5, 0.48, 0.5, 0.72, 0.5, 0.625, 0.012, 0.52};
   MaterialFloor brick{"brick_2", "Brick, 2", "oracle", "Monte Carlo", 120};
   MaterialFloor felt{"felt", "Felt", "oracle", "closed form", 120, 0.21, 1.75, 0.21, 0.2, 0.35, kNaN, 0.3};
   return {book, brick, felt};
@@ -443,8 +443,9 @@ TEST(ReportWriter, ResultsJsonHoldsFloorsRealismAndNullWhereNotMeasured) {
   EXPECT_DOUBLE_EQ(doc["floors"][0]["closed_form_gap_percent"].get<double>(), 1.2);
   EXPECT_DOUBLE_EQ(doc["floors"][0]["rendered_ratio"].get<double>(), 0.72 / 0.48);
   for (const char* key : {"distance", "lsd_db", "closed_form", "monte_carlo", "closed_form_gap_percent", "rendered", "rendered_ratio",
-                          "estimate", "baseline_expected"})
+                          "estimate", "baseline_expected", "input_floor"})
     EXPECT_TRUE(doc["floors"][1][key].is_null()) << key;
+  EXPECT_EQ(doc["floors"][0]["input_floor"], 0.52);
   EXPECT_TRUE(doc["floors"][2]["estimate"].is_null());
   EXPECT_EQ(doc["floors"][2]["baseline_expected"], 0.3);
 
@@ -491,7 +492,7 @@ TEST(ReportWriter, FloorsAndRealismCsvsReadBack) {
     expect_row(head(floors[i], 5), {f.id, f.name, f.kind, f.method}, {double(f.windows)});
     expect_measured(floors[i], 5,
                     {f.distance, f.lsd_db, f.closed_form, f.monte_carlo, closed_form_gap_percent(f), f.rendered,
-                     rendered_ratio(f), f.estimate, f.baseline_expected});
+                     rendered_ratio(f), f.estimate, f.baseline_expected, f.input_floor});
   }
   EXPECT_EQ(floors[1][5], "") << "Brick, 2: not measured, an empty cell";
 
@@ -525,8 +526,8 @@ TEST(ReportWriter, MarkdownShowsTheFloorRealismAndWhatEachComparisonAsks) {
   EXPECT_TRUE(has("| 0.5620 | 0.5840 | 1.092 |")) << "the totals table: mean model and baseline, median model/floor";
   // The noise floor, with a floor that was not measured.
   EXPECT_TRUE(has("## Noise floor\n\n**Oracle.**"));
-  EXPECT_TRUE(has("| Book | oracle | closed form | 120 | 0.4800 | 2.500 | 0.4800 | 0.5000 | 1.200 % | 0.7200 | 1.500 | 0.5000 | 0.6250 |"));
-  EXPECT_TRUE(has("| Brick, 2 | oracle | Monte Carlo | 120 | – | – | – | – | – | – | – | – | – |"));
+  EXPECT_TRUE(has("| Book | oracle | closed form | 120 | 0.4800 | 2.500 | 0.4800 | 0.5000 | 1.200 % | 0.7200 | 1.500 | 0.5000 | 0.6250 | 0.5200 |"));
+  EXPECT_TRUE(has("| Brick, 2 | oracle | Monte Carlo | 120 | – | – | – | – | – | – | – | – | – | – |"));
   EXPECT_TRUE(has("pays the randomness twice"));
   // Realism: medians over the materials where each figure was measured.
   // Spread in range: neither 1.25 nor 0.75 (AR), neither 0.375 nor 0.625; within 25 % of the
