@@ -7,25 +7,23 @@
 //   OUT/materials.json                            (synth materials) the recipes
 #include <string>
 
+#include "core/partial_directory.hpp"
+
 namespace haptex::synth {
 
-// Everything is written into OUT.partial/ and renamed to OUT by commit(), so a failure half way
-// leaves no OUT (and removes OUT.partial). A non-empty OUT is refused (bad input) unless overwrite,
-// which replaces it whole on commit (nothing of an earlier run survives next to the new one), and
-// only while it holds nothing but what haptex wrote (core/owned_folder.hpp): a foreign file is refused.
+// Everything is written into OUT.partial/ (core/partial_directory.hpp) and renamed to OUT by
+// commit(): a failure half way leaves OUT as it was. A non-empty OUT is refused (bad input) unless
+// overwrite, which replaces it whole on commit, and only while it holds nothing but what haptex
+// wrote (core/owned_folder.hpp).
 class OutputFolder {
  public:
-  OutputFolder(std::string out, bool overwrite);
-  ~OutputFolder();
-  OutputFolder(const OutputFolder&) = delete;
-  OutputFolder& operator=(const OutputFolder&) = delete;
+  OutputFolder(const std::string& out, bool overwrite);
 
-  const std::string& path() const { return staging_; }  // where to write until commit()
-  void commit();
+  const std::string& path() const { return partial_.path(); }  // where to write until commit()
+  void commit() { partial_.commit(); }
 
  private:
-  std::string out_, staging_;
-  bool committed_ = false;
+  PartialDirectory partial_;
 };
 
 std::string recording_path(const std::string& out, const std::string& material, int index);

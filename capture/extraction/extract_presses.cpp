@@ -10,7 +10,7 @@
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"
-#include "core/owned_folder.hpp"
+#include "core/partial_directory.hpp"
 #include "core/sha256.hpp"
 #include "core/text/utf8.hpp"
 
@@ -18,40 +18,12 @@ namespace haptex::capture {
 namespace fs = std::filesystem;
 namespace {
 
-// The sheets folder, built as DIR.partial and renamed into place only after the gelsight file.
-class SheetsFolder {
- public:
-  SheetsFolder(std::string final_dir, bool overwrite) : final_(std::move(final_dir)), partial_(final_ + ".partial") {
-    std::error_code ec;
-    if (fs::exists(final_, ec) && !overwrite)
-      throw input_error(final_, "", "the contact sheet folder already exists", "Remove it, choose another --sheets, or pass --force");
-    check_only_haptex_files(final_);
-    fs::remove_all(partial_, ec);  // left by a killed run
-    fs::create_directories(partial_);
-  }
-  ~SheetsFolder() {
-    std::error_code ec;
-    if (!committed_) fs::remove_all(partial_, ec);
-  }
-  void write(const std::string& name, const std::vector<std::uint8_t>& png) {
-    std::ofstream out(fs::path(partial_) / name, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
-    if (!out) throw failure(partial_ + "/" + name + ": cannot write the contact sheet");
-  }
-  void commit() {
-    write_file_list(partial_, "haptex capture extract");
-    check_only_haptex_files(final_);  // a file of the user's may have appeared while we wrote
-    std::error_code ec;
-    fs::remove_all(final_, ec);
-    durable_rename(partial_, final_);
-    committed_ = true;
-  }
-  const std::string& path() const { return final_; }
-
- private:
-  std::string final_, partial_;
-  bool committed_ = false;
-};
+// One contact sheet into the sheets folder being built.
+void write_sheet(const PartialDirectory& sheets, const std::string& name, const std::vector<std::uint8_t>& png) {
+  std::ofstream out(fs::path(sheets.path()) / name, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
+  if (!out) throw failure(sheets.path() + "/" + name + ": cannot write the contact sheet");
+}
 
 cv::Mat load_reference(const std::string& path) {
   cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
@@ -74,8 +46,8 @@ class Extraction {
       settings_.reference_image_path = *options.reference_path;
     }
     if (options.sheets)
-      sheets_ = std::make_unique<SheetsFolder>(options.sheets_dir.empty() ? default_sheets_dir(output) : options.sheets_dir,
-                                               options.overwrite);
+      sheets_ = std::make_unique<PartialDirectory>(options.sheets_dir.empty() ? default_sheets_dir(output) : options.sheets_dir,
+                                                   FolderOptions{options.overwrite, "contact sheet folder", "--sheets", "haptex capture extract"});
   }
 
   void add(const CaptureInput& input) {
@@ -106,7 +78,7 @@ class Extraction {
     writer_.commit();
     if (sheets_) {
       sheets_->commit();
-      result_.sheets_dir = sheets_->path();
+      result_.sheets_dir = sheets_->final_path();
     }
     return result_;
   }
@@ -143,10 +115,10 @@ class Extraction {
     std::string sheet_name;
     if (sheets_) {
       sheet_name = id + "_press_" + std::to_string(next_press_number(id)) + ".png";
-      p.contact_sheet = relative_to_output((fs::path(sheets_->path()) / sheet_name).string(), output_);
+      p.contact_sheet = relative_to_output((fs::path(sheets_->final_path()) / sheet_name).string(), output_);
     }
     const int j = writer_.add_press(material, p);
-    if (sheets_) sheets_->write(sheet_name, contact_sheet_png(sheet_input(material, j, source, scores, plan, peak)));
+    if (sheets_) write_sheet(*sheets_, sheet_name, contact_sheet_png(sheet_input(material, j, source, scores, plan, peak)));
     result_.presses.push_back({material, id, source.path(), j, plan.press_in_source, p.frame_start, p.frame_end,
                                p.contact_first, p.contact_last, p.peak_index, p.peak_score, p.contact_sheet});
   }
@@ -181,7 +153,7 @@ class Extraction {
   const ExtractOptions& options_;
   ExtractSettings settings_;
   GelsightWriter writer_;
-  std::unique_ptr<SheetsFolder> sheets_;
+  std::unique_ptr<PartialDirectory> sheets_;
   ExtractResult result_;
 };
 

@@ -1,0 +1,116 @@
+#include "core/partial_directory.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "core/durable_file.hpp"
+#include "core/error.hpp"
+#include "core/owned_folder.hpp"
+
+namespace haptex {
+namespace fs = std::filesystem;
+namespace {
+
+std::string trimmed(std::string path) {
+  while (path.size() > 1 && path.back() == '/') path.pop_back();
+  return path;
+}
+
+std::string parent_of(const std::string& path) {
+  const fs::path parent = fs::path(path).parent_path();
+  return parent.empty() ? "." : parent.string();
+}
+
+bool empty_folder(const std::string& dir) {
+  std::error_code ec;
+  return fs::is_empty(dir, ec) && !ec;
+}
+
+// May `dir` become (or replace) the folder? Throws bad_input saying why not.
+void check_destination(const std::string& dir, const FolderOptions& o) {
+  const std::string name = fs::path(dir).filename().string();
+  if (name.empty() || name == "." || name == "..")
+    throw input_error(dir, "", "not a name for a new " + o.what, "Name the folder with " + o.option);
+  const std::string parent = parent_of(dir);
+  std::error_code ec;
+  if (!fs::is_directory(parent, ec))
+    throw input_error(dir, "", "the folder " + parent + " that should hold the " + o.what + " does not exist",
+                      "Create it first or choose another " + o.option);
+  if (::access(parent.c_str(), W_OK) != 0)
+    throw input_error(dir, "", "the folder " + parent + " is not writable", "Choose a folder you can write to with " + o.option);
+  const fs::file_status status = fs::symlink_status(dir, ec);
+  if (!fs::exists(status)) return;
+  if (!fs::is_directory(status))
+    throw input_error(dir, "", "exists and is not a folder", "Choose another " + o.option + ", or move it out of the way");
+  if (!o.overwrite && !empty_folder(dir))
+    throw input_error(dir, "", "the " + o.what + " already exists and is not empty",
+                      "Remove it, choose another " + o.option + ", or pass --force to replace it");
+  check_only_haptex_files(dir);
+}
+
+// Every file and folder under dir, deepest first, then dir itself.
+void fsync_tree(const std::string& dir) {
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
+    if (entry.is_directory())
+      fsync_tree(entry.path().string());
+    else
+      fsync_path(entry.path().string(), O_RDONLY);
+  }
+  fsync_path(dir, O_RDONLY | O_DIRECTORY);
+}
+
+}  // namespace
+
+PartialDirectory::PartialDirectory(std::string final_path, FolderOptions options)
+    : final_(trimmed(std::move(final_path))), path_(final_ + ".partial"), options_(std::move(options)) {
+  check_destination(final_, options_);
+  std::error_code ec;
+  fs::create_directory(path_, ec);
+  if (ec)
+    throw input_error(final_, "", "cannot create " + path_ + " (" + ec.message() + ")",
+                      "Choose a folder you can write to with " + options_.option + ", or remove " + path_);
+  fd_ = ::open(path_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd_ < 0)
+    throw input_error(final_, "", "cannot open " + path_ + ": " + std::strerror(errno), "Remove " + path_ + " by hand");
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    fd_ = -1;
+    throw input_error(final_, "", "another haptex run is writing this " + options_.what + " right now (" + path_ + " is locked)",
+                      "Wait for it to finish, or choose another " + options_.option);
+  }
+  for (const fs::directory_entry& entry : fs::directory_iterator(path_)) fs::remove_all(entry.path());  // left by a killed run
+}
+
+PartialDirectory::~PartialDirectory() {
+  std::error_code ignored;
+  if (!committed_) fs::remove_all(path_, ignored);
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void PartialDirectory::commit() {
+  write_file_list(path_, options_.written_by);
+  fsync_tree(path_);
+  std::error_code ec;
+  const bool replace = fs::exists(fs::symlink_status(final_, ec));
+  if (replace) check_destination(final_, options_);  // it appeared, or got a file of the user's, while we wrote
+  const int status = replace ? ::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, final_.c_str(), RENAME_EXCHANGE)
+                             : std::rename(path_.c_str(), final_.c_str());
+  if (status != 0)
+    throw failure(path_ + ": cannot rename to " + final_ + ": " + std::strerror(errno) +
+                  (replace ? " (remove the old " + options_.what + " and run again)" : ""));
+  committed_ = true;
+  fsync_path(parent_of(final_), O_RDONLY | O_DIRECTORY);
+  if (!replace) return;
+  fs::remove_all(path_, ec);  // the old folder, swapped here
+  if (ec)
+    throw failure("the new " + options_.what + " is complete in " + final_ + ", but the old one, moved to " + path_ +
+                  ", could not be removed: " + ec.message());
+}
+
+}  // namespace haptex

@@ -1,0 +1,46 @@
+#pragma once
+// Output folders haptex writes whole (synth's output, extract's contact sheets, evaluate's report),
+// with the guarantees of an atomic file (core/durable_file.hpp) for a folder:
+// - everything is written into DIR.partial, locked (flock) while this object lives, so two runs
+//   writing the same folder refuse instead of mixing their files;
+// - commit() lists the files (core/owned_folder.hpp), fsyncs every file and folder, and renames
+//   DIR.partial to DIR; an existing DIR (with overwrite) is swapped out in one rename
+//   (RENAME_EXCHANGE) and only then removed, so a crash at any moment leaves the old folder or the
+//   new one under DIR, never neither and never a mixture;
+// - without commit() (an error, an exception) DIR.partial is removed and DIR is untouched.
+// A DIR that holds anything its haptex-files.json does not list is never replaced.
+#include <string>
+
+namespace haptex {
+
+struct FolderOptions {
+  bool overwrite = false;                 // --force: replace an earlier folder haptex wrote
+  std::string what = "output folder";     // how messages name it: "report folder", "contact sheet folder"
+  std::string option = "-o";              // the option that names it, for the fixes messages suggest
+  std::string written_by = "haptex";      // the command, recorded in haptex-files.json
+};
+
+class PartialDirectory {
+ public:
+  // Throws haptex::Error (bad_input) naming the folder: no usable name, its parent missing or not
+  // writable, a file in its place, an existing non-empty folder without overwrite, a folder with
+  // files haptex did not write, or another run writing it now.
+  PartialDirectory(std::string final_path, FolderOptions options);
+  ~PartialDirectory();
+  PartialDirectory(const PartialDirectory&) = delete;
+  PartialDirectory& operator=(const PartialDirectory&) = delete;
+
+  const std::string& path() const { return path_; }         // where to write until commit()
+  const std::string& final_path() const { return final_; }  // where it will be
+  // Throws haptex::Error (bad_input) when DIR changed meanwhile so that it may no longer be
+  // replaced, (failed) when a sync or the rename fails.
+  void commit();
+
+ private:
+  std::string final_, path_;
+  FolderOptions options_;
+  int fd_ = -1;
+  bool committed_ = false;
+};
+
+}  // namespace haptex
