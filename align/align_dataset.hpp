@@ -1,20 +1,19 @@
 #pragma once
 // `haptex align`: GelSight presses joined with vibration recordings per material, checked, and cut
-// into the model's windows (DESIGN.md sections 3 and 5; schemas/hdf5-layout.md "Dataset file").
+// into the model's windows (dataset/window.hpp; schemas/hdf5-layout.md "Dataset file").
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include "align/material_matching.hpp"
 #include "core/progress.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::align {
 
-inline constexpr const char* kDatasetFormat = "dataset/2";  // 2: the action at the window's middle (1: before its start)
-
 struct AlignOptions {
   std::string recordings, gelsight, output;
-  std::size_t stride = 100;
+  std::size_t stride = dataset::kGridStride;
   std::string names_file;  // optional name map
   bool overwrite = false;
   std::string provenance;

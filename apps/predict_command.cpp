@@ -4,6 +4,7 @@
 
 #include "apps/command.hpp"
 #include "core/error.hpp"
+#include "dataset/window.hpp"
 #include "predict/model_file.hpp"
 #include "predict/predictor.hpp"
 #include "predict/texture_choice.hpp"
@@ -48,15 +49,16 @@ class PredictCommand : public Command {
     predict::Predictor predictor(model);
     const predict::TextureCode code = texture(predictor);
     std::vector<Query> queries;
-    float action[predict::kActionValues];
+    using dataset::kActionSamples, dataset::kActionValues;
+    float action[kActionValues];
     if (csv_.empty()) {
-      std::fill(action, action + 10, float(force_));
-      std::fill(action + 10, action + 20, float(speed_));
+      std::fill(action, action + kActionSamples, float(force_));
+      std::fill(action + kActionSamples, action + kActionValues, float(speed_));
       queries.push_back(query(predictor, code, action, 0));
     } else {
       const predict::Trajectory t = predict::read_trajectory(csv_);
-      if (t.force.size() < 10) throw input_error(csv_, "", "fewer than 10 samples (1 ms)", "Give a longer trajectory");
-      for (std::size_t s = 9; s < t.force.size(); s += std::size_t(hop_)) {
+      if (t.force.size() < kActionSamples) throw input_error(csv_, "", "fewer than 10 samples (1 ms)", "Give a longer trajectory");
+      for (std::size_t s = kActionSamples - 1; s < t.force.size(); s += std::size_t(hop_)) {
         predict::action_at(t, s, action);
         queries.push_back(query(predictor, code, action, s));
       }
@@ -76,8 +78,9 @@ class PredictCommand : public Command {
   }
 
   static Query query(predict::Predictor& predictor, const predict::TextureCode& code, const float* action, std::size_t sample) {
-    Query q{sample, action[9], action[19], false, std::vector<float>(predict::kSpectrumBins)};
-    q.out_of_range = predictor.predict(code, std::span<const float>(action, predict::kActionValues), q.spectrum);
+    using dataset::kActionSamples, dataset::kActionValues;
+    Query q{sample, action[kActionSamples - 1], action[kActionValues - 1], false, std::vector<float>(dataset::kTargetBins)};
+    q.out_of_range = predictor.predict(code, std::span<const float>(action, kActionValues), q.spectrum);
     return q;
   }
 
@@ -88,12 +91,12 @@ class PredictCommand : public Command {
     if (reference_.empty() && !image_.empty() && !global.quiet)
       std::cerr << "note: no --reference: the image's own blur stands in for the no-contact frame\n";
     std::printf("frequency_hz,amplitude_m_s2\n");
-    for (std::size_t k = 0; k < q.spectrum.size(); ++k) std::printf("%zu,%.6g\n", 10 * (k + 1), double(q.spectrum[k]));
+    for (std::size_t k = 0; k < q.spectrum.size(); ++k) std::printf("%d,%.6g\n", int(double(k + 1) * dataset::kBinHz), double(q.spectrum[k]));
   }
 
   static void print_csv(const std::vector<Query>& queries) {
     std::printf("sample,time_s,force_n,speed_mm_s,out_of_range");
-    for (int k = 1; k <= predict::kSpectrumBins; ++k) std::printf(",a_%dhz", 10 * k);
+    for (std::size_t k = 1; k <= dataset::kTargetBins; ++k) std::printf(",a_%dhz", int(double(k) * dataset::kBinHz));
     std::printf("\n");
     for (const Query& q : queries) {
       std::printf("%zu,%.4f,%.6g,%.6g,%d", q.sample, double(q.sample) * 1e-4, double(q.force), double(q.speed), q.out_of_range ? 1 : 0);
@@ -105,7 +108,7 @@ class PredictCommand : public Command {
   void print_json(const predict::Model& model, const predict::TextureCode& code, const std::vector<Query>& queries) const {
     nlohmann::json out = {{"model", model_path_}, {"variant", predict::variant_name(model.variant)},
                           {"frequencies_hz", nlohmann::json::array()}, {"queries", nlohmann::json::array()}};
-    for (int k = 1; k <= predict::kSpectrumBins; ++k) out["frequencies_hz"].push_back(10 * k);
+    for (std::size_t k = 1; k <= dataset::kTargetBins; ++k) out["frequencies_hz"].push_back(int(double(k) * dataset::kBinHz));
     if (!material_.empty()) out["material"] = material_;
     if (!image_.empty()) out["image"] = image_, out["reference"] = reference_.empty() ? nlohmann::json(nullptr) : nlohmann::json(reference_);
     if (!descriptor_.empty()) out["descriptor"] = descriptor_;

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <numbers>
 
-#include "align/window_table.hpp"
 #include "convert/hatt_model_reader.hpp"
 #include "core/ar/expected_spectrum.hpp"
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
+#include "dataset/window.hpp"
 #include "evaluate/summary_statistics.hpp"
 
 namespace haptex::evaluate {
@@ -69,7 +69,7 @@ std::vector<std::vector<double>> grid_input_section(const synth::TruthGrid& grid
                                                     const std::vector<std::size_t>& windows, double noise_power) {
   std::vector<std::vector<double>> out;
   for (std::size_t t : windows) {
-    std::vector<double> a = grid_power_at(grid, s.speed[t + align::kActionEnd], s.force[t + align::kActionEnd]);
+    std::vector<double> a = grid_power_at(grid, s.speed[t + dataset::kActionEnd], s.force[t + dataset::kActionEnd]);
     for (double& v : a) v = std::sqrt(v);
     add_sensor_noise(a, noise_power);
     out.push_back(std::move(a));
@@ -78,10 +78,10 @@ std::vector<std::vector<double>> grid_input_section(const synth::TruthGrid& grid
 }
 
 // The closed form with one blend per window, at its middle: the model's action held over the window.
-static_assert(align::kActionEnd == signal::kWindowSamples / 2, "one blend per window falls on the model's action");
+static_assert(dataset::kActionEnd == dataset::kWindowSamples / 2, "one blend per window falls on the model's action");
 std::vector<std::vector<double>> ar_input_section(const ar::PiecewiseArModel& model, const SectionSignals& s, double noise_power) {
   ar::ExpectedSpectrumOptions o;
-  o.update = signal::kWindowSamples;
+  o.update = dataset::kWindowSamples;
   o.noise_power = noise_power;
   const std::vector<std::size_t> grid = section_grid(s.accel.size());
   return ar::expected_window_spectra(model, s.speed, s.force, grid, o);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "dataset/window.hpp"
 #include "evaluate/ar_segments.hpp"
 #include "split/split_windows.hpp"
 
@@ -30,12 +31,12 @@ struct MaterialSignals {
 std::vector<MaterialSignals> read_section_signals(const split::DatasetSplit& split);
 
 // Offsets (from the section's first sample) of the evaluation windows: t = 0, 100, 200, ... while the
-// window's 1000 samples fit (the rule of align::window_starts). Empty for short sections.
+// window's 1000 samples fit (the rule of dataset::window_starts). Empty for short sections.
 std::vector<std::size_t> section_grid(std::size_t samples);
-inline constexpr std::size_t kSectionGridStride = 100;  // samples between evaluation windows
+inline constexpr std::size_t kSectionGridStride = dataset::kGridStride;  // TRANSITIONAL alias: samples between evaluation windows
 
 // The 20 action values of each grid window (columns), as the model takes them: the 1 ms ending at the
-// window's middle (align/window_table.hpp).
+// window's middle (dataset/window.hpp).
 Eigen::MatrixXf grid_actions(const SectionSignals& s, const std::vector<std::size_t>& grid);
 
 // The 100-bin amplitude spectra of signal[t - origin, t - origin + 1000) for each grid offset t (rows).

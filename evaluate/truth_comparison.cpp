@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "core/naming.hpp"
+#include "dataset/window.hpp"
 #include "predict/predictor.hpp"
 #include "synth/truth_file.hpp"
 
@@ -14,23 +15,24 @@ TruthComparison compare_material(predict::Predictor& p, int material, const synt
   const predict::Normalisation& n = p.model().normalisation;
   const predict::TextureCode code = p.material_code(material);
   std::vector<Eigen::VectorXf> truths, predictions;
-  std::vector<float> action(predict::kActionValues), out(predict::kSpectrumBins);
+  using dataset::kActionSamples, dataset::kTargetBins;
+  std::vector<float> action(dataset::kActionValues), out(kTargetBins);
   for (std::size_t s = 0; s < speeds.size(); ++s)
     for (std::size_t f = 0; f < forces.size(); ++f) {
       if (speeds[s] < n.speed_min || speeds[s] > n.speed_max || forces[f] < n.force_min || forces[f] > n.force_max) continue;
-      std::fill(action.begin(), action.begin() + 10, float(forces[f]));
-      std::fill(action.begin() + 10, action.end(), float(speeds[s]));
+      std::fill(action.begin(), action.begin() + kActionSamples, float(forces[f]));
+      std::fill(action.begin() + kActionSamples, action.end(), float(speeds[s]));
       p.predict(code, action, out);
-      predictions.push_back(Eigen::Map<const Eigen::VectorXf>(out.data(), predict::kSpectrumBins));
-      Eigen::VectorXf t(predict::kSpectrumBins);
+      predictions.push_back(Eigen::Map<const Eigen::VectorXf>(out.data(), Eigen::Index(kTargetBins)));
+      Eigen::VectorXf t(kTargetBins);
       const double* truth = grid.spectrum(s, f);
-      for (int k = 0; k < predict::kSpectrumBins; ++k) t[k] = float(truth[k]);
+      for (std::size_t k = 0; k < kTargetBins; ++k) t[Eigen::Index(k)] = float(truth[k]);
       truths.push_back(t);
     }
   TruthComparison c;
   c.points = truths.size();
   if (truths.empty()) return c;
-  Eigen::VectorXf mean = Eigen::VectorXf::Zero(predict::kSpectrumBins);
+  Eigen::VectorXf mean = Eigen::VectorXf::Zero(Eigen::Index(kTargetBins));
   for (const auto& t : truths) mean += t / float(truths.size());
   for (std::size_t i = 0; i < truths.size(); ++i) {
     c.model += (predictions[i] - truths[i]).norm() / double(truths.size());

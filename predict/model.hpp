@@ -9,13 +9,15 @@
 #include <string>
 #include <vector>
 
+#include "dataset/window.hpp"
 #include "predict/mlp.hpp"
 #include "predict/texture_descriptor.hpp"
 
 namespace haptex::predict {
 
-inline constexpr int kActionValues = 20;  // 10 force then 10 speed samples, the last at time t
-inline constexpr int kSpectrumBins = 100;
+// The model's input and output sizes are the window contract's (dataset/window.hpp).
+using dataset::kActionValues;
+inline constexpr std::size_t kSpectrumBins = dataset::kTargetBins;  // TRANSITIONAL: until evaluate and render use kTargetBins
 
 enum class Variant { unified, per_material };
 std::string variant_name(Variant variant);

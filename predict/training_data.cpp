@@ -2,14 +2,18 @@
 
 #include <mutex>
 
-#include "align/window_table.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/parallel.hpp"
+#include "dataset/format.hpp"
+#include "dataset/layout.hpp"
+#include "dataset/window_table.hpp"
 #include "predict/augmentation.hpp"
 
 namespace haptex::predict {
 namespace {
+
+using namespace dataset::layout;
 
 cv::Mat image_at(const h5::Dataset& d, std::size_t first_axis_index = 0) {
   const h5::Shape shape = d.shape();
@@ -33,15 +37,9 @@ std::vector<cv::Mat> images(const h5::Dataset& d) {
   return out;
 }
 
-Eigen::MatrixXf read_columns(const h5::Group& windows, const char* name, Eigen::Index rows, const std::string& file) {
-  const h5::Dataset d = windows.open_dataset(name);
-  const h5::Shape shape = d.shape();
-  if (shape.size() != 2 || Eigen::Index(shape[1]) != rows)
-    throw input_error(file, "/windows/" + std::string(name), "expected (windows, " + std::to_string(rows) + ") values",
-                      "Run haptex align again");
-  const std::vector<float> values = d.read<float>();
-  // Row-major (windows x rows) in the file is column-major (rows x windows) here: one window per column.
-  return Eigen::Map<const Eigen::MatrixXf>(values.data(), rows, Eigen::Index(shape[0]));
+// Row-major (windows x width) in the file is column-major (width x windows) here: one window per column.
+Eigen::MatrixXf columns(const std::vector<float>& values, std::size_t width) {
+  return Eigen::Map<const Eigen::MatrixXf>(values.data(), Eigen::Index(width), Eigen::Index(values.size() / width));
 }
 
 void check_sets(const split::MaterialSets& m, const std::string& manifest) {
@@ -56,20 +54,20 @@ void check_sets(const split::MaterialSets& m, const std::string& manifest) {
 
 Descriptors press_descriptors(const std::string& dataset_path, const std::string& material_id, int press, bool training,
                               const TextureDescriptorSpec& spec) {
-  const h5::File file = h5::File::open(dataset_path);
-  const std::string path = "materials/" + material_id + "/presses/" + std::to_string(press);
+  const h5::File file = dataset::open_checked(dataset_path, dataset::Kind::dataset);
+  const std::string path = std::string(kMaterials) + "/" + material_id + "/" + kPresses + "/" + std::to_string(press);
   const h5::Group root = file.root();
   if (!root.has_group(path))
     throw input_error(dataset_path, "/" + path, "the split names this press but the dataset has none", "Run haptex split on this dataset");
   const h5::Group g = root.open_group(path);
-  const cv::Mat reference = image_at(g.open_dataset("reference"));
+  const cv::Mat reference = image_at(g.open_dataset(kReference));
   Descriptors out;
   if (!training) {
-    out.push_back(texture_descriptor(image_at(g.open_dataset("peak")), reference, spec));
+    out.push_back(texture_descriptor(image_at(g.open_dataset(kPeak)), reference, spec));
     return out;
   }
   const std::vector<cv::Mat> augmented_references = all_augmentations(reference);
-  for (const cv::Mat& frame : images(g.open_dataset("frames"))) {
+  for (const cv::Mat& frame : images(g.open_dataset(kFrames))) {
     const std::vector<cv::Mat> augmented = all_augmentations(frame);
     for (std::size_t v = 0; v < augmented.size(); ++v)
       out.push_back(texture_descriptor(augmented[v], augmented_references[v], spec));
@@ -84,10 +82,9 @@ TrainingData load_training_data(const split::DatasetSplit& split, const TextureD
   data.split_sha256 = split.manifest_sha256;
   data.descriptor = spec;
   {
-    const h5::File file = h5::File::open(split.dataset_path);
-    const h5::Group windows = file.root().open_group("windows");
-    data.action = read_columns(windows, "action", Eigen::Index(align::kActionValues), split.dataset_path);
-    data.target = read_columns(windows, "target", Eigen::Index(align::kTargetBins), split.dataset_path);
+    const dataset::WindowTable windows = dataset::read_window_table(dataset::open_checked(split.dataset_path, dataset::Kind::dataset));
+    data.action = columns(windows.action, dataset::kActionValues);
+    data.target = columns(windows.target, dataset::kTargetBins);
   }
   struct Job {
     std::size_t material, set;

@@ -7,6 +7,7 @@
 
 #include "convert/parse_number.hpp"
 #include "core/error.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::predict {
 namespace {
@@ -73,10 +74,7 @@ Trajectory read_trajectory(const std::string& path) {
 }
 
 void action_at(const Trajectory& trajectory, std::size_t t, float* out) {
-  for (std::size_t k = 0; k < 10; ++k) {
-    out[k] = trajectory.force[t - 9 + k];
-    out[10 + k] = trajectory.speed[t - 9 + k];
-  }
+  dataset::action_ending_at<float>(trajectory.force, trajectory.speed, t, std::span(out, dataset::kActionValues));
 }
 
 }  // namespace haptex::predict

@@ -5,7 +5,7 @@
 #include <optional>
 #include <set>
 
-#include "align/window_table.hpp"
+#include "dataset/window.hpp"
 #include "core/parallel.hpp"
 #include "core/signal/spectrum.hpp"
 #include "qa/checkers.hpp"
@@ -19,7 +19,7 @@ namespace {
 std::string window_where(const WindowTable& t, std::size_t w) {
   const auto m = t.material[w];
   const std::string id = m >= 0 && std::size_t(m) < t.materials.size() ? t.materials[std::size_t(m)] : "#" + std::to_string(m);
-  return align::window_place(w, id, t.recording[w], t.start[w]);
+  return dataset::window_place(w, id, t.recording[w], t.start[w]);
 }
 
 struct Finding {
@@ -81,11 +81,11 @@ std::vector<WindowRun> window_runs(const h5::Group& root, const WindowTable& t) 
 
 // The window geometry the model was built for (docs/predict.md, "The model's sample").
 void check_geometry(const WindowTable& t, CheckTally& tally) {
-  if (t.action_samples != std::int64_t(kActionSamples) || t.window_samples != std::int64_t(kTargetSamples) ||
+  if (t.action_samples != std::int64_t(kActionSamples) || t.window_samples != std::int64_t(kWindowSamples) ||
       t.action_end != std::int64_t(kActionEnd))
     tally.fail("/windows", "action_samples " + std::to_string(t.action_samples) + ", window_samples " +
                                std::to_string(t.window_samples) + " and action_end " + std::to_string(t.action_end) +
-                               ", expected " + std::to_string(kActionSamples) + ", " + std::to_string(kTargetSamples) +
+                               ", expected " + std::to_string(kActionSamples) + ", " + std::to_string(kWindowSamples) +
                                " and " + std::to_string(kActionEnd) + " (docs/predict.md, \"The model's sample\")");
 }
 

@@ -3,7 +3,7 @@
 #include <regex>
 #include <sstream>
 
-#include "align/align_dataset.hpp"
+#include "dataset/format.hpp"
 #include "core/embedded.hpp"
 #include "core/error.hpp"
 
@@ -104,7 +104,8 @@ std::vector<LayoutRow> rows_for_format(const std::vector<LayoutSection>& layout,
     const bool every_file = section.format.empty() && section.heading.rfind("Every file", 0) == 0;
     const bool own = !section.format.empty() && section.format == format;
     const bool copied_into_dataset =
-        format == align::kDatasetFormat && (section.format == "recordings/1" || section.format == "gelsight/1");
+        format == dataset::format_name(dataset::Kind::dataset) &&
+        (section.format == dataset::format_name(dataset::Kind::recordings) || section.format == dataset::format_name(dataset::Kind::gelsight));
     for (const auto& row : section.rows)
       if (every_file || own || (copied_into_dataset && under_materials_collection(row.path))) rows.push_back(row);
   }

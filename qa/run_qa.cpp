@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "align/align_dataset.hpp"
+#include "dataset/format.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "qa/checkers.hpp"
@@ -14,8 +14,9 @@ namespace haptex::qa {
 namespace {
 
 // The formats qa checks, by root attribute haptex_format.
-const std::vector<std::pair<std::string, FileKind>> kFormats = {
-    {"recordings/1", FileKind::recordings}, {"gelsight/1", FileKind::gelsight}, {align::kDatasetFormat, FileKind::dataset}};
+const std::vector<std::pair<std::string, FileKind>> kFormats = {{dataset::format_name(dataset::Kind::recordings), FileKind::recordings},
+                                                               {dataset::format_name(dataset::Kind::gelsight), FileKind::gelsight},
+                                                               {dataset::format_name(dataset::Kind::dataset), FileKind::dataset}};
 
 bool looks_like_hdf5(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -31,19 +32,11 @@ void append(std::vector<CheckResult>& out, std::vector<CheckResult> more) {
 Report check_hdf5(const QaOptions& options) {
   const h5::File file = h5::File::open(options.file);
   const h5::Group root = file.root();
-  if (!root.has_attr("haptex_format"))
-    throw input_error(options.file, "/", "no haptex_format attribute: the file was not written by haptex",
-                      "Run qa on files made by haptex convert, capture extract or align");
-  std::string format;
-  try {
-    format = root.attr_string("haptex_format");
-  } catch (const Error&) {
-    throw input_error(options.file, "/@haptex_format", "is not a string", "Rewrite the file with haptex");
-  }
+  const std::string format = dataset::read_format(file);
   const auto known = std::find_if(kFormats.begin(), kFormats.end(), [&](const auto& f) { return f.first == format; });
   if (known == kFormats.end())
     throw input_error(options.file, "/@haptex_format", "'" + format + "' is not a format qa checks",
-                      "qa checks recordings/1, gelsight/1 and " + std::string(align::kDatasetFormat) + " files and split manifests");
+                      "qa checks " + kFormats[0].first + ", " + kFormats[1].first + " and " + kFormats[2].first + " files and split manifests");
   Report report{options.file, known->second, options.split, {}};
   if (options.split && report.kind != FileKind::dataset)
     throw input_error(options.file, "", "--split goes with a dataset file, this is a " + format + " file",

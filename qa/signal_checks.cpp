@@ -135,9 +135,9 @@ void check_signal_duration(const LoadedRecording& r, CheckTally& tally) {
   if (std::abs(*r.duration_s - expected) > 0.5 / *r.sample_rate_hz)
     tally.fail(r.path, "duration_s is " + number(*r.duration_s, 8) + " s, but " + std::to_string(*r.samples) +
                            " samples at " + number(*r.sample_rate_hz, 8) + " Hz last " + number(expected, 8) + " s");
-  else if (*r.samples < std::int64_t(kWindowSpan))
+  else if (*r.samples < std::int64_t(kWindowSamples))
     tally.fail(r.path, std::to_string(*r.samples) + " samples, fewer than one model window (" +
-                           std::to_string(kWindowSpan) + ")");
+                           std::to_string(kWindowSamples) + ")");
   else tally.pass();
 }
 

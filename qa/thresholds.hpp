@@ -2,20 +2,19 @@
 // Every threshold `haptex qa` applies, with the reason for its value. docs/qa.md quotes them.
 #include <cstddef>
 
-#include "align/window_table.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::qa {
 
-// ---- recordings (DESIGN.md section 3)
+// ---- recordings (docs/convert.md)
 
-// The only rate the model, the filters and the window table are defined for.
-inline constexpr double kSampleRateHz = 10000.0;
-// One model window: 1000 samples, its action inside them (align/window_table.hpp).
-inline constexpr std::size_t kWindowSpan = align::kWindowSamples;
-// `haptex split` cuts every recording into 25 sections (DESIGN.md section 6); a window must fit in one.
+// The only rate the model, the filters and the window table are defined for, and one model window:
+// 1000 samples, its action inside them (dataset/window.hpp).
+using dataset::kSampleRateHz, dataset::kWindowSamples;
+// `haptex split` cuts every recording into 25 sections (docs/split.md); a window must fit in one.
 inline constexpr std::size_t kDefaultSections = 25;
 // A recording shorter than this cannot hold a single window in one of the 25 sections.
-inline constexpr std::size_t kShortRecordingSamples = kDefaultSections * kWindowSpan;
+inline constexpr std::size_t kShortRecordingSamples = kDefaultSections * kWindowSamples;
 
 // Clipping: an accelerometer driven past its range repeats its rail value. A flat top is a run of at
 // least this many identical samples at the channel's maximum or minimum; free vibration at 10 kHz
@@ -85,13 +84,12 @@ inline constexpr double kSaturatedMaxShare = 0.02;
 // file's no-contact references of the same size (same optics): contact only adds edges, so a sharp
 // press frame never falls that low; motion blur or a lost focus does.
 inline constexpr double kBlurMinRatio = 0.5;
-// Presses per material: 3 train, 1 val, 1 test (DESIGN.md section 6).
+// Presses per material: 3 train, 1 val, 1 test (docs/split.md).
 inline constexpr std::size_t kPressesPerMaterial = 5;
 
 // ---- dataset and split
 
-using align::kActionSamples, align::kActionEnd, align::kTargetBins;
-inline constexpr std::size_t kTargetSamples = align::kWindowSamples;
+using dataset::kActionSamples, dataset::kActionEnd, dataset::kTargetBins;
 // Cached action and target values are float32 copies of computations on the stored signals: they
 // must agree to 1e-5 of the largest magnitude of the recording's signal (float32 rounding is 6e-8;
 // the margin allows for spectra computed in float32).

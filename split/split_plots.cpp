@@ -4,7 +4,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "align/window_table.hpp"
+#include "dataset/layout.hpp"
+#include "dataset/window.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/plot/gnuplot.hpp"
@@ -23,7 +24,7 @@ void write_points(const fs::path& path, const MaterialWindows& m, const Material
   out << "set,speed_mm_s,force_n\n";
   for (std::size_t i = 0; i < m.start.size(); ++i) {
     const std::int64_t n = m.recording_samples.at(std::size_t(m.recording[i]));
-    const int section = section_of(align::window_first_sample(m.start[i]), align::window_end_sample(m.start[i]), n, sections);
+    const int section = section_of(dataset::window_first_sample(m.start[i]), dataset::window_end_sample(m.start[i]), n, sections);
     const int set = section < 0 ? -1 : set_of_section(s.sections, section);
     if (set >= 0) out << kSetNames[set] << "," << m.speed[i] << "," << m.force[i] << "\n";
   }
@@ -32,15 +33,15 @@ void write_points(const fs::path& path, const MaterialWindows& m, const Material
 void write_trace(const fs::path& path, const std::vector<float>& accel) {
   std::ofstream out(path);
   out << "time_s,accel_m_s2\n";
-  for (std::size_t i = 0; i < accel.size(); i += kTraceStep) out << double(i) / 10000.0 << "," << accel[i] << "\n";
+  for (std::size_t i = 0; i < accel.size(); i += kTraceStep) out << double(i) / dataset::kSampleRateHz << "," << accel[i] << "\n";
 }
 
 void write_sections(const fs::path& path, const MaterialSplit& s, std::int64_t samples, std::size_t sections) {
   std::ofstream out(path);
   out << "begin_s,end_s,set\n";
   for (std::size_t k = 0; k < sections; ++k)
-    out << double(section_begin(k, samples, sections)) / 10000.0 << ","
-        << double(section_begin(k + 1, samples, sections)) / 10000.0 << ","
+    out << double(section_begin(k, samples, sections)) / dataset::kSampleRateHz << ","
+        << double(section_begin(k + 1, samples, sections)) / dataset::kSampleRateHz << ","
         << kSetNames[set_of_section(s.sections, int(k))] << "\n";
 }
 
@@ -63,8 +64,8 @@ std::string script_text(const std::string& id, const std::string& title, const s
       << "', i) title word('train val test', i)\n";
   for (std::size_t k = 0; k < sections; ++k) {
     const int set = set_of_section(s.sections, int(k));
-    out << "set object " << k + 1 << " rect from " << double(section_begin(k, samples, sections)) / 10000.0
-        << ", graph 0 to " << double(section_begin(k + 1, samples, sections)) / 10000.0 << ", graph 1 fc rgb '"
+    out << "set object " << k + 1 << " rect from " << double(section_begin(k, samples, sections)) / dataset::kSampleRateHz
+        << ", graph 0 to " << double(section_begin(k + 1, samples, sections)) / dataset::kSampleRateHz << ", graph 1 fc rgb '"
         << kSetColours[set] << "' fs transparent solid 0.25 noborder behind\n";
   }
   out << "set xlabel 'time (s)'; set ylabel 'acceleration (m/s^2)'\n"
@@ -82,13 +83,13 @@ PlotResult write_split_plots(const std::string& dataset_path, const std::vector<
   std::error_code ec;
   fs::create_directories(directory, ec);
   if (ec) throw input_error(directory, "", "cannot create the plot folder (" + ec.message() + ")", "Choose a writable place");
-  const h5::Group materials = h5::File::open(dataset_path).root().open_group("materials");
+  const h5::Group materials = h5::File::open(dataset_path).root().open_group(dataset::layout::kMaterials);
   const std::string terminal = gnuplot::png_terminal();
   PlotResult result;
   for (std::size_t m = 0; m < windows.size(); ++m) {
     const fs::path base = fs::path(directory) / windows[m].id;
-    const h5::Group recording = materials.open_group(windows[m].id).open_group("recordings").open_group("0");
-    const std::vector<float> accel = recording.open_dataset("accel").read<float>();
+    const h5::Group recording = materials.open_group(windows[m].id).open_group(dataset::layout::kRecordings).open_group("0");
+    const std::vector<float> accel = recording.open_dataset(dataset::layout::kAccel).read<float>();
     write_points(base.string() + "_points.csv", windows[m], splits[m], sections);
     write_trace(base.string() + "_trace.csv", accel);
     write_sections(base.string() + "_sections.csv", splits[m], std::int64_t(accel.size()), sections);

@@ -5,7 +5,7 @@
 #include <numeric>
 #include <random>
 
-#include "align/window_table.hpp"
+#include "dataset/window.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "core/random_seeds.hpp"
@@ -79,7 +79,7 @@ std::vector<int> window_sections(const MaterialWindows& m, std::size_t sections)
   std::vector<int> out(m.start.size());
   for (std::size_t i = 0; i < out.size(); ++i) {
     const std::int64_t n = m.recording_samples.at(std::size_t(m.recording[i]));
-    out[i] = section_of(align::window_first_sample(m.start[i]), align::window_end_sample(m.start[i]), n, sections);
+    out[i] = section_of(dataset::window_first_sample(m.start[i]), dataset::window_end_sample(m.start[i]), n, sections);
   }
   return out;
 }

@@ -147,14 +147,5 @@ TEST(AlignDataset, RefusesAnotherSampleRateAndSwappedFiles) {
   EXPECT_NE(error_of([&] { align_dataset(swapped); }).find("not recordings/1"), std::string::npos);
 }
 
-TEST(WindowTable, StartsLeaveRoomForTheWindowWithItsActionInside) {
-  EXPECT_EQ(window_starts(999, 100).size(), 0u);
-  EXPECT_EQ(window_starts(1000, 100), (std::vector<std::int64_t>{0}));
-  EXPECT_EQ(window_starts(1300, 100), (std::vector<std::int64_t>{0, 100, 200, 300}));
-  EXPECT_EQ(window_first_sample(9), 9);
-  EXPECT_EQ(window_end_sample(9), 1009);
-  EXPECT_EQ(window_action_first(9), 500);  // samples 500..509, ending at the middle 509
-}
-
 }  // namespace
 }  // namespace haptex::align

@@ -58,7 +58,7 @@ TEST(Predictor, SingleQueriesMatchTheBatchPathAndDoNotAllocate) {
       const test::CountAllocations counter;
       EXPECT_FALSE(p.predict(code, a, out));
       EXPECT_EQ(counter.count(), 0u) << "predict() allocated";
-      for (int k = 0; k < kSpectrumBins; ++k) EXPECT_NEAR(out[std::size_t(k)], batch(k, c), 1e-5f * (1 + std::abs(batch(k, c))));
+      for (Eigen::Index k = 0; k < Eigen::Index(kSpectrumBins); ++k) EXPECT_NEAR(out[std::size_t(k)], batch(k, c), 1e-5f * (1 + std::abs(batch(k, c))));
     }
   }
 }

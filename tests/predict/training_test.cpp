@@ -45,7 +45,7 @@ double test_error_against_truth(const Model& m, const TrainingData& data) {
       p.predict(code, std::span<const float>(data.action.col(Eigen::Index(c)).data(), kActionValues), predicted);
       const std::vector<float> truth = test::synthetic_truth(int(i), data.action(9, Eigen::Index(c)), data.action(19, Eigen::Index(c)));
       double d = 0;
-      for (int k = 0; k < kSpectrumBins; ++k) d += std::pow(predicted[std::size_t(k)] - truth[std::size_t(k)], 2);
+      for (std::size_t k = 0; k < kSpectrumBins; ++k) d += std::pow(predicted[std::size_t(k)] - truth[std::size_t(k)], 2);
       sum += std::sqrt(d), ++count;
     }
   }

@@ -7,7 +7,7 @@
 #include <numeric>
 
 #include "qa/run_qa.hpp"
-#include "align/window_table.hpp"
+#include "dataset/window.hpp"
 #include "split/coverage.hpp"
 #include "split/dataset_view.hpp"
 #include "split/sections.hpp"
@@ -80,7 +80,7 @@ TEST_F(DatasetMutation, ActionFromUnfilteredForceIsDatasetCache) {
     e.change_floats("windows/action", [&](std::vector<float>& v) {
       for (std::size_t w = 0; w < start.size(); ++w)
         if (ids[std::size_t(material[w])] == "sandpaper_1")
-          for (std::size_t j = 0; j < 10; ++j) v[w * 20 + j] = raw[std::size_t(align::window_action_first(start[w])) + j];
+          for (std::size_t j = 0; j < 10; ++j) v[w * 20 + j] = raw[std::size_t(dataset::window_action_first(start[w])) + j];
     });
   }
   const qa::Report r = qa();
@@ -106,7 +106,7 @@ class SplitMutation : public ::testing::Test {
     std::size_t crossing = 0;
     for (std::size_t i = 0; i < w.start.size(); ++i) {
       const std::int64_t t = w.start[i];
-      const int s = split::section_of(align::window_first_sample(t), align::window_end_sample(t), w.recording_samples[std::size_t(w.recording[i])], sections);
+      const int s = split::section_of(dataset::window_first_sample(t), dataset::window_end_sample(t), w.recording_samples[std::size_t(w.recording[i])], sections);
       const int set = s < 0 ? -1 : split::set_of_section(sets, s);
       if (s < 0) ++crossing;
       else if (set >= 0) points[std::size_t(set)].emplace_back(w.speed[i], w.force[i]);

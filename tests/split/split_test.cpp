@@ -4,7 +4,7 @@
 #include <random>
 #include <set>
 
-#include "align/window_table.hpp"
+#include "dataset/window.hpp"
 #include "core/error.hpp"
 #include "core/json/schema.hpp"
 #include "split/coverage.hpp"
@@ -52,7 +52,7 @@ MaterialWindows wandering(const std::string& id, bool ring = false) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<float> unit(0, 1);
   for (int r = 0; r < 2; ++r)
-    for (std::int64_t t : align::window_starts(100000, 100)) {
+    for (std::int64_t t : dataset::window_starts(100000, 100)) {
       m.recording.push_back(r);
       m.start.push_back(t);
       const float angle = 2 * float(M_PI) * float(t) / 100000.0f;
@@ -79,7 +79,7 @@ TEST(SplitSearch, SetsAreDisjointCoveredAndSeeded) {
     EXPECT_EQ(s.presses.test.size(), 1u);
     // Sections are 4000 samples here: a window crosses one when its first and last samples differ in t / 4000.
     std::size_t crossing = 0;
-    for (std::int64_t t : materials[0].start) crossing += align::window_first_sample(t) / 4000 != (align::window_end_sample(t) - 1) / 4000;
+    for (std::int64_t t : materials[0].start) crossing += dataset::window_first_sample(t) / 4000 != (dataset::window_end_sample(t) - 1) / 4000;
     EXPECT_EQ(s.train_windows + s.val_windows + s.test_windows + s.crossing_windows, materials[0].start.size());
     EXPECT_EQ(s.crossing_windows, crossing);
   }

@@ -1,0 +1,69 @@
+#include "dataset/format.hpp"
+
+#include <array>
+
+#include "core/error.hpp"
+
+namespace haptex::dataset {
+namespace {
+
+constexpr std::array kFormats{
+    Format{Kind::recordings, "recordings", 1, "haptex convert", ""},
+    Format{Kind::gelsight, "gelsight", 1, "haptex capture extract", ""},
+    Format{Kind::dataset, "dataset", 2, "haptex align", "its windows' action lies before the window (dataset/2 takes it at the window's middle)"},
+    Format{Kind::model, "model", 2, "haptex train", "it was trained on the action before its window (model/2 takes it at the window's middle)"},
+    Format{Kind::truth, "truth", 2, "haptex synth", "it does not record what generated each recording"},
+    Format{Kind::press, "press", 1, "haptex capture record", ""},
+};
+
+std::string_view family_of(std::string_view name) { return name.substr(0, name.find('/')); }
+
+}  // namespace
+
+const Format& format_of(Kind kind) {
+  for (const Format& f : kFormats)
+    if (f.kind == kind) return f;
+  throw failure("format_of: unknown kind");
+}
+
+std::string format_name(Kind kind) {
+  const Format& f = format_of(kind);
+  return std::string(f.family) + "/" + std::to_string(f.version);
+}
+
+std::optional<Kind> kind_named(std::string_view name) {
+  for (const Format& f : kFormats)
+    if (format_name(f.kind) == name) return f.kind;
+  return std::nullopt;
+}
+
+std::string read_format(const h5::File& file) {
+  const h5::Group root = file.root();
+  if (!root.has_attr("haptex_format"))
+    throw input_error(file.path(), "/", "no haptex_format attribute: the file was not written by haptex",
+                      "Give a file haptex wrote (haptex info FILE tells what a file is)");
+  try {
+    return root.attr_string("haptex_format");
+  } catch (const Error&) {
+    throw input_error(file.path(), "/@haptex_format", "is not a string", "Write the file again with haptex");
+  }
+}
+
+h5::File open_checked(const std::string& path, Kind kind) {
+  h5::File file = h5::File::open(path);
+  const Format& want = format_of(kind);
+  const std::string wanted = format_name(kind);
+  const std::string give = "Give the file " + std::string(want.written_by) + " wrote";
+  if (!file.root().has_attr("haptex_format"))
+    throw input_error(path, "/", "no haptex_format attribute: not a " + wanted + " file haptex wrote", give);
+  const std::string found = read_format(file);
+  if (found == wanted) return file;
+  if (family_of(found) == want.family && !want.older.empty())
+    throw input_error(path, "/@haptex_format", "is " + found + ", written by an older haptex: " + std::string(want.older),
+                      "Run " + std::string(want.written_by) + " again to write " + wanted);
+  throw input_error(path, "/@haptex_format", "is '" + found + "', not " + wanted, give);
+}
+
+void stamp(h5::Group root, Kind kind, const std::string& source) { h5::stamp_root(root, format_name(kind), source); }
+
+}  // namespace haptex::dataset

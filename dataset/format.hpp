@@ -1,0 +1,41 @@
+#pragma once
+// The files haptex writes, by format: the root attribute haptex_format names the kind and its
+// version ("dataset/2"), and every reader opens a file through open_checked, so a file of another
+// kind or an older version is refused in one place, with the file and the fix
+// (schemas/hdf5-layout.md; docs/architecture.md, "Formats").
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "core/h5/file.hpp"
+
+namespace haptex::dataset {
+
+enum class Kind { recordings, gelsight, dataset, model, truth, press };
+
+struct Format {
+  Kind kind;
+  std::string_view family;      // "dataset"
+  int version;                  // the version this haptex writes and reads
+  std::string_view written_by;  // "haptex align"
+  std::string_view older;       // why an older version is refused ("" when there was none)
+};
+
+const Format& format_of(Kind kind);
+std::string format_name(Kind kind);  // "dataset/2"
+// The kind whose current format is `name` exactly; nullopt for anything else.
+std::optional<Kind> kind_named(std::string_view name);
+
+// The file's /@haptex_format. Throws haptex::Error (bad_input) naming the file when the attribute
+// is missing (not a haptex file) or not a string.
+std::string read_format(const h5::File& file);
+
+// Opens path and checks it is a file of `kind` in the current version. Throws haptex::Error
+// (bad_input) naming the file and /@haptex_format: not HDF5, not a haptex file, another kind, or
+// an older version (saying what changed and which command writes the current one).
+h5::File open_checked(const std::string& path, Kind kind);
+
+// The root attributes every haptex file carries (core/h5/file.hpp, stamp_root) for `kind`.
+void stamp(h5::Group root, Kind kind, const std::string& source);
+
+}  // namespace haptex::dataset

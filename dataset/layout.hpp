@@ -1,0 +1,46 @@
+#pragma once
+// The names of the objects in haptex's HDF5 files, one home for each (schemas/hdf5-layout.md is
+// the specification; `haptex qa` checks files against it). Code names an object through these,
+// never by a string of its own.
+namespace haptex::dataset::layout {
+
+// Every file with materials: /materials/{material}/...
+inline constexpr const char* kMaterials = "materials";
+inline constexpr const char* kName = "name";  // attribute: the material's name as the source spells it
+
+// Recordings file (convert), and the dataset's copy: /materials/{material}/recordings/{k}/...
+inline constexpr const char* kRecordings = "recordings";
+inline constexpr const char* kAccel = "accel";                        // DFT321, m/s^2
+inline constexpr const char* kAccelXyz = "accel_xyz";                 // the three axes
+inline constexpr const char* kForceNormal = "force_normal";           // N, unfiltered
+inline constexpr const char* kForceNormalLp = "force_normal_lp";      // N, 20 Hz zero-phase low-passed
+inline constexpr const char* kForceTangential = "force_tangential";   // N, optional
+inline constexpr const char* kSpeed = "speed";                        // mm/s, unfiltered
+inline constexpr const char* kSpeedLp = "speed_lp";                   // mm/s, low-passed
+inline constexpr const char* kPosition = "position";                  // mm, optional
+inline constexpr const char* kSampleRate = "sample_rate_hz";          // attribute of a recording
+inline constexpr const char* kSourceSha256 = "source_sha256";         // attribute: the source file's hash
+
+// Gelsight file (capture extract), and the dataset's copy: /materials/{material}/presses/{j}/...
+inline constexpr const char* kPresses = "presses";
+inline constexpr const char* kReference = "reference";        // no-contact frame
+inline constexpr const char* kPeak = "peak";                  // the press's highest-scoring frame
+inline constexpr const char* kPeakIndex = "peak_index";
+inline constexpr const char* kFrames = "frames";              // the 12 frames around the peak
+inline constexpr const char* kFrameIndices = "frame_indices";
+inline constexpr const char* kContrast = "contrast";          // per-frame contact score
+
+// Dataset file (align): the model's windows, /windows/...
+inline constexpr const char* kWindows = "windows";
+inline constexpr const char* kWindowMaterials = "materials";  // material ids, indexed by kWindowMaterial
+inline constexpr const char* kWindowMaterial = "material";
+inline constexpr const char* kWindowRecording = "recording";
+inline constexpr const char* kWindowStart = "start";
+inline constexpr const char* kWindowAction = "action";
+inline constexpr const char* kWindowTarget = "target";
+inline constexpr const char* kStride = "stride";                    // attributes of /windows
+inline constexpr const char* kActionSamplesAttr = "action_samples";
+inline constexpr const char* kWindowSamplesAttr = "window_samples";
+inline constexpr const char* kActionEndAttr = "action_end";
+
+}  // namespace haptex::dataset::layout

@@ -1,0 +1,69 @@
+// One place checks what kind of haptex file a reader was given (dataset/format.hpp).
+#include "dataset/format.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/h5/atomic_file.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::dataset {
+namespace {
+
+std::string file_with_format(const test::TempDir& dir, const std::string& name, const std::string& format) {
+  const std::string path = dir.file(name);
+  h5::AtomicFile out(path, false);
+  if (!format.empty()) h5::stamp_root(out.root(), format, "test");
+  out.commit();
+  return path;
+}
+
+std::string refusal(const std::string& path, Kind kind) {
+  try {
+    open_checked(path, kind);
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Format, NamesAndKindsAgree) {
+  EXPECT_EQ(format_name(Kind::dataset), "dataset/2");
+  EXPECT_EQ(format_name(Kind::recordings), "recordings/1");
+  EXPECT_EQ(format_name(Kind::model), "model/2");
+  for (Kind k : {Kind::recordings, Kind::gelsight, Kind::dataset, Kind::model, Kind::truth, Kind::press})
+    EXPECT_EQ(kind_named(format_name(k)), k);
+  EXPECT_FALSE(kind_named("dataset/1"));
+  EXPECT_FALSE(kind_named("dataset"));
+}
+
+TEST(Format, OpensTheRightKindAndRefusesEveryOtherWithTheFix) {
+  const test::TempDir dir;
+  const std::string name = "it's \"a\" `file`.h5";  // quotes and back-quotes reach no shell
+  EXPECT_NO_THROW(open_checked(file_with_format(dir, name, "dataset/2"), Kind::dataset));
+
+  const std::string older = refusal(file_with_format(dir, "old.h5", "dataset/1"), Kind::dataset);
+  EXPECT_NE(older.find("old.h5"), std::string::npos) << older;
+  EXPECT_NE(older.find("/@haptex_format"), std::string::npos) << older;
+  EXPECT_NE(older.find("older haptex"), std::string::npos) << older;
+  EXPECT_NE(older.find("haptex align again"), std::string::npos) << older;
+
+  const std::string other = refusal(file_with_format(dir, "rec.h5", "recordings/1"), Kind::dataset);
+  EXPECT_NE(other.find("'recordings/1', not dataset/2"), std::string::npos) << other;
+  EXPECT_NE(other.find("haptex align wrote"), std::string::npos) << other;
+
+  const std::string plain = refusal(file_with_format(dir, "plain.h5", ""), Kind::model);
+  EXPECT_NE(plain.find("no haptex_format"), std::string::npos) << plain;
+  EXPECT_NE(plain.find("haptex train"), std::string::npos) << plain;
+
+  std::ofstream(dir.file("text.h5")) << "not HDF5";
+  EXPECT_NE(refusal(dir.file("text.h5"), Kind::gelsight).find("text.h5"), std::string::npos);
+  EXPECT_NE(refusal(dir.file("missing.h5"), Kind::gelsight).find("missing.h5"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace haptex::dataset
