@@ -10,6 +10,7 @@
 #include "convert/recordings_writer.hpp"
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
+#include "dataset/format.hpp"
 
 namespace haptex::convert {
 namespace fs = std::filesystem;
@@ -66,7 +67,7 @@ ConvertResult convert_recordings(const std::vector<std::string>& inputs, const s
   const FieldMap map = options.map_path ? load_field_map(*options.map_path) : default_field_map();
   const std::vector<std::string> files = expand_inputs(inputs);
   h5::AtomicFile out(output, options.overwrite);
-  h5::stamp_root(out.root(), kRecordingsFormat, options.provenance);
+  dataset::stamp(out.root(), dataset::Kind::recordings, options.provenance);
   out.root().set_attr("field_map", map.origin);
 
   ConvertResult result;

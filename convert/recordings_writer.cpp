@@ -5,8 +5,11 @@
 #include "core/signal/butterworth.hpp"
 #include "core/signal/dft321.hpp"
 #include "core/signal/sosfilt.hpp"
+#include "dataset/layout.hpp"
 
 namespace haptex::convert {
+
+namespace layout = dataset::layout;
 namespace {
 
 // Samples are stored as float32: 24 bits of mantissa is beyond any accelerometer's or force
@@ -46,11 +49,11 @@ WrittenRecording write_recording(h5::Group root, const Recording& r) {
                       "Name the material with at least one ASCII letter or digit");
   // Names that differ only in case, spaces, '_' or '-' are one material (as `haptex align` joins them);
   // the first spelling is kept.
-  h5::Group materials = root.require_group("materials");
+  h5::Group materials = root.require_group(layout::kMaterials);
   const bool first = !materials.has_group(written.material_id);
   h5::Group material = materials.require_group(written.material_id);
   if (first) material.set_attr("name", r.material);
-  h5::Group recordings = material.require_group("recordings");
+  h5::Group recordings = material.require_group(layout::kRecordings);
   written.index = static_cast<int>(recordings.children().size());
   h5::Group g = recordings.create_group(std::to_string(written.index));
 
@@ -72,19 +75,19 @@ WrittenRecording write_recording(h5::Group root, const Recording& r) {
   if (r.texture) g.set_attr("hatt_texture", *r.texture);
 
   const std::string accel_units = r.units.at("accel"), force_units = r.units.at("force");
-  write_signal(g, "accel", narrow(signal::dft321(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z"))), {n},
+  write_signal(g, layout::kAccel, narrow(signal::dft321(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z"))), {n},
                accel_units, "tool acceleration, three axes reduced to one with DFT321");
-  write_signal(g, "accel_xyz", interleave(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z")), {n, 3}, accel_units,
+  write_signal(g, layout::kAccelXyz, interleave(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z")), {n, 3}, accel_units,
                "raw tool acceleration, columns x, y, z");
-  write_signal(g, "force_normal", narrow(ch.at("force_normal")), {n}, force_units, "normal force, unfiltered");
-  write_signal(g, "speed", narrow(ch.at("speed")), {n}, r.units.at("speed"), "tangential speed, unfiltered");
-  write_lowpassed(g, "force_normal_lp", ch.at("force_normal"), force_units, "normal force");
-  write_lowpassed(g, "speed_lp", ch.at("speed"), r.units.at("speed"), "tangential speed");
-  if (r.has("force_tangential"))
-    write_signal(g, "force_tangential", narrow(ch.at("force_tangential")), {n}, force_units,
+  write_signal(g, layout::kForceNormal, narrow(ch.at(layout::kForceNormal)), {n}, force_units, "normal force, unfiltered");
+  write_signal(g, layout::kSpeed, narrow(ch.at(layout::kSpeed)), {n}, r.units.at("speed"), "tangential speed, unfiltered");
+  write_lowpassed(g, layout::kForceNormalLp, ch.at(layout::kForceNormal), force_units, "normal force");
+  write_lowpassed(g, layout::kSpeedLp, ch.at(layout::kSpeed), r.units.at("speed"), "tangential speed");
+  if (r.has(layout::kForceTangential))
+    write_signal(g, layout::kForceTangential, narrow(ch.at(layout::kForceTangential)), {n}, force_units,
                  "tangential (friction) force, unfiltered");
   if (r.has("position_x"))
-    write_signal(g, "position", interleave(ch.at("position_x"), ch.at("position_y"), ch.at("position_z")), {n, 3},
+    write_signal(g, layout::kPosition, interleave(ch.at("position_x"), ch.at("position_y"), ch.at("position_z")), {n, 3},
                  r.units.at("position"), "tool position, columns x, y, z");
   return written;
 }

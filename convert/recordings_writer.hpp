@@ -9,7 +9,6 @@
 
 namespace haptex::convert {
 
-inline constexpr const char* kRecordingsFormat = "recordings/1";
 inline constexpr int kLowpassOrder = 4;
 inline constexpr double kLowpassCutoffHz = 20.0;
 

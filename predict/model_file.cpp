@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
+#include "dataset/format.hpp"
 
 namespace haptex::predict {
 namespace {
@@ -170,7 +171,7 @@ void check_nets(const Model& m, const std::string& path) {
 void write_model(const Model& model, const std::string& path, bool overwrite, const std::string& source) {
   h5::AtomicFile out(path, overwrite);
   h5::Group root = out.root();
-  h5::stamp_root(root, kModelFormat, source);
+  dataset::stamp(root, dataset::Kind::model, source);
   root.set_attr("variant", variant_name(model.variant));
   root.set_attr("dataset_sha256", model.dataset_sha256);
   root.set_attr("split_sha256", model.split_sha256);
@@ -196,11 +197,8 @@ void write_model(const Model& model, const std::string& path, bool overwrite, co
 }
 
 Model read_model(const std::string& path) {
-  const h5::File file = h5::File::open(path);
+  const h5::File file = dataset::open_checked(path, dataset::Kind::model);
   const h5::Group root = file.root();
-  if (!root.has_attr("haptex_format") || root.attr_string("haptex_format") != kModelFormat)
-    throw input_error(path, "/", "not a model file (" + std::string(kModelFormat) + ")",
-                      "Give the file haptex train wrote; a model/1 file (the action before its window) needs training again");
   const Reader r{path};
   Model m;
   const std::string variant = root.attr_string("variant");

@@ -10,7 +10,6 @@
 namespace haptex::predict {
 
 // 2: the action at the window's middle, a new press recognised (1: the action before the window).
-inline constexpr const char* kModelFormat = "model/2";
 
 // Written to PATH.partial and renamed (core/h5/atomic_file.hpp). Throws haptex::Error (bad_input)
 // when the output exists and overwrite is false.

@@ -5,15 +5,18 @@
 #include <optional>
 #include <set>
 
-#include "dataset/window.hpp"
 #include "core/parallel.hpp"
 #include "core/signal/spectrum.hpp"
+#include "dataset/layout.hpp"
+#include "dataset/window.hpp"
 #include "qa/checkers.hpp"
 #include "qa/recording_data.hpp"
 #include "qa/thresholds.hpp"
 #include "qa/window_table.hpp"
 
 namespace haptex::qa {
+
+namespace layout = dataset::layout;
 namespace {
 
 std::string window_where(const WindowTable& t, std::size_t w) {
@@ -94,8 +97,8 @@ void check_material_list(const h5::Group& root, const WindowTable& t, CheckTally
   std::set<std::string> listed;
   for (const auto& id : t.materials)
     if (!listed.insert(id).second) tally.fail("/windows/materials", "'" + id + "' is listed twice");
-  if (root.has_group("materials"))
-    for (const auto& id : root.open_group("materials").children())
+  if (root.has_group(layout::kMaterials))
+    for (const auto& id : root.open_group(layout::kMaterials).children())
       if (!listed.count(id)) tally.fail("/materials/" + id, "has no windows in /windows");
 }
 
@@ -139,7 +142,7 @@ std::string cache_mismatch(const WindowTable& t, std::size_t w, const CacheSourc
 void judge_cache(const h5::Group& root, const WindowTable& t, const WindowRun& run, CheckTally& tally) {
   const std::string path = "/materials/" + t.materials[std::size_t(run.material)] + "/recordings/" + std::to_string(run.recording);
   const LoadedRecording r = load_recording(root, path);
-  const Signal &force = r.signals.at("force_normal_lp"), &speed = r.signals.at("speed_lp"), &accel = r.signals.at("accel");
+  const Signal &force = r.signals.at(layout::kForceNormalLp), &speed = r.signals.at(layout::kSpeedLp), &accel = r.signals.at(layout::kAccel);
   if (!force.ok() || !speed.ok() || !accel.ok()) return tally.skip(path + ": force_normal_lp, speed_lp or accel unreadable");
   const auto tolerance = [](const Signal& s) { return kCacheTolerance * std::max(1e-12, max_abs(s.values)); };
   const CacheSource source{force, speed, accel, tolerance(force), tolerance(speed), tolerance(accel)};

@@ -2,9 +2,12 @@
 #include <span>
 
 #include "core/sha256.hpp"
+#include "dataset/layout.hpp"
 #include "qa/recording_checks.hpp"
 
 namespace haptex::qa {
+
+namespace layout = dataset::layout;
 namespace {
 
 using Hashes = std::vector<std::pair<std::string, std::string>>;
@@ -31,7 +34,7 @@ std::string data_hash(const Signal& s) {
 }  // namespace
 
 void check_recordings_duplicate(const LoadedRecording& r, CheckTally& tally, SeenHashes& seen) {
-  const Signal& accel = r.signals.at("accel_xyz").ok() ? r.signals.at("accel_xyz") : r.signals.at("accel");
+  const Signal& accel = r.signals.at(layout::kAccelXyz).ok() ? r.signals.at(layout::kAccelXyz) : r.signals.at(layout::kAccel);
   if (!r.source_sha256 && !accel.ok()) return tally.skip(r.path + ": neither source_sha256 nor acceleration to compare");
   std::string problem;
   if (r.source_sha256 && !r.source_sha256->empty())

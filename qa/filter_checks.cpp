@@ -3,11 +3,14 @@
 #include <optional>
 #include <sstream>
 
+#include "dataset/layout.hpp"
 #include "qa/band_power.hpp"
 #include "qa/recording_checks.hpp"
 #include "qa/thresholds.hpp"
 
 namespace haptex::qa {
+
+namespace layout = dataset::layout;
 namespace {
 
 std::string scientific(double value) {
@@ -36,7 +39,7 @@ std::optional<double> share_above_filter_band(const LoadedRecording& r, const st
 }  // namespace
 
 void check_filter_lowpass(const LoadedRecording& r, CheckTally& tally, Seen& share_above) {
-  for (const std::string name : {"force_normal_lp", "speed_lp"}) {
+  for (const std::string name : {layout::kForceNormalLp, layout::kSpeedLp}) {
     const std::optional<double> share = share_above_filter_band(r, name, tally);
     if (!share) continue;
     share_above.add(*share);
@@ -49,7 +52,7 @@ void check_filter_lowpass(const LoadedRecording& r, CheckTally& tally, Seen& sha
 }
 
 void check_filter_raw(const LoadedRecording& r, CheckTally& tally, Seen& share_above) {
-  for (const std::string name : {"force_normal", "speed"}) {
+  for (const std::string name : {layout::kForceNormal, layout::kSpeed}) {
     const std::optional<double> share = share_above_filter_band(r, name, tally);
     if (!share) continue;
     share_above.add(*share);

@@ -10,9 +10,12 @@
 #include "capture/recording/image_datasets.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "dataset/layout.hpp"
 #include "qa/thresholds.hpp"
 
 namespace haptex::qa {
+
+namespace layout = dataset::layout;
 namespace {
 
 double laplacian_variance(const cv::Mat& bgr) {
@@ -86,8 +89,8 @@ Press summarize_press(const h5::Group& g, std::string path, std::string material
   p.material = std::move(material);
   p.trigger = number_attr(g, "trigger");
   p.pixel_threshold = number_attr(g, "pixel_threshold");
-  const std::optional<cv::Mat> reference = read_single(g, "reference"), peak = read_single(g, "peak");
-  const std::vector<cv::Mat> frames = read_stack(g, "frames");
+  const std::optional<cv::Mat> reference = read_single(g, layout::kReference), peak = read_single(g, layout::kPeak);
+  const std::vector<cv::Mat> frames = read_stack(g, layout::kFrames);
   std::vector<cv::Size> sizes;
   if (reference) {
     p.has_reference = true;
@@ -128,14 +131,14 @@ Press summarize_press(const h5::Group& g, std::string path, std::string material
 
 GelsightPresses read_presses(const h5::Group& root) {
   GelsightPresses file;
-  if (!root.has_group("materials")) return file;
-  const h5::Group materials = root.open_group("materials");
+  if (!root.has_group(layout::kMaterials)) return file;
+  const h5::Group materials = root.open_group(layout::kMaterials);
   for (const auto& id : materials.children()) {
     if (!materials.has_group(id)) continue;
     const h5::Group material = materials.open_group(id);
     std::size_t& count = file.per_material[id];
-    if (!material.has_group("presses")) continue;
-    const h5::Group group = material.open_group("presses");
+    if (!material.has_group(layout::kPresses)) continue;
+    const h5::Group group = material.open_group(layout::kPresses);
     for (const auto& j : group.children()) {
       if (!group.has_group(j)) continue;
       file.presses.push_back(summarize_press(group.open_group(j), "/materials/" + id + "/presses/" + j, id));

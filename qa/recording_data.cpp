@@ -1,9 +1,12 @@
 #include "qa/recording_data.hpp"
 
 #include "core/error.hpp"
+#include "dataset/layout.hpp"
 #include "qa/thresholds.hpp"
 
 namespace haptex::qa {
+
+namespace layout = dataset::layout;
 namespace {
 
 template <typename T>
@@ -46,9 +49,9 @@ Signal read_signal(const h5::Group& group, const std::string& name, std::size_t 
 }  // namespace
 
 const std::vector<SignalSpec> kSignalSpecs = {
-    {"accel", 1, false},       {"accel_xyz", 3, false},        {"force_normal", 1, false},
-    {"force_normal_lp", 1, false}, {"speed", 1, false},        {"speed_lp", 1, false},
-    {"force_tangential", 1, true}, {"position", 3, true},
+    {layout::kAccel, 1, false},       {layout::kAccelXyz, 3, false},        {layout::kForceNormal, 1, false},
+    {layout::kForceNormalLp, 1, false}, {layout::kSpeed, 1, false},        {layout::kSpeedLp, 1, false},
+    {layout::kForceTangential, 1, true}, {layout::kPosition, 3, true},
 };
 
 std::vector<double> Signal::column(std::size_t c) const {
@@ -63,13 +66,13 @@ double LoadedRecording::analysis_rate() const {
 
 std::vector<std::string> recording_paths(const h5::Group& root) {
   std::vector<std::string> paths;
-  if (!root.has_group("materials")) return paths;
-  const h5::Group materials = root.open_group("materials");
+  if (!root.has_group(layout::kMaterials)) return paths;
+  const h5::Group materials = root.open_group(layout::kMaterials);
   for (const auto& id : materials.children()) {
     if (!materials.has_group(id)) continue;
     const h5::Group material = materials.open_group(id);
-    if (!material.has_group("recordings")) continue;
-    const h5::Group recordings = material.open_group("recordings");
+    if (!material.has_group(layout::kRecordings)) continue;
+    const h5::Group recordings = material.open_group(layout::kRecordings);
     for (const auto& k : recordings.children())
       if (recordings.has_group(k)) paths.push_back("/materials/" + id + "/recordings/" + k);
   }

@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dataset/layout.hpp"
 #include "qa/band_power.hpp"
 #include "qa/recording_checks.hpp"
 #include "qa/thresholds.hpp"
 
 namespace haptex::qa {
+
+namespace layout = dataset::layout;
 namespace {
 
 // "NAME has N NaN/Inf values, the first at ..."; empty when every value is finite.
@@ -49,12 +52,12 @@ std::size_t flat_top_samples(const std::vector<double>& x) {
 
 // The three axes and their reduction, by name.
 std::vector<std::pair<std::string, std::vector<double>>> acceleration_channels(const LoadedRecording& r) {
-  const Signal& xyz = r.signals.at("accel_xyz");
-  const Signal& accel = r.signals.at("accel");
+  const Signal& xyz = r.signals.at(layout::kAccelXyz);
+  const Signal& accel = r.signals.at(layout::kAccel);
   std::vector<std::pair<std::string, std::vector<double>>> channels;
   if (xyz.ok())
     for (std::size_t c = 0; c < 3; ++c) channels.emplace_back("accel_xyz[:, " + std::to_string(c) + "]", xyz.column(c));
-  if (accel.ok()) channels.emplace_back("accel", accel.values);
+  if (accel.ok()) channels.emplace_back(layout::kAccel, accel.values);
   return channels;
 }
 
@@ -167,15 +170,15 @@ void check_signal_clipping(const LoadedRecording& r, CheckTally& tally, Seen& fl
 }
 
 void check_signal_force_range(const LoadedRecording& r, CheckTally& tally, Seen& force) {
-  check_range(r, {"force_normal", kForceMinN, kForceMaxN, kForcePeakAtLeastN, "N"}, tally, force);
+  check_range(r, {layout::kForceNormal, kForceMinN, kForceMaxN, kForcePeakAtLeastN, "N"}, tally, force);
 }
 
 void check_signal_speed_range(const LoadedRecording& r, CheckTally& tally, Seen& speed) {
-  check_range(r, {"speed", kSpeedMinMmS, kSpeedMaxMmS, kSpeedPeakAtLeastMmS, "mm/s"}, tally, speed);
+  check_range(r, {layout::kSpeed, kSpeedMinMmS, kSpeedMaxMmS, kSpeedPeakAtLeastMmS, "mm/s"}, tally, speed);
 }
 
 void check_signal_accel_spectrum(const LoadedRecording& r, CheckTally& tally, Seen& band_share) {
-  const Signal& accel = r.signals.at("accel");
+  const Signal& accel = r.signals.at(layout::kAccel);
   if (!accel.ok()) return tally.skip(r.path + "/accel " + accel.problem);
   const BandPower p = band_power(accel.values, r.analysis_rate(), kAccelBandLowHz, kAccelBandHighHz);
   if (!std::isfinite(p.total)) return tally.skip(r.path + "/accel is not finite");
@@ -191,8 +194,8 @@ void check_signal_accel_spectrum(const LoadedRecording& r, CheckTally& tally, Se
 
 // Judged by the window furthest from the axes' energy (on a log scale: half and double are as far).
 void check_signal_reduction_energy(const LoadedRecording& r, CheckTally& tally, Seen& energy_ratio) {
-  const Signal& accel = r.signals.at("accel");
-  const Signal& xyz = r.signals.at("accel_xyz");
+  const Signal& accel = r.signals.at(layout::kAccel);
+  const Signal& xyz = r.signals.at(layout::kAccelXyz);
   if (!accel.ok() || !xyz.ok()) return tally.skip(r.path + ": accel or accel_xyz unreadable");
   std::pair<std::size_t, double> worst{0, 1.0};
   for (const auto& [start, ratio] : reduction_ratios(accel, xyz)) {

@@ -1,8 +1,11 @@
 #include "qa/window_table.hpp"
 
 #include "core/error.hpp"
+#include "dataset/layout.hpp"
 
 namespace haptex::qa {
+
+namespace layout = dataset::layout;
 namespace {
 
 template <typename T>
@@ -43,17 +46,17 @@ std::optional<std::int64_t> int_attr(const h5::Node& node, const char* name) {
 }  // namespace
 
 std::optional<WindowTable> load_window_table(const h5::Group& root, std::string& problem) {
-  if (!root.has_group("windows")) {
+  if (!root.has_group(layout::kWindows)) {
     problem = "/windows is missing";
     return std::nullopt;
   }
-  const h5::Group windows = root.open_group("windows");
+  const h5::Group windows = root.open_group(layout::kWindows);
   WindowTable t;
-  if (!windows.has_dataset("materials") || windows.open_dataset("materials").dtype() != "string") {
+  if (!windows.has_dataset(layout::kMaterials) || windows.open_dataset(layout::kMaterials).dtype() != "string") {
     problem = "/windows/materials is missing or not strings";
     return std::nullopt;
   }
-  t.materials = windows.open_dataset("materials").read_strings();
+  t.materials = windows.open_dataset(layout::kMaterials).read_strings();
   if (!read_column(windows, "material", t.material, problem) || !read_column(windows, "recording", t.recording, problem) ||
       !read_column(windows, "start", t.start, problem))
     return std::nullopt;
@@ -80,9 +83,9 @@ std::optional<WindowTable> load_window_table(const h5::Group& root, std::string&
 
 std::optional<std::int64_t> recording_samples(const h5::Group& root, const std::string& material, std::int32_t recording) {
   const std::string path = "materials/" + material + "/recordings/" + std::to_string(recording);
-  if (material.empty() || material.find('/') != std::string::npos || recording < 0 || !root.has_group("materials") ||
-      !root.open_group("materials").has_group(material) ||
-      !root.open_group("materials/" + material).has_group("recordings") ||
+  if (material.empty() || material.find('/') != std::string::npos || recording < 0 || !root.has_group(layout::kMaterials) ||
+      !root.open_group(layout::kMaterials).has_group(material) ||
+      !root.open_group("materials/" + material).has_group(layout::kRecordings) ||
       !root.open_group("materials/" + material + "/recordings").has_group(std::to_string(recording)))
     return std::nullopt;
   return int_attr(root.open_group(path), "samples");

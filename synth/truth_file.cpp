@@ -9,6 +9,7 @@
 #include "core/h5/atomic_file.hpp"
 #include "core/naming.hpp"
 #include "core/sha256.hpp"
+#include "dataset/format.hpp"
 
 namespace haptex::synth {
 namespace {
@@ -222,16 +223,6 @@ struct Reader {
   }
 };
 
-void check_format(const h5::Group& root, const std::string& path) {
-  const std::string format = root.has_attr("haptex_format") ? root.attr_string("haptex_format") : "";
-  if (format == kTruthFormat) return;
-  if (format == "truth/1")
-    throw input_error(path, "/@haptex_format", "is truth/1",
-                      "Run haptex synth again: truth/1 files do not record what generated each recording");
-  throw input_error(path, "/@haptex_format", format.empty() ? "is missing: not a truth file" : "is '" + format + "', not truth/2",
-                    "Give the truth.h5 that haptex synth hatt or haptex synth materials wrote");
-}
-
 }  // namespace
 
 const MaterialTruth* Truth::find(const std::string& id) const {
@@ -242,7 +233,7 @@ const MaterialTruth* Truth::find(const std::string& id) const {
 void write_truth_file(const std::string& path, const Truth& truth, const std::string& source) {
   h5::AtomicFile out(path, true);
   h5::Group root = out.root();
-  h5::stamp_root(root, kTruthFormat, source);
+  dataset::stamp(root, dataset::Kind::truth, source);
   root.set_attr("sample_rate_hz", truth.sample_rate_hz);
   root.set_attr("accel_noise_m_s2", truth.accel_noise_m_s2);
   h5::Group all = root.create_group("materials");
@@ -257,9 +248,8 @@ void write_truth_file(const std::string& path, const Truth& truth, const std::st
 }
 
 Truth read_truth_file(const std::string& path) {
-  const h5::File file = h5::File::open(path);
+  const h5::File file = dataset::open_checked(path, dataset::Kind::truth);
   const h5::Group root = file.root();
-  check_format(root, path);
   const Reader r{path};
   Truth truth;
   truth.sample_rate_hz = r.magnitude(root, "sample_rate_hz", true);

@@ -9,7 +9,6 @@
 
 namespace haptex::synth {
 
-inline constexpr const char* kTruthFormat = "truth/2";
 
 // A material's noise-free expected amplitude spectrum (100 bins, 10..1000 Hz, of 1000-sample
 // windows; the vibration before sensor noise) on a grid of constant speeds and forces.

@@ -3,8 +3,12 @@
 #include "capture/recording/image_datasets.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"
+#include "dataset/format.hpp"
+#include "dataset/layout.hpp"
 
 namespace haptex::capture {
+
+namespace layout = dataset::layout;
 namespace {
 
 void set_press_attributes(h5::Group& g, const GelsightPress& p) {
@@ -41,7 +45,7 @@ void set_description(h5::Dataset d, const std::string& units, const std::string&
 
 GelsightWriter::GelsightWriter(const std::string& path, bool overwrite, const std::string& provenance)
     : file_(path, overwrite) {
-  h5::stamp_root(file_.root(), "gelsight/1", provenance);
+  dataset::stamp(file_.root(), dataset::Kind::gelsight, provenance);
 }
 
 int GelsightWriter::add_press(const std::string& material_name, const GelsightPress& p) {
@@ -50,23 +54,23 @@ int GelsightWriter::add_press(const std::string& material_name, const GelsightPr
     throw input_error(p.source_file, "material name",
                       "'" + material_name + "' has no letters or digits to make a material id from",
                       "Name the material's folder (or --material) with at least one ASCII letter or digit");
-  h5::Group materials = file_.root().require_group("materials");
+  h5::Group materials = file_.root().require_group(layout::kMaterials);
   const bool first = !materials.has_group(id);
   h5::Group material = materials.require_group(id);
   if (first) material.set_attr("name", material_name);  // the first spelling of a name is kept
-  h5::Group presses = material.require_group("presses");
+  h5::Group presses = material.require_group(layout::kPresses);
   const int j = int(presses.children().size());
   h5::Group g = presses.create_group(std::to_string(j));
   set_press_attributes(g, p);
-  write_image(g, "reference", p.reference, "no-contact reference (" + p.reference_note + ")");
-  write_image(g, "peak", p.peak, "the press's highest-scoring frame");
-  // A scalar dataset: one number, as h5py users expect (f[...]["peak_index"][()]).
-  set_description(g.write_array<std::int64_t>("peak_index", std::span<const std::int64_t>(&p.peak_index, 1), {},
+  write_image(g, layout::kReference, p.reference, "no-contact reference (" + p.reference_note + ")");
+  write_image(g, layout::kPeak, p.peak, "the press's highest-scoring frame");
+  // A scalar dataset: one number, as h5py users expect (f[...][layout::kPeakIndex][()]).
+  set_description(g.write_array<std::int64_t>(layout::kPeakIndex, std::span<const std::int64_t>(&p.peak_index, 1), {},
                                               h5::DatasetOptions{.compress = false, .gzip_level = 0, .chunk = {}}),
                   "", "frame number of the peak in the source file");
-  write_image_stack(g, "frames", p.frames, "the peak and its neighbours: consecutive frames of the source");
-  set_description(g.write("frame_indices", p.frame_indices), "", "frame numbers of `frames` in the source file");
-  set_description(g.write("contrast", p.contrast), "grey levels",
+  write_image_stack(g, layout::kFrames, p.frames, "the peak and its neighbours: consecutive frames of the source");
+  set_description(g.write(layout::kFrameIndices, p.frame_indices), "", "frame numbers of `frames` in the source file");
+  set_description(g.write(layout::kContrast, p.contrast), "grey levels",
                   "contact score of each frame from frame_start to frame_end (docs/capture.md)");
   return j;
 }

@@ -6,20 +6,21 @@
 #include "capture/recording/image_datasets.hpp"
 #include "capture/recording/vlen_bytes.hpp"
 #include "core/error.hpp"
-#include "core/sha256.hpp"
 #include "core/h5/file.hpp"
+#include "core/sha256.hpp"
+#include "dataset/format.hpp"
+#include "dataset/layout.hpp"
 
 namespace haptex::capture {
+
+namespace layout = dataset::layout;
 namespace {
 
 class PressFileSource : public FrameSource {
  public:
-  explicit PressFileSource(std::string path) : path_(std::move(path)), file_(h5::File::open(path_)) {
+  explicit PressFileSource(std::string path) : path_(std::move(path)), file_(dataset::open_checked(path_, dataset::Kind::press)) {
     const h5::Group root = file_.root();
-    if (!root.has_attr("haptex_format") || root.attr_string("haptex_format").rfind("press/", 0) != 0)
-      throw input_error(path_, "/", "not a press file (its haptex_format is not press/...)",
-                        "Give press files written by 'haptex capture record', or video files");
-    frames_ = root.open_dataset("frames");
+    frames_ = root.open_dataset(layout::kFrames);
     if (!is_vlen_bytes(frames_))
       throw input_error(path_, "/frames", "expected variable-length uint8 frames", "Record the press again");
     encoding_ = root.attr_string("encoding");
@@ -29,7 +30,7 @@ class PressFileSource : public FrameSource {
     fps_ = root.attr_double("fps");
     material_ = root.attr_string("material");
     count_ = frames_.shape().at(0);
-    reference_.image = read_image(root.open_dataset("reference"));
+    reference_.image = read_image(root.open_dataset(layout::kReference));
     if (reference_.image.size() != size_)
       throw input_error(path_, "/reference", "the reference is not the frame size", "Record the press again");
     reference_.noise = float(root.attr_double("noise"));

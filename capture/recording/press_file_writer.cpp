@@ -9,8 +9,12 @@
 #include "capture/device/fourcc.hpp"
 #include "capture/recording/image_datasets.hpp"
 #include "core/naming.hpp"
+#include "dataset/format.hpp"
+#include "dataset/layout.hpp"
 
 namespace haptex::capture {
+
+namespace layout = dataset::layout;
 namespace {
 
 void describe(h5::Dataset dataset, const std::string& units, const std::string& description) {
@@ -23,11 +27,11 @@ void describe(h5::Dataset dataset, const std::string& units, const std::string& 
 PressFileWriter::PressFileWriter(const std::string& path, const PressFileInfo& info, const cv::Mat& reference)
     : info_(info), file_(std::make_unique<h5::AtomicFile>(path, false)), drops_(1e9 / info.fps) {
   h5::Group root = file_->root();
-  frames_ = std::make_unique<VlenBytesWriter>(root, "frames");
+  frames_ = std::make_unique<VlenBytesWriter>(root, layout::kFrames);
   describe(frames_->dataset(), "",
            info.fourcc == V4L2_PIX_FMT_MJPEG ? "one JPEG per frame, the bytes the sensor sent (MJPG), not re-encoded"
                                              : "one lossless PNG per frame, converted from the sensor's " + fourcc_text(info.fourcc));
-  write_image(root, "reference", reference, "no-contact reference: mean of the frames taken before the presses");
+  write_image(root, layout::kReference, reference, "no-contact reference: mean of the frames taken before the presses");
   summary_.path = path;
 }
 
@@ -70,9 +74,9 @@ PressFileSummary PressFileWriter::finish(const std::string& ended_by) {
   describe(root.write("timestamp_ns", timestamps_), "ns", "CLOCK_MONOTONIC time the driver stamped on each frame");
   describe(root.write("sequence", sequences_), "", "the driver's frame counter; a gap is a lost frame");
   describe(root.write("flags", flags_), "", "V4L2_BUF_FLAG_* of each frame's buffer");
-  describe(root.write("contrast", scores_), "grey levels",
+  describe(root.write(layout::kContrast, scores_), "grey levels",
            "live contact score (docs/capture.md); NaN where the frame did not decode");
-  h5::stamp_root(root, "press/1", info_.provenance);
+  dataset::stamp(root, dataset::Kind::press, info_.provenance);
   root.set_attr("samples", std::int64_t(summary_.frames));
   root.set_attr("material", info_.material);
   root.set_attr("material_id", material_id(info_.material));

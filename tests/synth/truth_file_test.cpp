@@ -123,8 +123,8 @@ TEST_F(TruthFile, APathWithQuotesBackQuotesSpacesAndNonUtf8BytesRoundTrips) {
   path_ = dir_.file("truth \"of\" 'it' `all` $(x) \xff\xfe.h5");
   expect_same(read_truth_file(written()), sample_truth());
   written([](test::Edit& e) { e.root().set_attr("haptex_format", "truth/1"); });
-  EXPECT_EQ(refusal(path_), path_ + ": /@haptex_format: is truth/1. Run haptex synth again: truth/1 files do not record what "
-                                    "generated each recording");
+  EXPECT_EQ(refusal(path_), path_ + ": /@haptex_format: is truth/1, written by an older haptex: it does not record what "
+                                    "generated each recording. Run haptex synth again to write truth/2");
 }
 
 TEST_F(TruthFile, RefusesWhatIsNotHdf5OrIsTruncated) {
@@ -140,11 +140,10 @@ TEST_F(TruthFile, RefusesWhatIsNotHdf5OrIsTruncated) {
 
 TEST_F(TruthFile, RefusesOtherFormats) {
   written([](test::Edit& e) { e.root().set_attr("haptex_format", "truth/1"); });
-  EXPECT_EQ(refusal(path_), path_ + ": /@haptex_format: is truth/1. Run haptex synth again: truth/1 files do not record what "
-                                    "generated each recording");
+  EXPECT_EQ(refusal(path_), path_ + ": /@haptex_format: is truth/1, written by an older haptex: it does not record what "
+                                    "generated each recording. Run haptex synth again to write truth/2");
   written([](test::Edit& e) { e.root().set_attr("haptex_format", "recordings/1"); });
-  EXPECT_EQ(refusal(path_), path_ + ": /@haptex_format: is 'recordings/1', not truth/2. Give the truth.h5 that haptex synth hatt or "
-                                    "haptex synth materials wrote");
+  EXPECT_EQ(refusal(path_), path_ + ": /@haptex_format: is 'recordings/1', not truth/2. Give the file haptex synth wrote");
 }
 
 TEST_F(TruthFile, RefusesMissingMembers) {
