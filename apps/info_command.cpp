@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.hpp"
-#include "core/file_summary.hpp"
+#include "info/file_summary.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -22,9 +22,9 @@ class InfoCommand : public Command {
   void declare(CLI::App& app) override { app.add_option("file", file_, "haptex HDF5 file")->required(); }
 
   int run(const GlobalOptions& global) override {
-    const FileSummary summary = summarize_file(file_);
+    const info::FileSummary summary = info::summarize_file(file_);
     if (global.json) {
-      std::cout << to_json(summary).dump(2) << "\n";
+      std::cout << info::to_json(summary).dump(2) << "\n";
       return 0;
     }
     print(summary, global.verbose > 0);
@@ -32,7 +32,7 @@ class InfoCommand : public Command {
   }
 
  private:
-  static void print(const FileSummary& s, bool every_dataset) {
+  static void print(const info::FileSummary& s, bool every_dataset) {
     std::cout << s.path << " (" << s.bytes << " bytes)\n"
               << "  format   " << s.format << ", written by haptex " << s.version << " at " << s.created_utc << "\n"
               << "  source   " << s.source << "\n"
@@ -49,7 +49,7 @@ class InfoCommand : public Command {
   }
 
   // One line per item; with -v, every dataset with its dtype, shape and units.
-  static void print_item(const ItemSummary& item, bool every_dataset) {
+  static void print_item(const info::ItemSummary& item, bool every_dataset) {
     std::cout << "      " << item.key << ":";
     if (item.duration_s) std::cout << " " << std::fixed << std::setprecision(2) << *item.duration_s << " s";
     if (item.sample_rate_hz) std::cout << " at " << std::setprecision(0) << *item.sample_rate_hz << " Hz";

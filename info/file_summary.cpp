@@ -1,13 +1,17 @@
-#include "core/file_summary.hpp"
+#include "info/file_summary.hpp"
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
+#include "dataset/format.hpp"
+#include "dataset/layout.hpp"
 
-namespace haptex {
+namespace haptex::info {
 namespace {
+
+using dataset::layout::kMaterials;
 
 std::string optional_string(const h5::Node& node, const char* name) {
   return node.has_attr(name) ? node.attr_string(name) : std::string();
@@ -43,7 +47,7 @@ MaterialSummary summarize_material(const h5::Group& group, const std::string& id
 
 void collect_datasets(const h5::Group& group, const std::string& prefix, std::vector<DatasetSummary>& out) {
   for (const std::string& child : group.children()) {
-    if (prefix.empty() && child == "materials") continue;
+    if (prefix.empty() && child == kMaterials) continue;
     const std::string path = prefix + "/" + child;
     if (group.has_dataset(child)) out.push_back(summarize_dataset(group.open_dataset(child), path));
     else if (group.has_group(child)) collect_datasets(group.open_group(child), path, out);
@@ -62,15 +66,12 @@ FileSummary summarize_file(const std::string& path) {
   FileSummary summary;
   summary.path = path;
   summary.bytes = std::filesystem::file_size(path);
-  if (!root.has_attr("haptex_format"))
-    throw input_error(path, "/", "the file has no haptex_format attribute: it was not written by haptex",
-                      "Convert your data with 'haptex convert' first");
-  summary.format = root.attr_string("haptex_format");
+  summary.format = dataset::read_format(file);
   summary.version = optional_string(root, "haptex_version");
   summary.created_utc = optional_string(root, "created_utc");
   summary.source = optional_string(root, "source");
-  if (root.has_group("materials")) {
-    const h5::Group materials = root.open_group("materials");
+  if (root.has_group(kMaterials)) {
+    const h5::Group materials = root.open_group(kMaterials);
     for (const std::string& id : materials.children())
       if (materials.has_group(id)) summary.materials.push_back(summarize_material(materials.open_group(id), id));
   }
@@ -103,4 +104,4 @@ nlohmann::json to_json(const FileSummary& s) {
           {"materials", materials},   {"other_datasets", others}};
 }
 
-}  // namespace haptex
+}  // namespace haptex::info

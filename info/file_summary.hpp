@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace haptex {
+namespace haptex::info {
 
 struct DatasetSummary {
   std::string name, dtype, units;
@@ -42,4 +42,4 @@ struct FileSummary {
 FileSummary summarize_file(const std::string& path);
 nlohmann::json to_json(const FileSummary& summary);  // schemas/info.schema.json
 
-}  // namespace haptex
+}  // namespace haptex::info
