@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/json/schema.hpp"
 #include "core/sha256.hpp"
+#include "dataset/layout.hpp"
 #include "qa/catalog.hpp"
 #include "qa/checkers.hpp"
 #include "qa/thresholds.hpp"
@@ -111,9 +112,10 @@ std::string press_sets_problem(const SplitMaterial& mat) {
 }
 
 bool has_press(const h5::Group& root, const std::string& material, const std::string& press) {
-  return root.has_group("materials") && root.open_group("materials").has_group(material) &&
-         root.open_group("materials/" + material).has_group("presses") &&
-         root.open_group("materials/" + material + "/presses").has_group(press);
+  using namespace dataset::layout;
+  const std::string path = std::string(kMaterials) + "/" + material;
+  return root.has_group(kMaterials) && root.open_group(kMaterials).has_group(material) && root.open_group(path).has_group(kPresses) &&
+         root.open_group(path + "/" + kPresses).has_group(press);
 }
 
 // The first of a material's presses (in order of number) the dataset lacks; empty when it has them all.
@@ -245,8 +247,8 @@ CheckResult check_split_materials(const SplitManifest& m, const SplitDataset& d)
       continue;
     }
     std::int64_t recordings = 0;
-    if (root.has_group("materials/" + mat.id + "/recordings"))
-      recordings = std::int64_t(root.open_group("materials/" + mat.id + "/recordings").children().size());
+    const std::string path = std::string(dataset::layout::kMaterials) + "/" + mat.id + "/" + dataset::layout::kRecordings;
+    if (root.has_group(path)) recordings = std::int64_t(root.open_group(path).children().size());
     if (recordings != mat.recordings)
       tally.fail(pointer(i, "recordings"), mat.id + ": the manifest counts " + std::to_string(mat.recordings) +
                                                " recordings, the dataset has " + std::to_string(recordings));

@@ -82,13 +82,12 @@ std::optional<WindowTable> load_window_table(const h5::Group& root, std::string&
 }
 
 std::optional<std::int64_t> recording_samples(const h5::Group& root, const std::string& material, std::int32_t recording) {
-  const std::string path = "materials/" + material + "/recordings/" + std::to_string(recording);
   if (material.empty() || material.find('/') != std::string::npos || recording < 0 || !root.has_group(layout::kMaterials) ||
-      !root.open_group(layout::kMaterials).has_group(material) ||
-      !root.open_group("materials/" + material).has_group(layout::kRecordings) ||
-      !root.open_group("materials/" + material + "/recordings").has_group(std::to_string(recording)))
+      !root.open_group(layout::kMaterials).has_group(material))
     return std::nullopt;
-  return int_attr(root.open_group(path), "samples");
+  const h5::Group m = root.open_group(layout::kMaterials).open_group(material);
+  if (!m.has_group(layout::kRecordings) || !m.open_group(layout::kRecordings).has_group(std::to_string(recording))) return std::nullopt;
+  return int_attr(m.open_group(layout::kRecordings).open_group(std::to_string(recording)), "samples");
 }
 
 }  // namespace haptex::qa

@@ -10,6 +10,7 @@
 #include "core/naming.hpp"
 #include "core/sha256.hpp"
 #include "dataset/format.hpp"
+#include "dataset/layout.hpp"
 
 namespace haptex::synth {
 namespace {
@@ -51,7 +52,7 @@ void write_action(h5::Group g, const char* name, const std::vector<double>& valu
 }
 
 void write_recordings(h5::Group material, const MaterialTruth& m) {
-  h5::Group all = material.create_group("recordings");
+  h5::Group all = material.create_group(dataset::layout::kRecordings);
   for (const TruthRecording& r : m.recordings) {
     // The reader would refuse such a file: fail here, where the caller's mistake is.
     if (r.speed_mm_s.empty() || r.speed_mm_s.size() != r.force_n.size())
@@ -217,7 +218,7 @@ struct Reader {
     generator(g, m);
     // A synthetic material's grid is required; a model's is optional (the model itself is its truth).
     if (m.generator == kSynthMaterial || g.has("speeds") || g.has("forces") || g.has("spectrum")) m.grid = grid(g);
-    const h5::Group recordings = group(g, "recordings");
+    const h5::Group recordings = group(g, dataset::layout::kRecordings);
     for (const std::string& k : recordings.children()) m.recordings.push_back(recording(recordings, k));
     return m;
   }
@@ -236,7 +237,7 @@ void write_truth_file(const std::string& path, const Truth& truth, const std::st
   dataset::stamp(root, dataset::Kind::truth, source);
   root.set_attr("sample_rate_hz", truth.sample_rate_hz);
   root.set_attr("accel_noise_m_s2", truth.accel_noise_m_s2);
-  h5::Group all = root.create_group("materials");
+  h5::Group all = root.create_group(dataset::layout::kMaterials);
   for (const MaterialTruth& m : truth.materials) {
     h5::Group g = all.create_group(material_id(m.name));
     g.set_attr("name", m.name);
@@ -254,7 +255,7 @@ Truth read_truth_file(const std::string& path) {
   Truth truth;
   truth.sample_rate_hz = r.magnitude(root, "sample_rate_hz", true);
   truth.accel_noise_m_s2 = r.magnitude(root, "accel_noise_m_s2");
-  const h5::Group materials = r.group(root, "materials");
+  const h5::Group materials = r.group(root, dataset::layout::kMaterials);
   for (const std::string& id : materials.children()) truth.materials.push_back(r.material(materials, id));
   if (truth.materials.empty()) throw r.error("/materials", "holds no material");
   return truth;
