@@ -4,13 +4,15 @@
 #include <cmath>
 #include <filesystem>
 
-#include "convert/parse_number.hpp"
+#include "core/text/parse_number.hpp"
 #include "convert/recording_checks.hpp"
 #include "core/error.hpp"
 #include "core/sha256.hpp"
 #include "core/text/utf8.hpp"
 
 namespace haptex::convert {
+
+using text::describe_bad_number, text::parse_number, text::trim;
 namespace {
 
 std::vector<std::string_view> split_fields(std::string_view line) {

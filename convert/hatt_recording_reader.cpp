@@ -1,11 +1,13 @@
 #include "convert/hatt_recording_reader.hpp"
 
-#include "convert/parse_number.hpp"
+#include "core/text/parse_number.hpp"
 #include "convert/recording_checks.hpp"
 #include "convert/xml_file.hpp"
 #include "core/text/utf8.hpp"
 
 namespace haptex::convert {
+
+using text::trim;
 namespace {
 
 void read_identity(const XmlFile& xml, const pugi::xml_node& root, const FieldMap& map, Recording& recording) {

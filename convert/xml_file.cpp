@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstring>
 
-#include "convert/parse_number.hpp"
+#include "core/text/parse_number.hpp"
 #include "convert/recording_checks.hpp"
 #include "core/sha256.hpp"
 
 namespace haptex::convert {
+
+using text::describe_bad_number, text::parse_number, text::trim;
 
 XmlFile::XmlFile(std::string source, std::vector<char> bytes) : source_(std::move(source)), bytes_(std::move(bytes)) {
   sha256_ = sha256_hex(bytes_);

@@ -5,11 +5,13 @@
 #include <optional>
 #include <sstream>
 
-#include "convert/parse_number.hpp"
+#include "core/text/parse_number.hpp"
 #include "core/error.hpp"
 #include "dataset/window.hpp"
 
 namespace haptex::predict {
+
+using text::describe_bad_number, text::parse_number;
 namespace {
 
 constexpr double kSamplePeriod = 1e-4;  // 10 kHz
@@ -52,9 +54,9 @@ Trajectory read_trajectory(const std::string& path) {
     const std::string where = "line " + std::to_string(number);
     auto value = [&](int c, const char* what) {
       if (std::size_t(c) >= v.size()) throw input_error(path, where, std::string("the ") + what + " column is missing", "Fix or remove the line");
-      const std::optional<double> x = convert::parse_number(v[std::size_t(c)]);
+      const std::optional<double> x = parse_number(v[std::size_t(c)]);
       if (!x || !std::isfinite(*x))
-        throw input_error(path, where + ", column " + what, convert::describe_bad_number(v[std::size_t(c)], x.has_value()),
+        throw input_error(path, where + ", column " + what, describe_bad_number(v[std::size_t(c)], x.has_value()),
                           "Fix or remove the line");
       return *x;
     };

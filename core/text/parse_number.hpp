@@ -3,7 +3,7 @@
 #include <string>
 #include <string_view>
 
-namespace haptex::convert {
+namespace haptex::text {
 
 // text without leading and trailing spaces, tabs, CR and LF.
 std::string_view trim(std::string_view text);
@@ -15,4 +15,4 @@ std::optional<double> parse_number(std::string_view text);
 // a 64-bit float ...", "'nan' is not a finite number (NaN or Inf)". parsed: parse_number gave a value.
 std::string describe_bad_number(std::string_view text, bool parsed);
 
-}  // namespace haptex::convert
+}  // namespace haptex::text

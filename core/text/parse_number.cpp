@@ -1,8 +1,8 @@
-#include "convert/parse_number.hpp"
+#include "core/text/parse_number.hpp"
 
 #include <charconv>
 
-namespace haptex::convert {
+namespace haptex::text {
 
 std::string_view trim(std::string_view text) {
   auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
@@ -33,4 +33,4 @@ std::string describe_bad_number(std::string_view text, bool parsed) {
   return quoted + " is not a number";
 }
 
-}  // namespace haptex::convert
+}  // namespace haptex::text
