@@ -12,7 +12,6 @@
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
 #include "evaluate/spectral_convergence.hpp"
-#include "evaluate/spectral_distance.hpp"
 
 namespace haptex::evaluate {
 namespace {
@@ -146,7 +145,7 @@ double rendered_distance(const Rendering& rendering) {
     signal::amplitude_spectrum(window, amplitudes);
     const auto row = rendering.spectra.begin() + std::ptrdiff_t(m * predict::kSpectrumBins);
     std::copy(row, row + predict::kSpectrumBins, predicted.begin());
-    sum += spectrum_distance(amplitudes, predicted);
+    sum += signal::spectrum_distance(amplitudes, predicted);
   }
   return sum / double(frames);
 }

@@ -79,7 +79,7 @@ Rendering render_vibration(const predict::Model& model, const predict::TextureCo
 // shorter than first_frame_sample + 1000 samples).
 std::size_t complete_frames(const Rendering& rendering);
 double rendered_convergence_db(const Rendering& rendering);
-// The evaluation's measure (evaluate/spectral_distance.hpp) on the same frames: the mean Euclidean
+// The evaluation's measure (signal::spectrum_distance) on the same frames: the mean Euclidean
 // distance (m/s^2) between the 100-bin amplitude spectrum (rectangular window) of the rendered
 // samples each complete frame covers and the spectrum predicted for it; NaN when no frame is
 // complete. Read it against the spectra's own norm (on the synthetic test problem: FGLA 28 % of
