@@ -16,17 +16,17 @@
 #include "core/thread_clock.hpp"
 #include "evaluate/ar_expectation.hpp"
 #include "evaluate/ar_refit.hpp"
-#include "evaluate/griffin_lim.hpp"
 #include "evaluate/hatt_published.hpp"
 #include "evaluate/log_spectral_distance.hpp"
-#include "evaluate/online_reconstruction.hpp"
 #include "evaluate/oracle.hpp"
 #include "evaluate/section_signals.hpp"
-#include "evaluate/shaped_noise.hpp"
 #include "evaluate/spectral_distance.hpp"
 #include "evaluate/window_sets.hpp"
 #include "predict/predictor.hpp"
 #include "predict/training_data.hpp"
+#include "render/griffin_lim.hpp"
+#include "render/online_reconstruction.hpp"
+#include "render/shaped_noise.hpp"
 
 namespace haptex::evaluate {
 namespace {
@@ -124,28 +124,28 @@ Scores predict_scores(predict::Predictor& p, const predict::TextureCode& code, c
   return s;
 }
 
-MagnitudeFrames frames_of(const std::vector<std::vector<double>>& spectra) {
+render::MagnitudeFrames frames_of(const std::vector<std::vector<double>>& spectra) {
   std::vector<double> flat;
   for (const auto& s : spectra) flat.insert(flat.end(), s.begin(), s.end());
-  return target_magnitudes(std::span<const double>(flat));
+  return render::target_magnitudes(std::span<const double>(flat));
 }
 
-std::vector<double> online_signal(const MagnitudeFrames& frames, std::size_t length, std::uint64_t seed) {
-  OnlineReconstruction online({.scatter = true, .seed = seed});
-  return stream_frames(online, frames, length);
+std::vector<double> online_signal(const render::MagnitudeFrames& frames, std::size_t length, std::uint64_t seed) {
+  render::OnlineReconstruction online({.scatter = true, .seed = seed});
+  return render::stream_frames(online, frames, length);
 }
 
 // The stitched signal of the predicted spectra, scored on the same windows (offset grid[0] = frame 0).
-static_assert(kSectionGridStride == kReconstructionHop, "stitching takes grid window m as reconstruction frame m");
+static_assert(kSectionGridStride == render::kReconstructionHop, "stitching takes grid window m as reconstruction frame m");
 Scores stitched_scores(const std::vector<std::vector<double>>& spectra, const std::vector<std::size_t>& grid,
                        const std::vector<std::vector<double>>& truth, const std::vector<double>& floor, double predict_seconds,
                        const std::string& key, std::uint64_t seed, std::vector<double>* signal) {
-  const MagnitudeFrames frames = frames_of(spectra);
-  const std::size_t length = covered_samples(frames.frames);
+  const render::MagnitudeFrames frames = frames_of(spectra);
+  const std::size_t length = render::covered_samples(frames.frames);
   const double start = thread_seconds();
   std::vector<double> x = key == "online"  ? online_signal(frames, length, seed)
-                         : key == "noise" ? shaped_noise(frames, length, {seed})
-                                          : griffin_lim(frames, length, {std::stoul(key.substr(5)), 0.99, InitialPhase::random, seed});
+                         : key == "noise" ? render::shaped_noise(frames, length, {seed})
+                                          : render::griffin_lim(frames, length, {std::stoul(key.substr(5)), 0.99, render::InitialPhase::random, seed});
   const double seconds = thread_seconds() - start + predict_seconds;
   std::vector<std::size_t> local;
   for (std::size_t t : grid) local.push_back(t - grid[0]);

@@ -1,4 +1,4 @@
-#include "evaluate/spectral_convergence.hpp"
+#include "render/spectral_convergence.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include "core/error.hpp"
 #include "tests/support/npy.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 using test::load_golden;
@@ -20,7 +20,7 @@ MagnitudeFrames golden_magnitudes(const char* name) {
   return {array.rows(), array.cols(), array.data};
 }
 
-TEST(EvaluateSpectralConvergence, StftMagnitudesMatchNumpy) {
+TEST(RenderSpectralConvergence, StftMagnitudesMatchNumpy) {
   const auto x = load_golden("evaluate/reconstruction_x.npy").data;
   const auto expected = golden_magnitudes("evaluate/reconstruction_s.npy");
   const auto s = stft_magnitudes(x);
@@ -29,7 +29,7 @@ TEST(EvaluateSpectralConvergence, StftMagnitudesMatchNumpy) {
   EXPECT_LT(max_scaled_error(s.values, expected.values), 1e-12);
 }
 
-TEST(EvaluateSpectralConvergence, MatchesNumpy) {
+TEST(RenderSpectralConvergence, MatchesNumpy) {
   const auto y = load_golden("evaluate/convergence_y.npy").data;
   const auto s = golden_magnitudes("evaluate/reconstruction_s.npy");
   const double expected = load_golden("evaluate/convergence_db.npy").data.at(0);
@@ -38,7 +38,7 @@ TEST(EvaluateSpectralConvergence, MatchesNumpy) {
 }
 
 // Only the frames s has are compared: extra samples after them do not count.
-TEST(EvaluateSpectralConvergence, ExactSignalIsMinusInfinity) {
+TEST(RenderSpectralConvergence, ExactSignalIsMinusInfinity) {
   const auto x = load_golden("evaluate/reconstruction_x.npy").data;
   auto s = stft_magnitudes(x);
   EXPECT_EQ(spectral_convergence_db(x, s), -std::numeric_limits<double>::infinity());
@@ -47,7 +47,7 @@ TEST(EvaluateSpectralConvergence, ExactSignalIsMinusInfinity) {
   EXPECT_EQ(spectral_convergence_db(x, s), -std::numeric_limits<double>::infinity());
 }
 
-TEST(EvaluateSpectralConvergence, ZeroTarget) {
+TEST(RenderSpectralConvergence, ZeroTarget) {
   MagnitudeFrames zero{2, kReconstructionBins, std::vector<double>(2 * kReconstructionBins, 0.0)};
   EXPECT_EQ(spectral_convergence_db(zero, zero), -std::numeric_limits<double>::infinity());
   auto other = zero;
@@ -55,7 +55,7 @@ TEST(EvaluateSpectralConvergence, ZeroTarget) {
   EXPECT_EQ(spectral_convergence_db(other, zero), std::numeric_limits<double>::infinity());
 }
 
-TEST(EvaluateSpectralConvergence, RejectsMismatchedShapes) {
+TEST(RenderSpectralConvergence, RejectsMismatchedShapes) {
   const auto x = load_golden("evaluate/reconstruction_x.npy").data;
   const auto s = stft_magnitudes(x);
   EXPECT_THROW(spectral_convergence_db(std::span(x).first(x.size() - 200), s), Error);
@@ -65,4 +65,4 @@ TEST(EvaluateSpectralConvergence, RejectsMismatchedShapes) {
 }
 
 }  // namespace
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

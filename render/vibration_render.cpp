@@ -1,4 +1,4 @@
-#include "evaluate/vibration_render.hpp"
+#include "render/vibration_render.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -11,9 +11,9 @@
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
-#include "evaluate/spectral_convergence.hpp"
+#include "render/spectral_convergence.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 constexpr std::size_t kHop = kReconstructionHop;
@@ -172,4 +172,4 @@ std::span<const double> VibrationLoop::tick(std::span<const float> action) {
   return noise_ ? shaped_.push(magnitudes_) : reconstruction_.push(magnitudes_);
 }
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render
