@@ -21,7 +21,7 @@ using test::load_golden;
 using test::max_scaled_error;
 
 MagnitudeFrames golden_s() {
-  const auto array = load_golden("evaluate/reconstruction_s.npy");
+  const auto array = load_golden("render/reconstruction_s.npy");
   return {array.rows(), array.cols(), array.data};
 }
 
@@ -54,7 +54,7 @@ TEST(RenderGriffinLim, MatchesNumpyFromZeroPhase) {
   };
   for (const Case c : {Case{"fgla_0p99_5", 5, 3000, 0.99}, Case{"fgla_0_5", 5, 3000, 0.0},
                        Case{"fgla_0p99_3_short", 3, 2500, 0.99}, Case{"fgla_0p99_3_long", 3, 3400, 0.99}}) {
-    const auto expected = load_golden(std::string("evaluate/") + c.golden + ".npy").data;
+    const auto expected = load_golden(std::string("render/") + c.golden + ".npy").data;
     GriffinLimOptions options;
     options.iterations = c.iterations;
     options.momentum = c.momentum;

@@ -27,7 +27,7 @@ namespace {
 using test::load_golden;
 using test::max_scaled_error;
 
-MagnitudeFrames golden_s(const char* name = "evaluate/reconstruction_s.npy") {
+MagnitudeFrames golden_s(const char* name = "render/reconstruction_s.npy") {
   const auto array = load_golden(name);
   return {array.rows(), array.cols(), array.data};
 }
@@ -63,7 +63,7 @@ TEST(RenderOnlineReconstruction, MatchesNumpyRtisiLa) {
   const auto s = golden_s();
   for (const auto& [look_ahead, iterations] : {std::pair<std::size_t, std::size_t>{2, 2}, {0, 3}, {3, 1}}) {
     const std::string name = "rtisila_" + std::to_string(look_ahead) + "_" + std::to_string(iterations);
-    const auto expected = load_golden("evaluate/" + name + ".npy").data;
+    const auto expected = load_golden("render/" + name + ".npy").data;
     const auto stream = run(s, options(look_ahead, iterations));
     ASSERT_EQ(stream.samples.size(), expected.size()) << name;
     EXPECT_LT(max_scaled_error(stream.samples, expected), 1e-9) << name;
@@ -72,8 +72,8 @@ TEST(RenderOnlineReconstruction, MatchesNumpyRtisiLa) {
 
 // Two frames with a look-ahead of three: nothing before the flush, then both frames' 1100 samples.
 TEST(RenderOnlineReconstruction, StreamShorterThanLookAhead) {
-  const auto s = golden_s("evaluate/rtisila_short_s.npy");
-  const auto expected = load_golden("evaluate/rtisila_3_2_short.npy").data;
+  const auto s = golden_s("render/rtisila_short_s.npy");
+  const auto expected = load_golden("render/rtisila_3_2_short.npy").data;
   const auto stream = run(s, options(3, 2));
   EXPECT_EQ(stream.returned, std::vector<std::size_t>(2, 0));
   EXPECT_EQ(stream.flushed, covered_samples(2));

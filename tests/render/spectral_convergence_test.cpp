@@ -21,8 +21,8 @@ MagnitudeFrames golden_magnitudes(const char* name) {
 }
 
 TEST(RenderSpectralConvergence, StftMagnitudesMatchNumpy) {
-  const auto x = load_golden("evaluate/reconstruction_x.npy").data;
-  const auto expected = golden_magnitudes("evaluate/reconstruction_s.npy");
+  const auto x = load_golden("render/reconstruction_x.npy").data;
+  const auto expected = golden_magnitudes("render/reconstruction_s.npy");
   const auto s = stft_magnitudes(x);
   ASSERT_EQ(s.frames, expected.frames);
   ASSERT_EQ(s.bins, expected.bins);
@@ -30,16 +30,16 @@ TEST(RenderSpectralConvergence, StftMagnitudesMatchNumpy) {
 }
 
 TEST(RenderSpectralConvergence, MatchesNumpy) {
-  const auto y = load_golden("evaluate/convergence_y.npy").data;
-  const auto s = golden_magnitudes("evaluate/reconstruction_s.npy");
-  const double expected = load_golden("evaluate/convergence_db.npy").data.at(0);
+  const auto y = load_golden("render/convergence_y.npy").data;
+  const auto s = golden_magnitudes("render/reconstruction_s.npy");
+  const double expected = load_golden("render/convergence_db.npy").data.at(0);
   EXPECT_NEAR(spectral_convergence_db(y, s), expected, 1e-10 * std::abs(expected));
   EXPECT_NEAR(spectral_convergence_db(stft_magnitudes(y), s), expected, 1e-10 * std::abs(expected));
 }
 
 // Only the frames s has are compared: extra samples after them do not count.
 TEST(RenderSpectralConvergence, ExactSignalIsMinusInfinity) {
-  const auto x = load_golden("evaluate/reconstruction_x.npy").data;
+  const auto x = load_golden("render/reconstruction_x.npy").data;
   auto s = stft_magnitudes(x);
   EXPECT_EQ(spectral_convergence_db(x, s), -std::numeric_limits<double>::infinity());
   s.frames -= 2;
@@ -56,7 +56,7 @@ TEST(RenderSpectralConvergence, ZeroTarget) {
 }
 
 TEST(RenderSpectralConvergence, RejectsMismatchedShapes) {
-  const auto x = load_golden("evaluate/reconstruction_x.npy").data;
+  const auto x = load_golden("render/reconstruction_x.npy").data;
   const auto s = stft_magnitudes(x);
   EXPECT_THROW(spectral_convergence_db(std::span(x).first(x.size() - 200), s), Error);
   auto fewer = s;

@@ -18,8 +18,8 @@ using test::load_golden;
 using test::max_scaled_error;
 
 TEST(RenderTargetMagnitudes, MatchesNumpy) {
-  const auto amplitudes = load_golden("evaluate/target_amplitudes.npy");
-  const auto expected = load_golden("evaluate/target_magnitudes.npy");
+  const auto amplitudes = load_golden("render/target_amplitudes.npy");
+  const auto expected = load_golden("render/target_magnitudes.npy");
   const auto out = target_magnitudes(amplitudes.data);
   ASSERT_EQ(out.frames, expected.rows());
   ASSERT_EQ(out.bins, expected.cols());
@@ -31,7 +31,7 @@ TEST(RenderTargetMagnitudes, MatchesNumpy) {
 }
 
 TEST(RenderTargetMagnitudes, FloatInputEqualsItsDoubleWidening) {
-  const auto amplitudes = load_golden("evaluate/target_amplitudes.npy").data;
+  const auto amplitudes = load_golden("render/target_amplitudes.npy").data;
   const std::vector<float> narrow(amplitudes.begin(), amplitudes.end());
   const std::vector<double> widened(narrow.begin(), narrow.end());
   EXPECT_EQ(target_magnitudes(narrow).values, target_magnitudes(widened).values);
