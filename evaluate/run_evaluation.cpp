@@ -520,10 +520,7 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   e.split = {split.manifest_path, split.manifest_sha256};
   for (const ModelInput& input : models) e.models.push_back({input.path, sha256_file(input.path)});
   e.baseline = o.baseline == Baseline::ar_refit ? "ar-refit" : "hatt-published";
-  e.reconstruct = o.reconstruct == Reconstruction::fgla     ? "fgla"
-                  : o.reconstruct == Reconstruction::online ? "online"
-                  : o.reconstruct == Reconstruction::noise  ? "noise"
-                                                            : "none";
+  e.reconstruct = o.reconstruct ? render::reconstruction_name(*o.reconstruct) : "none";
   e.repeats = o.repeats;
 
   std::vector<std::vector<Codes>> codes(models.size());
@@ -539,17 +536,17 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
     throw input_error(o.truth, "/@sample_rate_hz", "is " + std::to_string(truth->sample_rate_hz) + " Hz, not the evaluation's 10 kHz",
                       "Give the truth.h5 written with the recordings of this dataset");
   Context c{models, codes, o, truth, {}, {}, stitched};
-  if (stitched >= 0 && o.reconstruct != Reconstruction::none) {
+  if (stitched >= 0 && o.reconstruct) {
     for (std::size_t n : o.fgla_iterations) c.stitched_keys.push_back("fgla:" + std::to_string(n));
     c.stitched_keys.push_back("online");
     c.stitched_keys.push_back("noise");
-    c.stitched_key = o.reconstruct == Reconstruction::online ? "online"
-                     : o.reconstruct == Reconstruction::noise
+    c.stitched_key = o.reconstruct == render::Reconstruction::online ? "online"
+                     : o.reconstruct == render::Reconstruction::noise
                          ? "noise"
                          : "fgla:" + std::to_string(*std::max_element(o.fgla_iterations.begin(), o.fgla_iterations.end()));
   }
   if (stitched < 0) e.notes.push_back("no unified model: the new-press and stitched-signal experiments and the latent map are left out");
-  if (o.reconstruct == Reconstruction::none) e.notes.push_back("--reconstruct none: no stitched-signal experiment");
+  if (!o.reconstruct) e.notes.push_back("--reconstruct none: no stitched-signal experiment");
 
   const std::vector<MaterialSignals> signals = read_section_signals(split);
   // Figure 5's four materials, spread over the list.

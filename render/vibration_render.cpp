@@ -71,19 +71,6 @@ void render_online(const predict::Model& model, const predict::TextureCode& code
 
 }  // namespace
 
-std::string reconstruction_name(Reconstruction reconstruction) {
-  return reconstruction == Reconstruction::fgla ? "fgla" : reconstruction == Reconstruction::online ? "online" : "noise";
-}
-
-Reconstruction parse_reconstruction(const std::string& name) {
-  if (name == "fgla") return Reconstruction::fgla;
-  if (name == "online") return Reconstruction::online;
-  if (name == "noise") return Reconstruction::noise;
-  throw Error(Error::Kind::bad_input, "render: unknown reconstruction '" + name +
-                                          "'. Use fgla (offline fast Griffin-Lim), online (RTISI-LA, as a live loop) or noise "
-                                          "(white noise shaped to each frame)");
-}
-
 std::size_t render_frames(std::size_t n) { return n <= kFirstActionSample ? 0 : (n - 1) / kHop + 1; }
 
 std::size_t frame_action_sample(std::size_t m, std::size_t n) { return std::min(m * kHop + align::kActionEnd, n - 1); }

@@ -31,6 +31,7 @@
 #include "predict/trajectory.hpp"
 #include "render/griffin_lim.hpp"
 #include "render/online_reconstruction.hpp"
+#include "render/reconstruction.hpp"
 #include "render/shaped_noise.hpp"
 #include "render/target_magnitudes.hpp"
 
@@ -40,11 +41,6 @@ namespace haptex::render {
 inline constexpr std::size_t kFirstActionSample = predict::kActionValues / 2 - 1;  // 9
 // The trajectory sample frame m's action ends at: its middle, or the trajectory's last sample.
 std::size_t frame_action_sample(std::size_t m, std::size_t n);
-
-enum class Reconstruction { fgla, online, noise };
-std::string reconstruction_name(Reconstruction reconstruction);  // "fgla", "online", "noise"
-// Throws haptex::Error (bad_input) for another name.
-Reconstruction parse_reconstruction(const std::string& name);
 
 struct RenderOptions {
   Reconstruction reconstruction = Reconstruction::fgla;
