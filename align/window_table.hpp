@@ -8,8 +8,6 @@
 
 namespace haptex::align {
 
-using dataset::kActionEnd;  // TRANSITIONAL: evaluate/vibration_render.cpp until it moves to render/
-
 // One recording's signals, with the material (index into the dataset's ids) and recording number
 // its windows carry.
 struct WindowSource {

@@ -18,6 +18,7 @@
 #include "synth/truth_file.hpp"
 #include "predict/model_file.hpp"
 #include "qa/sound_split.hpp"
+#include "render/reconstruction.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -36,10 +37,8 @@ class EvaluateCommand : public Command {
     app.add_option("--baseline", options_.baseline, "ar-refit (fitted here from train+val) or hatt-published (--hatt-models)")
         ->transform(CLI::CheckedTransformer(baselines, CLI::ignore_case))->capture_default_str();
     app.add_option("--hatt-models", options_.hatt_models, "Folder of the HaTT model XMLs for hatt-published")->check(CLI::ExistingDirectory);
-    const std::map<std::string, evaluate::Reconstruction> methods{
-        {"fgla", evaluate::Reconstruction::fgla}, {"online", evaluate::Reconstruction::online}, {"noise", evaluate::Reconstruction::noise}, {"none", evaluate::Reconstruction::none}};
-    app.add_option("--reconstruct", options_.reconstruct, "Phase reconstruction of the stitched-signal experiment")
-        ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case))->capture_default_str();
+    app.add_option("--reconstruct", reconstruct_, "Phase reconstruction of the stitched-signal experiment")
+        ->transform(CLI::IsMember({"fgla", "online", "noise", "none"}, CLI::ignore_case))->capture_default_str();
     app.add_option("--repeats", options_.repeats, "Baseline renderings (seeds) per test section")->capture_default_str()->check(CLI::Range(2, 1000));
     app.add_option("--seed", options_.seed, "Random seed of the renderings and of FGLA's initial phase")->capture_default_str();
     app.add_option("--threads", options_.threads, "Threads (0: every core)")->capture_default_str();
@@ -53,6 +52,11 @@ class EvaluateCommand : public Command {
   }
 
   int run(const GlobalOptions& global) override {
+    // --reconstruct none leaves the stitched-signal experiment out.
+    if (reconstruct_ == "none")
+      options_.reconstruct.reset();
+    else
+      options_.reconstruct = render::parse_reconstruction(reconstruct_);
     if (options_.baseline == evaluate::Baseline::hatt_published && options_.hatt_models.empty())
       throw Error(Error::Kind::bad_input, "evaluate: --baseline hatt-published needs --hatt-models DIR (the toolkit's Models_*.xml)");
     std::vector<std::string> inputs = models_;
@@ -107,7 +111,7 @@ class EvaluateCommand : public Command {
     return text;
   }
 
-  std::string dataset_, split_, output_;
+  std::string dataset_, split_, output_, reconstruct_ = "fgla";
   std::vector<std::string> models_;
   evaluate::EvaluationOptions options_;
   bool force_ = false;

@@ -7,13 +7,13 @@
 #include <iostream>
 
 #include "apps/command.hpp"
-#include "core/output_is_input.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
-#include "evaluate/vibration_render.hpp"
-#include "predict/texture_choice.hpp"
-#include "evaluate/wav_writer.hpp"
+#include "core/output_is_input.hpp"
 #include "predict/model_file.hpp"
+#include "predict/texture_choice.hpp"
+#include "render/vibration_render.hpp"
+#include "render/wav_writer.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -53,7 +53,7 @@ class RenderCommand : public Command {
   }
 
   int run(const GlobalOptions& global) override {
-    const evaluate::RenderOptions options = render_options();
+    const render::RenderOptions options = render_options();
     if (texture_.image.empty() && texture_.material.empty())
       throw Error(Error::Kind::bad_input, "render: give --image (and --reference) or --material");
     const std::vector<std::string> inputs{model_path_, trajectory_path_, texture_.image, texture_.reference};
@@ -66,25 +66,25 @@ class RenderCommand : public Command {
       check_output_path(csv_, force_);
     }
     const predict::Trajectory trajectory = predict::read_trajectory(trajectory_path_);
-    if (trajectory.force.size() <= evaluate::kFirstActionSample)
+    if (trajectory.force.size() <= render::kFirstActionSample)
       throw input_error(trajectory_path_, "", "fewer than 10 samples (1 ms)", "Give a longer trajectory");
     const predict::Model model = predict::read_model(model_path_);
     const predict::TextureCode code = predict::choose_texture(predict::Predictor(model), model_path_, texture_);
 
     const auto start = std::chrono::steady_clock::now();
-    const evaluate::Rendering rendering = evaluate::render_vibration(model, code, trajectory, options);
+    const render::Rendering rendering = render::render_vibration(model, code, trajectory, options);
     const double compute = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double sc = evaluate::rendered_convergence_db(rendering), distance = evaluate::rendered_distance(rendering);
+    const double sc = render::rendered_convergence_db(rendering), distance = render::rendered_distance(rendering);
 
-    evaluate::WavOptions wav;
+    render::WavOptions wav;
     wav.full_scale_m_s2 = full_scale_;
     wav.overwrite = force_;
     wav.title = texture_.material.empty() ? texture_.image : texture_.material;
     wav.source = source(options);
-    const evaluate::WavSummary written = evaluate::write_wav(output_, rendering.signal, wav);
-    if (!csv_.empty()) evaluate::write_vibration_csv(csv_, trajectory, rendering.signal, force_);
+    const render::WavSummary written = render::write_wav(output_, rendering.signal, wav);
+    if (!csv_.empty()) render::write_vibration_csv(csv_, trajectory, rendering.signal, force_);
 
-    const double seconds = double(rendering.signal.size()) / evaluate::kWavSampleRate;
+    const double seconds = double(rendering.signal.size()) / render::kWavSampleRate;
     const Report report{written, rendering, options, sc, distance, compute / seconds};
     if (global.json)
       print_json(report);
@@ -96,43 +96,43 @@ class RenderCommand : public Command {
 
  private:
   struct Report {
-    const evaluate::WavSummary& wav;
-    const evaluate::Rendering& rendering;
-    const evaluate::RenderOptions& options;
+    const render::WavSummary& wav;
+    const render::Rendering& rendering;
+    const render::RenderOptions& options;
     double convergence_db, distance_m_s2, compute_per_second;
   };
 
-  evaluate::RenderOptions render_options() const {
-    evaluate::RenderOptions o;
+  render::RenderOptions render_options() const {
+    render::RenderOptions o;
     if (live_ && reconstruction_ == "fgla" && reconstruct_option_->count() > 0)
       throw Error(Error::Kind::bad_input, "render: --live plays frame by frame: use --reconstruct online or noise, not fgla");
-    o.reconstruction = evaluate::parse_reconstruction(live_ && reconstruction_ == "fgla" ? "online" : reconstruction_);
+    o.reconstruction = render::parse_reconstruction(live_ && reconstruction_ == "fgla" ? "online" : reconstruction_);
     o.as_played = live_;
     o.fgla.seed = o.noise.seed = o.online.seed = seed_;
     o.online.scatter = !steady_;
     o.online.look_ahead = std::size_t(look_ahead_);
     if (iterations_ >= 0) o.fgla.iterations = o.online.iterations = std::size_t(iterations_);
-    if (o.reconstruction == evaluate::Reconstruction::online && iterations_ == 0)
+    if (o.reconstruction == render::Reconstruction::online && iterations_ == 0)
       throw Error(Error::Kind::bad_input, "render: the online reconstruction needs --iterations 1 or more (passes per frame)");
     return o;
   }
 
-  std::string method(const evaluate::RenderOptions& o) const {
-    if (o.reconstruction == evaluate::Reconstruction::fgla) return "fgla " + std::to_string(o.fgla.iterations) + " iterations";
-    if (o.reconstruction == evaluate::Reconstruction::noise)
+  std::string method(const render::RenderOptions& o) const {
+    if (o.reconstruction == render::Reconstruction::fgla) return "fgla " + std::to_string(o.fgla.iterations) + " iterations";
+    if (o.reconstruction == render::Reconstruction::noise)
       return "shaped noise, seed " + std::to_string(o.noise.seed) + (o.as_played ? " (live: delayed as played)" : "");
     return "online look-ahead " + std::to_string(o.online.look_ahead * 10) + " ms " + std::to_string(o.online.iterations) + " passes" +
            (o.online.scatter ? ", scattered (seed " + std::to_string(o.online.seed) + ")" : ", steady") +
            (o.as_played ? " (live: delayed as played)" : " (latency compensated)");
   }
 
-  std::string source(const evaluate::RenderOptions& o) const {
+  std::string source(const render::RenderOptions& o) const {
     return "haptex render " + model_path_ + (texture_.material.empty() ? " --image " + texture_.image : " --material " + texture_.material) +
            " --trajectory " + trajectory_path_ + ", " + method(o);
   }
 
   void print_summary(const Report& r) const {
-    const double seconds = double(r.wav.samples) / evaluate::kWavSampleRate;
+    const double seconds = double(r.wav.samples) / render::kWavSampleRate;
     const std::string sc = std::isnan(r.convergence_db) ? std::string("SC n/a (under 0.1 s)") : format("SC %.1f dB", r.convergence_db);
     std::printf("wrote %s%s: %zu samples, %.3f s, peak %.4g m/s^2, full scale %.9g m/s^2 (24-bit PCM), %s, %s, %.3g s compute per s of vibration\n",
                 output_.c_str(), csv_.empty() ? "" : (" and " + csv_).c_str(), r.wav.samples, seconds, r.wav.peak_m_s2,
@@ -146,7 +146,7 @@ class RenderCommand : public Command {
                 << " frames had force or speed outside the training range; the model saturated them to the nearest trained value\n";
     if (texture_.reference.empty() && !texture_.image.empty())
       std::cerr << "note: no --reference: the image's own blur stands in for the no-contact frame\n";
-    if (r.options.reconstruction != evaluate::Reconstruction::fgla)
+    if (r.options.reconstruction != render::Reconstruction::fgla)
       std::cerr << format("note: slowest frame (predict + reconstruct) %.3f ms of the 10 ms budget; latency %zu ms\n",
                           r.rendering.slowest_frame_seconds * 1e3, r.rendering.latency_samples / 10);
   }
@@ -154,12 +154,12 @@ class RenderCommand : public Command {
   void print_json(const Report& r) const {
     nlohmann::json out = {{"output", output_},
                           {"samples", r.wav.samples},
-                          {"seconds", double(r.wav.samples) / evaluate::kWavSampleRate},
-                          {"sample_rate_hz", evaluate::kWavSampleRate},
+                          {"seconds", double(r.wav.samples) / render::kWavSampleRate},
+                          {"sample_rate_hz", render::kWavSampleRate},
                           {"format", "WAV PCM 24-bit mono"},
                           {"peak_m_s2", r.wav.peak_m_s2},
                           {"full_scale_m_s2", r.wav.full_scale_m_s2},
-                          {"reconstruction", evaluate::reconstruction_name(r.options.reconstruction)},
+                          {"reconstruction", render::reconstruction_name(r.options.reconstruction)},
                           {"live", r.options.as_played},
                           {"first_frame_sample", r.rendering.first_frame_sample},
                           {"frames", r.rendering.targets.frames},
@@ -168,10 +168,10 @@ class RenderCommand : public Command {
                           {"spectral_distance_m_s2", number_or_null(r.distance_m_s2)},
                           {"compute_seconds_per_second", r.compute_per_second}};
     if (!csv_.empty()) out["csv"] = csv_;
-    if (r.options.reconstruction == evaluate::Reconstruction::fgla) {
+    if (r.options.reconstruction == render::Reconstruction::fgla) {
       out["iterations"] = r.options.fgla.iterations;
     } else {
-      if (r.options.reconstruction == evaluate::Reconstruction::online) {
+      if (r.options.reconstruction == render::Reconstruction::online) {
         out["passes_per_frame"] = r.options.online.iterations;
         out["scatter"] = r.options.online.scatter;
         out["seed"] = r.options.online.seed;

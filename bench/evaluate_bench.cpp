@@ -8,16 +8,17 @@
 #include <fstream>
 #include <random>
 
-#include "evaluate/griffin_lim.hpp"
-#include "evaluate/online_reconstruction.hpp"
-#include "evaluate/spectral_convergence.hpp"
 #include "evaluate/spectral_distance.hpp"
 #include "evaluate/welch_test.hpp"
-#include "tests/evaluate/texture_signal.hpp"
+#include "render/griffin_lim.hpp"
+#include "render/online_reconstruction.hpp"
+#include "render/spectral_convergence.hpp"
+#include "tests/render/texture_signal.hpp"
 
 namespace {
 
 using namespace haptex::evaluate;
+using namespace haptex::render;
 
 constexpr std::size_t kTenSeconds = 100000;
 

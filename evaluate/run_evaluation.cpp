@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <compare>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -16,17 +17,17 @@
 #include "core/thread_clock.hpp"
 #include "evaluate/ar_expectation.hpp"
 #include "evaluate/ar_refit.hpp"
-#include "evaluate/griffin_lim.hpp"
 #include "evaluate/hatt_published.hpp"
 #include "evaluate/log_spectral_distance.hpp"
-#include "evaluate/online_reconstruction.hpp"
 #include "evaluate/oracle.hpp"
 #include "evaluate/section_signals.hpp"
-#include "evaluate/shaped_noise.hpp"
 #include "evaluate/spectral_distance.hpp"
 #include "evaluate/window_sets.hpp"
 #include "predict/predictor.hpp"
 #include "predict/training_data.hpp"
+#include "render/griffin_lim.hpp"
+#include "render/online_reconstruction.hpp"
+#include "render/shaped_noise.hpp"
 
 namespace haptex::evaluate {
 namespace {
@@ -47,11 +48,38 @@ struct Scores {
   }
 };
 
+// A method scored on the test windows: a model in one experiment, the stitched spectra turned into
+// vibration by one reconstruction, or a reference the models are read against.
+struct MethodKey {
+  enum class Kind {
+    per_material, unified_new_actions, unified_new_presses,  // `model`: which of the models
+    stitched,                                                 // `reconstruction`; fgla: `iterations`
+    mean_spectrum, expected_ar, floor, input_floor, floor_estimate, oracle_rendered,
+  };
+  Kind kind;
+  std::size_t model = 0;
+  render::Reconstruction reconstruction = render::Reconstruction::fgla;
+  std::size_t iterations = 0;
+
+  // Kind, then model: the order the speed chart lists the models' points in.
+  auto operator<=>(const MethodKey&) const = default;
+  bool is_model() const { return kind <= Kind::unified_new_presses; }  // the first three kinds
+};
+using Kind = MethodKey::Kind;
+
+// How experiment ids and the speed chart name a model's experiment.
+std::string model_kind_name(Kind kind) {
+  return kind == Kind::per_material ? "per-material" : kind == Kind::unified_new_actions ? "unified-new-actions" : "unified-new-presses";
+}
+
+// The stitched spectra turned into vibration by `reconstruction` (fgla: with `iterations`).
+MethodKey reconstruction_key(render::Reconstruction reconstruction, std::size_t iterations = 0) {
+  return {.kind = Kind::stitched, .reconstruction = reconstruction, .iterations = iterations};
+}
+
 struct MaterialRun {
   Scores baseline;
-  // By method key: the models (see method_keys), fgla:<n>, online, and the references
-  // mean-spectrum, floor, input-floor, floor-estimate, expected-ar, oracle-rendered.
-  std::map<std::string, Scores> methods;
+  std::map<MethodKey, Scores> methods;
   MaterialFloor floor;
   Example example;
 };
@@ -124,28 +152,29 @@ Scores predict_scores(predict::Predictor& p, const predict::TextureCode& code, c
   return s;
 }
 
-MagnitudeFrames frames_of(const std::vector<std::vector<double>>& spectra) {
+render::MagnitudeFrames frames_of(const std::vector<std::vector<double>>& spectra) {
   std::vector<double> flat;
   for (const auto& s : spectra) flat.insert(flat.end(), s.begin(), s.end());
-  return target_magnitudes(std::span<const double>(flat));
+  return render::target_magnitudes(std::span<const double>(flat));
 }
 
-std::vector<double> online_signal(const MagnitudeFrames& frames, std::size_t length, std::uint64_t seed) {
-  OnlineReconstruction online({.scatter = true, .seed = seed});
-  return stream_frames(online, frames, length);
+std::vector<double> online_signal(const render::MagnitudeFrames& frames, std::size_t length, std::uint64_t seed) {
+  render::OnlineReconstruction online({.scatter = true, .seed = seed});
+  return render::stream_frames(online, frames, length);
 }
 
 // The stitched signal of the predicted spectra, scored on the same windows (offset grid[0] = frame 0).
-static_assert(kSectionGridStride == kReconstructionHop, "stitching takes grid window m as reconstruction frame m");
+static_assert(kSectionGridStride == render::kReconstructionHop, "stitching takes grid window m as reconstruction frame m");
 Scores stitched_scores(const std::vector<std::vector<double>>& spectra, const std::vector<std::size_t>& grid,
                        const std::vector<std::vector<double>>& truth, const std::vector<double>& floor, double predict_seconds,
-                       const std::string& key, std::uint64_t seed, std::vector<double>* signal) {
-  const MagnitudeFrames frames = frames_of(spectra);
-  const std::size_t length = covered_samples(frames.frames);
+                       const MethodKey& key, std::uint64_t seed, std::vector<double>* signal) {
+  const render::MagnitudeFrames frames = frames_of(spectra);
+  const std::size_t length = render::covered_samples(frames.frames);
   const double start = thread_seconds();
-  std::vector<double> x = key == "online"  ? online_signal(frames, length, seed)
-                         : key == "noise" ? shaped_noise(frames, length, {seed})
-                                          : griffin_lim(frames, length, {std::stoul(key.substr(5)), 0.99, InitialPhase::random, seed});
+  using render::Reconstruction;
+  std::vector<double> x = key.reconstruction == Reconstruction::online  ? online_signal(frames, length, seed)
+                         : key.reconstruction == Reconstruction::noise ? render::shaped_noise(frames, length, {seed})
+                                                                       : render::griffin_lim(frames, length, {key.iterations, 0.99, render::InitialPhase::random, seed});
   const double seconds = thread_seconds() - start + predict_seconds;
   std::vector<std::size_t> local;
   for (std::size_t t : grid) local.push_back(t - grid[0]);
@@ -166,8 +195,8 @@ struct Context {
   const std::vector<std::vector<Codes>>& codes;  // [model][material]; empty for per-material models
   const EvaluationOptions& options;
   const std::optional<synth::Truth>& truth;  // --truth: the oracle where it knows a material
-  std::vector<std::string> stitched_keys;  // every reconstruction scored (speed-vs-accuracy points)
-  std::string stitched_key;                // the one the stitched-signal experiment reports
+  std::vector<MethodKey> stitched_keys;    // every reconstruction scored (speed-vs-accuracy points)
+  std::optional<MethodKey> stitched_key;   // the one the stitched-signal experiment reports
   int stitched_model = -1;                 // the first unified model, whose new-press spectra are stitched
 };
 
@@ -219,26 +248,26 @@ void score_floor(MaterialRun& run, std::size_t m, const MaterialSignals& signals
   for (std::size_t s = 0; s < signals.test.size(); ++s) {
     if (recorded[s].empty()) continue;
     const auto estimate = nearest_action_spectra(ref.training, section_actions(signals.test[s]), kNearestWindows);
-    run.methods["floor-estimate"].add(score(estimate, recorded[s], ref.noise));
+    run.methods[{Kind::floor_estimate}].add(score(estimate, recorded[s], ref.noise));
     if (!oracle) continue;
-    run.methods["floor"].add(score(oracle->spectra[s], recorded[s], ref.noise));
-    run.methods["input-floor"].add(score(oracle->input_spectra[s], recorded[s], ref.noise));
+    run.methods[{Kind::floor}].add(score(oracle->spectra[s], recorded[s], ref.noise));
+    run.methods[{Kind::input_floor}].add(score(oracle->input_spectra[s], recorded[s], ref.noise));
     if (!oracle->ar) continue;
     std::vector<Scores> each;
     for (const auto& rendering : oracle->ar->rendered_spectra[s]) each.push_back(signal_scores(rendering, recorded[s], ref.noise));
-    run.methods["oracle-rendered"].add(average(each));
+    run.methods[{Kind::oracle_rendered}].add(average(each));
   }
-  f.estimate = mean(run.methods["floor-estimate"].windows);
+  f.estimate = mean(run.methods[{Kind::floor_estimate}].windows);
   if (!oracle) {
-    run.methods["floor"] = run.methods["floor-estimate"];
+    run.methods[{Kind::floor}] = run.methods[{Kind::floor_estimate}];
   } else {
     f.kind = "oracle", f.method = oracle->method;
-    f.input_floor = mean(run.methods["input-floor"].windows);
+    f.input_floor = mean(run.methods[{Kind::input_floor}].windows);
     if (oracle->ar)
       f.closed_form = oracle->ar->closed_form, f.monte_carlo = oracle->ar->monte_carlo, f.closed_form_gap = oracle->ar->gap,
       f.rendered = oracle->ar->rendered;
   }
-  const Scores& floor = run.methods["floor"];
+  const Scores& floor = run.methods[{Kind::floor}];
   f.windows = floor.windows.size();
   f.distance = mean(floor.windows), f.lsd_db = mean(floor.lsd);
 }
@@ -278,18 +307,17 @@ MaterialRun run_material(std::size_t m, const MaterialSignals& signals, const Co
     std::vector<std::vector<double>> first_render_spectra;
     run.baseline.add(rendered_baseline(baseline, section, grid, truth, ref.noise, c, derive_seed(c.options.seed, m, s), first_render,
                                        first_render_spectra));
-    run.methods["mean-spectrum"].add(score(std::vector<std::vector<double>>(truth.size(), ref.mean), truth, ref.noise));
+    run.methods[{Kind::mean_spectrum}].add(score(std::vector<std::vector<double>>(truth.size(), ref.mean), truth, ref.noise));
     std::vector<std::vector<double>> stitched_spectra;
     double stitched_predict_seconds = 0;
     for (std::size_t i = 0; i < c.models.size(); ++i) {
-      const std::string tag = ":" + std::to_string(i);
       if (c.models[i].model.variant == predict::Variant::per_material) {
         const int index = c.models[i].model.material_index(signals.id);
-        run.methods["per-material" + tag].add(predict_scores(predictors[i], predictors[i].material_code(index), actions, truth, ref.noise, nullptr));
+        run.methods[{Kind::per_material, i}].add(predict_scores(predictors[i], predictors[i].material_code(index), actions, truth, ref.noise, nullptr));
         continue;
       }
       const Codes& codes = c.codes[i][m];
-      run.methods["unified-new-actions" + tag].add(predict_scores(predictors[i], codes.training, actions, truth, ref.noise, nullptr));
+      run.methods[{Kind::unified_new_actions, i}].add(predict_scores(predictors[i], codes.training, actions, truth, ref.noise, nullptr));
       // With several test presses, each window's distance is the mean over them.
       std::vector<Scores> presses;
       for (std::size_t press = 0; press < codes.test_presses.size(); ++press) {
@@ -297,23 +325,23 @@ MaterialRun run_material(std::size_t m, const MaterialSignals& signals, const Co
         presses.push_back(predict_scores(predictors[i], codes.test_presses[press], actions, truth, ref.noise, stitch ? &stitched_spectra : nullptr));
         if (stitch) stitched_predict_seconds = presses.back().seconds;
       }
-      Scores& new_presses = run.methods["unified-new-presses" + tag];
+      Scores& new_presses = run.methods[{Kind::unified_new_presses, i}];
       if (!presses.empty()) new_presses.add(average(presses));
     }
-    for (const std::string& key : c.stitched_keys) {
+    for (const MethodKey& key : c.stitched_keys) {
       std::vector<double> signal;
       run.methods[key].add(stitched_scores(stitched_spectra, grid, truth, ref.noise, stitched_predict_seconds, key,
                                            derive_seed(c.options.seed, 7, m, s), &signal));
-      if (keep_example && s == 0 && key == c.stitched_key) {
+      if (keep_example && s == 0 && c.stitched_key == key) {
         const std::size_t j = grid.size() / 2;
         run.example = {signals.id, signals.name, truth[j], stitched_spectra[j], first_render_spectra[j],
                        head(section.accel, grid[0]), head(signal, 0), head(first_render, grid[0])};
       }
     }
   }
-  run.methods["expected-ar"] = expected_baseline(baseline, signals, recorded, ref.noise);
+  run.methods[{Kind::expected_ar}] = expected_baseline(baseline, signals, recorded, ref.noise);
   score_floor(run, m, signals, ref, recorded, c);
-  run.floor.baseline_expected = mean(run.methods["expected-ar"].windows);
+  run.floor.baseline_expected = mean(run.methods[{Kind::expected_ar}].windows);
   return run;
 }
 
@@ -371,81 +399,88 @@ MaterialComparison compare(const MaterialSignals& m, const MaterialRun& run, con
   c.difference = quartiles(difference);
   c.test = welch_t_test(model.windows, baseline.windows);
   c.model_lsd_db = mean(model.lsd), c.baseline_lsd_db = mean(baseline.lsd);
-  const Scores& floor = run.methods.at("floor");
+  const Scores& floor = run.methods.at({Kind::floor});
   c.floor = mean(floor.windows);
-  c.mean_spectrum = mean(run.methods.at("mean-spectrum").windows);
+  c.mean_spectrum = mean(run.methods.at({Kind::mean_spectrum}).windows);
   c.below_floor = run.floor.kind == "oracle" && beats_oracle(model.windows, floor.windows);
   return c;
 }
 
 struct ExperimentSpec {
-  std::string id, title, key;
+  std::string id, title;
+  MethodKey key;
   std::string model_label;
-  std::string baseline_key;  // empty: the AR baseline
+  std::optional<MethodKey> baseline_key;  // empty: the AR baseline
 };
+
+// How the stitched-signal experiment's title names its reconstruction.
+std::string reconstruction_phrase(const MethodKey& key) {
+  if (key.reconstruction == render::Reconstruction::online) return "the online method (RTISI-LA)";
+  if (key.reconstruction == render::Reconstruction::noise) return "white noise shaped to each frame (no phase reconstruction)";
+  return "fast Griffin-Lim, " + std::to_string(key.iterations) + " iterations";
+}
 
 std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& models, const Context& c) {
   std::vector<ExperimentSpec> out;
   std::map<predict::Variant, int> count;
   for (const ModelInput& input : models) ++count[input.model.variant];
   for (std::size_t i = 0; i < models.size(); ++i) {
-    const std::string tag = ":" + std::to_string(i);
     const std::string suffix = count[models[i].model.variant] > 1 ? " (" + models[i].label + ")" : "";
     const std::string label = predict::variant_name(models[i].model.variant) + " model " + models[i].label;
     if (models[i].model.variant == predict::Variant::per_material) {
-      out.push_back({"per-material" + suffix, "Per-material models on new actions (test sections of each material)", "per-material" + tag, label, ""});
+      out.push_back({model_kind_name(Kind::per_material) + suffix, "Per-material models on new actions (test sections of each material)", {Kind::per_material, i}, label, {}});
       continue;
     }
-    out.push_back({"unified-new-actions" + suffix, "Unified model on new actions, with the training presses' texture", "unified-new-actions" + tag, label, ""});
-    out.push_back({"unified-new-presses" + suffix, "Unified model on new actions and a new press (the test press, recognised)", "unified-new-presses" + tag, label, ""});
+    out.push_back({model_kind_name(Kind::unified_new_actions) + suffix, "Unified model on new actions, with the training presses' texture", {Kind::unified_new_actions, i}, label, {}});
+    out.push_back({model_kind_name(Kind::unified_new_presses) + suffix, "Unified model on new actions and a new press (the test press, recognised)", {Kind::unified_new_presses, i}, label, {}});
   }
   // Against the action-blind predictor: does the model use the actions at all?
   for (std::size_t i = 0; i < models.size(); ++i) {
     const bool unified = models[i].model.variant == predict::Variant::unified;
     const std::string suffix = count[models[i].model.variant] > 1 ? " (" + models[i].label + ")" : "";
     const std::string label = predict::variant_name(models[i].model.variant) + " model " + models[i].label;
-    const std::vector<std::pair<std::string, std::string>> tested =
-        unified ? std::vector<std::pair<std::string, std::string>>{{"unified-new-actions", "Unified model (new actions, training presses)"},
-                                                                   {"unified-new-presses", "Unified model (new actions, new press)"}}
-                : std::vector<std::pair<std::string, std::string>>{{"per-material", "Per-material models (new actions)"}};
-    for (const auto& [id, what] : tested) {
+    const std::vector<std::pair<Kind, std::string>> tested =
+        unified ? std::vector<std::pair<Kind, std::string>>{{Kind::unified_new_actions, "Unified model (new actions, training presses)"},
+                                                            {Kind::unified_new_presses, "Unified model (new actions, new press)"}}
+                : std::vector<std::pair<Kind, std::string>>{{Kind::per_material, "Per-material models (new actions)"}};
+    for (const auto& [kind, what] : tested) {
+      const std::string id = model_kind_name(kind);
       out.push_back({id + "-vs-mean-spectrum" + suffix, what + " against each material's mean training spectrum, the best action-blind predictor",
-                     id + ":" + std::to_string(i), label, "mean-spectrum"});
+                     {kind, i}, label, MethodKey{Kind::mean_spectrum}});
       out.push_back({id + "-vs-expected-ar" + suffix, what + " against the AR baseline's expected spectrum at each window's action: spectrum against spectrum",
-                     id + ":" + std::to_string(i), label, "expected-ar"});
+                     {kind, i}, label, MethodKey{Kind::expected_ar}});
     }
   }
-  if (c.stitched_model >= 0 && !c.stitched_key.empty()) {
-    const std::string& key = c.stitched_key;
-    out.push_back({key == "online" ? "stitched-online" : key == "noise" ? "stitched-noise" : "stitched-fgla",
+  if (c.stitched_model >= 0 && c.stitched_key) {
+    const MethodKey& key = *c.stitched_key;
+    out.push_back({"stitched-" + render::reconstruction_name(key.reconstruction),
                    "Stitched time signal: the unified model's spectra on new actions and a new press, turned into vibration by " +
-                       (key == "online"  ? std::string("the online method (RTISI-LA)")
-                        : key == "noise" ? std::string("white noise shaped to each frame (no phase reconstruction)")
-                                         : "fast Griffin-Lim, " + key.substr(5) + " iterations"),
-                   key, "unified model " + models[std::size_t(c.stitched_model)].label, ""});
+                       reconstruction_phrase(key),
+                   key, "unified model " + models[std::size_t(c.stitched_model)].label, {}});
   }
   return out;
 }
 
-std::string method_setting(const std::string& key, const std::vector<ModelInput>& models) {
-  const auto colon = key.find(':');
-  if (key.rfind("fgla:", 0) == 0) return key.substr(5) + " iterations";
-  if (key == "online") return "look-ahead 3 frames, scattered";
-  if (key == "noise") return "frame by frame, no look-ahead";
-  const ModelInput& m = models[std::stoul(key.substr(colon + 1))];
+std::string method_setting(const MethodKey& key, const std::vector<ModelInput>& models) {
+  if (key.kind == Kind::stitched) {
+    if (key.reconstruction == render::Reconstruction::fgla) return std::to_string(key.iterations) + " iterations";
+    if (key.reconstruction == render::Reconstruction::online) return "look-ahead 3 frames, scattered";
+    return "frame by frame, no look-ahead";
+  }
+  const ModelInput& m = models[key.model];
   return m.label + ", " + std::to_string(m.model.config.value("predictor_hidden", 0)) + " hidden";
 }
 
-std::string method_name(const std::string& key) {
-  if (key.rfind("fgla:", 0) == 0) return "unified + FGLA";
-  if (key == "online") return "unified + online (RTISI-LA)";
-  if (key == "noise") return "unified + shaped noise";
-  return key.substr(0, key.find(':'));
+std::string method_name(const MethodKey& key) {
+  if (key.kind != Kind::stitched) return model_kind_name(key.kind);
+  if (key.reconstruction == render::Reconstruction::fgla) return "unified + FGLA";
+  if (key.reconstruction == render::Reconstruction::online) return "unified + online (RTISI-LA)";
+  return "unified + shaped noise";
 }
 
-std::string baseline_label(const std::string& key, const std::string& baseline, std::size_t repeats) {
-  if (key.empty()) return baseline + " (" + std::to_string(repeats) + " renderings per test section)";
-  if (key == "expected-ar") return baseline + " expected spectrum at the recorded action (closed form)";
+std::string baseline_label(const std::optional<MethodKey>& key, const std::string& baseline, std::size_t repeats) {
+  if (!key) return baseline + " (" + std::to_string(repeats) + " renderings per test section)";
+  if (key->kind == Kind::expected_ar) return baseline + " expected spectrum at the recorded action (closed form)";
   return "mean training spectrum per material";
 }
 
@@ -459,13 +494,13 @@ MaterialRealism material_realism(const MaterialSignals& m, const Scores& s, cons
           distance / floor.rendered};
 }
 
-// One time-domain method's realism over the materials; key "" is the AR baseline as rendered.
-Realism realism_of(const std::string& key, const std::string& method, const std::string& setting,
+// One time-domain method's realism over the materials; no key: the AR baseline as rendered.
+Realism realism_of(const std::optional<MethodKey>& key, const std::string& method, const std::string& setting,
                    const std::vector<MaterialSignals>& signals, const std::vector<MaterialRun>& runs) {
   Realism r{method, setting, {}};
   for (std::size_t m = 0; m < runs.size(); ++m) {
-    const auto it = runs[m].methods.find(key);
-    const Scores* s = key.empty() ? &runs[m].baseline : it == runs[m].methods.end() ? nullptr : &it->second;
+    const auto it = key ? runs[m].methods.find(*key) : runs[m].methods.end();
+    const Scores* s = !key ? &runs[m].baseline : it == runs[m].methods.end() ? nullptr : &it->second;
     if (s && !s->realism.empty()) r.materials.push_back(material_realism(signals[m], *s, runs[m].floor));
   }
   return r;
@@ -483,7 +518,7 @@ SpeedPoint point(const std::string& method, const std::string& setting, const Sc
 void summarise(Evaluation& e, const std::vector<MaterialSignals>& signals, const std::vector<MaterialRun>& runs,
                const std::vector<ModelInput>& models, const Context& c) {
   Scores base;
-  std::map<std::string, Scores> totals;
+  std::map<MethodKey, Scores> totals;
   for (const MaterialRun& r : runs) {
     base.add(r.baseline);
     for (const auto& [key, s] : r.methods) totals[key].add(s);
@@ -492,16 +527,18 @@ void summarise(Evaluation& e, const std::vector<MaterialSignals>& signals, const
   }
   const bool any_oracle = std::any_of(e.floors.begin(), e.floors.end(), [](const MaterialFloor& f) { return f.kind == "oracle"; });
   e.floor_kind = any_oracle ? "oracle" : "estimate";
-  e.realism.push_back(realism_of("", e.baseline, "rendered along the recorded action", signals, runs));
+  e.realism.push_back(realism_of(std::nullopt, e.baseline, "rendered along the recorded action", signals, runs));
   e.speed.push_back(point(e.baseline, "order 14-20, 1 rendering", base, &e.realism.back()));
-  e.speed.push_back(point(e.baseline + " expected spectrum", "closed form", totals["expected-ar"], nullptr));
-  for (const std::string& key : c.stitched_keys) {
+  e.speed.push_back(point(e.baseline + " expected spectrum", "closed form", totals[{Kind::expected_ar}], nullptr));
+  for (const MethodKey& key : c.stitched_keys) {
     e.realism.push_back(realism_of(key, method_name(key), method_setting(key, models), signals, runs));
     e.speed.push_back(point(method_name(key), method_setting(key, models), totals[key], &e.realism.back()));
   }
-  if (totals.count("oracle-rendered")) e.realism.push_back(realism_of("oracle-rendered", "generating model rendered", "the oracle's model, 10 renderings", signals, runs));
+  const MethodKey oracle_rendered{Kind::oracle_rendered};
+  if (totals.count(oracle_rendered))
+    e.realism.push_back(realism_of(oracle_rendered, "generating model rendered", "the oracle's model, 10 renderings", signals, runs));
   for (const auto& [key, s] : totals)
-    if (key.find(':') != std::string::npos && key.rfind("fgla:", 0) != 0) e.speed.push_back(point(method_name(key), method_setting(key, models), s, nullptr));
+    if (key.is_model()) e.speed.push_back(point(method_name(key), method_setting(key, models), s, nullptr));
   if (c.truth && !any_oracle)
     e.notes.push_back("--truth " + c.options.truth + " knows none of the materials' recordings: every floor is an estimate");
   if (any_oracle && std::any_of(e.floors.begin(), e.floors.end(), [](const MaterialFloor& f) { return f.kind != "oracle"; }))
@@ -520,10 +557,7 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   e.split = {split.manifest_path, split.manifest_sha256};
   for (const ModelInput& input : models) e.models.push_back({input.path, sha256_file(input.path)});
   e.baseline = o.baseline == Baseline::ar_refit ? "ar-refit" : "hatt-published";
-  e.reconstruct = o.reconstruct == Reconstruction::fgla     ? "fgla"
-                  : o.reconstruct == Reconstruction::online ? "online"
-                  : o.reconstruct == Reconstruction::noise  ? "noise"
-                                                            : "none";
+  e.reconstruct = o.reconstruct ? render::reconstruction_name(*o.reconstruct) : "none";
   e.repeats = o.repeats;
 
   std::vector<std::vector<Codes>> codes(models.size());
@@ -539,17 +573,17 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
     throw input_error(o.truth, "/@sample_rate_hz", "is " + std::to_string(truth->sample_rate_hz) + " Hz, not the evaluation's 10 kHz",
                       "Give the truth.h5 written with the recordings of this dataset");
   Context c{models, codes, o, truth, {}, {}, stitched};
-  if (stitched >= 0 && o.reconstruct != Reconstruction::none) {
-    for (std::size_t n : o.fgla_iterations) c.stitched_keys.push_back("fgla:" + std::to_string(n));
-    c.stitched_keys.push_back("online");
-    c.stitched_keys.push_back("noise");
-    c.stitched_key = o.reconstruct == Reconstruction::online ? "online"
-                     : o.reconstruct == Reconstruction::noise
-                         ? "noise"
-                         : "fgla:" + std::to_string(*std::max_element(o.fgla_iterations.begin(), o.fgla_iterations.end()));
+  if (stitched >= 0 && o.reconstruct) {
+    for (std::size_t n : o.fgla_iterations) c.stitched_keys.push_back(reconstruction_key(render::Reconstruction::fgla, n));
+    c.stitched_keys.push_back(reconstruction_key(render::Reconstruction::online));
+    c.stitched_keys.push_back(reconstruction_key(render::Reconstruction::noise));
+    // FGLA's experiment runs the most iterations scored.
+    c.stitched_key = *o.reconstruct == render::Reconstruction::fgla
+                         ? reconstruction_key(*o.reconstruct, *std::max_element(o.fgla_iterations.begin(), o.fgla_iterations.end()))
+                         : reconstruction_key(*o.reconstruct);
   }
   if (stitched < 0) e.notes.push_back("no unified model: the new-press and stitched-signal experiments and the latent map are left out");
-  if (o.reconstruct == Reconstruction::none) e.notes.push_back("--reconstruct none: no stitched-signal experiment");
+  if (!o.reconstruct) e.notes.push_back("--reconstruct none: no stitched-signal experiment");
 
   const std::vector<MaterialSignals> signals = read_section_signals(split);
   // Figure 5's four materials, spread over the list.
@@ -568,7 +602,7 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
     Experiment x{spec.id, spec.title, spec.model_label, baseline_label(spec.baseline_key, e.baseline, o.repeats), {}};
     for (std::size_t m = 0; m < signals.size(); ++m) {
       if (runs[m].baseline.windows.empty()) continue;
-      const Scores& versus = spec.baseline_key.empty() ? runs[m].baseline : runs[m].methods.at(spec.baseline_key);
+      const Scores& versus = spec.baseline_key ? runs[m].methods.at(*spec.baseline_key) : runs[m].baseline;
       x.materials.push_back(compare(signals[m], runs[m], runs[m].methods.at(spec.key), versus));
     }
     e.experiments.push_back(std::move(x));

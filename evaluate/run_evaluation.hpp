@@ -3,23 +3,25 @@
 // (Heravi et al. 2020, section V), in the spectral domain and as stitched time signals, with the
 // compute time of every method for the speed-vs-accuracy chart.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/progress.hpp"
 #include "evaluate/evaluation_results.hpp"
 #include "predict/model.hpp"
+#include "render/reconstruction.hpp"
 #include "split/split_windows.hpp"
 
 namespace haptex::evaluate {
 
 enum class Baseline { ar_refit, hatt_published };
-enum class Reconstruction { fgla, online, noise, none };
 
 struct EvaluationOptions {
   Baseline baseline = Baseline::ar_refit;
   std::string hatt_models;                              // directory of Models_<Material>.xml (hatt-published)
-  Reconstruction reconstruct = Reconstruction::fgla;    // the stitched-signal experiment's method
+  // The stitched-signal experiment's method; none (--reconstruct none): no such experiment.
+  std::optional<render::Reconstruction> reconstruct = render::Reconstruction::fgla;
   std::size_t repeats = 10;                             // baseline renderings (seeds) per test section
   std::vector<std::size_t> fgla_iterations{0, 8, 32, 100};  // speed-vs-accuracy points; the largest is the experiment's
   std::string truth;               // truth.h5 of haptex synth (hatt or materials): the oracle noise floor; empty: estimates

@@ -1,11 +1,13 @@
 #pragma once
-// The evaluation loss (DESIGN.md section 3): slide a 1000-sample window with step 100 over a
+// The evaluation loss (docs/evaluate.md, Spectral distance): slide a 1000-sample window with step 100 over a
 // rendered (or predicted) signal and the true one; per window, the Euclidean distance of the two
 // 100-bin amplitude spectra (2|X_k|/N, bins 1..100, rectangular window); a segment's loss is the
 // mean over its windows.
 #include <cstddef>
 #include <span>
 #include <vector>
+
+#include "core/signal/spectrum.hpp"
 
 namespace haptex::evaluate {
 
@@ -14,11 +16,9 @@ inline constexpr std::size_t kDistanceStep = 100;  // samples between window sta
 // Number of windows in n samples: 1 + (n - 1000) / 100 (a tail shorter than a step is not used).
 std::size_t distance_windows(std::size_t n);
 
-// Euclidean distance of two amplitude spectra of the same, non-zero length: the spectral-domain
+// Euclidean distance of two amplitude spectra (core/signal/spectrum.hpp): the spectral-domain
 // case, where the model's predicted spectra are compared to the dataset's targets directly.
-// Float spectra are summed in double. Throws haptex::Error when the lengths differ or are zero.
-double spectrum_distance(std::span<const double> a, std::span<const double> b);
-double spectrum_distance(std::span<const float> a, std::span<const float> b);
+using signal::spectrum_distance;
 
 // One distance per window, window w covering samples [100 w, 100 w + 1000) of both signals.
 // Throws haptex::Error when the lengths differ or are shorter than one window (1000 samples).

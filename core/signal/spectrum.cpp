@@ -1,5 +1,6 @@
 #include "core/signal/spectrum.hpp"
 
+#include <cmath>
 #include <complex>
 #include <string>
 
@@ -7,6 +8,22 @@
 #include "core/signal/fft.hpp"
 
 namespace haptex::signal {
+namespace {
+
+template <typename T>
+double euclidean(std::span<const T> a, std::span<const T> b) {
+  if (a.size() != b.size() || a.empty())
+    throw failure("spectral distance: the spectra have " + std::to_string(a.size()) + " and " +
+                  std::to_string(b.size()) + " bins; they must have the same, non-zero number");
+  double sum = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const double d = static_cast<double>(a[k]) - static_cast<double>(b[k]);
+    sum += d * d;
+  }
+  return std::sqrt(sum);
+}
+
+}  // namespace
 
 void amplitude_spectrum(std::span<const double> window, std::span<double> out, std::size_t first_bin) {
   const std::size_t n = window.size();
@@ -33,5 +50,8 @@ std::vector<double> amplitude_spectrum(std::span<const double> window) {
   amplitude_spectrum(window, out, 1);
   return out;
 }
+
+double spectrum_distance(std::span<const double> a, std::span<const double> b) { return euclidean(a, b); }
+double spectrum_distance(std::span<const float> a, std::span<const float> b) { return euclidean(a, b); }
 
 }  // namespace haptex::signal

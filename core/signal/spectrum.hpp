@@ -1,5 +1,6 @@
 #pragma once
-// The model's target: the single-sided amplitude spectrum of one window (DESIGN.md section 3).
+// The model's target: the single-sided amplitude spectrum of one window (docs/align.md, Windows),
+// and the distance of two such spectra.
 #include <span>
 #include <vector>
 
@@ -12,5 +13,11 @@ inline constexpr std::size_t kSpectrumBins = 100;    // 10 Hz .. 1000 Hz
 // Writes into out (size bins); no allocation after the first call per window size.
 void amplitude_spectrum(std::span<const double> window, std::span<double> out, std::size_t first_bin = 1);
 std::vector<double> amplitude_spectrum(std::span<const double> window);  // bins 1..100 of a 1000-sample window
+
+// Euclidean distance of two amplitude spectra of the same, non-zero length: the evaluation's loss
+// per window (evaluate/spectral_distance.hpp), which haptex render also reports, so it lives below
+// both. Float spectra are summed in double. Throws haptex::Error when the lengths differ or are zero.
+double spectrum_distance(std::span<const double> a, std::span<const double> b);
+double spectrum_distance(std::span<const float> a, std::span<const float> b);
 
 }  // namespace haptex::signal

@@ -1,7 +1,7 @@
 #pragma once
 // Vibration from predicted spectra without phase reconstruction: white Gaussian noise shaped frame by
 // frame to the predicted magnitudes (weighted overlap-add on the reconstruction frames of
-// evaluate/target_magnitudes.hpp), as HaTT's models shape white noise with an AR filter.
+// render/target_magnitudes.hpp), as HaTT's models shape white noise with an AR filter.
 //
 // Why: texture vibration is noise; it has no phase worth recovering. Griffin-Lim finds a signal whose
 // every window has the smooth expected spectrum, which no surface plays, so it sounds too steady and
@@ -23,10 +23,10 @@
 #include <vector>
 
 #include "core/signal/fft.hpp"
-#include "evaluate/noise_frames.hpp"
-#include "evaluate/target_magnitudes.hpp"
+#include "render/noise_frames.hpp"
+#include "render/target_magnitudes.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 
 // For a haptic loop: construct once, push one magnitude frame every 100 samples, play what push
 // returns. Allocation-free after construction (as OnlineReconstruction: FFTW's per-thread scratch
@@ -58,4 +58,4 @@ class ShapedNoise {
 // flushed; a longer request is padded with zeros, a shorter one cut. Throws as ShapedNoise::push.
 std::vector<double> shaped_noise(const MagnitudeFrames& s, std::size_t length, const ShapedNoiseOptions& options = {});
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

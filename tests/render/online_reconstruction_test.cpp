@@ -1,4 +1,4 @@
-#include "evaluate/online_reconstruction.hpp"
+#include "render/online_reconstruction.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,20 +14,20 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "evaluate/spectral_convergence.hpp"
-#include "tests/evaluate/texture_signal.hpp"
-#include "tests/evaluate/window_statistics.hpp"
+#include "render/spectral_convergence.hpp"
+#include "tests/render/texture_signal.hpp"
+#include "tests/render/window_statistics.hpp"
 #include "tests/support/allocation_counter.hpp"
 #include "tests/support/npy.hpp"
 
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 using test::load_golden;
 using test::max_scaled_error;
 
-MagnitudeFrames golden_s(const char* name = "evaluate/reconstruction_s.npy") {
+MagnitudeFrames golden_s(const char* name = "render/reconstruction_s.npy") {
   const auto array = load_golden(name);
   return {array.rows(), array.cols(), array.data};
 }
@@ -59,11 +59,11 @@ OnlineReconstructionOptions options(std::size_t look_ahead, std::size_t iteratio
   return o;
 }
 
-TEST(EvaluateOnlineReconstruction, MatchesNumpyRtisiLa) {
+TEST(RenderOnlineReconstruction, MatchesNumpyRtisiLa) {
   const auto s = golden_s();
   for (const auto& [look_ahead, iterations] : {std::pair<std::size_t, std::size_t>{2, 2}, {0, 3}, {3, 1}}) {
     const std::string name = "rtisila_" + std::to_string(look_ahead) + "_" + std::to_string(iterations);
-    const auto expected = load_golden("evaluate/" + name + ".npy").data;
+    const auto expected = load_golden("render/" + name + ".npy").data;
     const auto stream = run(s, options(look_ahead, iterations));
     ASSERT_EQ(stream.samples.size(), expected.size()) << name;
     EXPECT_LT(max_scaled_error(stream.samples, expected), 1e-9) << name;
@@ -71,9 +71,9 @@ TEST(EvaluateOnlineReconstruction, MatchesNumpyRtisiLa) {
 }
 
 // Two frames with a look-ahead of three: nothing before the flush, then both frames' 1100 samples.
-TEST(EvaluateOnlineReconstruction, StreamShorterThanLookAhead) {
-  const auto s = golden_s("evaluate/rtisila_short_s.npy");
-  const auto expected = load_golden("evaluate/rtisila_3_2_short.npy").data;
+TEST(RenderOnlineReconstruction, StreamShorterThanLookAhead) {
+  const auto s = golden_s("render/rtisila_short_s.npy");
+  const auto expected = load_golden("render/rtisila_3_2_short.npy").data;
   const auto stream = run(s, options(3, 2));
   EXPECT_EQ(stream.returned, std::vector<std::size_t>(2, 0));
   EXPECT_EQ(stream.flushed, covered_samples(2));
@@ -82,7 +82,7 @@ TEST(EvaluateOnlineReconstruction, StreamShorterThanLookAhead) {
 
 // Frame m's samples start coming out when frame m + look_ahead arrives: the first look_ahead
 // pushes return nothing, every later one a hop; the flush returns the rest of the covered signal.
-TEST(EvaluateOnlineReconstruction, LatencyIsLookAheadTimesHop) {
+TEST(RenderOnlineReconstruction, LatencyIsLookAheadTimesHop) {
   const auto s = golden_s();
   for (std::size_t look_ahead : {0, 1, 3, 5}) {
     OnlineReconstruction online(options(look_ahead, 1));
@@ -97,7 +97,7 @@ TEST(EvaluateOnlineReconstruction, LatencyIsLookAheadTimesHop) {
 // Where the output sits in time: with silence before sample 3000, frames 0..20 are silent and
 // samples [0, 2100) lie in no other frame, so they must come out exactly zero, and the samples of
 // frame 21's first hop must not. One hop of extra delay would shift the onset to 2200.
-TEST(EvaluateOnlineReconstruction, OutputIsAlignedWithTheFrames) {
+TEST(RenderOnlineReconstruction, OutputIsAlignedWithTheFrames) {
   auto x = test::texture_signal(8000, 5);
   std::fill(x.begin(), x.begin() + 3000, 0.0);
   const auto s = stft_magnitudes(x);
@@ -108,7 +108,7 @@ TEST(EvaluateOnlineReconstruction, OutputIsAlignedWithTheFrames) {
   EXPECT_GT(onset, 0.0);
 }
 
-TEST(EvaluateOnlineReconstruction, ZeroFramesGiveSilence) {
+TEST(RenderOnlineReconstruction, ZeroFramesGiveSilence) {
   const MagnitudeFrames zero{25, kReconstructionBins, std::vector<double>(25 * kReconstructionBins, 0.0)};
   const auto stream = run(zero, options(3, 4));
   EXPECT_EQ(stream.samples.size(), covered_samples(25));
@@ -117,7 +117,7 @@ TEST(EvaluateOnlineReconstruction, ZeroFramesGiveSilence) {
 
 // On 10 s of texture with its exact magnitudes (see the evaluate bench for the figures): finite,
 // and a longer look-ahead is more accurate.
-TEST(EvaluateOnlineReconstruction, LookAheadImprovesAccuracy) {
+TEST(RenderOnlineReconstruction, LookAheadImprovesAccuracy) {
   const auto s = stft_magnitudes(test::texture_signal(100000, 7));
   const auto short_look = run(s, options(1, 4)), long_look = run(s, options(5, 4));
   for (double v : long_look.samples) ASSERT_TRUE(std::isfinite(v));
@@ -128,7 +128,7 @@ TEST(EvaluateOnlineReconstruction, LookAheadImprovesAccuracy) {
 }
 
 // flush() ends one stream and starts the next from scratch.
-TEST(EvaluateOnlineReconstruction, FlushStartsANewStream) {
+TEST(RenderOnlineReconstruction, FlushStartsANewStream) {
   const auto s = golden_s();
   OnlineReconstruction online(options(2, 2));
   std::vector<double> first, second;
@@ -145,7 +145,7 @@ TEST(EvaluateOnlineReconstruction, FlushStartsANewStream) {
   EXPECT_TRUE(online.flush().empty());
 }
 
-TEST(EvaluateOnlineReconstruction, PushDoesNotAllocate) {
+TEST(RenderOnlineReconstruction, PushDoesNotAllocate) {
   const auto s = golden_s();
   OnlineReconstructionOptions o = options(3, 4);
   o.scatter = true;
@@ -167,7 +167,7 @@ TEST(EvaluateOnlineReconstruction, PushDoesNotAllocate) {
 // Without scatter RTISI-LA plays one steady spectrum steadier than noise (0.39 here); with it, each window's amplitudes
 // scatter around the prediction about as a noise-like recording's do (coefficient of variation
 // sqrt(4/pi - 1) = 0.52 per bin), and the level stays the prediction's.
-TEST(EvaluateOnlineReconstruction, ScatterVariesLikeARecording) {
+TEST(RenderOnlineReconstruction, ScatterVariesLikeARecording) {
   using namespace test_windows;
   const std::vector<double> a = texture(1.0);
   const std::size_t frames = 400;
@@ -190,7 +190,7 @@ TEST(EvaluateOnlineReconstruction, ScatterVariesLikeARecording) {
   EXPECT_NE(run(s, scattered).samples, run(frames_of(a, frames), options(3, 4)).samples);
 }
 
-TEST(EvaluateOnlineReconstruction, RejectsBadFrames) {
+TEST(RenderOnlineReconstruction, RejectsBadFrames) {
   EXPECT_THROW(OnlineReconstruction(options(3, 0)), Error);
   OnlineReconstruction online;
   EXPECT_THROW(online.push(std::vector<double>(kReconstructionBins - 1, 1.0)), Error);
@@ -202,4 +202,4 @@ TEST(EvaluateOnlineReconstruction, RejectsBadFrames) {
 }
 
 }  // namespace
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

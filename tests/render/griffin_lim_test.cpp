@@ -1,4 +1,4 @@
-#include "evaluate/griffin_lim.hpp"
+#include "render/griffin_lim.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,18 +10,18 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "evaluate/spectral_convergence.hpp"
-#include "tests/evaluate/texture_signal.hpp"
+#include "render/spectral_convergence.hpp"
+#include "tests/render/texture_signal.hpp"
 #include "tests/support/npy.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 using test::load_golden;
 using test::max_scaled_error;
 
 MagnitudeFrames golden_s() {
-  const auto array = load_golden("evaluate/reconstruction_s.npy");
+  const auto array = load_golden("render/reconstruction_s.npy");
   return {array.rows(), array.cols(), array.data};
 }
 
@@ -45,7 +45,7 @@ double texture_sc(std::size_t iterations, double momentum) {
 
 // From zero phase there is no random draw, so the C++ and numpy iterations can be compared step
 // for step, including the edge normalisation and a cut or padded length.
-TEST(EvaluateGriffinLim, MatchesNumpyFromZeroPhase) {
+TEST(RenderGriffinLim, MatchesNumpyFromZeroPhase) {
   const auto s = golden_s();
   struct Case {
     const char* golden;
@@ -54,7 +54,7 @@ TEST(EvaluateGriffinLim, MatchesNumpyFromZeroPhase) {
   };
   for (const Case c : {Case{"fgla_0p99_5", 5, 3000, 0.99}, Case{"fgla_0_5", 5, 3000, 0.0},
                        Case{"fgla_0p99_3_short", 3, 2500, 0.99}, Case{"fgla_0p99_3_long", 3, 3400, 0.99}}) {
-    const auto expected = load_golden(std::string("evaluate/") + c.golden + ".npy").data;
+    const auto expected = load_golden(std::string("render/") + c.golden + ".npy").data;
     GriffinLimOptions options;
     options.iterations = c.iterations;
     options.momentum = c.momentum;
@@ -65,7 +65,7 @@ TEST(EvaluateGriffinLim, MatchesNumpyFromZeroPhase) {
   }
 }
 
-TEST(EvaluateGriffinLim, ConvergenceImprovesWithIterations) {
+TEST(RenderGriffinLim, ConvergenceImprovesWithIterations) {
   double previous = texture_sc(0, 0.99);
   for (std::size_t iterations : {8, 32, 100}) {
     const double sc = texture_sc(iterations, 0.99);
@@ -74,14 +74,14 @@ TEST(EvaluateGriffinLim, ConvergenceImprovesWithIterations) {
   }
 }
 
-TEST(EvaluateGriffinLim, MomentumBeatsPlainGriffinLim) {
+TEST(RenderGriffinLim, MomentumBeatsPlainGriffinLim) {
   EXPECT_LT(texture_sc(100, 0.99), texture_sc(100, 0.0) - 3.0);
 }
 
 // The goal: -25 dB within 100 iterations on 10 s of texture.
-TEST(EvaluateGriffinLim, FastGriffinLimReachesMinus25Db) { EXPECT_LT(texture_sc(100, 0.99), -25.0); }
+TEST(RenderGriffinLim, FastGriffinLimReachesMinus25Db) { EXPECT_LT(texture_sc(100, 0.99), -25.0); }
 
-TEST(EvaluateGriffinLim, ZeroMagnitudesGiveSilence) {
+TEST(RenderGriffinLim, ZeroMagnitudesGiveSilence) {
   const MagnitudeFrames zero{30, kReconstructionBins, std::vector<double>(30 * kReconstructionBins, 0.0)};
   for (auto phase : {InitialPhase::random, InitialPhase::zero}) {
     GriffinLimOptions options;
@@ -92,7 +92,7 @@ TEST(EvaluateGriffinLim, ZeroMagnitudesGiveSilence) {
   }
 }
 
-TEST(EvaluateGriffinLim, SameSeedSameSignal) {
+TEST(RenderGriffinLim, SameSeedSameSignal) {
   const auto s = golden_s();
   GriffinLimOptions options;
   options.iterations = 4;
@@ -104,7 +104,7 @@ TEST(EvaluateGriffinLim, SameSeedSameSignal) {
   for (double v : first) ASSERT_TRUE(std::isfinite(v));
 }
 
-TEST(EvaluateGriffinLim, RejectsBadInput) {
+TEST(RenderGriffinLim, RejectsBadInput) {
   const auto s = golden_s();
   GriffinLimOptions options;
   options.momentum = 1.0;
@@ -122,4 +122,4 @@ TEST(EvaluateGriffinLim, RejectsBadInput) {
 }
 
 }  // namespace
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

@@ -1,6 +1,6 @@
-// Rendering a trajectory into vibration (evaluate/vibration_render.hpp) and writing it as WAV
-// (evaluate/wav_writer.hpp), with a small model trained in memory on the synthetic problem.
-#include "evaluate/vibration_render.hpp"
+// Rendering a trajectory into vibration (render/vibration_render.hpp) and writing it as WAV
+// (render/wav_writer.hpp), with a small model trained in memory on the synthetic problem.
+#include "render/vibration_render.hpp"
 #include "predict/texture_choice.hpp"
 
 #include <gtest/gtest.h>
@@ -13,14 +13,14 @@
 #include <numbers>
 
 #include "core/error.hpp"
-#include "evaluate/wav_writer.hpp"
 #include "predict/train.hpp"
+#include "render/wav_writer.hpp"
 #include "tests/predict/synthetic_problem.hpp"
 #include "tests/support/allocation_counter.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "tests/support/wav_file.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 namespace fs = std::filesystem;
 
@@ -60,7 +60,7 @@ RenderOptions with(Reconstruction r, std::size_t iterations) {
   return o;
 }
 
-TEST(EvaluateVibrationRender, OneFramePerHundredSamplesFromSampleZero) {
+TEST(RenderVibrationRender, OneFramePerHundredSamplesFromSampleZero) {
   EXPECT_EQ(render_frames(9), 0u);
   EXPECT_EQ(render_frames(10), 1u);
   EXPECT_EQ(render_frames(100), 1u);
@@ -98,7 +98,7 @@ TEST(EvaluateVibrationRender, OneFramePerHundredSamplesFromSampleZero) {
 // as consistent with the predicted spectra (on this problem within 0.3 dB of each other, either way
 // depending on the model), and both far better than the random initial phase alone, in spectral
 // convergence and in the evaluation's spectral distance.
-TEST(EvaluateVibrationRender, FglaAndOnlineBeatRandomPhase) {
+TEST(RenderVibrationRender, FglaAndOnlineBeatRandomPhase) {
   const predict::Trajectory t = stroke(30000);
   double sc[3], distance[3];
   RenderOptions steady = with(Reconstruction::online, 4);
@@ -136,7 +136,7 @@ TEST(EvaluateVibrationRender, FglaAndOnlineBeatRandomPhase) {
 // place in both, just before the step (the frames are centred on their actions); uncompensated, the
 // online one would rise 300 samples later. As played (live), it is the compensated signal delayed by
 // half a frame, the latency and one sample.
-TEST(EvaluateVibrationRender, OnlineLatencyIsCompensatedOrPlayedAsLive) {
+TEST(RenderVibrationRender, OnlineLatencyIsCompensatedOrPlayedAsLive) {
   predict::Trajectory t = constant(30000, 0.3f, 30.0f);
   std::fill(t.force.begin() + 15000, t.force.end(), 2.8f);
   std::fill(t.speed.begin() + 15000, t.speed.end(), 280.0f);
@@ -176,7 +176,7 @@ TEST(EvaluateVibrationRender, OnlineLatencyIsCompensatedOrPlayedAsLive) {
 
 // At rest the model saturates force and speed into its training range: finite output, every frame
 // flagged, and still a consistent rendering.
-TEST(EvaluateVibrationRender, ZeroForceAndSpeedGiveFiniteOutput) {
+TEST(RenderVibrationRender, ZeroForceAndSpeedGiveFiniteOutput) {
   const predict::Trajectory t = constant(5000, 0.0f, 0.0f);
   for (Reconstruction r : {Reconstruction::fgla, Reconstruction::online}) {
     const Rendering out = render_vibration(model(), code(), t, with(r, 4));
@@ -187,7 +187,7 @@ TEST(EvaluateVibrationRender, ZeroForceAndSpeedGiveFiniteOutput) {
   EXPECT_EQ(render_vibration(model(), code(), stroke(3000), with(Reconstruction::fgla, 1)).saturated_frames, 0u);
 }
 
-TEST(EvaluateVibrationRender, ShortTrajectories) {
+TEST(RenderVibrationRender, ShortTrajectories) {
   try {
     render_vibration(model(), code(), stroke(9));
     FAIL() << "9 samples rendered";
@@ -208,7 +208,7 @@ TEST(EvaluateVibrationRender, ShortTrajectories) {
   }
 }
 
-TEST(EvaluateVibrationRender, ReconstructionNames) {
+TEST(RenderVibrationRender, ReconstructionNames) {
   EXPECT_EQ(parse_reconstruction("fgla"), Reconstruction::fgla);
   EXPECT_EQ(parse_reconstruction(reconstruction_name(Reconstruction::online)), Reconstruction::online);
   EXPECT_EQ(parse_reconstruction(reconstruction_name(Reconstruction::noise)), Reconstruction::noise);
@@ -217,7 +217,7 @@ TEST(EvaluateVibrationRender, ReconstructionNames) {
 
 // The live loop's tick predicts, converts and pushes without touching the heap, with RTISI-LA or
 // shaped noise; the noise has no look-ahead, so every tick returns its 100 samples.
-TEST(EvaluateVibrationRender, LiveTicksDoNotAllocate) {
+TEST(RenderVibrationRender, LiveTicksDoNotAllocate) {
   {
     const test::CountAllocations probe;
     const std::vector<double> v(100);
@@ -239,7 +239,7 @@ TEST(EvaluateVibrationRender, LiveTicksDoNotAllocate) {
   }
 }
 
-TEST(EvaluateVibrationRender, TextureChoiceNamesTheModel) {
+TEST(RenderVibrationRender, TextureChoiceNamesTheModel) {
   const predict::Predictor p(model());
   EXPECT_EQ(predict::choose_texture(p, "m.h5", {"material_2", "", ""}).first_layer, p.material_code(2).first_layer);
   try {
@@ -253,7 +253,7 @@ TEST(EvaluateVibrationRender, TextureChoiceNamesTheModel) {
 
 // --- WAV ---
 
-TEST(EvaluateWavWriter, TwentyFourBitPcmAtTenKilohertzWithItsGain) {
+TEST(RenderWavWriter, TwentyFourBitPcmAtTenKilohertzWithItsGain) {
   const test::TempDir dir;
   const Rendering r = render_vibration(model(), code(), stroke(12345), with(Reconstruction::online, 2));
   const WavSummary w = write_wav(dir.file("v.wav"), r.signal);
@@ -287,7 +287,7 @@ TEST(EvaluateWavWriter, TwentyFourBitPcmAtTenKilohertzWithItsGain) {
   EXPECT_FALSE(fs::exists(dir.file("clipped.wav.partial")));
 }
 
-TEST(EvaluateWavWriter, RefusesToOverwriteAndNonFiniteSamples) {
+TEST(RenderWavWriter, RefusesToOverwriteAndNonFiniteSamples) {
   const test::TempDir dir;
   const std::vector<double> x = {0.0, 0.5, -1.25, 0.25};
   write_wav(dir.file("a.wav"), x);
@@ -311,7 +311,7 @@ TEST(EvaluateWavWriter, RefusesToOverwriteAndNonFiniteSamples) {
   EXPECT_EQ(write_wav(dir.file("zero.wav"), std::vector<double>(10, 0.0)).full_scale_m_s2, 1.0);
 }
 
-TEST(EvaluateWavWriter, FullScaleRoundsUpToThreeDigits) {
+TEST(RenderWavWriter, FullScaleRoundsUpToThreeDigits) {
   EXPECT_EQ(rounded_full_scale(3.2134), 3.22);
   EXPECT_EQ(rounded_full_scale(3.22), 3.22);
   EXPECT_EQ(rounded_full_scale(0.012301), 0.0124);
@@ -321,7 +321,7 @@ TEST(EvaluateWavWriter, FullScaleRoundsUpToThreeDigits) {
   EXPECT_TRUE(std::isnan(full_scale_from_comment("no gain here")));
 }
 
-TEST(EvaluateVibrationCsv, OneRowPerSampleInMetresPerSecondSquared) {
+TEST(RenderVibrationCsv, OneRowPerSampleInMetresPerSecondSquared) {
   const test::TempDir dir;
   const predict::Trajectory t = stroke(250);
   const std::vector<double> x(250, 0.125);
@@ -336,4 +336,4 @@ TEST(EvaluateVibrationCsv, OneRowPerSampleInMetresPerSecondSquared) {
 }
 
 }  // namespace
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

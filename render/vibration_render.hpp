@@ -4,19 +4,19 @@
 //
 // Along a trajectory of N samples at 10 kHz, frame m covers the 1000 samples from s_m = 100 m, for
 // s_m <= N - 1; the model predicts its 100-bin amplitude spectrum from the action ending at its middle,
-// s_m + 500 (the model's sample, align/window_table.hpp; held at the trajectory's last sample for the
+// s_m + 500 (the model's sample, dataset/window.hpp; held at the trajectory's last sample for the
 // frames whose middle lies past it). Each frame is converted to Hann-STFT magnitudes
 // (target_magnitude_frame) and given a phase by
-//   - fgla: the offline fast Griffin-Lim over all frames at once (evaluate/griffin_lim.hpp), or
+//   - fgla: the offline fast Griffin-Lim over all frames at once (render/griffin_lim.hpp), or
 //   - online: RTISI-LA, one frame pushed per 100 samples as a live loop would (VibrationLoop below,
-//     evaluate/online_reconstruction.hpp): nothing is allocated per frame;
-//   - noise: no phase at all: white noise shaped to each frame (evaluate/shaped_noise.hpp), which
+//     render/online_reconstruction.hpp): nothing is allocated per frame;
+//   - noise: no phase at all: white noise shaped to each frame (render/shaped_noise.hpp), which
 //     varies from window to window as a surface does; offline and live alike, without look-ahead.
 //
 // Timing. The returned signal has one sample per trajectory sample (m/s^2). Frame m starts at
 // sample first_frame_sample + 100 m: by default at s_m itself, where the model places the spectrum
 // it predicts, so the first ~900 samples fade in (fewer frames overlap there;
-// evaluate/target_magnitudes.hpp, synthesis_gain). The online method's look-ahead (30 ms by
+// render/target_magnitudes.hpp, synthesis_gain). The online method's look-ahead (30 ms by
 // default) is compensated the same way: its samples are placed where they belong, not where they
 // came out, so fgla and online renderings line up with each other and with the trajectory. With
 // RenderOptions::as_played the online samples are instead placed where the live loop plays them:
@@ -27,24 +27,20 @@
 #include <string>
 #include <vector>
 
-#include "evaluate/griffin_lim.hpp"
-#include "evaluate/online_reconstruction.hpp"
-#include "evaluate/shaped_noise.hpp"
-#include "evaluate/target_magnitudes.hpp"
 #include "predict/predictor.hpp"
 #include "predict/trajectory.hpp"
+#include "render/griffin_lim.hpp"
+#include "render/online_reconstruction.hpp"
+#include "render/reconstruction.hpp"
+#include "render/shaped_noise.hpp"
+#include "render/target_magnitudes.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 
 // The first trajectory sample with a whole action (10 samples) ending at it: a rendering needs it.
 inline constexpr std::size_t kFirstActionSample = predict::kActionValues / 2 - 1;  // 9
 // The trajectory sample frame m's action ends at: its middle, or the trajectory's last sample.
 std::size_t frame_action_sample(std::size_t m, std::size_t n);
-
-enum class Reconstruction { fgla, online, noise };
-std::string reconstruction_name(Reconstruction reconstruction);  // "fgla", "online", "noise"
-// Throws haptex::Error (bad_input) for another name.
-Reconstruction parse_reconstruction(const std::string& name);
 
 struct RenderOptions {
   Reconstruction reconstruction = Reconstruction::fgla;
@@ -74,12 +70,12 @@ std::size_t render_frames(std::size_t n);
 Rendering render_vibration(const predict::Model& model, const predict::TextureCode& code,
                            const predict::Trajectory& trajectory, const RenderOptions& options = {});
 
-// Spectral convergence (evaluate/spectral_convergence.hpp) of the rendered signal against the
+// Spectral convergence (render/spectral_convergence.hpp) of the rendered signal against the
 // predicted frames that lie wholly inside it (complete_frames); NaN when none does (a trajectory
 // shorter than first_frame_sample + 1000 samples).
 std::size_t complete_frames(const Rendering& rendering);
 double rendered_convergence_db(const Rendering& rendering);
-// The evaluation's measure (evaluate/spectral_distance.hpp) on the same frames: the mean Euclidean
+// The evaluation's measure (signal::spectrum_distance) on the same frames: the mean Euclidean
 // distance (m/s^2) between the 100-bin amplitude spectrum (rectangular window) of the rendered
 // samples each complete frame covers and the spectrum predicted for it; NaN when no frame is
 // complete. Read it against the spectra's own norm (on the synthetic test problem: FGLA 28 % of
@@ -128,4 +124,4 @@ class VibrationLoop {
   bool saturated_ = false;
 };
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

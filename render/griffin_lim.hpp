@@ -1,6 +1,6 @@
 #pragma once
 // Offline phase reconstruction of predicted magnitudes: the fast Griffin-Lim algorithm (Perraudin,
-// Balazs, Sondergaard 2013), on the reconstruction frames of evaluate/target_magnitudes.hpp.
+// Balazs, Sondergaard 2013), on the reconstruction frames of render/target_magnitudes.hpp.
 //
 // Griffin-Lim alternates two projections: impose the target magnitudes (keep the phase), then make
 // the coefficients consistent (STFT of their least-squares inverse). FGLA adds momentum,
@@ -13,9 +13,9 @@
 #include <span>
 #include <vector>
 
-#include "evaluate/target_magnitudes.hpp"
+#include "render/target_magnitudes.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 
 enum class InitialPhase { random, zero };
 
@@ -37,4 +37,4 @@ std::vector<double> griffin_lim(const MagnitudeFrames& s, std::size_t length, co
 // its phase; where X[k] is 0 the phase is 0. Never produces NaN (s = 0 gives 0).
 void impose_magnitude(std::span<std::complex<double>> X, std::span<const double> s);
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

@@ -1,13 +1,13 @@
-#include "evaluate/noise_frames.hpp"
+#include "render/noise_frames.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "core/signal/stft.hpp"
-#include "evaluate/target_magnitudes.hpp"
+#include "render/target_magnitudes.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 using signal::kWindowSamples;
@@ -46,4 +46,4 @@ std::span<const std::complex<double>> NoiseFrames::next() {
 
 void NoiseFrames::restart() { started_ = false; }
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

@@ -1,4 +1,4 @@
-#include "evaluate/target_magnitudes.hpp"
+#include "render/target_magnitudes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,18 +8,18 @@
 
 #include "core/ar/gaussian_noise.hpp"
 #include "core/error.hpp"
-#include "evaluate/spectral_convergence.hpp"
+#include "render/spectral_convergence.hpp"
 #include "tests/support/npy.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 using test::load_golden;
 using test::max_scaled_error;
 
-TEST(EvaluateTargetMagnitudes, MatchesNumpy) {
-  const auto amplitudes = load_golden("evaluate/target_amplitudes.npy");
-  const auto expected = load_golden("evaluate/target_magnitudes.npy");
+TEST(RenderTargetMagnitudes, MatchesNumpy) {
+  const auto amplitudes = load_golden("render/target_amplitudes.npy");
+  const auto expected = load_golden("render/target_magnitudes.npy");
   const auto out = target_magnitudes(amplitudes.data);
   ASSERT_EQ(out.frames, expected.rows());
   ASSERT_EQ(out.bins, expected.cols());
@@ -30,14 +30,14 @@ TEST(EvaluateTargetMagnitudes, MatchesNumpy) {
   EXPECT_EQ(frame, std::vector<double>(out.row(1).begin(), out.row(1).end()));
 }
 
-TEST(EvaluateTargetMagnitudes, FloatInputEqualsItsDoubleWidening) {
-  const auto amplitudes = load_golden("evaluate/target_amplitudes.npy").data;
+TEST(RenderTargetMagnitudes, FloatInputEqualsItsDoubleWidening) {
+  const auto amplitudes = load_golden("render/target_amplitudes.npy").data;
   const std::vector<float> narrow(amplitudes.begin(), amplitudes.end());
   const std::vector<double> widened(narrow.begin(), narrow.end());
   EXPECT_EQ(target_magnitudes(narrow).values, target_magnitudes(widened).values);
 }
 
-TEST(EvaluateTargetMagnitudes, RmsGainIsTheHannWindowsRms) {
+TEST(RenderTargetMagnitudes, RmsGainIsTheHannWindowsRms) {
   const auto w = signal::hann_periodic(signal::kWindowSamples);
   double sum = 0.0;
   for (double v : w) sum += v * v;
@@ -47,7 +47,7 @@ TEST(EvaluateTargetMagnitudes, RmsGainIsTheHannWindowsRms) {
 // The chosen conversion holds where it should: for white noise the converted rectangular
 // amplitudes carry the same energy as the Hann STFT's own magnitudes, frame by frame on average.
 // The coherent gain 0.5 would miss by a third of the energy.
-TEST(EvaluateTargetMagnitudes, RmsGainHoldsForNoise) {
+TEST(RenderTargetMagnitudes, RmsGainHoldsForNoise) {
   const std::size_t n = 100000;
   ar::GaussianNoise noise(31);
   std::vector<double> x(n);
@@ -72,7 +72,7 @@ TEST(EvaluateTargetMagnitudes, RmsGainHoldsForNoise) {
   EXPECT_GT(std::abs(coherent * coherent * converted_energy / hann_energy - 1.0), 0.2);
 }
 
-TEST(EvaluateTargetMagnitudes, OnlyBinsOneToHundredAreSet) {
+TEST(RenderTargetMagnitudes, OnlyBinsOneToHundredAreSet) {
   const std::vector<double> amplitudes(signal::kSpectrumBins, 1.0);
   const auto out = target_magnitudes(amplitudes);
   EXPECT_EQ(out.row(0)[0], 0.0);
@@ -80,13 +80,13 @@ TEST(EvaluateTargetMagnitudes, OnlyBinsOneToHundredAreSet) {
   for (std::size_t k = signal::kSpectrumBins + 1; k < kReconstructionBins; ++k) EXPECT_EQ(out.row(0)[k], 0.0) << k;
 }
 
-TEST(EvaluateTargetMagnitudes, CoveredSamplesMatchTheStftFrameCount) {
+TEST(RenderTargetMagnitudes, CoveredSamplesMatchTheStftFrameCount) {
   for (std::size_t n : {1000, 1099, 1100, 100000})
     EXPECT_EQ(covered_samples(signal::stft_frames(n, kReconstructionStft)), n - (n - 1000) % 100) << n;
   EXPECT_EQ(covered_samples(0), 0u);
 }
 
-TEST(EvaluateTargetMagnitudes, RejectsBadInput) {
+TEST(RenderTargetMagnitudes, RejectsBadInput) {
   EXPECT_THROW(target_magnitudes(std::vector<double>(150, 1.0)), Error);
   std::vector<double> amplitudes(signal::kSpectrumBins, 1.0);
   amplitudes[7] = -0.5;
@@ -98,4 +98,4 @@ TEST(EvaluateTargetMagnitudes, RejectsBadInput) {
 }
 
 }  // namespace
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

@@ -1,4 +1,4 @@
-#include "evaluate/spectral_convergence.hpp"
+#include "render/spectral_convergence.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include "core/error.hpp"
 #include "tests/support/npy.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 using test::load_golden;
@@ -20,26 +20,26 @@ MagnitudeFrames golden_magnitudes(const char* name) {
   return {array.rows(), array.cols(), array.data};
 }
 
-TEST(EvaluateSpectralConvergence, StftMagnitudesMatchNumpy) {
-  const auto x = load_golden("evaluate/reconstruction_x.npy").data;
-  const auto expected = golden_magnitudes("evaluate/reconstruction_s.npy");
+TEST(RenderSpectralConvergence, StftMagnitudesMatchNumpy) {
+  const auto x = load_golden("render/reconstruction_x.npy").data;
+  const auto expected = golden_magnitudes("render/reconstruction_s.npy");
   const auto s = stft_magnitudes(x);
   ASSERT_EQ(s.frames, expected.frames);
   ASSERT_EQ(s.bins, expected.bins);
   EXPECT_LT(max_scaled_error(s.values, expected.values), 1e-12);
 }
 
-TEST(EvaluateSpectralConvergence, MatchesNumpy) {
-  const auto y = load_golden("evaluate/convergence_y.npy").data;
-  const auto s = golden_magnitudes("evaluate/reconstruction_s.npy");
-  const double expected = load_golden("evaluate/convergence_db.npy").data.at(0);
+TEST(RenderSpectralConvergence, MatchesNumpy) {
+  const auto y = load_golden("render/convergence_y.npy").data;
+  const auto s = golden_magnitudes("render/reconstruction_s.npy");
+  const double expected = load_golden("render/convergence_db.npy").data.at(0);
   EXPECT_NEAR(spectral_convergence_db(y, s), expected, 1e-10 * std::abs(expected));
   EXPECT_NEAR(spectral_convergence_db(stft_magnitudes(y), s), expected, 1e-10 * std::abs(expected));
 }
 
 // Only the frames s has are compared: extra samples after them do not count.
-TEST(EvaluateSpectralConvergence, ExactSignalIsMinusInfinity) {
-  const auto x = load_golden("evaluate/reconstruction_x.npy").data;
+TEST(RenderSpectralConvergence, ExactSignalIsMinusInfinity) {
+  const auto x = load_golden("render/reconstruction_x.npy").data;
   auto s = stft_magnitudes(x);
   EXPECT_EQ(spectral_convergence_db(x, s), -std::numeric_limits<double>::infinity());
   s.frames -= 2;
@@ -47,7 +47,7 @@ TEST(EvaluateSpectralConvergence, ExactSignalIsMinusInfinity) {
   EXPECT_EQ(spectral_convergence_db(x, s), -std::numeric_limits<double>::infinity());
 }
 
-TEST(EvaluateSpectralConvergence, ZeroTarget) {
+TEST(RenderSpectralConvergence, ZeroTarget) {
   MagnitudeFrames zero{2, kReconstructionBins, std::vector<double>(2 * kReconstructionBins, 0.0)};
   EXPECT_EQ(spectral_convergence_db(zero, zero), -std::numeric_limits<double>::infinity());
   auto other = zero;
@@ -55,8 +55,8 @@ TEST(EvaluateSpectralConvergence, ZeroTarget) {
   EXPECT_EQ(spectral_convergence_db(other, zero), std::numeric_limits<double>::infinity());
 }
 
-TEST(EvaluateSpectralConvergence, RejectsMismatchedShapes) {
-  const auto x = load_golden("evaluate/reconstruction_x.npy").data;
+TEST(RenderSpectralConvergence, RejectsMismatchedShapes) {
+  const auto x = load_golden("render/reconstruction_x.npy").data;
   const auto s = stft_magnitudes(x);
   EXPECT_THROW(spectral_convergence_db(std::span(x).first(x.size() - 200), s), Error);
   auto fewer = s;
@@ -65,4 +65,4 @@ TEST(EvaluateSpectralConvergence, RejectsMismatchedShapes) {
 }
 
 }  // namespace
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

@@ -1,4 +1,4 @@
-#include "evaluate/shaped_noise.hpp"
+#include "render/shaped_noise.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,10 +11,10 @@
 
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
-#include "tests/evaluate/window_statistics.hpp"
+#include "tests/render/window_statistics.hpp"
 #include "tests/support/allocation_counter.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 using namespace test_windows;
@@ -22,7 +22,7 @@ using namespace test_windows;
 // Each window's spectrum scatters around the prediction as a noise-like recording's does: mean
 // amplitude the prediction (Rayleigh mean), coefficient of variation sqrt(4/pi - 1) = 0.52 per bin.
 // 20 s of one spectrum: the mean of ~2000 overlapping windows (~200 independent) is good to ~4 %.
-TEST(EvaluateShapedNoise, WindowsScatterAroundThePredictionLikeARecording) {
+TEST(RenderShapedNoise, WindowsScatterAroundThePredictionLikeARecording) {
   const std::vector<double> a = texture(1.0);
   const std::size_t frames = 2000;
   const std::vector<double> x = shaped_noise(frames_of(a, frames), covered_samples(frames), {7});
@@ -43,7 +43,7 @@ TEST(EvaluateShapedNoise, WindowsScatterAroundThePredictionLikeARecording) {
 }
 
 // A louder second half is louder by as much, and the change is placed where the frames change.
-TEST(EvaluateShapedNoise, FollowsTheFramesLevel) {
+TEST(RenderShapedNoise, FollowsTheFramesLevel) {
   const std::vector<double> quiet = texture(1.0), loud = texture(4.0);
   std::vector<double> all;
   for (std::size_t m = 0; m < 600; ++m) all.insert(all.end(), (m < 300 ? quiet : loud).begin(), (m < 300 ? quiet : loud).end());
@@ -54,7 +54,7 @@ TEST(EvaluateShapedNoise, FollowsTheFramesLevel) {
   EXPECT_NEAR(ratio, 4.0, 0.2);
 }
 
-TEST(EvaluateShapedNoise, StreamsWithoutLatencyOrAllocation) {
+TEST(RenderShapedNoise, StreamsWithoutLatencyOrAllocation) {
   const MagnitudeFrames s = frames_of(texture(1.0), 50);
   ShapedNoise noise({11});
   std::vector<double> streamed;
@@ -79,7 +79,7 @@ TEST(EvaluateShapedNoise, StreamsWithoutLatencyOrAllocation) {
   EXPECT_EQ(shaped_noise(s, 10000, {11}).size(), 10000u);
 }
 
-TEST(EvaluateShapedNoise, SilentFramesGiveSilenceAndBadFramesAreRefused) {
+TEST(RenderShapedNoise, SilentFramesGiveSilenceAndBadFramesAreRefused) {
   for (double v : shaped_noise(frames_of(std::vector<double>(signal::kSpectrumBins, 0.0), 20), 2900)) ASSERT_EQ(v, 0.0);
   ShapedNoise noise;
   EXPECT_THROW(noise.push(std::vector<double>(kReconstructionBins - 1, 1.0)), Error);
@@ -91,4 +91,4 @@ TEST(EvaluateShapedNoise, SilentFramesGiveSilenceAndBadFramesAreRefused) {
 }
 
 }  // namespace
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

@@ -2,13 +2,13 @@
 // How consistent a reconstruction is with its target magnitudes: spectral convergence as the
 // PhaseRet/LTFAT toolboxes define it (magnitudeerrdb, frsynabs' relres),
 //   SC = 20 log10( || |STFT(x)| - s ||_F / || s ||_F )  dB,
-// over the reconstruction frames (evaluate/target_magnitudes.hpp). Lower is better; an exact
+// over the reconstruction frames (render/target_magnitudes.hpp). Lower is better; an exact
 // reconstruction gives -infinity.
 #include <span>
 
-#include "evaluate/target_magnitudes.hpp"
+#include "render/target_magnitudes.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 
 // |STFT(x)| with the reconstruction frames: 1 + (n - 1000) / 100 frames x 501 bins.
 MagnitudeFrames stft_magnitudes(std::span<const double> x);
@@ -21,4 +21,4 @@ double spectral_convergence_db(const MagnitudeFrames& reconstructed, const Magni
 // covered_samples(s.frames) samples or more; haptex::Error otherwise).
 double spectral_convergence_db(std::span<const double> x, const MagnitudeFrames& s);
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

@@ -1,7 +1,7 @@
 #pragma once
 // Live phase reconstruction for rendering: Real-Time Iterative Spectrogram Inversion with
 // Look-Ahead (RTISI-LA; Zhu, Beauregard, Wyse 2007), on the reconstruction frames of
-// evaluate/target_magnitudes.hpp.
+// render/target_magnitudes.hpp.
 //
 // Why RTISI-LA and not real-time PGHI (Prusa 2017): PGHI integrates phase gradients estimated from
 // log-magnitude derivatives, which assumes a Gaussian-like window and smooth spectra; texture
@@ -21,17 +21,17 @@
 #include <vector>
 
 #include "core/signal/fft.hpp"
-#include "evaluate/noise_frames.hpp"
-#include "evaluate/target_magnitudes.hpp"
+#include "render/noise_frames.hpp"
+#include "render/target_magnitudes.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 
 struct OnlineReconstructionOptions {
   std::size_t look_ahead = 3;  // frames after the one being finished; latency = look_ahead * 100 samples
   std::size_t iterations = 4;  // passes over the look-ahead frames per new frame, >= 1
   // Draw each frame's targets around the pushed magnitudes with a noise-like texture's spread
   // before finding their phase: every bin times |N_k| / E|N_k| of a white-noise stream's frame
-  // (evaluate/noise_frames.hpp; mean 1, Rayleigh, correlated from frame to frame as a recording's
+  // (render/noise_frames.hpp; mean 1, Rayleigh, correlated from frame to frame as a recording's
   // windows are). Without it RTISI-LA plays the expected spectrum, steadier than any surface.
   bool scatter = false;
   std::uint64_t seed = 0;  // the scatter's noise
@@ -85,4 +85,4 @@ class OnlineReconstruction {
   bool flushing_ = false;
 };
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "core/signal/spectrum.hpp"
-#include "evaluate/target_magnitudes.hpp"
+#include "render/target_magnitudes.hpp"
 
-namespace haptex::evaluate::test_windows {
+namespace haptex::render::test_windows {
 
 // A coloured texture spectrum (m/s^2 per bin, 10..1000 Hz): a floor with a resonance at 300 Hz.
 inline std::vector<double> texture(double scale) {
@@ -50,4 +50,4 @@ inline double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-}  // namespace haptex::evaluate::test_windows
+}  // namespace haptex::render::test_windows

@@ -1,12 +1,12 @@
 #pragma once
-// White Gaussian noise seen through the reconstruction frames (evaluate/target_magnitudes.hpp):
+// White Gaussian noise seen through the reconstruction frames (render/target_magnitudes.hpp):
 // frame m is the Hann-windowed noise of samples [100 m, 100 m + 1000), transformed. One stream
 // runs through the frames, so neighbouring frames share 90 % of their noise as a recording's
 // windows share their samples: the frames' magnitudes scatter (Rayleigh) and drift from frame to
 // frame the way a noise-like texture's window spectra do.
 //
-// Two users: shaped noise (evaluate/shaped_noise.hpp) scales each frame's bins to the prediction
-// and plays the noise itself; RTISI-LA with scatter (evaluate/online_reconstruction.hpp) takes only
+// Two users: shaped noise (render/shaped_noise.hpp) scales each frame's bins to the prediction
+// and plays the noise itself; RTISI-LA with scatter (render/online_reconstruction.hpp) takes only
 // each bin's relative magnitude, to draw the frame's targets around the prediction before finding
 // a phase for them (docs/evaluate.md, "Realism").
 #include <complex>
@@ -17,7 +17,7 @@
 
 #include "core/signal/fft.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 
 class NoiseFrames {
  public:
@@ -43,4 +43,4 @@ class NoiseFrames {
   bool started_ = false;
 };
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

@@ -12,7 +12,7 @@
 #include "core/signal/spectrum.hpp"
 #include "core/signal/stft.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 
 inline constexpr std::size_t kReconstructionHop = 100;
 inline constexpr std::size_t kReconstructionBins = signal::kWindowSamples / 2 + 1;  // 501
@@ -75,4 +75,4 @@ std::vector<double> stream_frames(Stream& stream, const MagnitudeFrames& s, std:
 MagnitudeFrames target_magnitudes(std::span<const double> amplitudes);
 MagnitudeFrames target_magnitudes(std::span<const float> amplitudes);
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

@@ -1,4 +1,4 @@
-#include "evaluate/wav_writer.hpp"
+#include "render/wav_writer.hpp"
 
 #include <sndfile.h>
 
@@ -13,7 +13,7 @@
 #include "core/error.hpp"
 #include "core/version.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 constexpr const char* kFullScaleKey = "full_scale_m_s2=";
@@ -101,4 +101,4 @@ WavSummary write_wav(const std::string& path, std::span<const double> signal_m_s
   return summary;
 }
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

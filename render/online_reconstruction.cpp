@@ -1,13 +1,13 @@
-#include "evaluate/online_reconstruction.hpp"
+#include "render/online_reconstruction.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "core/error.hpp"
-#include "evaluate/griffin_lim.hpp"
+#include "render/griffin_lim.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 using signal::kWindowSamples;
@@ -169,4 +169,4 @@ void OnlineReconstruction::write_finished(std::span<double> out) const {
   }
 }
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

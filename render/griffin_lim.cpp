@@ -1,4 +1,4 @@
-#include "evaluate/griffin_lim.hpp"
+#include "render/griffin_lim.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "core/random_seeds.hpp"
 #include "core/signal/fft.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 using Complex = std::complex<double>;
@@ -129,4 +129,4 @@ std::vector<double> griffin_lim(const MagnitudeFrames& s, std::size_t length, co
   return state.signal(length);
 }
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

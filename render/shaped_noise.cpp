@@ -1,10 +1,10 @@
-#include "evaluate/shaped_noise.hpp"
+#include "render/shaped_noise.hpp"
 
 #include <algorithm>
 
 #include "core/signal/stft.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 using signal::kWindowSamples;
@@ -55,4 +55,4 @@ std::vector<double> shaped_noise(const MagnitudeFrames& s, std::size_t length, c
   return stream_frames(noise, s, length);
 }
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

@@ -19,7 +19,7 @@
 #include <span>
 #include <string>
 
-namespace haptex::evaluate {
+namespace haptex::render {
 
 inline constexpr int kWavSampleRate = 10000;
 
@@ -48,4 +48,4 @@ double rounded_full_scale(double peak_m_s2);
 // The m/s^2 per full scale a comment written by write_wav states; NaN when it states none.
 double full_scale_from_comment(const std::string& comment);
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

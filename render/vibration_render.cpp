@@ -1,4 +1,4 @@
-#include "evaluate/vibration_render.hpp"
+#include "render/vibration_render.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,14 +7,13 @@
 #include <limits>
 #include <memory>
 
-#include "align/window_table.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
-#include "evaluate/spectral_convergence.hpp"
-#include "evaluate/spectral_distance.hpp"
+#include "dataset/window.hpp"
+#include "render/spectral_convergence.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 constexpr std::size_t kHop = kReconstructionHop;
@@ -52,7 +51,7 @@ void render_online(const predict::Model& model, const predict::TextureCode& code
   VibrationLoop loop = options.reconstruction == Reconstruction::noise ? VibrationLoop(model, code, options.noise)
                                                                        : VibrationLoop(model, code, options.online);
   out.latency_samples = loop.latency_samples();
-  if (options.as_played) out.first_frame_sample += align::kActionEnd + out.latency_samples + 1;
+  if (options.as_played) out.first_frame_sample += dataset::kActionEnd + out.latency_samples + 1;
   float action[predict::kActionValues];
   std::size_t position = out.first_frame_sample;  // where the next returned sample belongs
   for (std::size_t m = 0; m < out.targets.frames; ++m) {
@@ -72,22 +71,9 @@ void render_online(const predict::Model& model, const predict::TextureCode& code
 
 }  // namespace
 
-std::string reconstruction_name(Reconstruction reconstruction) {
-  return reconstruction == Reconstruction::fgla ? "fgla" : reconstruction == Reconstruction::online ? "online" : "noise";
-}
-
-Reconstruction parse_reconstruction(const std::string& name) {
-  if (name == "fgla") return Reconstruction::fgla;
-  if (name == "online") return Reconstruction::online;
-  if (name == "noise") return Reconstruction::noise;
-  throw Error(Error::Kind::bad_input, "render: unknown reconstruction '" + name +
-                                          "'. Use fgla (offline fast Griffin-Lim), online (RTISI-LA, as a live loop) or noise "
-                                          "(white noise shaped to each frame)");
-}
-
 std::size_t render_frames(std::size_t n) { return n <= kFirstActionSample ? 0 : (n - 1) / kHop + 1; }
 
-std::size_t frame_action_sample(std::size_t m, std::size_t n) { return std::min(m * kHop + align::kActionEnd, n - 1); }
+std::size_t frame_action_sample(std::size_t m, std::size_t n) { return std::min(m * kHop + dataset::kActionEnd, n - 1); }
 
 Rendering render_vibration(const predict::Model& model, const predict::TextureCode& code, const predict::Trajectory& trajectory,
                            const RenderOptions& options) {
@@ -146,7 +132,7 @@ double rendered_distance(const Rendering& rendering) {
     signal::amplitude_spectrum(window, amplitudes);
     const auto row = rendering.spectra.begin() + std::ptrdiff_t(m * predict::kSpectrumBins);
     std::copy(row, row + predict::kSpectrumBins, predicted.begin());
-    sum += spectrum_distance(amplitudes, predicted);
+    sum += signal::spectrum_distance(amplitudes, predicted);
   }
   return sum / double(frames);
 }
@@ -173,4 +159,4 @@ std::span<const double> VibrationLoop::tick(std::span<const float> action) {
   return noise_ ? shaped_.push(magnitudes_) : reconstruction_.push(magnitudes_);
 }
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

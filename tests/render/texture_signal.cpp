@@ -1,4 +1,4 @@
-#include "tests/evaluate/texture_signal.hpp"
+#include "tests/render/texture_signal.hpp"
 
 #include <cmath>
 #include <numbers>

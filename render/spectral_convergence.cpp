@@ -1,4 +1,4 @@
-#include "evaluate/spectral_convergence.hpp"
+#include "render/spectral_convergence.hpp"
 
 #include <cmath>
 #include <limits>
@@ -6,7 +6,7 @@
 
 #include "core/error.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 
 MagnitudeFrames stft_magnitudes(std::span<const double> x) {
   const auto S = signal::stft(x, kReconstructionStft);
@@ -42,4 +42,4 @@ double spectral_convergence_db(std::span<const double> x, const MagnitudeFrames&
   return spectral_convergence_db(stft_magnitudes(x.first(needed)), s);
 }
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render

@@ -1,7 +1,7 @@
 #pragma once
 // A texture-like vibration for the reconstruction tests and benchmarks: what the HaTT models
 // render (AR-filtered Gaussian noise whose variance follows the stroke speed), made without a
-// model file. tests/golden/evaluate_golden.py's texture_like() is the same recipe in numpy.
+// model file. tests/golden/render_golden.py's texture_like() is the same recipe in numpy.
 #include <cstddef>
 #include <cstdint>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "evaluate/target_magnitudes.hpp"
+#include "render/target_magnitudes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "core/error.hpp"
 
-namespace haptex::evaluate {
+namespace haptex::render {
 namespace {
 
 using signal::kSpectrumBins;
@@ -84,4 +84,4 @@ void target_magnitude_frame(std::span<const float> amplitudes, std::span<double>
 MagnitudeFrames target_magnitudes(std::span<const double> amplitudes) { return convert_frames(amplitudes); }
 MagnitudeFrames target_magnitudes(std::span<const float> amplitudes) { return convert_frames(amplitudes); }
 
-}  // namespace haptex::evaluate
+}  // namespace haptex::render
