@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "predict/model_file.hpp"
+#include "dataset/window.hpp"
 #include "predict/predictor.hpp"
 #include "predict/train_options.hpp"
 
@@ -29,7 +30,7 @@ SpectrumNet spectrum_net(const TrainOptions& o, int latent, std::uint64_t seed) 
   for (int i = 0; i < o.action_layers; ++i) action.push_back(o.action_hidden);
   predictor.push_back(latent + action.back());
   for (int i = 0; i < o.predictor_layers; ++i) predictor.push_back(o.predictor_hidden);
-  predictor.push_back(kSpectrumBins);
+  predictor.push_back(kTargetBins);
   return {make_mlp(action, Activation::relu, Activation::relu, seed),
           make_mlp(predictor, Activation::relu, Activation::softplus, seed + 1)};
 }
@@ -46,7 +47,7 @@ Model make_model(Variant variant, const TrainOptions& o) {
   n.action_scale = Eigen::VectorXf::Constant(kActionValues, 0.6f);
   n.action_scale.tail(10).setConstant(70.0f);
   n.force_min = 0.05f, n.force_max = 4.0f, n.speed_min = 1.0f, n.speed_max = 400.0f;
-  n.target_scale = Eigen::VectorXf::LinSpaced(kSpectrumBins, 0.05f, 0.01f);
+  n.target_scale = Eigen::VectorXf::LinSpaced(kTargetBins, 0.05f, 0.01f);
   for (int k = 0; k < kMaterials; ++k) {
     m.material_ids.push_back("material_" + std::to_string(k));
     m.material_names.push_back("Material " + std::to_string(k));
@@ -81,7 +82,7 @@ std::vector<float> stroke_action() {
 void single_query(benchmark::State& state, const Model& model) {
   Predictor predictor(model);
   const TextureCode code = predictor.material_code(7);
-  std::vector<float> action = stroke_action(), spectrum(kSpectrumBins);
+  std::vector<float> action = stroke_action(), spectrum(kTargetBins);
   for (auto _ : state) {
     predictor.predict(code, action, spectrum);
     benchmark::DoNotOptimize(spectrum.data());

@@ -1,10 +1,12 @@
 #pragma once
 // One vibration recording as read from a HaTT recorded-data XML or a CSV file, before it is
-// turned into the recordings file (DESIGN.md sections 3-5).
+// turned into the recordings file (docs/convert.md; schemas/hdf5-layout.md).
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "dataset/window.hpp"
 
 namespace haptex::convert {
 
@@ -26,7 +28,7 @@ struct Recording {
   bool has(const std::string& channel) const { return channels.count(channel) > 0; }
 };
 
-inline constexpr double kSampleRateHz = 10000.0;
+using dataset::kSampleRateHz;  // the only rate haptex keeps; sources at other rates are refused
 // What each quantity must be measured in (DESIGN.md section 3).
 inline const std::map<std::string, std::string> kExpectedUnits = {
     {"accel", "m/s^2"}, {"force", "N"}, {"speed", "mm/s"}, {"position", "mm"}};

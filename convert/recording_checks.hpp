@@ -4,11 +4,12 @@
 #include <string>
 
 #include "convert/recording.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::convert {
 
-// Minimum length: one model window (DESIGN.md section 3).
-inline constexpr std::size_t kMinimumSamples = 1000;
+// Minimum length: one model window.
+inline constexpr std::size_t kMinimumSamples = dataset::kWindowSamples;
 
 void check_sample_rate(const std::string& file, const std::string& where, double rate_hz);
 // Scales a quantity's channels into haptex units; refuses unknown units.

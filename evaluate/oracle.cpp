@@ -51,7 +51,7 @@ std::vector<std::vector<double>> grid_section(const synth::TruthGrid& grid, cons
                                               const std::vector<std::size_t>& windows, double noise_power) {
   std::vector<std::vector<double>> out;
   for (std::size_t t : windows) {
-    std::vector<double> power(signal::kSpectrumBins, 0.0);
+    std::vector<double> power(dataset::kTargetBins, 0.0);
     for (std::size_t p = 0; p < kGridPoints; ++p) {
       const std::size_t i = std::size_t(begin) + t + 50 + 100 * p;
       const auto at = grid_power_at(grid, r.speed_mm_s[i], r.force_n[i]);
@@ -119,13 +119,13 @@ bool beats_oracle(const std::vector<double>& model, const std::vector<double>& o
 }
 
 void add_sensor_noise(std::vector<double>& amplitude, double noise_power) {
-  const double add = std::numbers::pi * noise_power / double(signal::kWindowSamples);
+  const double add = std::numbers::pi * noise_power / double(dataset::kWindowSamples);
   for (double& a : amplitude) a = std::sqrt(a * a + add);
 }
 
 std::vector<double> grid_power_at(const synth::TruthGrid& grid, double speed, double force) {
   const Neighbours s = locate(grid.speeds_mm_s, speed), f = locate(grid.forces_n, force);
-  std::vector<double> out(signal::kSpectrumBins);
+  std::vector<double> out(dataset::kTargetBins);
   for (std::size_t k = 0; k < out.size(); ++k)
     out[k] = (1 - s.w) * (1 - f.w) * extended_power(grid, s.lo, f.lo, k) + s.w * (1 - f.w) * extended_power(grid, s.hi, f.lo, k) +
              (1 - s.w) * f.w * extended_power(grid, s.lo, f.hi, k) + s.w * f.w * extended_power(grid, s.hi, f.hi, k);

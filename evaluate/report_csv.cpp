@@ -11,13 +11,13 @@
 
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
+#include "dataset/window.hpp"
 #include "evaluate/results_json.hpp"
 
 namespace haptex::evaluate {
 namespace {
 
-constexpr double kSampleRateHz = 10000.0;
-constexpr double kBinHz = kSampleRateHz / double(signal::kWindowSamples);  // bin k is k * 10 Hz
+using dataset::kBinHz, dataset::kSampleRateHz;
 
 std::string safe_stem(std::string_view id) {
   std::string s(id);

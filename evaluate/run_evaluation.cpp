@@ -15,6 +15,7 @@
 #include "core/random_seeds.hpp"
 #include "core/sha256.hpp"
 #include "core/thread_clock.hpp"
+#include "dataset/window.hpp"
 #include "evaluate/ar_expectation.hpp"
 #include "evaluate/ar_refit.hpp"
 #include "evaluate/hatt_published.hpp"
@@ -32,7 +33,6 @@
 namespace haptex::evaluate {
 namespace {
 
-constexpr double kSampleRate = 10000.0;
 constexpr std::size_t kExampleSamples = 2000;
 
 // Per-window distances of one method, what computing it cost, and for signals how real they look.
@@ -137,17 +137,17 @@ ar::PiecewiseArModel baseline_model(const MaterialSignals& m, const EvaluationOp
 Scores predict_scores(predict::Predictor& p, const predict::TextureCode& code, const Eigen::MatrixXf& actions,
                       const std::vector<std::vector<double>>& truth, const std::vector<double>& floor,
                       std::vector<std::vector<double>>* spectra) {
-  std::vector<std::vector<double>> predicted(truth.size(), std::vector<double>(predict::kSpectrumBins));
-  std::vector<float> out(predict::kSpectrumBins);
+  std::vector<std::vector<double>> predicted(truth.size(), std::vector<double>(dataset::kTargetBins));
+  std::vector<float> out(dataset::kTargetBins);
   const double start = thread_seconds();
   for (std::size_t j = 0; j < truth.size(); ++j) {
-    p.predict(code, std::span<const float>(actions.col(Eigen::Index(j)).data(), predict::kActionValues), out);
+    p.predict(code, std::span<const float>(actions.col(Eigen::Index(j)).data(), dataset::kActionValues), out);
     std::copy(out.begin(), out.end(), predicted[j].begin());
   }
   const double seconds = thread_seconds() - start;
   Scores s = score(predicted, truth, floor);
   s.seconds = seconds;
-  s.rendered_seconds = double(truth.size()) * 100 / kSampleRate;  // each prediction covers the next hop
+  s.rendered_seconds = double(truth.size()) * double(dataset::kGridStride) / dataset::kSampleRateHz;  // each prediction covers the next hop
   if (spectra) *spectra = std::move(predicted);
   return s;
 }
@@ -164,7 +164,7 @@ std::vector<double> online_signal(const render::MagnitudeFrames& frames, std::si
 }
 
 // The stitched signal of the predicted spectra, scored on the same windows (offset grid[0] = frame 0).
-static_assert(kSectionGridStride == render::kReconstructionHop, "stitching takes grid window m as reconstruction frame m");
+static_assert(dataset::kGridStride == render::kReconstructionHop, "stitching takes grid window m as reconstruction frame m");
 Scores stitched_scores(const std::vector<std::vector<double>>& spectra, const std::vector<std::size_t>& grid,
                        const std::vector<std::vector<double>>& truth, const std::vector<double>& floor, double predict_seconds,
                        const MethodKey& key, std::uint64_t seed, std::vector<double>* signal) {
@@ -180,7 +180,7 @@ Scores stitched_scores(const std::vector<std::vector<double>>& spectra, const st
   for (std::size_t t : grid) local.push_back(t - grid[0]);
   Scores s = signal_scores(grid_spectra(x, local), truth, floor);
   s.seconds = seconds;
-  s.rendered_seconds = double(spectra.size()) * 100 / kSampleRate;
+  s.rendered_seconds = double(spectra.size()) * double(dataset::kGridStride) / dataset::kSampleRateHz;
   if (signal) *signal = std::move(x);
   return s;
 }
@@ -233,7 +233,7 @@ Scores rendered_baseline(const ar::PiecewiseArModel& baseline, const SectionSign
   first_render = std::move(renders.front());
   Scores s = average(each);
   s.seconds = seconds;
-  s.rendered_seconds = double(c.options.repeats * section.accel.size()) / kSampleRate;
+  s.rendered_seconds = double(c.options.repeats * section.accel.size()) / dataset::kSampleRateHz;
   return s;
 }
 
@@ -285,7 +285,7 @@ Scores expected_baseline(const ar::PiecewiseArModel& baseline, const MaterialSig
   Scores all;
   for (std::size_t s = 0; s < sections.size(); ++s) all.add(score(e.spectra[s], sections[s].recorded, floor));
   all.seconds = e.closed_form_seconds;
-  all.rendered_seconds = double(e.closed_form_windows) * 100 / kSampleRate;  // as the models: each window covers the next hop
+  all.rendered_seconds = double(e.closed_form_windows) * double(dataset::kGridStride) / dataset::kSampleRateHz;  // as the models: each window covers the next hop
   return all;
 }
 
@@ -569,7 +569,7 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
     }
   std::optional<synth::Truth> truth;
   if (!o.truth.empty()) truth = synth::read_truth_file(o.truth);
-  if (truth && truth->sample_rate_hz != kSampleRate)  // the oracle's windows and action points count 10 kHz samples
+  if (truth && truth->sample_rate_hz != dataset::kSampleRateHz)  // the oracle's windows and action points count 10 kHz samples
     throw input_error(o.truth, "/@sample_rate_hz", "is " + std::to_string(truth->sample_rate_hz) + " Hz, not the evaluation's 10 kHz",
                       "Give the truth.h5 written with the recordings of this dataset");
   Context c{models, codes, o, truth, {}, {}, stitched};

@@ -65,7 +65,7 @@ std::vector<std::vector<double>> grid_spectra(const std::vector<double>& signal,
   std::vector<std::vector<double>> out;
   for (std::size_t t : grid) {
     if (t < origin || t - origin + dataset::kWindowSamples > signal.size()) throw failure("grid_spectra: window outside the signal");
-    out.push_back(signal::amplitude_spectrum(std::span(signal).subspan(t - origin, dataset::kWindowSamples)));
+    out.push_back(signal::amplitude_spectrum(std::span(signal).subspan(t - origin, dataset::kWindowSamples), dataset::kTargetBins));
   }
   return out;
 }

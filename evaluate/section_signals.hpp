@@ -33,7 +33,6 @@ std::vector<MaterialSignals> read_section_signals(const split::DatasetSplit& spl
 // Offsets (from the section's first sample) of the evaluation windows: t = 0, 100, 200, ... while the
 // window's 1000 samples fit (the rule of dataset::window_starts). Empty for short sections.
 std::vector<std::size_t> section_grid(std::size_t samples);
-inline constexpr std::size_t kSectionGridStride = dataset::kGridStride;  // TRANSITIONAL alias: samples between evaluation windows
 
 // The 20 action values of each grid window (columns), as the model takes them: the 1 ms ending at the
 // window's middle (dataset/window.hpp).

@@ -4,13 +4,14 @@
 
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
+#include "dataset/window.hpp"
 #include "evaluate/summary_statistics.hpp"
 
 namespace haptex::evaluate {
 namespace {
 
-using signal::kSpectrumBins;
-using signal::kWindowSamples;
+using dataset::kTargetBins;
+using dataset::kWindowSamples;
 
 void check_signals(std::size_t rendered, std::size_t truth) {
   if (rendered != truth)
@@ -28,7 +29,7 @@ std::size_t distance_windows(std::size_t n) { return n < kWindowSamples ? 0 : 1 
 std::vector<double> window_distances(std::span<const double> rendered, std::span<const double> truth) {
   check_signals(rendered.size(), truth.size());
   std::vector<double> distances(distance_windows(rendered.size()));
-  std::vector<double> rendered_spectrum(kSpectrumBins), true_spectrum(kSpectrumBins);
+  std::vector<double> rendered_spectrum(kTargetBins), true_spectrum(kTargetBins);
   for (std::size_t w = 0; w < distances.size(); ++w) {
     const std::size_t start = w * kDistanceStep;
     signal::amplitude_spectrum(rendered.subspan(start, kWindowSamples), rendered_spectrum, 1);

@@ -8,10 +8,11 @@
 #include <vector>
 
 #include "core/signal/spectrum.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::evaluate {
 
-inline constexpr std::size_t kDistanceStep = 100;  // samples between window starts
+inline constexpr std::size_t kDistanceStep = dataset::kGridStride;  // samples between window starts
 
 // Number of windows in n samples: 1 + (n - 1000) / 100 (a tail shorter than a step is not used).
 std::size_t distance_windows(std::size_t n);

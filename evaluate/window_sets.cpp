@@ -6,14 +6,15 @@
 
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::evaluate {
 namespace {
 
 ActionPoint mean_action(const SectionSignals& s, std::size_t t) {
   ActionPoint p;
-  for (std::size_t i = t; i < t + signal::kWindowSamples; ++i) p.speed += s.speed[i], p.force += s.force[i];
-  p.speed /= double(signal::kWindowSamples), p.force /= double(signal::kWindowSamples);
+  for (std::size_t i = t; i < t + dataset::kWindowSamples; ++i) p.speed += s.speed[i], p.force += s.force[i];
+  p.speed /= double(dataset::kWindowSamples), p.force /= double(dataset::kWindowSamples);
   return p;
 }
 
@@ -50,7 +51,7 @@ WindowSet training_windows(const MaterialSignals& m) {
 }
 
 std::vector<double> mean_spectrum(const WindowSet& w) {
-  std::vector<double> sum(signal::kSpectrumBins, 0.0);
+  std::vector<double> sum(dataset::kTargetBins, 0.0);
   for (const auto& spectrum : w.spectra)
     for (std::size_t k = 0; k < sum.size(); ++k) sum[k] += spectrum[k];
   for (double& v : sum) v /= double(std::max<std::size_t>(1, w.spectra.size()));

@@ -16,8 +16,7 @@
 namespace haptex::predict {
 
 // The model's input and output sizes are the window contract's (dataset/window.hpp).
-using dataset::kActionValues;
-inline constexpr std::size_t kSpectrumBins = dataset::kTargetBins;  // TRANSITIONAL: until evaluate and render use kTargetBins
+using dataset::kActionValues, dataset::kTargetBins;
 
 enum class Variant { unified, per_material };
 std::string variant_name(Variant variant);
@@ -38,7 +37,7 @@ void standardisation(const Eigen::MatrixXf& x, Eigen::VectorXf& mean, Eigen::Vec
 // One action encoder and predictor (the unified model has one; per-material, one per material).
 struct SpectrumNet {
   Mlp action;     // kActionValues -> action code
-  Mlp predictor;  // [latent (unified only), action code] -> kSpectrumBins, softplus output
+  Mlp predictor;  // [latent (unified only), action code] -> kTargetBins, softplus output
 };
 
 struct Model {

@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "dataset/format.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::predict {
 namespace {
@@ -160,9 +161,9 @@ void check_nets(const Model& m, const std::string& path) {
   if (m.nets.size() != expected)
     throw input_error(path, "/nets", std::to_string(m.nets.size()) + " networks for " + std::to_string(expected), "Train the model again");
   for (const SpectrumNet& n : m.nets)
-    if (n.action.inputs() != kActionValues || n.predictor.outputs() != kSpectrumBins ||
+    if (n.action.inputs() != kActionValues || n.predictor.outputs() != kTargetBins ||
         n.predictor.inputs() != m.latent_size() + n.action.outputs() || n.action.outputs() != m.nets[0].action.outputs() ||
-        m.normalisation.target_scale.size() != kSpectrumBins)
+        m.normalisation.target_scale.size() != kTargetBins)
       throw input_error(path, "/nets", "the networks' sizes do not fit together", "Train the model again");
 }
 
@@ -219,7 +220,7 @@ Model read_model(const std::string& path) {
   Normalisation& n = m.normalisation;
   n.action_mean = r.vector(g, "action_mean", kActionValues);
   n.action_scale = r.vector(g, "action_scale", kActionValues, Values::positive);
-  n.target_scale = r.vector(g, "target_scale", kSpectrumBins, Values::positive);
+  n.target_scale = r.vector(g, "target_scale", kTargetBins, Values::positive);
   n.force_min = r.bound(g, "force_min"), n.force_max = r.bound(g, "force_max");
   n.speed_min = r.bound(g, "speed_min"), n.speed_max = r.bound(g, "speed_max");
   if (n.force_min > n.force_max || n.speed_min > n.speed_max)

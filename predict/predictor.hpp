@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "predict/model.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::predict {
 
@@ -38,7 +39,7 @@ class Predictor {
   TextureCode material_code(int material) const;
 
   // action: kActionValues raw values (10 force in N, then 10 speed in mm/s, the last the newest);
-  // spectrum: kSpectrumBins amplitudes (m/s^2). Returns true when the action lay outside the
+  // spectrum: kTargetBins amplitudes (m/s^2). Returns true when the action lay outside the
   // training range and was saturated. Allocation-free.
   bool predict(const TextureCode& code, std::span<const float> action, std::span<float> spectrum);
 

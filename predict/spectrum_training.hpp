@@ -9,13 +9,14 @@
 #include <vector>
 
 #include "predict/model.hpp"
+#include "dataset/window.hpp"
 #include "predict/train_options.hpp"
 
 namespace haptex::predict {
 
 struct SpectrumProblem {
   const Eigen::MatrixXf* actions = nullptr;  // normalised, kActionValues x windows
-  const Eigen::MatrixXf* targets = nullptr;  // kSpectrumBins x windows
+  const Eigen::MatrixXf* targets = nullptr;  // kTargetBins x windows
   Eigen::VectorXf target_scale;              // per bin
   std::vector<std::size_t> train, val;       // columns
   // Unified only: each column's material, and per material the latents (columns) of its training

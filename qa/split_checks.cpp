@@ -11,6 +11,7 @@
 #include "core/json/schema.hpp"
 #include "core/sha256.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/window.hpp"
 #include "qa/catalog.hpp"
 #include "qa/checkers.hpp"
 #include "qa/thresholds.hpp"
@@ -55,21 +56,14 @@ MaterialSections section_sets(const SplitMaterial& m, std::int64_t sections) {
   return {set_of, ""};
 }
 
-// A window's force-speed point, as haptex split places it: the mean of its action samples.
+// A window's force-speed point, where haptex split places it (dataset::action_point).
 cv::Point2f window_point(const WindowTable& t, std::size_t w) {
-  const std::size_t a = std::size_t(t.action_samples);
-  const float* action = &t.action[w * t.action_width];
-  float force = 0, speed = 0;
-  for (std::size_t k = 0; k < a; ++k) {
-    force += action[k] / float(a);
-    speed += action[a + k] / float(a);
-  }
-  return {speed, force};
+  const dataset::ActionPoint p = dataset::action_point(std::span(t.action).subspan(w * t.action_width, t.action_width));
+  return {p.speed, p.force};
 }
 
-bool has_actions(const WindowTable& t) {
-  return !t.action.empty() && t.action_width == 2 * std::size_t(t.action_samples);
-}
+// Actions of this haptex's shape (dataset.windows reports any other).
+bool has_actions(const WindowTable& t) { return !t.action.empty() && t.action_width == dataset::kActionValues; }
 
 // judge(i) for every material whose windows were recounted; a skip for the others (for all of
 // them without a window table).

@@ -9,12 +9,13 @@
 #include "core/error.hpp"
 #include "core/random_seeds.hpp"
 #include "core/signal/fft.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::render {
 namespace {
 
 using Complex = std::complex<double>;
-using signal::kWindowSamples;
+using dataset::kWindowSamples;
 
 void check_magnitudes(const MagnitudeFrames& s) {
   if (s.frames == 0 || s.bins != kReconstructionBins || s.values.size() != s.frames * s.bins)

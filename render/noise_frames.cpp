@@ -5,12 +5,13 @@
 #include <numbers>
 
 #include "core/signal/stft.hpp"
+#include "dataset/window.hpp"
 #include "render/target_magnitudes.hpp"
 
 namespace haptex::render {
 namespace {
 
-using signal::kWindowSamples;
+using dataset::kWindowSamples;
 
 double mean_magnitude_gain(const std::vector<double>& window) {
   double energy = 0;

@@ -5,12 +5,13 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "dataset/window.hpp"
 #include "render/griffin_lim.hpp"
 
 namespace haptex::render {
 namespace {
 
-using signal::kWindowSamples;
+using dataset::kWindowSamples;
 
 constexpr std::size_t kHop = kReconstructionHop;
 // Earlier frames that still overlap a frame: ceil(1000 / 100) - 1. The slot after them holds the

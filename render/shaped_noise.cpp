@@ -3,11 +3,12 @@
 #include <algorithm>
 
 #include "core/signal/stft.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::render {
 namespace {
 
-using signal::kWindowSamples;
+using dataset::kWindowSamples;
 constexpr std::size_t kHop = kReconstructionHop;
 
 }  // namespace

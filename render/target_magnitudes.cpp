@@ -5,22 +5,23 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::render {
 namespace {
 
-using signal::kSpectrumBins;
-using signal::kWindowSamples;
+using dataset::kTargetBins;
+using dataset::kWindowSamples;
 
 template <typename T>
 void convert_frame(std::span<const T> amplitudes, std::span<double> out) {
-  if (amplitudes.size() != kSpectrumBins || out.size() != kReconstructionBins)
+  if (amplitudes.size() != kTargetBins || out.size() != kReconstructionBins)
     throw failure("target magnitudes: a frame has " + std::to_string(amplitudes.size()) + " amplitudes and " +
-                  std::to_string(out.size()) + " output bins; expected " + std::to_string(kSpectrumBins) + " and " +
+                  std::to_string(out.size()) + " output bins; expected " + std::to_string(kTargetBins) + " and " +
                   std::to_string(kReconstructionBins));
   const double scale = hann_rms_gain() * static_cast<double>(kWindowSamples) / 2.0;
   std::fill(out.begin(), out.end(), 0.0);
-  for (std::size_t k = 0; k < kSpectrumBins; ++k) {
+  for (std::size_t k = 0; k < kTargetBins; ++k) {
     const double a = static_cast<double>(amplitudes[k]);
     if (!(a >= 0.0 && std::isfinite(a)))
       throw failure("target magnitudes: amplitude " + std::to_string(k + 1) + " is " + std::to_string(a) +
@@ -31,15 +32,15 @@ void convert_frame(std::span<const T> amplitudes, std::span<double> out) {
 
 template <typename T>
 MagnitudeFrames convert_frames(std::span<const T> amplitudes) {
-  if (amplitudes.size() % kSpectrumBins != 0)
+  if (amplitudes.size() % kTargetBins != 0)
     throw failure("target magnitudes: " + std::to_string(amplitudes.size()) + " amplitudes are not whole frames of " +
-                  std::to_string(kSpectrumBins));
+                  std::to_string(kTargetBins));
   MagnitudeFrames out;
-  out.frames = amplitudes.size() / kSpectrumBins;
+  out.frames = amplitudes.size() / kTargetBins;
   out.bins = kReconstructionBins;
   out.values.resize(out.frames * out.bins);
   for (std::size_t f = 0; f < out.frames; ++f)
-    convert_frame(amplitudes.subspan(f * kSpectrumBins, kSpectrumBins), out.row(f));
+    convert_frame(amplitudes.subspan(f * kTargetBins, kTargetBins), out.row(f));
   return out;
 }
 

@@ -11,12 +11,13 @@
 
 #include "core/signal/spectrum.hpp"
 #include "core/signal/stft.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::render {
 
-inline constexpr std::size_t kReconstructionHop = 100;
-inline constexpr std::size_t kReconstructionBins = signal::kWindowSamples / 2 + 1;  // 501
-inline constexpr signal::StftConfig kReconstructionStft{signal::kWindowSamples, kReconstructionHop, false};
+inline constexpr std::size_t kReconstructionHop = dataset::kGridStride;  // one frame per predicted window
+inline constexpr std::size_t kReconstructionBins = dataset::kWindowSamples / 2 + 1;  // 501
+inline constexpr signal::StftConfig kReconstructionStft{dataset::kWindowSamples, kReconstructionHop, false};
 
 // Non-negative STFT magnitudes, frames x bins, row-major.
 struct MagnitudeFrames {

@@ -35,10 +35,10 @@ void place(std::span<const double> samples, std::size_t position, std::vector<do
 void render_offline(const predict::Model& model, const predict::TextureCode& code, const predict::Trajectory& trajectory,
                     const RenderOptions& options, Rendering& out) {
   predict::Predictor predictor(model);
-  float action[predict::kActionValues];
+  float action[dataset::kActionValues];
   for (std::size_t m = 0; m < out.targets.frames; ++m) {
     predict::action_at(trajectory, frame_action_sample(m, trajectory.force.size()), action);
-    const auto row = std::span(out.spectra).subspan(m * predict::kSpectrumBins, predict::kSpectrumBins);
+    const auto row = std::span(out.spectra).subspan(m * dataset::kTargetBins, dataset::kTargetBins);
     if (predictor.predict(code, action, row)) ++out.saturated_frames;
     target_magnitude_frame(std::span<const float>(row), out.targets.row(m));
   }
@@ -52,7 +52,7 @@ void render_online(const predict::Model& model, const predict::TextureCode& code
                                                                        : VibrationLoop(model, code, options.online);
   out.latency_samples = loop.latency_samples();
   if (options.as_played) out.first_frame_sample += dataset::kActionEnd + out.latency_samples + 1;
-  float action[predict::kActionValues];
+  float action[dataset::kActionValues];
   std::size_t position = out.first_frame_sample;  // where the next returned sample belongs
   for (std::size_t m = 0; m < out.targets.frames; ++m) {
     predict::action_at(trajectory, frame_action_sample(m, trajectory.force.size()), action);
@@ -62,7 +62,7 @@ void render_online(const predict::Model& model, const predict::TextureCode& code
         std::max(out.slowest_frame_seconds, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     if (loop.saturated()) ++out.saturated_frames;
     std::copy(loop.magnitudes().begin(), loop.magnitudes().end(), out.targets.row(m).begin());
-    std::copy(loop.spectrum().begin(), loop.spectrum().end(), out.spectra.begin() + std::ptrdiff_t(m * predict::kSpectrumBins));
+    std::copy(loop.spectrum().begin(), loop.spectrum().end(), out.spectra.begin() + std::ptrdiff_t(m * dataset::kTargetBins));
     place(samples, position, out.signal);
     position += samples.size();
   }
@@ -83,7 +83,7 @@ Rendering render_vibration(const predict::Model& model, const predict::TextureCo
   out.targets.frames = render_frames(trajectory.force.size());
   out.targets.bins = kReconstructionBins;
   out.targets.values.assign(out.targets.frames * kReconstructionBins, 0.0);
-  out.spectra.assign(out.targets.frames * predict::kSpectrumBins, 0.0f);
+  out.spectra.assign(out.targets.frames * dataset::kTargetBins, 0.0f);
   if (options.reconstruction == Reconstruction::fgla)
     render_offline(model, code, trajectory, options, out);
   else
@@ -93,8 +93,8 @@ Rendering render_vibration(const predict::Model& model, const predict::TextureCo
 
 std::size_t complete_frames(const Rendering& rendering) {
   const std::size_t n = rendering.signal.size(), first = rendering.first_frame_sample;
-  if (n < first + signal::kWindowSamples) return 0;
-  return std::min(rendering.targets.frames, (n - first - signal::kWindowSamples) / kHop + 1);
+  if (n < first + dataset::kWindowSamples) return 0;
+  return std::min(rendering.targets.frames, (n - first - dataset::kWindowSamples) / kHop + 1);
 }
 
 double rendered_convergence_db(const Rendering& rendering) {
@@ -125,13 +125,13 @@ void write_vibration_csv(const std::string& path, const predict::Trajectory& tra
 double rendered_distance(const Rendering& rendering) {
   const std::size_t frames = complete_frames(rendering);
   if (frames == 0) return std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> amplitudes(predict::kSpectrumBins), predicted(predict::kSpectrumBins);
+  std::vector<double> amplitudes(dataset::kTargetBins), predicted(dataset::kTargetBins);
   double sum = 0;
   for (std::size_t m = 0; m < frames; ++m) {
-    const auto window = std::span(rendering.signal).subspan(rendering.first_frame_sample + m * kHop, signal::kWindowSamples);
+    const auto window = std::span(rendering.signal).subspan(rendering.first_frame_sample + m * kHop, dataset::kWindowSamples);
     signal::amplitude_spectrum(window, amplitudes);
-    const auto row = rendering.spectra.begin() + std::ptrdiff_t(m * predict::kSpectrumBins);
-    std::copy(row, row + predict::kSpectrumBins, predicted.begin());
+    const auto row = rendering.spectra.begin() + std::ptrdiff_t(m * dataset::kTargetBins);
+    std::copy(row, row + dataset::kTargetBins, predicted.begin());
     sum += signal::spectrum_distance(amplitudes, predicted);
   }
   return sum / double(frames);
@@ -142,7 +142,7 @@ VibrationLoop::VibrationLoop(const predict::Model& model, const predict::Texture
     : predictor_(model),
       code_(code),
       reconstruction_(options),
-      spectrum_(predict::kSpectrumBins),
+      spectrum_(dataset::kTargetBins),
       magnitudes_(kReconstructionBins) {}
 
 VibrationLoop::VibrationLoop(const predict::Model& model, const predict::TextureCode& code, const ShapedNoiseOptions& options)
@@ -150,7 +150,7 @@ VibrationLoop::VibrationLoop(const predict::Model& model, const predict::Texture
       code_(code),
       shaped_(options),
       noise_(true),
-      spectrum_(predict::kSpectrumBins),
+      spectrum_(dataset::kTargetBins),
       magnitudes_(kReconstructionBins) {}
 
 std::span<const double> VibrationLoop::tick(std::span<const float> action) {

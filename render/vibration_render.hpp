@@ -38,7 +38,7 @@
 namespace haptex::render {
 
 // The first trajectory sample with a whole action (10 samples) ending at it: a rendering needs it.
-inline constexpr std::size_t kFirstActionSample = predict::kActionValues / 2 - 1;  // 9
+inline constexpr std::size_t kFirstActionSample = dataset::kActionValues / 2 - 1;  // 9
 // The trajectory sample frame m's action ends at: its middle, or the trajectory's last sample.
 std::size_t frame_action_sample(std::size_t m, std::size_t n);
 
@@ -101,7 +101,7 @@ class VibrationLoop {
 
   std::size_t latency_samples() const { return noise_ ? 0 : reconstruction_.latency_samples(); }
 
-  // action: predict::kActionValues values (10 force in N, then 10 speed in mm/s, the newest last).
+  // action: dataset::kActionValues values (10 force in N, then 10 speed in mm/s, the newest last).
   // Returns the next 100 samples (m/s^2) once look_ahead frames are queued; before that, nothing.
   // The span stays valid until the next call.
   std::span<const double> tick(std::span<const float> action);

@@ -19,9 +19,11 @@
 #include <span>
 #include <string>
 
+#include "dataset/window.hpp"
+
 namespace haptex::render {
 
-inline constexpr int kWavSampleRate = 10000;
+inline constexpr int kWavSampleRate = int(dataset::kSampleRateHz);
 
 struct WavOptions {
   double full_scale_m_s2 = 0;  // m/s^2 at full scale; 0: the peak rounded up to 3 significant digits

@@ -9,12 +9,13 @@
 #include <string>
 
 #include "convert/recording.hpp"
+#include "dataset/window.hpp"
 #include "synth/stroke_generator.hpp"
 #include "synth/truth_file.hpp"
 
 namespace haptex::synth {
 
-inline constexpr double kSampleRateHz = 10000;  // every synthetic recording's rate
+using dataset::kSampleRateHz;  // every synthetic recording's rate
 // White noise per accelerometer axis (m/s^2, standard deviation): a MEMS accelerometer's floor at
 // 10 kHz. truth.h5 records it, since the evaluation's noise floor includes it.
 inline constexpr double kAccelNoise = 0.02;

@@ -11,13 +11,14 @@
 #include "core/sha256.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/window.hpp"
 
 namespace haptex::synth {
 namespace {
 
 constexpr const char* kHattModel = "hatt-model";
 constexpr const char* kSynthMaterial = "synth-material";
-constexpr std::size_t kBins = 100;
+constexpr std::size_t kBins = dataset::kTargetBins;
 constexpr const char* kRerun = "Run haptex synth again to write a new truth.h5";
 // Beyond what haptex synth writes (600 s at 10 kHz per recording; 10 x 8 grid points; 60 HaTT
 // materials x 2 recordings x 10 s is 12 million samples in all), small enough that a damaged file's

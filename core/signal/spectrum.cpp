@@ -42,11 +42,8 @@ void amplitude_spectrum(std::span<const double> window, std::span<double> out, s
   for (std::size_t k = 0; k < out.size(); ++k) out[k] = scale * std::abs(X[first_bin + k]);
 }
 
-std::vector<double> amplitude_spectrum(std::span<const double> window) {
-  if (window.size() != kWindowSamples)
-    throw failure("amplitude spectrum: the window has " + std::to_string(window.size()) + " samples, expected " +
-                  std::to_string(kWindowSamples));
-  std::vector<double> out(kSpectrumBins);
+std::vector<double> amplitude_spectrum(std::span<const double> window, std::size_t bins) {
+  std::vector<double> out(bins);
   amplitude_spectrum(window, out, 1);
   return out;
 }

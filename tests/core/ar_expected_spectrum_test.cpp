@@ -96,7 +96,7 @@ TEST(ArExpectedSpectrum, ConstantActionMatchesMonteCarlo) {
   const int renders = 400;
   for (int i = 0; i < renders; ++i) {
     const auto x = render_texture(model, speed, force, 1000 + i);
-    const auto s = signal::amplitude_spectrum(std::span<const double>(x).subspan(lead, n));
+    const auto s = signal::amplitude_spectrum(std::span<const double>(x).subspan(lead, n), 100);
     for (std::size_t k = 0; k < 100; ++k) mean[k] += s[k] / renders;
   }
   // One bin's amplitude is Rayleigh (CV 0.52): 400 renders give a 2.6 % standard error per bin.

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "dataset/window.hpp"
 #include "predict/model_file.hpp"
 #include "predict/train.hpp"
 #include "tests/predict/synthetic_problem.hpp"
@@ -52,13 +53,13 @@ TEST(Predictor, SingleQueriesMatchTheBatchPathAndDoNotAllocate) {
     const float points[3][2] = {{0.5f, 50}, {1.5f, 150}, {2.5f, 280}};
     for (int c = 0; c < 3; ++c) actions.col(c) = Eigen::Map<const Eigen::VectorXf>(action(points[c][0], points[c][1]).data(), kActionValues);
     const Eigen::MatrixXf batch = p.predict_batch(code, actions);
-    std::vector<float> out(kSpectrumBins);
+    std::vector<float> out(kTargetBins);
     for (int c = 0; c < 3; ++c) {
       const std::vector<float> a = action(points[c][0], points[c][1]);
       const test::CountAllocations counter;
       EXPECT_FALSE(p.predict(code, a, out));
       EXPECT_EQ(counter.count(), 0u) << "predict() allocated";
-      for (Eigen::Index k = 0; k < Eigen::Index(kSpectrumBins); ++k) EXPECT_NEAR(out[std::size_t(k)], batch(k, c), 1e-5f * (1 + std::abs(batch(k, c))));
+      for (Eigen::Index k = 0; k < Eigen::Index(kTargetBins); ++k) EXPECT_NEAR(out[std::size_t(k)], batch(k, c), 1e-5f * (1 + std::abs(batch(k, c))));
     }
   }
 }
@@ -104,7 +105,7 @@ TEST(Predictor, APressIsRecognisedAsTheMaterialsItResembles) {
 TEST(Predictor, OutOfRangeInputsAreSaturatedAndFlagged) {
   Predictor p(trained(Variant::unified));
   const TextureCode code = p.material_code(0);
-  std::vector<float> out(kSpectrumBins), in_range(kSpectrumBins);
+  std::vector<float> out(kTargetBins), in_range(kTargetBins);
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
   const float cases[][2] = {{1e6f, 1e9f}, {0, 0}, {100, 1}, {nan, 100}, {1, inf}, {-5, -5}};
   for (const auto& c : cases) {
@@ -130,7 +131,7 @@ TEST(ModelFile, RoundTripGivesIdenticalPredictions) {
     EXPECT_EQ(back.material_ids, trained(v).material_ids);
     EXPECT_EQ(back.metrics, trained(v).metrics);
     Predictor a(trained(v)), b(back);
-    std::vector<float> x(kSpectrumBins), y(kSpectrumBins);
+    std::vector<float> x(kTargetBins), y(kTargetBins);
     for (int m = 0; m < 4; ++m) {
       a.predict(a.material_code(m), action(1.0f + 0.3f * float(m), 120), x);
       b.predict(b.material_code(m), action(1.0f + 0.3f * float(m), 120), y);

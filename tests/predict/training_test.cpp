@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "dataset/window.hpp"
 #include "predict/predictor.hpp"
 #include "predict/spectrum_training.hpp"
 #include "tests/predict/synthetic_problem.hpp"
@@ -41,11 +42,11 @@ double test_error_against_truth(const Model& m, const TrainingData& data) {
   for (std::size_t i = 0; i < data.materials.size(); ++i) {
     const TextureCode code = m.variant == Variant::unified ? p.encode_descriptor(data.materials[i].images[2][0]) : p.material_code(int(i));
     for (std::size_t c : data.materials[i].rows[2]) {
-      std::vector<float> predicted(kSpectrumBins);
+      std::vector<float> predicted(kTargetBins);
       p.predict(code, std::span<const float>(data.action.col(Eigen::Index(c)).data(), kActionValues), predicted);
       const std::vector<float> truth = test::synthetic_truth(int(i), data.action(9, Eigen::Index(c)), data.action(19, Eigen::Index(c)));
       double d = 0;
-      for (std::size_t k = 0; k < kSpectrumBins; ++k) d += std::pow(predicted[std::size_t(k)] - truth[std::size_t(k)], 2);
+      for (std::size_t k = 0; k < kTargetBins; ++k) d += std::pow(predicted[std::size_t(k)] - truth[std::size_t(k)], 2);
       sum += std::sqrt(d), ++count;
     }
   }

@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
+#include "dataset/window.hpp"
 #include "tests/render/window_statistics.hpp"
 #include "tests/support/allocation_counter.hpp"
 
@@ -80,7 +81,7 @@ TEST(RenderShapedNoise, StreamsWithoutLatencyOrAllocation) {
 }
 
 TEST(RenderShapedNoise, SilentFramesGiveSilenceAndBadFramesAreRefused) {
-  for (double v : shaped_noise(frames_of(std::vector<double>(signal::kSpectrumBins, 0.0), 20), 2900)) ASSERT_EQ(v, 0.0);
+  for (double v : shaped_noise(frames_of(std::vector<double>(dataset::kTargetBins, 0.0), 20), 2900)) ASSERT_EQ(v, 0.0);
   ShapedNoise noise;
   EXPECT_THROW(noise.push(std::vector<double>(kReconstructionBins - 1, 1.0)), Error);
   std::vector<double> frame(kReconstructionBins, 1.0);

@@ -8,6 +8,7 @@
 
 #include "core/ar/gaussian_noise.hpp"
 #include "core/error.hpp"
+#include "dataset/window.hpp"
 #include "render/spectral_convergence.hpp"
 #include "tests/support/npy.hpp"
 
@@ -26,7 +27,7 @@ TEST(RenderTargetMagnitudes, MatchesNumpy) {
   EXPECT_LT(max_scaled_error(out.values, expected.data), 1e-14);
   // Frame by frame, as the online reconstruction converts the model's output.
   std::vector<double> frame(kReconstructionBins, -1.0);
-  target_magnitude_frame(std::span(amplitudes.data).subspan(signal::kSpectrumBins, signal::kSpectrumBins), frame);
+  target_magnitude_frame(std::span(amplitudes.data).subspan(dataset::kTargetBins, dataset::kTargetBins), frame);
   EXPECT_EQ(frame, std::vector<double>(out.row(1).begin(), out.row(1).end()));
 }
 
@@ -38,7 +39,7 @@ TEST(RenderTargetMagnitudes, FloatInputEqualsItsDoubleWidening) {
 }
 
 TEST(RenderTargetMagnitudes, RmsGainIsTheHannWindowsRms) {
-  const auto w = signal::hann_periodic(signal::kWindowSamples);
+  const auto w = signal::hann_periodic(dataset::kWindowSamples);
   double sum = 0.0;
   for (double v : w) sum += v * v;
   EXPECT_NEAR(hann_rms_gain(), std::sqrt(sum / double(w.size())), 1e-15);
@@ -54,16 +55,16 @@ TEST(RenderTargetMagnitudes, RmsGainHoldsForNoise) {
   for (double& v : x) v = noise.next();
   const auto hann = stft_magnitudes(x);
   std::vector<double> amplitudes;
-  std::vector<double> window_spectrum(signal::kSpectrumBins);
+  std::vector<double> window_spectrum(dataset::kTargetBins);
   for (std::size_t m = 0; m < hann.frames; ++m) {
-    signal::amplitude_spectrum(std::span(x).subspan(m * kReconstructionHop, signal::kWindowSamples), window_spectrum, 1);
+    signal::amplitude_spectrum(std::span(x).subspan(m * kReconstructionHop, dataset::kWindowSamples), window_spectrum, 1);
     amplitudes.insert(amplitudes.end(), window_spectrum.begin(), window_spectrum.end());
   }
   const auto converted = target_magnitudes(amplitudes);
   ASSERT_EQ(converted.frames, hann.frames);
   double converted_energy = 0.0, hann_energy = 0.0;
   for (std::size_t m = 0; m < hann.frames; ++m)
-    for (std::size_t k = 1; k <= signal::kSpectrumBins; ++k) {
+    for (std::size_t k = 1; k <= dataset::kTargetBins; ++k) {
       converted_energy += converted.row(m)[k] * converted.row(m)[k];
       hann_energy += hann.row(m)[k] * hann.row(m)[k];
     }
@@ -73,11 +74,11 @@ TEST(RenderTargetMagnitudes, RmsGainHoldsForNoise) {
 }
 
 TEST(RenderTargetMagnitudes, OnlyBinsOneToHundredAreSet) {
-  const std::vector<double> amplitudes(signal::kSpectrumBins, 1.0);
+  const std::vector<double> amplitudes(dataset::kTargetBins, 1.0);
   const auto out = target_magnitudes(amplitudes);
   EXPECT_EQ(out.row(0)[0], 0.0);
-  for (std::size_t k = 1; k <= signal::kSpectrumBins; ++k) EXPECT_GT(out.row(0)[k], 0.0) << k;
-  for (std::size_t k = signal::kSpectrumBins + 1; k < kReconstructionBins; ++k) EXPECT_EQ(out.row(0)[k], 0.0) << k;
+  for (std::size_t k = 1; k <= dataset::kTargetBins; ++k) EXPECT_GT(out.row(0)[k], 0.0) << k;
+  for (std::size_t k = dataset::kTargetBins + 1; k < kReconstructionBins; ++k) EXPECT_EQ(out.row(0)[k], 0.0) << k;
 }
 
 TEST(RenderTargetMagnitudes, CoveredSamplesMatchTheStftFrameCount) {
@@ -88,13 +89,13 @@ TEST(RenderTargetMagnitudes, CoveredSamplesMatchTheStftFrameCount) {
 
 TEST(RenderTargetMagnitudes, RejectsBadInput) {
   EXPECT_THROW(target_magnitudes(std::vector<double>(150, 1.0)), Error);
-  std::vector<double> amplitudes(signal::kSpectrumBins, 1.0);
+  std::vector<double> amplitudes(dataset::kTargetBins, 1.0);
   amplitudes[7] = -0.5;
   EXPECT_THROW(target_magnitudes(amplitudes), Error);
   amplitudes[7] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(target_magnitudes(amplitudes), Error);
   std::vector<double> frame(kReconstructionBins - 1);
-  EXPECT_THROW(target_magnitude_frame(std::vector<double>(signal::kSpectrumBins, 1.0), frame), Error);
+  EXPECT_THROW(target_magnitude_frame(std::vector<double>(dataset::kTargetBins, 1.0), frame), Error);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Rendering a trajectory into vibration (render/vibration_render.hpp) and writing it as WAV
 // (render/wav_writer.hpp), with a small model trained in memory on the synthetic problem.
 #include "render/vibration_render.hpp"
+#include "dataset/window.hpp"
 #include "predict/texture_choice.hpp"
 
 #include <gtest/gtest.h>
@@ -76,9 +77,9 @@ TEST(RenderVibrationRender, OneFramePerHundredSamplesFromSampleZero) {
     EXPECT_EQ(out.first_frame_sample, 0u);
     // Frame m is the model's spectrum for the action ending at its middle, 500 + 100 m (or the last sample).
     predict::Predictor p(model());
-    std::vector<float> spectrum(predict::kSpectrumBins);
+    std::vector<float> spectrum(dataset::kTargetBins);
     std::vector<double> expected(kReconstructionBins);
-    float action[predict::kActionValues];
+    float action[dataset::kActionValues];
     for (std::size_t m : {0u, 7u, 23u}) {
       predict::action_at(t, std::min<std::size_t>(500 + 100 * m, 2344), action);
       p.predict(code(), action, spectrum);
@@ -226,7 +227,7 @@ TEST(RenderVibrationRender, LiveTicksDoNotAllocate) {
   const predict::Trajectory t = stroke(3000);
   for (const bool noise : {false, true}) {
     VibrationLoop loop = noise ? VibrationLoop(model(), code(), ShapedNoiseOptions{}) : VibrationLoop(model(), code(), OnlineReconstructionOptions{});
-    float action[predict::kActionValues];
+    float action[dataset::kActionValues];
     std::size_t samples = 0;
     for (std::size_t m = 0; m < render_frames(t.force.size()); ++m) {
       predict::action_at(t, frame_action_sample(m, t.force.size()), action);

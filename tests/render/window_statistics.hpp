@@ -8,13 +8,14 @@
 #include <vector>
 
 #include "core/signal/spectrum.hpp"
+#include "dataset/window.hpp"
 #include "render/target_magnitudes.hpp"
 
 namespace haptex::render::test_windows {
 
 // A coloured texture spectrum (m/s^2 per bin, 10..1000 Hz): a floor with a resonance at 300 Hz.
 inline std::vector<double> texture(double scale) {
-  std::vector<double> a(signal::kSpectrumBins);
+  std::vector<double> a(dataset::kTargetBins);
   for (std::size_t k = 0; k < a.size(); ++k) a[k] = scale * (0.01 + 0.05 * std::exp(-std::pow((double(k) - 29.0) / 8.0, 2)));
   return a;
 }
@@ -31,10 +32,10 @@ struct WindowStatistics {
 
 // The 100-bin rectangular-window amplitudes of the windows [100 m, 100 m + 1000), first <= m < last.
 inline WindowStatistics statistics(const std::vector<double>& x, std::size_t first, std::size_t last) {
-  WindowStatistics s{std::vector<double>(signal::kSpectrumBins, 0.0), std::vector<double>(signal::kSpectrumBins, 0.0)};
-  std::vector<double> square(signal::kSpectrumBins, 0.0), a(signal::kSpectrumBins);
+  WindowStatistics s{std::vector<double>(dataset::kTargetBins, 0.0), std::vector<double>(dataset::kTargetBins, 0.0)};
+  std::vector<double> square(dataset::kTargetBins, 0.0), a(dataset::kTargetBins);
   for (std::size_t m = first; m < last; ++m) {
-    signal::amplitude_spectrum(std::span(x).subspan(m * 100, signal::kWindowSamples), a);
+    signal::amplitude_spectrum(std::span(x).subspan(m * 100, dataset::kWindowSamples), a);
     for (std::size_t k = 0; k < a.size(); ++k) s.mean[k] += a[k], square[k] += a[k] * a[k];
   }
   const double n = double(last - first);
