@@ -14,10 +14,10 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "capture/device/fake_camera.hpp"
-#include "capture/extraction/contact_score.hpp"
 #include "capture/extraction/extract_presses.hpp"
-#include "capture/extraction/scoring_image.hpp"
 #include "capture/recording/press_recorder.hpp"
+#include "capture/scoring/contact_score.hpp"
+#include "capture/scoring/scoring_image.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <functional>
 
-#include "capture/extraction/contact_score.hpp"
+#include "capture/scoring/contact_score.hpp"
 #include "qa/checkers.hpp"
 #include "qa/thresholds.hpp"
 

@@ -5,9 +5,9 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "capture/extraction/contact_score.hpp"
-#include "capture/extraction/scoring_image.hpp"
-#include "capture/recording/image_datasets.hpp"
+#include "capture/scoring/contact_score.hpp"
+#include "capture/scoring/scoring_image.hpp"
+#include "capture/storage/image_datasets.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "dataset/layout.hpp"

@@ -11,7 +11,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "capture/extraction/contact_score.hpp"
+#include "capture/scoring/contact_score.hpp"
 
 namespace haptex::capture {
 

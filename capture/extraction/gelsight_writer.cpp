@@ -1,6 +1,6 @@
 #include "capture/extraction/gelsight_writer.hpp"
 
-#include "capture/recording/image_datasets.hpp"
+#include "capture/storage/image_datasets.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"
 #include "dataset/format.hpp"

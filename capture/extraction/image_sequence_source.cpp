@@ -9,7 +9,7 @@
 
 #include "capture/extraction/capture_inputs.hpp"
 #include "capture/extraction/frame_source.hpp"
-#include "capture/extraction/scoring_image.hpp"
+#include "capture/scoring/scoring_image.hpp"
 #include "core/error.hpp"
 #include "core/sha256.hpp"
 

@@ -6,7 +6,7 @@
 #include <map>
 #include <opencv2/imgproc.hpp>
 
-#include "capture/extraction/scoring_image.hpp"
+#include "capture/scoring/scoring_image.hpp"
 #include "core/error.hpp"
 
 namespace haptex::capture {

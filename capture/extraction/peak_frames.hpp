@@ -10,9 +10,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "capture/extraction/contact_score.hpp"
 #include "capture/extraction/frame_source.hpp"
-#include "capture/extraction/press_segmenter.hpp"
+#include "capture/scoring/contact_score.hpp"
+#include "capture/scoring/press_segmenter.hpp"
 
 namespace haptex::capture {
 

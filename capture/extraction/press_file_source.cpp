@@ -2,9 +2,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "capture/extraction/frame_source.hpp"
-#include "capture/extraction/scoring_image.hpp"
-#include "capture/recording/image_datasets.hpp"
-#include "capture/recording/vlen_bytes.hpp"
+#include "capture/scoring/scoring_image.hpp"
+#include "capture/storage/image_datasets.hpp"
+#include "capture/storage/vlen_bytes.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/sha256.hpp"

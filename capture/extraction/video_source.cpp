@@ -4,7 +4,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "capture/extraction/frame_source.hpp"
-#include "capture/extraction/scoring_image.hpp"
+#include "capture/scoring/scoring_image.hpp"
 #include "core/error.hpp"
 #include "core/sha256.hpp"
 

@@ -7,7 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/device/fourcc.hpp"
-#include "capture/recording/image_datasets.hpp"
+#include "capture/storage/image_datasets.hpp"
 #include "core/naming.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"

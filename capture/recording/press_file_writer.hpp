@@ -13,7 +13,7 @@
 
 #include "capture/device/drop_counter.hpp"
 #include "capture/device/frame.hpp"
-#include "capture/recording/vlen_bytes.hpp"
+#include "capture/storage/vlen_bytes.hpp"
 #include "core/h5/atomic_file.hpp"
 
 namespace haptex::capture {

@@ -9,7 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "capture/extraction/scoring_image.hpp"
+#include "capture/scoring/scoring_image.hpp"
 #include "core/error.hpp"
 
 namespace haptex::capture {

@@ -14,10 +14,10 @@
 
 #include "capture/device/drop_counter.hpp"
 #include "capture/device/frame.hpp"
-#include "capture/extraction/contact_score.hpp"
-#include "capture/extraction/press_segmenter.hpp"
 #include "capture/recording/press_file_writer.hpp"
 #include "capture/recording/session_manifest.hpp"
+#include "capture/scoring/contact_score.hpp"
+#include "capture/scoring/press_segmenter.hpp"
 #include "core/progress.hpp"
 
 namespace haptex::capture {

@@ -3,10 +3,10 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "capture/recording/image_datasets.hpp"
+#include "capture/storage/image_datasets.hpp"
 #include "qa/run_qa.hpp"
-#include "tests/support/mutations.hpp"
 #include "tests/qa/qa_fixture.hpp"
+#include "tests/support/mutations.hpp"
 
 namespace haptex::test {
 namespace {

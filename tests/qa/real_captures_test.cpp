@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
-#include "capture/extraction/contact_score.hpp"
 #include "capture/extraction/gelsight_writer.hpp"
-#include "capture/extraction/scoring_image.hpp"
+#include "capture/scoring/contact_score.hpp"
+#include "capture/scoring/scoring_image.hpp"
 #include "qa/run_qa.hpp"
 #include "tests/qa/qa_fixture.hpp"
 #include "tests/support/npy.hpp"

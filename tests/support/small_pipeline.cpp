@@ -13,9 +13,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "capture/extraction/contact_score.hpp"
 #include "capture/extraction/gelsight_writer.hpp"
-#include "capture/extraction/scoring_image.hpp"
+#include "capture/scoring/contact_score.hpp"
+#include "capture/scoring/scoring_image.hpp"
 #include "core/sha256.hpp"
 #include "tests/support/run_haptex.hpp"
 

@@ -12,7 +12,7 @@
 
 #include "capture/extraction/extract_presses.hpp"
 #include "capture/recording/press_recorder.hpp"
-#include "capture/recording/vlen_bytes.hpp"
+#include "capture/storage/vlen_bytes.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"

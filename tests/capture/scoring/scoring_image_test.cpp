@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/device/fake_scene.hpp"
-#include "capture/extraction/scoring_image.hpp"
+#include "capture/scoring/scoring_image.hpp"
 
 namespace haptex::capture {
 namespace {

@@ -1,4 +1,4 @@
-#include "capture/extraction/contact_score.hpp"
+#include "capture/scoring/contact_score.hpp"
 
 #include <algorithm>
 #include <cmath>

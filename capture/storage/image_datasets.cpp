@@ -1,4 +1,4 @@
-#include "capture/recording/image_datasets.hpp"
+#include "capture/storage/image_datasets.hpp"
 
 #include <cstring>
 #include <opencv2/imgproc.hpp>

@@ -1,4 +1,4 @@
-#include "capture/extraction/scoring_image.hpp"
+#include "capture/scoring/scoring_image.hpp"
 
 #include <algorithm>
 #include <cmath>

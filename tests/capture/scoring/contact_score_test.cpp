@@ -3,7 +3,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "capture/extraction/contact_score.hpp"
+#include "capture/scoring/contact_score.hpp"
 
 namespace haptex::capture {
 namespace {

@@ -1,4 +1,4 @@
-#include "capture/extraction/press_segmenter.hpp"
+#include "capture/scoring/press_segmenter.hpp"
 
 #include <algorithm>
 #include <cmath>

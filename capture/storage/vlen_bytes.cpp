@@ -1,4 +1,4 @@
-#include "capture/recording/vlen_bytes.hpp"
+#include "capture/storage/vlen_bytes.hpp"
 
 #include "core/error.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "capture/extraction/press_segmenter.hpp"
+#include "capture/scoring/press_segmenter.hpp"
 
 namespace haptex::capture {
 namespace {
