@@ -2,7 +2,7 @@
 BUILD      ?= build
 JOBS       ?= $(shell nproc)
 SUDO       := $(if $(filter 0,$(shell id -u)),,sudo)
-# DESIGN.md section 2, plus the compiler tool chain and what the tests and benches use.
+# What the modules link (docs/architecture.md, "Modules"), the compiler tool chain, and what the tests use.
 PACKAGES   := build-essential cmake pkg-config \
               libopencv-dev libv4l-dev v4l-utils libusb-1.0-0-dev libhdf5-dev libeigen3-dev \
               libfftw3-dev libpugixml-dev nlohmann-json3-dev libvalijson-dev libboost-math-dev \

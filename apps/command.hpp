@@ -9,7 +9,7 @@
 
 namespace haptex::apps {
 
-// Flags every subcommand shares (DESIGN.md section 7).
+// Flags every subcommand shares (docs/architecture.md, "Command line").
 struct GlobalOptions {
   bool json = false;   // machine-readable result on stdout
   bool quiet = false;  // only errors on stderr

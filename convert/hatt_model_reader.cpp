@@ -9,7 +9,7 @@ namespace haptex::convert {
 namespace {
 
 pugi::xml_node require(const XmlFile& xml, const pugi::xml_node& parent, const char* name) {
-  return xml.require(parent, name, std::string("Add the <") + name + "> element (DESIGN.md section 4 lists the format)");
+  return xml.require(parent, name, std::string("Add the <") + name + "> element (docs/convert.md describes the format)");
 }
 
 double number_child(const XmlFile& xml, const pugi::xml_node& parent, const char* name) {

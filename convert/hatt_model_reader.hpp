@@ -1,5 +1,5 @@
 #pragma once
-// Reads a HaTT model XML (Models_<Material>.xml, DESIGN.md section 4) into ar::ModelSet.
+// Reads a HaTT model XML (Models_<Material>.xml, docs/convert.md) into ar::ModelSet.
 #include <filesystem>
 #include <string>
 #include <string_view>

@@ -1,5 +1,5 @@
 #pragma once
-// HaTT recorded-data XML (DESIGN.md section 4), read through a field map.
+// HaTT recorded-data XML (docs/convert.md), read through a field map.
 #include <cstdint>
 #include <string>
 

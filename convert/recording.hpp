@@ -29,7 +29,7 @@ struct Recording {
 };
 
 using dataset::kSampleRateHz;  // the only rate haptex keeps; sources at other rates are refused
-// What each quantity must be measured in (DESIGN.md section 3).
+// What each quantity must be measured in (docs/architecture.md, "Signals and conventions").
 inline const std::map<std::string, std::string> kExpectedUnits = {
     {"accel", "m/s^2"}, {"force", "N"}, {"speed", "mm/s"}, {"position", "mm"}};
 

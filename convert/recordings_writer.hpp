@@ -1,5 +1,5 @@
 #pragma once
-// Writes recordings into a recordings file (DESIGN.md section 5, schemas/hdf5-layout.md):
+// Writes recordings into a recordings file (schemas/hdf5-layout.md):
 // /materials/<material_id>/recordings/<k>/ with DFT321 acceleration, raw axes, raw and 20 Hz
 // zero-phase low-passed normal force and speed, tangential force and position where present.
 #include <string>

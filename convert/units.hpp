@@ -1,5 +1,5 @@
 #pragma once
-// The units haptex stores (DESIGN.md section 3) and the few others it converts from.
+// The units haptex stores (docs/architecture.md, "Signals and conventions") and the few others it converts from.
 #include <optional>
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The file-system half of haptex's atomic writes (DESIGN.md section 5): every output is written
+// The file-system half of haptex's atomic writes (docs/architecture.md, "Modules"): every output is written
 // to NAME.partial, synced, and renamed, so a crash never leaves a half file under the final name.
 #include <string>
 #include <string_view>

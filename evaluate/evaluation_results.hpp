@@ -14,7 +14,7 @@
 
 namespace haptex::evaluate {
 
-// One material in one experiment: per-window spectral distances (DESIGN.md section 3) of the model
+// One material in one experiment: per-window spectral distances (docs/architecture.md, "The model's sample") of the model
 // and of the baseline on the same test windows.
 inline constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
 

@@ -3,7 +3,7 @@
 // (schemas/results.schema.json), the CSVs, gnuplot scripts and, when gnuplot is installed, the
 // charts as PNG. See docs/evaluate.md, "The report".
 //
-// Atomic as a whole (DESIGN.md section 5): everything is written into DIR.partial (locked against a
+// Atomic as a whole (docs/architecture.md, "Modules"): everything is written into DIR.partial (locked against a
 // second run writing the same report; a leftover of a killed run is emptied and reused), synced,
 // and renamed to DIR at the end, so a failure never leaves a half report under DIR, nor a
 // DIR.partial behind.

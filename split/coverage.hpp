@@ -1,6 +1,6 @@
 #pragma once
 // Whether validation and test ask the model about actions it was trained on: the share of their
-// (speed, force) points inside the convex hull of the training points (DESIGN.md section 6).
+// (speed, force) points inside the convex hull of the training points (docs/split.md).
 #include <opencv2/core.hpp>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Each recording is cut into equal contiguous sections (DESIGN.md section 6); a window belongs to a
+// Each recording is cut into equal contiguous sections (docs/split.md); a window belongs to a
 // section only when every sample it uses (action and target) lies inside it.
 #include <cstddef>
 #include <cstdint>

@@ -15,7 +15,7 @@
 namespace haptex::split {
 namespace {
 
-constexpr std::size_t kPresses = 5;  // 3 train, 1 val, 1 test (DESIGN.md section 6)
+constexpr std::size_t kPresses = 5;  // 3 train, 1 val, 1 test (docs/split.md)
 
 Sets random_sets(std::size_t count, std::size_t val, std::size_t test, std::mt19937_64& rng) {
   std::vector<int> order(count);

@@ -1,5 +1,5 @@
 #pragma once
-// The split of DESIGN.md section 6: per material, the recordings' sections regrouped into train,
+// The split (docs/split.md): per material, the recordings' sections regrouped into train,
 // validation and test sets from a seed; among `tries` assignments the one whose worse of validation
 // and test coverage is best is kept; presses 3/1/1.
 #include <cstdint>

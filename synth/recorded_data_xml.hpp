@@ -1,5 +1,5 @@
 #pragma once
-// Writes a recording in the default HaTT recorded-data XML form (DESIGN.md section 4,
+// Writes a recording in the default HaTT recorded-data XML form (docs/convert.md,
 // schemas/hatt-recording-map.json), the form `haptex convert hatt` reads.
 #include <string>
 

@@ -1,6 +1,6 @@
 #pragma once
 // The ground truth a predictor can be scored against: for each material, the noise-free expected
-// amplitude spectrum (DESIGN.md section 3: 100 bins, 10..1000 Hz, of 1000-sample windows) on a grid
+// amplitude spectrum (docs/architecture.md, "The model's sample": 100 bins, 10..1000 Hz, of 1000-sample windows) on a grid
 // of constant forces and speeds, averaged over 64 windows of straight strokes in many directions and places.
 // truth.h5 (synth/truth_file.hpp) stores the grid with each synthetic material.
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// A HaTT piecewise-AR model set, as the model XML holds it (DESIGN.md section 4). Plain data:
+// A HaTT piecewise-AR model set, as the model XML holds it (docs/convert.md). Plain data:
 // convert/hatt_model_reader fills it, ar::PiecewiseArModel validates and renders it, and tests or
 // the synthetic generator may build one by hand.
 #include <array>

@@ -25,7 +25,7 @@ class File {
   std::string path_;
 };
 
-// Root attributes every haptex file carries (DESIGN.md section 5): haptex_format (e.g. "recordings/1"),
+// Root attributes every haptex file carries (docs/architecture.md, "Formats"): haptex_format (e.g. "recordings/1"),
 // haptex_version, created_utc (ISO 8601; SOURCE_DATE_EPOCH is honoured for reproducible files), source.
 void stamp_root(Group root, const std::string& format, const std::string& source);
 std::string utc_now_iso8601();

@@ -133,7 +133,7 @@ TrainingPiece piece(const Recording& r, std::size_t start, std::size_t length) {
           std::span(r.speed).subspan(start, length)};
 }
 
-// DESIGN.md's split: 25 equal sections; sections 4, 12 and 20 are the test set here.
+// docs/split.md's split: 25 equal sections; sections 4, 12 and 20 are the test set here.
 bool is_test_section(std::size_t s) { return s == 4 || s == 12 || s == 20; }
 
 std::vector<TrainingPiece> train_pieces(const Recording& r) {

@@ -1,5 +1,5 @@
 #pragma once
-// A plausible recording in the default HaTT recorded-data XML form (DESIGN.md section 4), for tests
+// A plausible recording in the default HaTT recorded-data XML form (docs/convert.md), for tests
 // and for `make demo` until the synthetic materials exist: a circular stroke with wandering force
 // and speed, vibration whose amplitude grows with both, spread over three turning axes.
 #include <cstdint>
