@@ -54,18 +54,18 @@ std::optional<Finding> run_problem(const h5::Group& root, const WindowTable& t, 
     return Finding{where, "/materials/" + id + "/recordings/" + std::to_string(run.recording) +
                               " does not exist (or has no samples attribute)"};
   const std::int64_t t0 = 0;
-  const std::int64_t expected = *samples < t0 + t.window_samples ? 0 : (*samples - t0 - t.window_samples) / t.stride + 1;
+  const std::int64_t expected = *samples < t0 + t.window_samples ? 0 : (*samples - t0 - t.window_samples) / std::int64_t(t.stride) + 1;
   if (std::int64_t(run.windows.size()) != expected)
     return Finding{where, std::to_string(run.windows.size()) + " windows; a recording of " + std::to_string(*samples) +
                               " samples at stride " + std::to_string(t.stride) + " has " + std::to_string(expected) +
                               ", starting at " + std::to_string(t0) + " every " + std::to_string(t.stride) + " samples"};
   std::size_t k = 0;
-  while (k < run.windows.size() && t.start[run.windows[k]] == t0 + std::int64_t(k) * t.stride) ++k;
+  while (k < run.windows.size() && t.start[run.windows[k]] == t0 + std::int64_t(k) * std::int64_t(t.stride)) ++k;
   if (k < run.windows.size())
     return Finding{window_where(t, run.windows[k]),
                    "window " + std::to_string(k) + " of its recording starts at sample " +
                        std::to_string(t.start[run.windows[k]]) + ", expected " +
-                       std::to_string(t0 + std::int64_t(k) * t.stride) + " (" + std::to_string(t0) + " + " +
+                       std::to_string(t0 + std::int64_t(k) * std::int64_t(t.stride)) + " (" + std::to_string(t0) + " + " +
                        std::to_string(k) + " x stride " + std::to_string(t.stride) + ")"};
   return std::nullopt;
 }

@@ -72,7 +72,7 @@ std::optional<WindowTable> load_window_table(const h5::Group& root, std::string&
               "(action_end: the action's last sample inside the window)";
     return std::nullopt;
   }
-  t.stride = *stride;
+  t.stride = std::size_t(*stride);
   t.action_samples = *action;
   t.window_samples = *window;
   t.action_end = *action_end;

@@ -7,19 +7,16 @@
 #include <vector>
 
 #include "core/h5/node.hpp"
+#include "dataset/window_table.hpp"
 
 namespace haptex::qa {
 
-struct WindowTable {
-  std::vector<std::string> materials;    // material ids, indexed by `material`
-  std::vector<std::int32_t> material, recording;
-  std::vector<std::int64_t> start;
-  std::vector<float> action;             // W x action_width (empty when unreadable)
-  std::vector<float> target;             // W x target_width (empty when unreadable)
-  std::size_t action_width = 0, target_width = 0;
-  std::int64_t stride = 0, action_samples = 0, window_samples = 0, action_end = 0;
+// The table as the file holds it, read leniently: dataset.windows compares its widths and attributes
+// with the contract (dataset/window.hpp) instead of refusing the file, as dataset::read_window_table does.
+struct WindowTable : dataset::WindowTable {
+  std::size_t action_width = 0, target_width = 0;  // action and target rows (empty when unreadable)
+  std::int64_t action_samples = 0, window_samples = 0, action_end = 0;
 
-  std::size_t size() const { return start.size(); }
   // The first and one-past-last sample window w uses: [t, t + window_samples); its action ends at t + action_end.
   std::int64_t first_sample(std::size_t w) const { return start[w]; }
   std::int64_t end_sample(std::size_t w) const { return start[w] + window_samples; }

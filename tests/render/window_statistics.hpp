@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <numbers>
 #include <span>
 #include <vector>
 
@@ -44,6 +45,18 @@ inline WindowStatistics statistics(const std::vector<double>& x, std::size_t fir
     s.variation[k] = std::sqrt(std::max(0.0, square[k] / n - s.mean[k] * s.mean[k])) / s.mean[k];
   }
   return s;
+}
+
+// A noise-like texture's window amplitudes at a steady action: Rayleigh, coefficient of variation
+// sqrt(4/pi - 1) per bin.
+inline const double kRayleighVariation = std::sqrt(4 / std::numbers::pi - 1);
+
+// The windows' mean amplitudes summed over the bins, over the prediction's. Bins 10 Hz and 1000 Hz
+// sit next to DC and to the bins above 1000 Hz, which the frames leave empty: they are left out.
+inline double summed_ratio(const WindowStatistics& s, const std::vector<double>& predicted) {
+  double p = 0, r = 0;
+  for (std::size_t k = 1; k + 1 < predicted.size(); ++k) p += predicted[k], r += s.mean[k];
+  return r / p;
 }
 
 inline double median(std::vector<double> v) {
