@@ -6,13 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "dataset/layout.hpp"
 #include "dataset/window.hpp"
 
 namespace haptex::convert {
 
 // Canonical channel names. Required: accel_x/y/z, force_normal, speed.
 // Optional: force_tangential, position_x/y/z (all three or none).
-inline const std::vector<std::string> kRequiredChannels = {"accel_x", "accel_y", "accel_z", "force_normal", "speed"};
+// Channels that become one dataset each take that dataset's name (dataset/layout.hpp).
+inline const std::vector<std::string> kRequiredChannels = {"accel_x", "accel_y", "accel_z", dataset::layout::kForceNormal,
+                                                           dataset::layout::kSpeed};
 bool is_required_channel(const std::string& channel);
 
 struct Recording {

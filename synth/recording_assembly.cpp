@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/sha256.hpp"
+#include "dataset/layout.hpp"
 #include "synth/recorded_data_xml.hpp"
 
 namespace haptex::synth {
@@ -32,7 +33,8 @@ convert::Recording assemble_recording(const RecordingIdentity& identity, const S
   r.sample_rate_hz = kSampleRateHz;
   for (const auto& [quantity, unit_name] : convert::kExpectedUnits) r.units[quantity] = unit_name;
   auto& ch = r.channels;
-  for (const char* name : {"accel_x", "accel_y", "accel_z", "force_normal", "force_tangential", "speed"})
+  using namespace dataset::layout;
+  for (const char* name : {"accel_x", "accel_y", "accel_z", kForceNormal, kForceTangential, kSpeed})
     ch[name].reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double t = double(i) / kSampleRateHz;
@@ -42,9 +44,9 @@ convert::Recording assemble_recording(const RecordingIdentity& identity, const S
     ch["accel_y"].push_back(accel[i] * std::cos(elevation) * std::sin(azimuth) + kAccelNoise * noise(rng));
     ch["accel_z"].push_back(accel[i] * std::sin(elevation) + kAccelNoise * noise(rng));
     const double force = std::max(0.0, strokes.force[i] + kForceRipple * accel[i]);
-    ch["force_normal"].push_back(force);
-    ch["force_tangential"].push_back(identity.friction * force);
-    ch["speed"].push_back(std::max(0.0, strokes.speed[i] + kSpeedRipple * accel[i]));
+    ch[kForceNormal].push_back(force);
+    ch[kForceTangential].push_back(identity.friction * force);
+    ch[kSpeed].push_back(std::max(0.0, strokes.speed[i] + kSpeedRipple * accel[i]));
   }
   ch["position_x"] = strokes.position_x;
   ch["position_y"] = strokes.position_y;
