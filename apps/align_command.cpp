@@ -33,8 +33,7 @@ class AlignCommand : public Command {
 
   int run(const GlobalOptions& global) override {
     refuse_output_among_inputs(options_.output, {options_.recordings, options_.gelsight});
-    options_.provenance = "haptex align --recordings " + options_.recordings + " --gelsight " + options_.gelsight +
-                          " -o " + options_.output + " --stride " + std::to_string(options_.stride);
+    options_.provenance = global.command_line;
     const auto start = std::chrono::steady_clock::now();
     const align::AlignResult r = align::align_dataset(options_, terminal_progress(global, "align"));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -47,8 +47,7 @@ class CaptureExtract : public CaptureSubcommand {
     if (pixel_floor_ > 0) options_.settings.pixel_floor = pixel_floor_;
     if (trigger_floor_ > 0) options_.settings.trigger_floor = trigger_floor_;
     options_.sheets = !no_sheets_;
-    options_.provenance = "haptex capture extract -o " + output_;
-    for (const auto& input : inputs_) options_.provenance += " " + input;
+    options_.provenance = global.command_line;
     const auto result = capture::extract_presses(inputs_, output_, options_, terminal_progress(global, "extract"));
     print(result, global);
     return 0;

@@ -14,6 +14,7 @@ struct GlobalOptions {
   bool json = false;   // machine-readable result on stdout
   bool quiet = false;  // only errors on stderr
   int verbose = 0;     // more detail on stderr
+  std::string command_line;  // the subcommand as given, for outputs' `source` (apps/provenance.hpp)
 };
 
 class Command {

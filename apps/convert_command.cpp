@@ -33,8 +33,7 @@ class ConvertCommand : public Command {
     std::vector<std::string> inputs = inputs_;
     inputs.push_back(map_);
     refuse_output_among_inputs(output_, inputs);
-    options_.provenance = "haptex convert hatt -o " + output_;
-    for (const auto& input : inputs_) options_.provenance += " " + input;
+    options_.provenance = global.command_line;
     const auto start = std::chrono::steady_clock::now();
     const auto result = convert::convert_recordings(inputs_, output_, options_, terminal_progress(global, "convert"));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -80,7 +80,7 @@ class RenderCommand : public Command {
     wav.full_scale_m_s2 = full_scale_;
     wav.overwrite = force_;
     wav.title = texture_.material.empty() ? texture_.image : texture_.material;
-    wav.source = source(options);
+    wav.source = global.command_line + ", " + method(options);
     const render::WavSummary written = render::write_wav(output_, rendering.signal, wav);
     if (!csv_.empty()) render::write_vibration_csv(csv_, trajectory, rendering.signal, force_);
 
@@ -126,10 +126,6 @@ class RenderCommand : public Command {
            (o.as_played ? " (live: delayed as played)" : " (latency compensated)");
   }
 
-  std::string source(const render::RenderOptions& o) const {
-    return "haptex render " + model_path_ + (texture_.material.empty() ? " --image " + texture_.image : " --material " + texture_.material) +
-           " --trajectory " + trajectory_path_ + ", " + method(o);
-  }
 
   void print_summary(const Report& r) const {
     const double seconds = double(r.wav.samples) / render::kWavSampleRate;

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "apps/command.hpp"
+#include "apps/provenance.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 
@@ -41,6 +42,7 @@ int run_main(int argc, char** argv) {
 
   for (auto& [sub, command] : parsed) {
     if (!sub->parsed()) continue;
+    global.command_line = command_line(*sub);
     try {
       return command->run(global);
     } catch (const Error& e) {

@@ -40,10 +40,7 @@ class SplitCommand : public Command {
     check_output_path(output_, force_);
     const auto windows = split::read_dataset_windows(dataset_);
     const auto splits = split::search_split(windows, options_, dataset_);
-    const std::string source = "haptex split " + dataset_ + " -o " + output_ + " --sections " + std::to_string(options_.sections) +
-                               " --val " + std::to_string(options_.val) + " --test " + std::to_string(options_.test) +
-                               " --seed " + std::to_string(options_.seed);
-    const nlohmann::json manifest = split::manifest_json(dataset_, options_, splits, source);
+    const nlohmann::json manifest = split::manifest_json(dataset_, options_, splits, global.command_line);
     qa::require_sound_split({output_, manifest}, dataset_);
     json::write_file(manifest, "split.schema.json", output_);
     split::PlotResult plots;

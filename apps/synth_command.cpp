@@ -26,18 +26,6 @@ std::pair<int, int> parse_size(const std::string& text) {
   return {width, height};
 }
 
-// The command line, as `source` provenance: enough to make the same output again. Where the output
-// goes is left out, so the same run written elsewhere gives the same bytes.
-std::string command_line(const CLI::App& app) {
-  std::string line = "haptex synth " + app.get_name();
-  for (const CLI::Option* option : app.get_options())
-    if (option->count() > 0 && option->get_name() != "--help" && option->get_name() != "--output" &&
-        option->get_name() != "--force")
-      for (const std::string& value : option->results())
-        line += " " + option->get_name() + (option->get_expected_max() == 0 ? "" : " " + value);
-  return line;
-}
-
 class SynthCommand : public Command {
  public:
   std::string name() const override { return "synth"; }
@@ -71,12 +59,12 @@ class SynthCommand : public Command {
     synth::SynthSummary summary;
     std::string out;
     if (hatt_->parsed()) {
-      hatt_options_.provenance = command_line(*hatt_);
+      hatt_options_.provenance = global.command_line;
       summary = synth::synth_hatt(hatt_options_, terminal_progress(global, "synth hatt"));
       out = hatt_options_.out;
     } else {
       std::tie(materials_options_.width, materials_options_.height) = parse_size(size_);
-      materials_options_.provenance = command_line(*materials_);
+      materials_options_.provenance = global.command_line;
       summary = synth::synth_materials(materials_options_, terminal_progress(global, "synth materials"));
       out = materials_options_.out;
     }

@@ -86,10 +86,10 @@ class TrainCommand : public Command {
       epochs.push_back(epoch_json(r));
       if (show) print_epoch(r);
     });
-    predict::write_model(model, output_, force_, source());
+    predict::write_model(model, output_, force_, global.command_line);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const nlohmann::json log = {{"format", "training-log/1"}, {"haptex_version", kVersion}, {"created_utc", h5::utc_now_iso8601()},
-                                {"source", source()}, {"model", output_},
+                                {"source", global.command_line}, {"model", output_},
                                 {"dataset", {{"path", dataset_}, {"sha256", split.dataset_sha256}}},
                                 {"split", {{"path", split_}, {"sha256", split.manifest_sha256}}},
                                 {"options", options_.to_json()}, {"epochs", epochs}, {"metrics", model.metrics},
@@ -103,10 +103,6 @@ class TrainCommand : public Command {
   }
 
  private:
-  std::string source() const {
-    return "haptex train " + dataset_ + " --split " + split_ + " -o " + output_ + (per_material_ ? " --per-material" : "") +
-           " --seed " + std::to_string(options_.seed);
-  }
 
   static void print_epoch(const predict::EpochReport& r) {
     if (r.val_accuracy >= 0)

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
@@ -41,6 +42,15 @@ TEST(TrainCli, WritesTheModelAndAValidTrainingLog) {
   EXPECT_NO_THROW(json::validate(log, "training-log.schema.json", "log"));
   EXPECT_EQ(log["options"]["latent"], 8);
   EXPECT_GE(log["epochs"].size(), 2u);
+  // The source is the command line, every option kept (apps/provenance.hpp, in the order the command
+  // declares them), without where the model went.
+  const std::string source = log["source"];
+  EXPECT_EQ(source.rfind("haptex train " + small_pipeline().dataset + " --split " + small_pipeline().split, 0), 0u) << source;
+  const std::vector<std::string>& options = test::quick_train_options();
+  for (std::size_t i = 0; i + 1 < options.size(); i += 2)
+    EXPECT_NE(source.find(" " + options[i] + " " + options[i + 1]), std::string::npos) << options[i] << " missing from " << source;
+  EXPECT_EQ(source.find(dir.file("m.h5")), std::string::npos) << source;
+  EXPECT_EQ(h5::File::open(dir.file("m.h5")).root().attr_string("source"), source);
   // A second run refuses to overwrite without --force, and leaves the first model alone.
   const auto size = fs::file_size(dir.file("m.h5"));
   const CommandResult again = run_haptex(train_args(small_pipeline().split, dir.file("m.h5")));

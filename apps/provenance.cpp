@@ -1,0 +1,40 @@
+#include "apps/provenance.hpp"
+
+#include <array>
+#include <string_view>
+
+namespace haptex::apps {
+namespace {
+
+constexpr std::array<std::string_view, 9> kLeftOut{"--help", "--output", "--sheets", "--log", "--csv", "--force",
+                                                    "--json", "--quiet", "--verbose"};
+
+bool left_out(const CLI::Option& option) {
+  for (std::string_view name : kLeftOut)
+    if (option.check_lname(std::string(name.substr(2)))) return true;
+  return false;
+}
+
+void append_options(const CLI::App& app, std::string& line) {
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->count() == 0 || left_out(*option)) continue;
+    for (const std::string& value : option->results()) {
+      if (option->nonpositional()) line += " " + option->get_name();
+      if (!option->nonpositional() || option->get_expected_max() != 0) line += " " + value;
+    }
+  }
+  for (const CLI::App* sub : app.get_subcommands()) {
+    line += " " + sub->get_name();
+    append_options(*sub, line);
+  }
+}
+
+}  // namespace
+
+std::string command_line(const CLI::App& subcommand) {
+  std::string line = "haptex " + subcommand.get_name();
+  append_options(subcommand, line);
+  return line;
+}
+
+}  // namespace haptex::apps
