@@ -2,6 +2,7 @@
 // Per press: the peak frame and its neighbours, the reference, the score curve; and a contact sheet PNG.
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 
 #include "apps/capture_subcommands.hpp"
@@ -26,10 +27,13 @@ class CaptureExtract : public CaptureSubcommand {
     app->add_option("--frames-per-press", options_.settings.frames_per_press, "The peak and its neighbours kept")
         ->capture_default_str()
         ->check(CLI::Range(1, 100));
-    app->add_option("--pixel-threshold", pixel_floor_,
-                    "Least per-pixel change that counts, in grey levels (default: 6 for lossy sources, 1 for lossless)")
-        ->check(CLI::PositiveNumber);
-    app->add_option("--trigger", trigger_floor_, "Least contact score that starts a press (default: 0.25 lossy, 0.02 lossless)")
+    app->add_option("--pixel-threshold", pixel_threshold_,
+                    "Least per-pixel change that counts, in grey levels (default: 0 with the footage's own reference frames; "
+                    "with --reference, 6 for lossy sources, 1 for lossless)")
+        ->check(CLI::NonNegativeNumber);
+    app->add_option("--trigger", trigger_,
+                    "Least contact score that starts a press (default: from the footage's own no-contact frames; with "
+                    "--reference, 0.25 lossy, 0.02 lossless)")
         ->check(CLI::PositiveNumber);
     app->add_option("--sheets", options_.sheets_dir, "Folder for the contact sheets (default: <output>_sheets)");
     app->add_flag("--no-sheets", no_sheets_, "Write no contact sheets");
@@ -44,8 +48,8 @@ class CaptureExtract : public CaptureSubcommand {
     refuse_output_among_inputs(output_, inputs);
     refuse_output_among_inputs(options_.sheets_dir.empty() ? capture::default_sheets_dir(output_) : options_.sheets_dir, inputs);
     if (!material_.empty()) options_.material = material_;
-    if (pixel_floor_ > 0) options_.settings.pixel_floor = pixel_floor_;
-    if (trigger_floor_ > 0) options_.settings.trigger_floor = trigger_floor_;
+    if (pixel_threshold_) options_.settings.pixel_threshold = *pixel_threshold_;
+    if (trigger_) options_.settings.trigger = *trigger_;
     options_.sheets = !no_sheets_;
     options_.provenance = global.command_line;
     const auto result = capture::extract_presses(inputs_, output_, options_, terminal_progress(global, "extract"));
@@ -93,7 +97,7 @@ class CaptureExtract : public CaptureSubcommand {
   std::vector<std::string> inputs_;
   std::string output_, reference_, material_;
   bool no_sheets_ = false;
-  float pixel_floor_ = 0, trigger_floor_ = 0;  // 0: the source's defaults
+  std::optional<float> pixel_threshold_, trigger_;  // unset: the footage's own (or the image floors)
   capture::ExtractOptions options_;
 };
 

@@ -71,11 +71,12 @@ inline constexpr double kRawMinShare = 1e-8;
 // same size (same sensor) stays under the press's own contact trigger (stored as `trigger`).
 // At least this many presses are needed for a meaningful median.
 inline constexpr std::size_t kMinReferencesForMedian = 3;
-// The peak frame, scored against the reference with the press's pixel threshold, must clear the
-// press's contact trigger (3 x the no-contact frames' worst score, at least 0.25) by half again:
-// the weakest real press at hand (a GelSlim ball press, ../shared/data) scores 1.9 x, GelSight Mini
-// presses 3 to 6 x; a press under 1.5 x is barely distinguishable from the reference.
-inline constexpr double kPeakOverTrigger = 1.5;
+// The peak frame, scored again against the stored reference with the press's pixel threshold, must
+// reach the press's contact trigger, which already stands 3 times the footage's no-contact level
+// above nothing (docs/capture.md, "Finding presses"): a peak under it could not have started the
+// press, so the reference or the peak is not the one the press was cut with. 0.9, not 1: the stored
+// reference is the reference frames' mean rounded to 8 bits.
+inline constexpr double kPeakOverTrigger = 0.9;
 // A frame is saturated when more than 2% of its pixels have a channel at 255 (overexposed LEDs
 // flatten the shading that encodes the surface).
 inline constexpr int kSaturatedLevel = 255;

@@ -59,9 +59,7 @@ class Extraction {
     const SourceScores scores = score_source(*source, settings_);
     result_.frames_scored += std::int64_t(scores.scores.size());
     result_.frames_unreadable += scores.unreadable_frames + source->frames_missing();
-    SegmenterSettings segmenter = settings_.segmenter;
-    segmenter.trigger = scores.contact->trigger();
-    segmenter.release = scores.contact->release();
+    const SegmenterSettings segmenter = scores.contact->segmenter(settings_.segmenter);
     const auto plans = plan_presses(scores.scores, segmenter, settings_.frames_per_press, settings_.margin_frames);
     if (plans.empty()) result_.sources_without_press.push_back(input.path);
     const std::string sha = plans.empty() ? "" : source->sha256();

@@ -23,6 +23,11 @@ class FrameSource {
   virtual double fps() const = 0;  // 0 when the source does not say
   // True when frames reach us exactly as the sensor (or renderer) made them: no compression artefacts.
   virtual bool lossless() const = 0;
+  // True when frames are coded from earlier frames (MPEG-4, H.264, ...): frames between key frames
+  // copy each other's compression noise, so the noise of the first few frames says little about the
+  // rest (the thresholds then take a longer calibration; contact_score.hpp). Image folders, press
+  // files, MJPG and lossless codecs code every frame on its own.
+  virtual bool inter_frame() const { return false; }
   // SHA-256 of the source's bytes (for a folder of images: of the images' bytes in frame order).
   virtual std::string sha256() const = 0;
 

@@ -23,6 +23,18 @@ class LeadingReference {
       : settings_(settings), score_(score), path_(path) {}
 
   bool complete() const { return done_; }
+  std::int64_t last_index() const { return indices_.back(); }
+
+  // After calibration (inter-frame video): were the reference frames no contact?
+  void require_steady(const ContactReference& contact) const {
+    if (contact.steady()) return;
+    throw input_error(path_, "frames " + std::to_string(first_) + "-" + std::to_string(indices_.back()),
+                      "the first " + std::to_string(settings_.reference_frames) +
+                          " frames are not a steady no-contact stretch (one differs from the others' mean by a score of " +
+                          std::to_string(contact.worst_reference_score()) + ", a press's)",
+                      "Start the video with at least " + std::to_string(settings_.reference_frames) +
+                          " frames without contact, or give a no-contact image with --reference");
+  }
   bool collecting() const { return !done_; }
 
   void add(std::int64_t index, const cv::Mat& scoring, const cv::Mat& full, SourceScores& out) {
@@ -45,18 +57,13 @@ class LeadingReference {
   void finish(SourceScores& out) {
     done_ = true;
     const ContactReference contact = ContactReference::from_frames(small_, score_);
-    if (contact.worst_reference_score() > score_.trigger_floor)
-      throw input_error(path_, "frames " + std::to_string(indices_.front()) + "-" + std::to_string(indices_.back()),
-                        "the first " + std::to_string(small_.size()) +
-                            " frames are not a steady no-contact stretch (they differ from their mean by a score of " +
-                            std::to_string(contact.worst_reference_score()) + ")",
-                        "Start the video with at least " + std::to_string(settings_.reference_frames) +
-                            " frames without contact, or give a no-contact image with --reference");
+    first_ = indices_.front();
     sum_.convertTo(out.reference, CV_8UC3, 1.0 / double(small_.size()));
     out.reference_note = "mean of frames " + std::to_string(indices_.front()) + "-" + std::to_string(indices_.back());
     for (std::size_t i = 0; i < small_.size(); ++i) out.scores[std::size_t(indices_[i])] = contact.score(small_[i]);
     out.contact = contact;
     small_.clear();
+    indices_.erase(indices_.begin(), indices_.end() - 1);
   }
 
   const ExtractSettings& settings_;
@@ -65,6 +72,7 @@ class LeadingReference {
   cv::Mat sum_;
   std::vector<cv::Mat> small_;
   std::vector<std::int64_t> indices_;
+  std::int64_t first_ = 0;
   bool done_ = false;
 };
 
@@ -81,8 +89,8 @@ std::optional<ContactReference> given_reference(FrameSource& source, const Extra
     out.reference_note = "image " + settings.reference_image_path;
     // A single image shows no noise: the lossy floors apply unless the user set others.
     ScoreSettings floors = score_settings_for(false);
-    floors.pixel_floor = settings.pixel_floor.value_or(floors.pixel_floor);
-    floors.trigger_floor = settings.trigger_floor.value_or(floors.trigger_floor);
+    floors.pixel_threshold = settings.pixel_threshold;
+    floors.trigger = settings.trigger;
     return ContactReference::from_image(scoring_image(settings.reference_image), floors);
   }
   if (const auto stored = source.stored_reference()) {
@@ -126,12 +134,20 @@ std::vector<std::int64_t> choose_window(const std::vector<float>& scores, std::i
   return window;
 }
 
+// The scores of the frames after the reference that calibrate the thresholds of inter-frame video.
+std::vector<float> calibration_scores(const std::vector<float>& scores, std::int64_t reference_last, const ExtractSettings& settings) {
+  std::vector<float> out;
+  for (std::size_t i = std::size_t(reference_last) + 1; i < scores.size() && int(out.size()) < settings.calibration_frames; ++i)
+    if (std::isfinite(scores[i])) out.push_back(scores[i]);
+  return out;
+}
+
 }  // namespace
 
 ScoreSettings score_settings(const FrameSource& source, const ExtractSettings& settings) {
   ScoreSettings s = score_settings_for(source.lossless());
-  s.pixel_floor = settings.pixel_floor.value_or(s.pixel_floor);
-  s.trigger_floor = settings.trigger_floor.value_or(s.trigger_floor);
+  s.pixel_threshold = settings.pixel_threshold;
+  s.trigger = settings.trigger;
   return s;
 }
 
@@ -160,6 +176,9 @@ SourceScores score_source(FrameSource& source, const ExtractSettings& settings) 
       },
       [&](std::int64_t) { return from_leading && leading.collecting(); });
   if (from_leading) leading.require_complete();
+  if (!from_leading) return out;
+  if (source.inter_frame()) out.contact = out.contact->calibrated(calibration_scores(out.scores, leading.last_index(), settings), score);
+  leading.require_steady(*out.contact);
   return out;
 }
 

@@ -20,8 +20,10 @@ struct ExtractSettings {
   int reference_frames = 10;   // leading no-contact frames averaged into the reference
   int frames_per_press = 12;   // the peak and its neighbours
   int margin_frames = 10;      // frames before and after the contact kept in each press's score curve
-  // Floors of the score (contact_score.hpp); unset: score_settings_for(the source is lossless).
-  std::optional<float> pixel_floor, trigger_floor;
+  int calibration_frames = 25; // inter-frame video: no-contact frames after the reference that set the thresholds
+  // --pixel-threshold and --trigger: replace what the footage (or a given image's floors) gives
+  // (contact_score.hpp).
+  std::optional<float> pixel_threshold, trigger;
   SegmenterSettings segmenter; // its trigger and release come from the reference
   cv::Mat reference_image;     // BGR; when given it replaces the leading frames and stored references
   std::string reference_image_path;

@@ -32,6 +32,11 @@ class VideoSource : public FrameSource {
       if (fourcc_ == std::uint32_t(cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]))) return true;
     return fourcc_ == 0;
   }
+  bool inter_frame() const override {
+    for (const char* codec : {"MJPG", "mjpg", "AVRn", "dmb1", "jpeg"})
+      if (fourcc_ == std::uint32_t(cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]))) return false;
+    return !lossless();
+  }
   cv::Size frame_size() const override { return size_; }
   double fps() const override { return fps_ > 0 && fps_ < 1000 ? fps_ : 0.0; }
 

@@ -84,7 +84,7 @@ void TakeProcessor::collect_reference(const TakeFrame& frame, const cv::Mat& sma
   if (int(reference_small_.size()) < options_.reference_frames) return;
 
   ContactReference candidate = ContactReference::from_frames(reference_small_, score_);
-  if (candidate.worst_reference_score() > score_.trigger_floor) {
+  if (!candidate.steady()) {
     if (++reference_restarts_ > kMaxReferenceRestarts)
       throw failure(session_.identity.path + ": the sensor image did not settle into a steady no-contact reference; "
                     "keep the sensor untouched for the first seconds of the take");
@@ -94,10 +94,7 @@ void TakeProcessor::collect_reference(const TakeFrame& frame, const cv::Mat& sma
   }
   reference_sum_.convertTo(reference_image_, CV_8UC3, 1.0 / double(reference_small_.size()));
   contact_ = candidate;
-  SegmenterSettings settings = options_.segmenter;
-  settings.trigger = contact_->trigger();
-  settings.release = contact_->release();
-  segmenter_.emplace(settings);
+  segmenter_.emplace(contact_->segmenter(options_.segmenter));
   reference_small_.clear();
   reference_sum_.release();
   if (progress_) progress_(0, std::size_t(options_.presses), "reference taken; press the sensor");

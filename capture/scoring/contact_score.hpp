@@ -1,58 +1,102 @@
 #pragma once
-// How much a frame differs from the no-contact reference, robust to sensor noise and to slow
-// exposure drift (the reasoning and the checks on real captures are in docs/capture.md):
+// How much a frame differs from the no-contact reference, robust to sensor noise, compression and
+// slow lighting drift, and when that is contact (docs/capture.md, "Finding presses"):
 //
 //   d     = frame - reference, per pixel of the scoring images (scoring_image.hpp)
-//   d'    = d - median(d)        a uniform brightness shift (exposure, LED drift) moves the median, not a press
-//   score = mean over pixels of max(0, |d'| - t)
+//   r     = d - drift(d)         drift: the least-squares fit of an offset and a gain (a multiple of
+//                                the reference: exposure and LED changes scale the image), refitted
+//                                without the pixels that do not fit, so a press does not move it. No
+//                                tilt: a broad press near an edge looks like one, and is not drift
+//   score = mean over pixels of max(0, |r| - t)      in grey levels
 //
-// t, the per-pixel noise threshold, is 4 times the reference frames' temporal noise and at least
-// 6 grey levels (compression artefacts and sensor noise a single reference image cannot show), so
-// noise adds (almost) nothing while a press adds its full depth times its area.
-// The score is in grey levels: the mean excess over the noise threshold.
+// With a reference taken from the footage itself (its leading no-contact frames, or a live take's),
+// t is the frames' per-pixel noise and the trigger comes from that footage: each reference frame is
+// scored against the mean of the others, which gives the no-contact level of the score without a
+// single extra frame (inter-frame video takes it over the frames after the reference instead:
+// ContactReference::calibrated), and contact is a score above that level by a multiple of it. So
+// the trigger adapts to each sensor's noise, compression and resolution, and a press of a few grey
+// levels on a 320 x 240 MPEG-4 is found as surely as a deep one on a 3280 x 2464 MJPG. A single
+// given no-contact image shows no noise: then t and the trigger are fixed floors.
+#include <cmath>
+#include <optional>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
+#include "capture/scoring/press_segmenter.hpp"
+
 namespace haptex::capture {
 
 struct ScoreSettings {
-  float pixel_floor = 6.0f;        // t never below this (grey levels)
-  float noise_multiplier = 4.0f;   // t = max(pixel_floor, noise_multiplier * noise)
-  float trigger_floor = 0.25f;     // the contact trigger never below this (score units)
-  float trigger_multiplier = 3.0f; // trigger = max(trigger_floor, trigger_multiplier * worst reference frame's score)
+  // Footage: t = noise_threshold x the reference frames' per-pixel noise (a soft threshold: most of
+  // the noise goes, a press of a few noise levels stays), and trigger = level + max(level_factor x
+  // level, min_trigger). A press that scores 3 times the no-contact level rises above it; the level
+  // doubling with drift and compression flicker does not (docs/capture.md has the figures).
+  float noise_threshold = 1.0f;
+  float level_factor = 2.0f;
+  float min_trigger = 0.05f;  // grey levels: below any press a person sees
+  // A single given image (its noise unknown): t and the trigger. Lossy images (JPEG) differ from
+  // later frames by a few grey levels of compression; lossless ones (PNG) only by noise.
+  float image_pixel_threshold = 6.0f;
+  float image_trigger = 0.25f;
+  // The user's --pixel-threshold and --trigger: replace what the rules above give.
+  std::optional<float> pixel_threshold, trigger;
 };
 
-// The floors for a source. Lossy compression (MJPG, MPEG-4, JPEG images) changes no-contact frames by
-// a few grey levels, and a single reference image cannot show how much, so lossy sources keep the
-// floors above (checked on the real captures in ../shared/data). Lossless sources (PNG frames, FFV1,
-// raw YUYV) with a measured reference change only by their noise, which the noise term covers: their
-// floors are 1 grey level and a trigger of 0.02, so faint presses of clean (synthetic) sensors count.
+// The image floors for a given reference image of a lossless or lossy source.
 ScoreSettings score_settings_for(bool lossless);
 
+// The score of one image against a reference, building the drift fit for that reference (for
+// single comparisons, as qa's; ContactReference keeps the fit for a stream of frames).
 float contact_score(const cv::Mat& scoring_image, const cv::Mat& reference, float pixel_threshold);
+
+// The drift fit of a reference, computed once: offset and gain (see above).
+class DriftFit {
+ public:
+  // gain: fit a multiple of the reference too (off: any change but an offset counts).
+  explicit DriftFit(const cv::Mat& reference, bool gain = true);
+  float score(const cv::Mat& scoring_image, const cv::Mat& reference, float pixel_threshold) const;
+
+ private:
+  cv::Mat centred_;      // the gain column: the reference, centred (zeros without gain)
+  cv::Matx22d inverse_;  // of the Gram matrix of [1, centred_]
+};
 
 class ContactReference {
  public:
-  // The mean of no-contact scoring images, with their temporal noise and the thresholds it implies.
+  // The mean of no-contact scoring images, with the thresholds their own scores give (see above).
   static ContactReference from_frames(const std::vector<cv::Mat>& scoring_images, const ScoreSettings& settings = {});
-  // One given no-contact image: its noise is unknown, so the floors apply.
+  // One given no-contact image: its noise is unknown, so the image floors apply.
   static ContactReference from_image(const cv::Mat& scoring_image, const ScoreSettings& settings = {});
-  // A stored reference with stored thresholds (press files carry them).
-  ContactReference(cv::Mat mean, float noise, float pixel_threshold, float trigger)
-      : mean_(std::move(mean)), noise_(noise), pixel_threshold_(pixel_threshold), trigger_(trigger) {}
+  // A stored reference with stored thresholds (press files carry them; level and spread 0 when the
+  // file predates them).
+  ContactReference(cv::Mat mean, float noise, float pixel_threshold, float trigger, float level = 0, float spread = 0);
 
-  float score(const cv::Mat& scoring_image) const { return contact_score(scoring_image, mean_, pixel_threshold_); }
+  float score(const cv::Mat& scoring_image) const { return fit_.score(scoring_image, mean_, pixel_threshold_); }
   const cv::Mat& mean() const { return mean_; }
   float noise() const { return noise_; }                   // robust per-pixel temporal standard deviation
   float pixel_threshold() const { return pixel_threshold_; }
+  float level() const { return level_; }                   // the score of a no-contact frame (median)
+  float spread() const { return spread_; }                 // its robust standard deviation
   float trigger() const { return trigger_; }               // a score above this is contact
-  float release() const { return trigger_ / 2; }           // a press ends below this
+  float release() const { return level_ + (trigger_ - level_) / 2; }  // a press ends below this
+  // The same reference with the level, spread and trigger taken from these no-contact scores instead
+  // of the reference frames' own (for inter-frame video, whose first frames copy each other's
+  // compression noise; the median and its spread are robust to a press in under half of them).
+  // With a --trigger or --pixel-threshold of the user's, or no scores, the reference is unchanged.
+  ContactReference calibrated(const std::vector<float>& scores, const ScoreSettings& settings) const;
+  // The reference frames were a steady no-contact stretch: none counts as contact, and they do not
+  // change from the first to the last as a press coming or going does.
+  bool steady() const { return worst_reference_score_ <= steady_limit_; }
   float worst_reference_score() const { return worst_reference_score_; }
+  // The segmentation thresholds, over the level, with the rest of `base`.
+  SegmenterSettings segmenter(SegmenterSettings base) const;
 
  private:
   cv::Mat mean_;
-  float noise_ = 0, pixel_threshold_ = 0, trigger_ = 0, worst_reference_score_ = 0;
+  DriftFit fit_;
+  float noise_ = 0, pixel_threshold_ = 0, trigger_ = 0, level_ = 0, spread_ = 0, worst_reference_score_ = 0;
+  float steady_limit_ = INFINITY;
 };
 
 }  // namespace haptex::capture

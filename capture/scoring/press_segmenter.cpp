@@ -14,17 +14,18 @@ std::optional<PressSegmenter::Event> PressSegmenter::feed(std::int64_t frame, fl
       press_.peak_score = score;
       press_.peak = frame;
     }
-    if (score < settings_.release || score < settings_.valley_ratio * press_.peak_score) {
+    const float excess = score - settings_.level, peak_excess = press_.peak_score - settings_.level;
+    if (score < settings_.release || excess < settings_.valley_ratio * peak_excess) {
       state_ = State::idle;
       press_.last = previous;
-      valley_ = score;
+      valley_ = excess;
       above_ = 0;
       return Event{Event::Kind::ended, press_};
     }
     return std::nullopt;
   }
-  valley_ = std::min(valley_, score);
-  if (score <= std::max(settings_.trigger, settings_.rearm_ratio * valley_)) {
+  valley_ = std::min(valley_, score - settings_.level);
+  if (score <= std::max(settings_.trigger, settings_.level + settings_.rearm_ratio * valley_)) {
     above_ = 0;
     return std::nullopt;
   }

@@ -3,10 +3,12 @@
 // and `capture extract` afterwards with the same result.
 //
 // A press starts when the score stays above the trigger for two frames in a row (one odd frame is
-// not a press). It ends when the score falls below the release level, or below a tenth of the
-// press's own peak: fingers and indenters often lift without leaving the gel quite untouched, and
-// such a valley is still the end of one press. After a press, the next one must also rise to twice
-// the valley it starts from, so the wobble of a lingering touch does not count as new presses.
+// not a press). It ends when the score falls below the release level, or its excess over the
+// no-contact level below a fifth of the press's own: fingers and indenters often lift without
+// leaving the gel quite untouched, and such a valley is still the end of one press. After a press,
+// the next one must also rise to twice the valley's excess, so the wobble of a lingering touch does
+// not count as new presses. Scores are compared by their excess over the no-contact level
+// (ContactReference::level; 0 for a reference whose frames' scores are 0 without contact).
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -14,9 +16,10 @@
 namespace haptex::capture {
 
 struct SegmenterSettings {
+  float level = 0.0f;  // the score of a no-contact frame
   float trigger = 0.25f;
   float release = 0.125f;
-  float valley_ratio = 0.1f;  // end when the score falls below this share of the press's peak
+  float valley_ratio = 0.2f;  // end when the excess falls below this share of the press's peak excess
   float rearm_ratio = 2.0f;   // the next press must rise to this multiple of the valley before it
   int confirm_frames = 2;     // consecutive frames above the trigger that start a press
 };

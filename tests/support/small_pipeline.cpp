@@ -50,7 +50,7 @@ capture::GelsightPress press_from_frames(const fs::path& folder) {
   constexpr int kReferenceFrames = 10, kKept = 12;
   if (frames.size() < std::size_t(kReferenceFrames + kKept)) throw std::runtime_error(folder.string() + ": too few frames");
   capture::ScoreSettings settings;
-  settings.pixel_floor = 0;
+  settings.pixel_threshold = 0.0f;
   const auto contact = capture::ContactReference::from_frames(
       std::vector<cv::Mat>(scoring.begin(), scoring.begin() + kReferenceFrames), settings);
   capture::GelsightPress p;

@@ -45,10 +45,7 @@ TEST(RealCaptures, MiniExampleVideo) {
   auto source = open_video(dir + "/mini_example.avi");
   const SourceScores scores = score_source(*source, {});
   ASSERT_EQ(scores.scores.size(), 219u);
-  SegmenterSettings settings;
-  settings.trigger = scores.contact->trigger();
-  settings.release = scores.contact->release();
-  const auto plans = plan_presses(scores.scores, settings, 12, 10);
+  const auto plans = plan_presses(scores.scores, scores.contact->segmenter({}), 12, 10);
   ASSERT_FALSE(plans.empty());
   for (const auto& p : plans) EXPECT_GT(p.contact.first, 50) << "no press in frames 0 to 50";
   const auto strongest = std::max_element(plans.begin(), plans.end(), [](const PressPlan& a, const PressPlan& b) {
@@ -57,7 +54,7 @@ TEST(RealCaptures, MiniExampleVideo) {
   EXPECT_NEAR(double(strongest->contact.peak), 98.0, 3.0);
   // The presses docs/capture.md lists.
   ASSERT_EQ(plans.size(), 3u);
-  EXPECT_EQ(plans[0].contact.first, 58);
+  EXPECT_EQ(plans[0].contact.first, 59);
   EXPECT_EQ(plans[1].contact.first, 90);
   EXPECT_EQ(plans[2].contact.first, 160);
   for (const auto& p : plans) EXPECT_EQ(p.frame_indices.size(), 12u);

@@ -132,7 +132,9 @@ TEST_F(Recorder, YuyvFramesAreStoredAsLosslessPng) {
   extract.sheets = false;
   const ExtractResult x = extract_presses({file("press_0.h5")}, dir_.file("g.h5"), extract);
   ASSERT_EQ(x.presses.size(), 1u);
-  EXPECT_EQ(x.presses[0].peak_index, r.presses[0].peak_frame - r.presses[0].take_first_frame);
+  // The fake presses equally deep for its hold frames, which then score alike up to noise; live
+  // scores the Y plane, extraction the stored PNG's grey, so either may take a neighbouring hold frame.
+  EXPECT_NEAR(double(x.presses[0].peak_index), double(r.presses[0].peak_frame - r.presses[0].take_first_frame), 1.0);
 }
 
 TEST_F(Recorder, ADisconnectDuringAPressKeepsEveryFrameTaken) {

@@ -56,7 +56,10 @@ TEST(ContactScore, GrowsWithDepthAndArea) {
   EXPECT_NEAR(deep, (30 - 6) * 1963.0f / 19200.0f, 0.1f);
 }
 
-TEST(ContactReference, NoiseOfTheReferenceFramesRaisesThePixelThreshold) {
+// The footage's own noise sets the pixel threshold (1 sigma) and, through the leave-one-out scores
+// of the reference frames, the no-contact level and the trigger (3 times the level): for Gaussian
+// noise the level is E max(0, |r| - sigma) with r ~ N(0, 1.054 sigma), 0.193 sigma.
+TEST(ContactReference, TheFootagesOwnNoiseSetsTheThresholds) {
   const cv::Mat gel = flat_gel();
   std::vector<cv::Mat> quiet, noisy;
   for (int i = 0; i < 10; ++i) {
@@ -66,14 +69,50 @@ TEST(ContactReference, NoiseOfTheReferenceFramesRaisesThePixelThreshold) {
   const ContactReference q = ContactReference::from_frames(quiet);
   const ContactReference n = ContactReference::from_frames(noisy);
   EXPECT_NEAR(q.noise(), 0.5f, 0.05f);
-  EXPECT_FLOAT_EQ(q.pixel_threshold(), 6.0f) << "the floor";
   EXPECT_NEAR(n.noise(), 3.0f, 0.2f);
-  EXPECT_NEAR(n.pixel_threshold(), 12.0f, 0.8f) << "4 sigma";
-  EXPECT_FLOAT_EQ(q.trigger(), 0.25f);
-  EXPECT_FLOAT_EQ(q.release(), 0.125f);
-  // A fresh noisy frame (not among the reference frames) stays far below the trigger.
-  EXPECT_LT(n.score(with_noise(gel, 3.0, 99)), n.trigger() / 10);
-  EXPECT_GT(n.score(pressed(gel, 40)), n.trigger() * 4);
+  EXPECT_FLOAT_EQ(n.pixel_threshold(), n.noise());
+  EXPECT_NEAR(n.level(), 0.193f * 3.0f, 0.1f);
+  EXPECT_NEAR(n.level() / q.level(), 6.0f, 0.6f) << "the level scales with the noise";
+  EXPECT_NEAR(n.trigger(), 3 * n.level(), 1e-5f);
+  EXPECT_FLOAT_EQ(q.trigger(), std::max(3 * q.level(), q.level() + 0.05f));
+  EXPECT_NEAR(n.release(), 2 * n.level(), 1e-5f);
+  EXPECT_TRUE(q.steady() && n.steady());
+  // A fresh noisy frame (not among the reference frames) stays at the level, under the trigger; a
+  // press 40 grey levels deep over a tenth of the gel (13 sigma) is well above it.
+  EXPECT_LT(n.score(with_noise(gel, 3.0, 99)), 1.3f * n.level());
+  EXPECT_GT(n.score(with_noise(pressed(gel, 40), 3.0, 98)), 2 * n.trigger());
+  const SegmenterSettings s = n.segmenter({});
+  EXPECT_EQ(s.level, n.level());
+  EXPECT_EQ(s.trigger, n.trigger());
+}
+
+// A press coming during the reference frames is refused, even when it spoils most of them.
+TEST(ContactReference, APressDuringTheReferenceFramesIsNoSteadyReference) {
+  const cv::Mat gel = flat_gel();
+  std::vector<cv::Mat> ramp;
+  for (int i = 0; i < 10; ++i) ramp.push_back(with_noise(pressed(gel, std::max(0.0f, float(i - 2)) * 4.0f), 1.0, 50 + std::uint64_t(i)));
+  const ContactReference r = ContactReference::from_frames(ramp);
+  EXPECT_FALSE(r.steady()) << "level " << r.level() << " trigger " << r.trigger() << " worst " << r.worst_reference_score() << " noise " << r.noise();
+  std::vector<cv::Mat> blip;
+  for (int i = 0; i < 10; ++i) blip.push_back(with_noise(i == 6 ? pressed(gel, 30) : gel, 1.0, 70 + std::uint64_t(i)));
+  EXPECT_FALSE(ContactReference::from_frames(blip).steady());
+}
+
+// Inter-frame video: the level is taken over later no-contact scores, robust to a press in some.
+TEST(ContactReference, CalibrationTakesTheLevelFromLaterScores) {
+  std::vector<cv::Mat> frames;
+  for (int i = 0; i < 10; ++i) frames.push_back(with_noise(flat_gel(), 1.0, 90 + std::uint64_t(i)));
+  const ContactReference r = ContactReference::from_frames(frames);
+  std::vector<float> later(25, 0.6f);
+  later[3] = 9.0f;  // a press already
+  later[4] = std::nanf("");
+  const ContactReference c = r.calibrated(later, {});
+  EXPECT_FLOAT_EQ(c.level(), 0.6f);
+  EXPECT_FLOAT_EQ(c.trigger(), 1.8f);
+  EXPECT_EQ(c.pixel_threshold(), r.pixel_threshold());
+  ScoreSettings fixed;
+  fixed.trigger = 0.4f;
+  EXPECT_EQ(r.calibrated(later, fixed).trigger(), r.trigger()) << "the user's trigger stands";
 }
 
 TEST(ContactReference, AGivenImageUsesTheFloors) {
