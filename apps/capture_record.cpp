@@ -92,14 +92,18 @@ class CaptureRecord : public CaptureSubcommand {
  private:
   capture::RecordingResult record(const GlobalOptions& global) {
     const Progress progress = terminal_progress(global, "record");
+    // Before the take, so the user can stop and fix it before pressing (also in --json's warnings).
+    const capture::Warn warn = [&global](const std::string& warning) {
+      if (!global.quiet) std::cerr << "haptex capture: warning: " << warning << "\n";
+    };
     if (capture::is_fake_device(device_)) {
       const capture::FakeDevice fake = capture::parse_fake_device(device_);
       capture::FakeCamera camera(fake.config);
       request_.node = fake.node;
-      return capture::record_session(camera, request_, options_, &g_stop, progress);
+      return capture::record_session(camera, request_, options_, &g_stop, progress, warn);
     }
     capture::SystemKernel kernel;
-    return capture::record_session(kernel, request_, options_, &g_stop, progress);
+    return capture::record_session(kernel, request_, options_, &g_stop, progress, warn);
   }
 
   void build_request() {
@@ -112,8 +116,11 @@ class CaptureRecord : public CaptureSubcommand {
       request_.node = sensor.capture_node;
       request_.serial = sensor.serial;
       request_.model = sensor.model;
+      request_.link = sensor.link;
     } else {
       request_.node = device_;
+      // The fake camera has no USB link; a real node's is found through sysfs (unknown if it is not USB).
+      if (!capture::is_fake_device(device_)) request_.link = capture::usb_link_of_node("/sys", device_);
     }
     if (!format_.empty()) request_.format.fourcc = capture::fourcc_code(format_, "--format");
     if (!size_.empty()) parse_size();

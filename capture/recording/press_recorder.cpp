@@ -10,6 +10,7 @@
 
 #include "capture/device/camera_controls.hpp"
 #include "capture/device/fourcc.hpp"
+#include "capture/device/usb_bandwidth.hpp"
 #include "capture/device/v4l2_device.hpp"
 #include "capture/recording/frame_queue.hpp"
 #include "core/error.hpp"
@@ -201,7 +202,7 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
 }
 
 RecordingResult record_session(KernelInterface& kernel, const SessionRequest& request, const RecorderOptions& options,
-                               const std::atomic<bool>* stop, const Progress& progress) {
+                               const std::atomic<bool>* stop, const Progress& progress, const Warn& warn) {
   check_recorder_options(options);
   check_session_dir(request.output_dir, request.overwrite);  // refused before the device is touched
   V4l2Device device(kernel, request.node);
@@ -216,6 +217,8 @@ RecordingResult record_session(KernelInterface& kernel, const SessionRequest& re
   session.serial = request.serial;
   session.model = request.model;
   session.format = format;
+  session.link = request.link;
+  session.link_warning = link_warning(device.path(), format, request.link, enumerate_formats(device));
   session.controls = lock_controls(device, request.controls);
   session.warmup_frames = options.warmup_frames;
   session.reference_frames = options.reference_frames;
@@ -224,6 +227,7 @@ RecordingResult record_session(KernelInterface& kernel, const SessionRequest& re
   V4l2Stream stream(device, format, request.buffers);
   session.buffers = stream.buffer_count();
   prepare_session_dir(request.output_dir, request.overwrite);  // only now, so a refused device leaves nothing
+  if (warn && !session.link_warning.empty()) warn(session.link_warning);  // before the user starts pressing
   return record_take(stream, session, request.output_dir, options, stop, progress);
 }
 

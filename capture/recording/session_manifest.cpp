@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "capture/device/fourcc.hpp"
+#include "capture/device/usb_bandwidth.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
@@ -38,6 +39,16 @@ nlohmann::json press_json(const RecordedPress& p) {
           {"ended_by", p.ended_by}};
 }
 
+double mbit(double bytes_per_second) { return bytes_per_second * 8 / 1e6; }
+
+nlohmann::json usb_link_json(const SessionDescription& s) {
+  nlohmann::json link = {{"speed_mbps", *s.link.speed_mbps},
+                         {"video_capacity_mbps", mbit(isochronous_bytes_per_second(*s.link.speed_mbps))}};
+  if (s.link.version) link["version"] = *s.link.version;
+  if (const auto budget = link_budget(s.format, s.link)) link["stream_mbps_estimate"] = mbit(budget->needed);
+  return link;
+}
+
 }  // namespace
 
 std::string locked_controls_json(const ControlLock& controls) { return locked_array(controls).dump(); }
@@ -70,6 +81,10 @@ nlohmann::json session_manifest(const SessionDescription& s, const ReferenceSumm
                   {"cpu_seconds", t.cpu_seconds}}},
       {"ended_by", ended_by}};
   if (!s.model.empty()) doc["device"]["model"] = s.model;
+  if (s.link.speed_mbps) doc["device"]["usb_link"] = usb_link_json(s);
+  nlohmann::json warnings = nlohmann::json::array();
+  if (!s.link_warning.empty()) warnings.push_back(s.link_warning);
+  doc["warnings"] = warnings;
   if (!error.empty()) doc["error"] = error;
   return doc;
 }

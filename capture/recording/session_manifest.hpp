@@ -1,7 +1,8 @@
 #pragma once
-// session.json beside the press files (schemas/capture-session.schema.json): the device, its serial,
-// the granted format and rate, the locked controls, the thresholds, and per press its frame ranges and
-// losses. Rewritten after every press, so an interrupted take still describes what it saved.
+// session.json beside the press files (schemas/capture-session.schema.json): the device, its serial
+// and USB link, the granted format and rate, the locked controls, the thresholds, per press its frame
+// ranges and losses, and warnings. Rewritten after every press, so an interrupted take still
+// describes what it saved.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 
 #include "capture/device/camera_controls.hpp"
 #include "capture/device/format_negotiation.hpp"
+#include "capture/device/usb_discovery.hpp"
 #include "capture/device/v4l2_device.hpp"
 
 namespace haptex::capture {
@@ -19,6 +21,8 @@ struct SessionDescription {
   DeviceIdentity identity;
   std::string serial, model;
   StreamFormat format;
+  UsbLink link;              // unknown for the fake camera and nodes sysfs does not place on USB
+  std::string link_warning;  // usb_bandwidth.hpp: the mode exceeds the link; empty when it fits or is unknown
   unsigned buffers = 0;
   ControlLock controls;
   int warmup_frames = 0, reference_frames = 0, pre_frames = 0, post_frames = 0;
