@@ -81,6 +81,8 @@ class CaptureRecord : public CaptureSubcommand {
     StopOnSignal stop_on_signal;
     const capture::RecordingResult result = record(global);
     print(result, global);
+    if (!result.delivery_warning.empty() && !global.quiet)
+      std::cerr << "haptex capture: warning: " << result.delivery_warning << "\n";
     if (!result.device_fault()) return 0;
     std::cerr << "haptex capture: error: " << request_.node << ": the sensor "
               << (result.ended_by == "disconnected" ? "was disconnected" : "stopped sending frames") << " after "
@@ -163,8 +165,9 @@ class CaptureRecord : public CaptureSubcommand {
     std::cout << "recorded " << r.presses.size() << " presses of " << options_.material << " into " << request_.output_dir
               << " (" << r.ended_by << "): " << r.totals.frames << " frames, " << r.totals.dropped_frames << " dropped, "
               << r.totals.error_buffers << " error buffers; " << capture::fourcc_text(r.session.format.fourcc) << " "
-              << r.session.format.width << "x" << r.session.format.height << " at " << r.session.format.fps()
-              << " fps; CPU " << std::fixed << std::setprecision(0) << cpu_percent << "% of one core\n";
+              << r.session.format.width << "x" << r.session.format.height << " at " << r.session.format.fps() << " fps";
+    if (r.totals.delivered_fps) std::cout << " (" << std::fixed << std::setprecision(1) << *r.totals.delivered_fps << " delivered)";
+    std::cout << "; CPU " << std::fixed << std::setprecision(0) << cpu_percent << "% of one core\n";
   }
 
   std::string device_, serial_, format_, size_, sensors_;

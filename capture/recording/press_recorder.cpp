@@ -12,6 +12,7 @@
 #include "capture/device/fourcc.hpp"
 #include "capture/device/usb_bandwidth.hpp"
 #include "capture/device/v4l2_device.hpp"
+#include "capture/recording/delivered_rate.hpp"
 #include "capture/recording/frame_queue.hpp"
 #include "core/error.hpp"
 
@@ -79,7 +80,7 @@ std::string error_text(std::exception_ptr error) {
 
 // The capture thread's loop; returns why the take ended.
 std::string capture_loop(V4l2Stream& stream, FrameQueue<TakeFrame>& queue, const Worker& worker,
-                         const RecorderOptions& options, const std::atomic<bool>* stop) {
+                         const RecorderOptions& options, const std::atomic<bool>* stop, DeliveredRate& rate) {
   const Clock::time_point start = Clock::now();
   // Time without a frame, counted in poll timeouts (each one waited that long) rather than read
   // from the clock, so a stall means the same to a fake camera whose time is simulated.
@@ -93,6 +94,7 @@ std::string capture_loop(V4l2Stream& stream, FrameQueue<TakeFrame>& queue, const
     Frame frame;
     switch (stream.next(frame)) {
       case StreamStatus::frame:
+        rate.observe(frame.timestamp_ns);
         queue.push({std::move(frame), index++, stream.stats().error_buffers, stream.stats().poll_timeouts});
         quiet_seconds = 0;
         break;
@@ -160,11 +162,12 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
   TakeProcessor processor(session, output_dir, options, progress);
   FrameQueue<TakeFrame> queue;
   std::string ended_by;
+  DeliveredRate rate;
   {
     Worker worker(processor, queue);
     try {
       stream.start();
-      ended_by = capture_loop(stream, queue, worker, options, stop);
+      ended_by = capture_loop(stream, queue, worker, options, stop, rate);
     } catch (...) {
       stream.stop();
       queue.close();
@@ -183,6 +186,8 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
     result.totals.max_queue_depth = queue.max_depth();
     result.totals.wall_seconds = std::chrono::duration<double>(Clock::now() - wall_start).count();
     result.totals.cpu_seconds = cpu_seconds() - cpu_start;
+    result.totals.delivered_fps = rate.fps();
+    result.totals.timestamp_span_seconds = rate.span_seconds();
     if (worker.error()) {
       try {  // best effort: the manifest says what was saved before the failure
         processor.end_of_take("error", result.totals, error_text(worker.error()));
@@ -197,6 +202,7 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
     result.reference = processor.reference_summary();
     result.ended_by = ended_by;
     result.manifest = processor.manifest_path();
+    result.delivery_warning = delivery_warning(session, result.totals);
     return result;
   }
 }

@@ -1,9 +1,10 @@
 #pragma once
 // session.json beside the press files (schemas/capture-session.schema.json): the device, its serial
 // and USB link, the granted format and rate, the locked controls, the thresholds, per press its frame
-// ranges and losses, and warnings. Rewritten after every press, so an interrupted take still
-// describes what it saved.
+// ranges and losses, the rate the take delivered, and warnings. Rewritten after every press, so an
+// interrupted take still describes what it saved.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,7 +47,13 @@ struct TakeTotals {
   std::uint64_t frames = 0, dropped_frames = 0, error_buffers = 0, corrupt_frames = 0, poll_timeouts = 0,
                 max_queue_depth = 0;
   double wall_seconds = 0, cpu_seconds = 0;
+  // The rate the driver delivered (delivered_rate.hpp), once the take is over and long enough.
+  std::optional<double> delivered_fps;
+  double timestamp_span_seconds = 0;  // first frame to last, by the driver's timestamps
 };
+
+// The end-of-take warning when the take delivered clearly fewer frames than granted; empty otherwise.
+std::string delivery_warning(const SessionDescription& session, const TakeTotals& totals);
 
 nlohmann::json session_manifest(const SessionDescription& session, const ReferenceSummary& reference,
                                 const std::vector<RecordedPress>& presses, const TakeTotals& totals,

@@ -244,6 +244,32 @@ TEST_F(Recorder, RefusesBadOptionsBeforeTouchingTheDevice) {
   EXPECT_THROW(record(small_camera(), o), Error);
 }
 
+// Section 3 of the any-sensor issue: a take that delivers fewer frames than granted says so.
+TEST_F(Recorder, ATakeThatLosesFramesReportsTheRateItDelivered) {
+  FakeCameraConfig config = small_camera();
+  config.drop_percent = 30;
+  const RecordingResult r = record(config, options(3));
+  ASSERT_TRUE(r.totals.delivered_fps);
+  const double kept = double(camera_->stats().delivered) / double(camera_->stats().produced);
+  EXPECT_NEAR(*r.totals.delivered_fps, 30 * kept, 1.0) << "about 70 % of the 30 fps granted";
+  EXPECT_LT(*r.totals.delivered_fps, 0.9 * 30);
+  EXPECT_NE(r.delivery_warning.find("/dev/video0: the sensor delivered"), std::string::npos) << r.delivery_warning;
+  EXPECT_NE(r.delivery_warning.find("below the 30 fps it granted"), std::string::npos) << r.delivery_warning;
+  const nlohmann::json m = manifest();
+  EXPECT_DOUBLE_EQ(m["totals"]["delivered_fps"].get<double>(), *r.totals.delivered_fps);
+  ASSERT_EQ(m["warnings"].size(), 1u) << m["warnings"].dump();
+  EXPECT_EQ(m["warnings"][0], r.delivery_warning);
+}
+
+TEST_F(Recorder, ACleanTakeMeasuresTheGrantedRateAndDoesNotWarn) {
+  const RecordingResult r = record(small_camera(), options(2));
+  ASSERT_TRUE(r.totals.delivered_fps);
+  EXPECT_NEAR(*r.totals.delivered_fps, 30.0, 1e-3) << "the driver's timestamps are a period apart";
+  EXPECT_EQ(r.delivery_warning, "");
+  EXPECT_TRUE(manifest()["warnings"].empty()) << manifest()["warnings"].dump();
+  EXPECT_FALSE(manifest()["device"].contains("usb_link")) << "the fake camera has no USB link";
+}
+
 TEST_F(Recorder, AModeTheLinkCannotCarryIsWarnedBeforeTheTake) {
   // Raw 320x240 at 30 fps is 36.9 Mbit/s; a USB 2.0 sensor behind a USB 1.1 hub gets 8.2 for video.
   std::vector<std::string> told;
