@@ -4,6 +4,7 @@
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "core/sha256.hpp"
+#include "dataset/channel_order.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 
@@ -32,10 +33,12 @@ WindowSource read_source(const h5::Group& recording, int material, int index) {
   return s;
 }
 
-// All presses of a material must be the same size: the texture encoder sees one image shape.
+// All presses of a material must be the same size: the texture encoder sees one image shape. Their
+// channel order is copied with them and must be one train and predict can read.
 h5::Shape check_press_sizes(const h5::Group& presses) {
   h5::Shape shape;
   for (const std::string& j : presses.children()) {
+    dataset::read_channel_order(presses.open_group(j), kPeak);
     const h5::Dataset peak = presses.open_group(j).open_dataset(kPeak);
     if (shape.empty()) shape = peak.shape();
     else if (peak.shape() != shape)

@@ -1,5 +1,5 @@
-// haptex capture devices [--json] [--sensors FILE]: the tactile sensors on USB and their video nodes.
-#include <cstdio>
+// haptex capture devices [--json] [--sensors FILE]: the tactile sensors on USB, their link speeds and
+// their video nodes.
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -9,11 +9,7 @@
 namespace haptex::apps {
 namespace {
 
-std::string hex4(std::uint16_t id) {
-  char text[8];
-  std::snprintf(text, sizeof text, "%04x", id);
-  return text;
-}
+nlohmann::json optional_number(const std::optional<double>& value) { return value ? nlohmann::json(*value) : nlohmann::json(); }
 
 class CaptureDevices : public CaptureSubcommand {
  public:
@@ -35,33 +31,27 @@ class CaptureDevices : public CaptureSubcommand {
     if (sensors.empty()) {
       std::string known;
       for (const auto& m : catalog.models())
-        known += (known.empty() ? "" : ", ") + m.model + " (" + hex4(m.vendor_id) + ":" + hex4(m.product_id) + ")";
+        known += (known.empty() ? "" : ", ") + m.model + " (" + capture::usb_id_text(m.vendor_id) + ":" + capture::usb_id_text(m.product_id) + ")";
       std::cout << "no tactile sensor found among " << usb.size() << " USB devices. Known sensors: " << known
                 << ". Add others with --sensors FILE.\n";
       return 0;
     }
-    for (const auto& s : sensors) print(s);
+    for (const auto& s : sensors) std::cout << capture::describe(s) << "\n";
     return 0;
   }
 
  private:
-  static void print(const capture::DiscoveredSensor& s) {
-    std::cout << s.model << "  serial " << (s.serial.empty() ? "(none)" : s.serial) << "  USB " << s.usb.sysfs_name()
-              << " (" << hex4(s.usb.vendor_id) << ":" << hex4(s.usb.product_id) << ")";
-    if (s.capture_node.empty()) std::cout << "  no video node (driver not bound?)";
-    for (const auto& n : s.nodes) std::cout << "  " << (n.capture ? "capture " : "metadata ") << n.dev_path;
-    std::cout << "\n";
-  }
-
   static nlohmann::json to_json(const std::vector<capture::DiscoveredSensor>& sensors, std::size_t checked) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& s : sensors) {
       nlohmann::json nodes = nlohmann::json::array();
       for (const auto& n : s.nodes)
         nodes.push_back({{"node", n.dev_path}, {"name", n.label}, {"index", n.index}, {"capture", n.capture}});
-      list.push_back({{"model", s.model}, {"serial", s.serial}, {"vendor_id", hex4(s.usb.vendor_id)},
-                      {"product_id", hex4(s.usb.product_id)}, {"usb_path", s.usb.sysfs_name()},
+      list.push_back({{"model", s.model}, {"serial", s.serial}, {"vendor_id", capture::usb_id_text(s.usb.vendor_id)},
+                      {"product_id", capture::usb_id_text(s.usb.product_id)}, {"usb_path", s.usb.sysfs_name()},
                       {"product", s.usb.product}, {"manufacturer", s.usb.manufacturer},
+                      {"usb_speed_mbps", optional_number(s.link.speed_mbps)},
+                      {"usb_version", optional_number(s.link.version)},
                       {"capture_node", s.capture_node}, {"nodes", nodes}});
     }
     return {{"sensors", list}, {"usb_devices_checked", checked}};

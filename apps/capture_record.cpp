@@ -81,6 +81,8 @@ class CaptureRecord : public CaptureSubcommand {
     StopOnSignal stop_on_signal;
     const capture::RecordingResult result = record(global);
     print(result, global);
+    if (!result.delivery_warning.empty() && !global.quiet)
+      std::cerr << "haptex capture: warning: " << result.delivery_warning << "\n";
     if (!result.device_fault()) return 0;
     std::cerr << "haptex capture: error: " << request_.node << ": the sensor "
               << (result.ended_by == "disconnected" ? "was disconnected" : "stopped sending frames") << " after "
@@ -92,14 +94,18 @@ class CaptureRecord : public CaptureSubcommand {
  private:
   capture::RecordingResult record(const GlobalOptions& global) {
     const Progress progress = terminal_progress(global, "record");
+    // Before the take, so the user can stop and fix it before pressing (also in --json's warnings).
+    const capture::Warn warn = [&global](const std::string& warning) {
+      if (!global.quiet) std::cerr << "haptex capture: warning: " << warning << "\n";
+    };
     if (capture::is_fake_device(device_)) {
       const capture::FakeDevice fake = capture::parse_fake_device(device_);
       capture::FakeCamera camera(fake.config);
       request_.node = fake.node;
-      return capture::record_session(camera, request_, options_, &g_stop, progress);
+      return capture::record_session(camera, request_, options_, &g_stop, progress, warn);
     }
     capture::SystemKernel kernel;
-    return capture::record_session(kernel, request_, options_, &g_stop, progress);
+    return capture::record_session(kernel, request_, options_, &g_stop, progress, warn);
   }
 
   void build_request() {
@@ -112,8 +118,11 @@ class CaptureRecord : public CaptureSubcommand {
       request_.node = sensor.capture_node;
       request_.serial = sensor.serial;
       request_.model = sensor.model;
+      request_.link = sensor.link;
     } else {
       request_.node = device_;
+      // The fake camera has no USB link; a real node's is found through sysfs (unknown if it is not USB).
+      if (!capture::is_fake_device(device_)) request_.link = capture::usb_link_of_node("/sys", device_);
     }
     if (!format_.empty()) request_.format.fourcc = capture::fourcc_code(format_, "--format");
     if (!size_.empty()) parse_size();
@@ -156,8 +165,9 @@ class CaptureRecord : public CaptureSubcommand {
     std::cout << "recorded " << r.presses.size() << " presses of " << options_.material << " into " << request_.output_dir
               << " (" << r.ended_by << "): " << r.totals.frames << " frames, " << r.totals.dropped_frames << " dropped, "
               << r.totals.error_buffers << " error buffers; " << capture::fourcc_text(r.session.format.fourcc) << " "
-              << r.session.format.width << "x" << r.session.format.height << " at " << r.session.format.fps()
-              << " fps; CPU " << std::fixed << std::setprecision(0) << cpu_percent << "% of one core\n";
+              << r.session.format.width << "x" << r.session.format.height << " at " << r.session.format.fps() << " fps";
+    if (r.totals.delivered_fps) std::cout << " (" << std::fixed << std::setprecision(1) << *r.totals.delivered_fps << " delivered)";
+    std::cout << "; CPU " << std::fixed << std::setprecision(0) << cpu_percent << "% of one core\n";
   }
 
   std::string device_, serial_, format_, size_, sensors_;

@@ -29,6 +29,7 @@ inline constexpr const char* kPeakIndex = "peak_index";
 inline constexpr const char* kFrames = "frames";              // the 12 frames around the peak
 inline constexpr const char* kFrameIndices = "frame_indices";
 inline constexpr const char* kContrast = "contrast";          // per-frame contact score
+inline constexpr const char* kChannelOrder = "channel_order"; // attribute of a press and its images (dataset/channel_order.hpp)
 
 // Dataset file (align): the model's windows, /windows/...
 inline constexpr const char* kWindows = "windows";

@@ -23,8 +23,8 @@ class Predictor {
   // Keeps a reference: the model must outlive the predictor.
   explicit Predictor(const Model& model);
 
-  // Unified model: the code of a GelSight press (peak frame and no-contact reference, RGB as the
-  // dataset stores them, one size). Throws haptex::Error for the per-material variant.
+  // Unified model: the code of a GelSight press (peak frame and no-contact reference, RGB as
+  // texture_descriptor takes them, one size). Throws haptex::Error for the per-material variant.
   // An image is recognised (docs/predict.md, "A new press"): its latent is the training materials'
   // mean latents weighted by the classifier's probabilities for the image's encoder output.
   TextureCode encode(const cv::Mat& peak, const cv::Mat& reference) const;

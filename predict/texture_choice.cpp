@@ -20,7 +20,7 @@ void check_pixels(const std::string& path, std::uint64_t width, std::uint64_t he
                       "Scale it down (haptex describes it at 256 x 256 anyway), e.g. convert IMG -resize 2048x2048 SMALL.png");
 }
 
-// RGB, as the dataset stores press images (OpenCV reads BGR).
+// RGB, the order texture_descriptor takes (OpenCV decodes PNG and JPEG as BGR).
 cv::Mat read_rgb(const std::string& path) {
   if (const auto size = image_header_size(path)) check_pixels(path, size->width, size->height);
   cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);

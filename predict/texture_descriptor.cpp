@@ -12,9 +12,13 @@ namespace {
 
 constexpr double kFloor = 1e-12;  // keeps log() finite on a flat image
 
+// The grey image weighs R, G and B by 0.114, 0.587 and 0.299: OpenCV's BGR weights applied to the
+// RGB images the descriptor has always been given (texture_descriptor/1, the models trained on it).
+// Correcting it to Rec. 601's 0.299 R is texture_descriptor/2 and means retraining every model; what
+// matters for the models is that training and prediction see the channels in the same order.
 cv::Mat grey_float(const cv::Mat& image) {
   cv::Mat grey = image;
-  if (image.channels() == 3) cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
+  if (image.channels() == 3) cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);  // on RGB pixels: above
   cv::Mat out;
   grey.convertTo(out, CV_32F);
   return out;

@@ -26,8 +26,8 @@ std::size_t descriptor_length(const TextureDescriptorSpec& spec = {});
 // spec is checked with this before use).
 std::string spec_problem(const TextureDescriptorSpec& spec);
 
-// peak and reference: BGR or grey images of one size (8-bit or float). Throws haptex::Error when
-// they differ in size or are empty.
+// peak and reference: RGB (the order haptex files store; readers convert to it) or grey images of
+// one size (8-bit or float). Throws haptex::Error when they differ in size or are empty.
 std::vector<float> texture_descriptor(const cv::Mat& peak, const cv::Mat& reference, const TextureDescriptorSpec& spec = {});
 
 // The same without a reference, for a user who has only the press image: the image blurred at 1/16

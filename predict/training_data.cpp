@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/parallel.hpp"
+#include "dataset/channel_order.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/window_table.hpp"
@@ -15,27 +16,25 @@ namespace {
 
 using namespace dataset::layout;
 
-cv::Mat image_at(const h5::Dataset& d, std::size_t first_axis_index = 0) {
+// The images of `name` in `press`, one (H, W, 3) or a stack (N, H, W, 3), as RGB, the order
+// texture_descriptor takes, whatever order the press states (dataset/channel_order.hpp).
+std::vector<cv::Mat> rgb_images(const h5::Group& press, const char* name, bool stack) {
+  const dataset::ChannelOrder order = dataset::read_channel_order(press, name);
+  const h5::Dataset d = press.open_dataset(name);
   const h5::Shape shape = d.shape();
-  const bool stack = shape.size() == 4;
+  if (shape.size() != (stack ? 4u : 3u) || shape.back() != 3 || d.dtype() != "uint8")
+    throw input_error(d.file(), d.object_path(), std::string("expected uint8 ") + (stack ? "(frames, H, W, 3)" : "(H, W, 3)"),
+                      "Rebuild the dataset with haptex align from a gelsight file of haptex capture extract");
+  std::vector<std::uint8_t> all = d.read<std::uint8_t>();
+  dataset::reorder_channels(all, order, dataset::ChannelOrder::rgb);
   const int h = int(shape[stack ? 1 : 0]), w = int(shape[stack ? 2 : 1]);
-  const std::vector<std::uint8_t> all = d.read<std::uint8_t>();
-  const std::size_t one = std::size_t(h) * std::size_t(w) * 3;
-  if (all.size() < (first_axis_index + 1) * one) throw failure(d.where() + ": image " + std::to_string(first_axis_index) + " missing");
-  return cv::Mat(h, w, CV_8UC3, const_cast<std::uint8_t*>(all.data()) + first_axis_index * one).clone();
-}
-
-std::vector<cv::Mat> images(const h5::Dataset& d) {
-  const h5::Shape shape = d.shape();
-  if (shape.size() != 4 || shape[3] != 3) throw failure(d.where() + ": expected (frames, H, W, 3) uint8");
-  const std::vector<std::uint8_t> all = d.read<std::uint8_t>();
-  const int h = int(shape[1]), w = int(shape[2]);
-  const std::size_t one = std::size_t(h) * std::size_t(w) * 3;
+  const std::size_t one = std::size_t(h) * std::size_t(w) * 3, count = stack ? shape[0] : 1;
   std::vector<cv::Mat> out;
-  for (std::size_t i = 0; i < shape[0]; ++i)
-    out.push_back(cv::Mat(h, w, CV_8UC3, const_cast<std::uint8_t*>(all.data()) + i * one).clone());
+  for (std::size_t i = 0; i < count; ++i) out.push_back(cv::Mat(h, w, CV_8UC3, all.data() + i * one).clone());
   return out;
 }
+
+cv::Mat rgb_image(const h5::Group& press, const char* name) { return rgb_images(press, name, false).front(); }
 
 // Row-major (windows x width) in the file is column-major (width x windows) here: one window per column.
 Eigen::MatrixXf columns(const std::vector<float>& values, std::size_t width) {
@@ -60,14 +59,14 @@ Descriptors press_descriptors(const std::string& dataset_path, const std::string
   if (!root.has_group(path))
     throw input_error(dataset_path, "/" + path, "the split names this press but the dataset has none", "Run haptex split on this dataset");
   const h5::Group g = root.open_group(path);
-  const cv::Mat reference = image_at(g.open_dataset(kReference));
+  const cv::Mat reference = rgb_image(g, kReference);
   Descriptors out;
   if (!training) {
-    out.push_back(texture_descriptor(image_at(g.open_dataset(kPeak)), reference, spec));
+    out.push_back(texture_descriptor(rgb_image(g, kPeak), reference, spec));
     return out;
   }
   const std::vector<cv::Mat> augmented_references = all_augmentations(reference);
-  for (const cv::Mat& frame : images(g.open_dataset(kFrames))) {
+  for (const cv::Mat& frame : rgb_images(g, kFrames, true)) {
     const std::vector<cv::Mat> augmented = all_augmentations(frame);
     for (std::size_t v = 0; v < augmented.size(); ++v)
       out.push_back(texture_descriptor(augmented[v], augmented_references[v], spec));

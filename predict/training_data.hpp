@@ -41,7 +41,8 @@ TrainingData load_training_data(const split::DatasetSplit& split, const TextureD
                                 const LoadProgress& progress = {}, PressImages images = PressImages::training);
 
 // The descriptors of one press: training presses all frames in all 8 augmentations, other presses
-// their peak frame. Images are RGB uint8 as the dataset stores them.
+// their peak frame. Images are read in the order the press states and described as RGB; an order
+// other than RGB or BGR is refused (haptex::Error, bad_input, naming the dataset and the attribute).
 Descriptors press_descriptors(const std::string& dataset_path, const std::string& material_id, int press,
                               bool training, const TextureDescriptorSpec& spec);
 

@@ -77,6 +77,9 @@ const std::vector<CheckInfo>& all_checks() {
       {"gelsight.source_damage", warning,
        "every press's source decoded whole (`source_frames_unreadable` is 0: no frame failed or went missing)",
        "Copy the video again from the sensor's machine (a damaged frame is never kept, but the press may be cut short)"},
+      {"gelsight.channel_order", error,
+       "every press states its images' channel order as RGB or BGR (`channel_order`), and its image datasets agree",
+       "Set the press's channel_order to the order of its stored pixels (haptex writes RGB); its images are not judged until then"},
       // dataset
       {"dataset.windows", error,
        "the window table's materials, recordings and starts exist and follow the stride (t = 0, stride, ...)",

@@ -194,6 +194,14 @@ CheckResult check_gelsight_source_damage(const std::vector<Press>& presses) {
   return tally.result();
 }
 
+CheckResult check_gelsight_channel_order(const std::vector<Press>& presses) {
+  CheckTally tally("gelsight.channel_order", "presses");
+  for (const auto& p : presses)
+    if (!p.channel_order_problem.empty()) tally.fail(p.path, p.channel_order_problem);
+    else tally.pass();
+  return tally.result();
+}
+
 std::vector<CheckResult> check_gelsight(const h5::Group& root) {
   const GelsightPresses file = read_presses(root);
   const NoContactBaselines baselines = no_contact_baselines(file.presses);
@@ -203,7 +211,8 @@ std::vector<CheckResult> check_gelsight(const h5::Group& root) {
           check_gelsight_blur(file.presses, baselines),
           check_gelsight_resolution(file),
           check_gelsight_press_count(file.per_material),
-          check_gelsight_source_damage(file.presses)};
+          check_gelsight_source_damage(file.presses),
+          check_gelsight_channel_order(file.presses)};
 }
 
 }  // namespace haptex::qa

@@ -10,6 +10,7 @@
 #include "capture/storage/image_datasets.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "dataset/channel_order.hpp"
 #include "dataset/layout.hpp"
 #include "qa/thresholds.hpp"
 
@@ -34,28 +35,28 @@ double saturated_share(const cv::Mat& bgr) {
   return double(cv::countNonZero(brightest >= kSaturatedLevel)) / double(bgr.total());
 }
 
-// N x H x W x 3 uint8 (RGB) -> N BGR images; empty when the dataset has another form.
-std::vector<cv::Mat> read_stack(const h5::Group& press, const std::string& name) {
+// N x H x W x 3 uint8 in the press's channel order -> N BGR images; empty when the dataset has another form.
+std::vector<cv::Mat> read_stack(const h5::Group& press, const std::string& name, dataset::ChannelOrder order) {
   if (!press.has_dataset(name)) return {};
   const h5::Dataset d = press.open_dataset(name);
   const h5::Shape shape = d.shape();
   if (shape.size() != 4 || shape[3] != 3 || d.dtype() != "uint8" || shape[0] == 0) return {};
-  const std::vector<std::uint8_t> rgb = d.read<std::uint8_t>();
+  const std::vector<std::uint8_t> pixels = d.read<std::uint8_t>();
   const std::size_t frame_bytes = shape[1] * shape[2] * 3;
   std::vector<cv::Mat> frames;
   for (std::size_t i = 0; i < shape[0]; ++i) {
     cv::Mat image(static_cast<int>(shape[1]), static_cast<int>(shape[2]), CV_8UC3);
-    std::memcpy(image.data, rgb.data() + i * frame_bytes, frame_bytes);
-    cv::cvtColor(image, image, cv::COLOR_RGB2BGR);
-    frames.push_back(image);
+    std::memcpy(image.data, pixels.data() + i * frame_bytes, frame_bytes);
+    frames.push_back(capture::to_bgr(image, order));
   }
   return frames;
 }
 
+// A misshapen image is left out (the layout checks report it).
 std::optional<cv::Mat> read_single(const h5::Group& press, const std::string& name) {
   if (!press.has_dataset(name)) return std::nullopt;
   try {
-    return capture::read_image(press.open_dataset(name));
+    return capture::read_image(press, name);
   } catch (const Error&) {
     return std::nullopt;
   }
@@ -89,8 +90,17 @@ Press summarize_press(const h5::Group& g, std::string path, std::string material
   p.material = std::move(material);
   p.trigger = number_attr(g, "trigger");
   p.pixel_threshold = number_attr(g, "pixel_threshold");
+  // Images in an order qa cannot read are not judged: gelsight.channel_order reports the press.
+  dataset::ChannelOrder order = dataset::kWrittenChannelOrder;
+  try {
+    for (const char* image : {layout::kReference, layout::kPeak, layout::kFrames}) order = dataset::read_channel_order(g, image);
+  } catch (const Error& e) {
+    p.channel_order_problem = e.what();
+    read_source_frames_unreadable(g, p);
+    return p;
+  }
   const std::optional<cv::Mat> reference = read_single(g, layout::kReference), peak = read_single(g, layout::kPeak);
-  const std::vector<cv::Mat> frames = read_stack(g, layout::kFrames);
+  const std::vector<cv::Mat> frames = read_stack(g, layout::kFrames, order);
   std::vector<cv::Size> sizes;
   if (reference) {
     p.has_reference = true;

@@ -34,6 +34,7 @@ struct Press {
   // capture extract records how many frames of the press's source did not decode.
   std::int64_t source_frames_unreadable = 0;
   std::string source_frames_problem;    // why that count is unknown; empty when it was read
+  std::string channel_order_problem;    // why the images' channel order is unknown (they were not read)
 };
 
 struct GelsightPresses {

@@ -2,11 +2,14 @@
 
 #include <libusb-1.0/libusb.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 
 #include "core/error.hpp"
+#include "core/text/parse_number.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -39,7 +42,56 @@ void fill_strings(libusb_device* device, const libusb_device_descriptor& d, cons
   libusb_close(handle);
 }
 
+// A positive number in a sysfs file, or nullopt: a missing file, or one holding anything else
+// (wireless USB's "53.3-480", a truncated read) is unknown, never an error.
+std::optional<double> read_positive(const std::filesystem::path& path) {
+  const std::optional<double> value = text::parse_number(read_line(path));
+  if (!value || !std::isfinite(*value) || *value <= 0) return std::nullopt;
+  return value;
+}
+
+std::string speed_text(double mbps) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g Mbit/s", mbps);
+  return text;
+}
+
 }  // namespace
+
+std::string usb_id_text(std::uint16_t id) {
+  char text[8];
+  std::snprintf(text, sizeof text, "%04x", id);
+  return text;
+}
+
+std::string usb_speed_name(double mbps) {
+  if (mbps == 1.5) return "USB 1.1 low speed";
+  if (mbps == 12) return "USB 1.1 full speed";
+  if (mbps == 480) return "USB 2.0 high speed";
+  if (mbps == 5000) return "USB 3 SuperSpeed";
+  if (mbps == 10000) return "USB 3 SuperSpeed+ 10 Gbit/s";
+  if (mbps == 20000) return "USB 3 SuperSpeed+ 20 Gbit/s";
+  return "";
+}
+
+std::string UsbLink::text() const {
+  if (!speed_mbps) return "speed unknown";
+  const std::string name = usb_speed_name(*speed_mbps);
+  return speed_text(*speed_mbps) + (name.empty() ? "" : " (" + name + ")");
+}
+
+std::optional<double> UsbLink::faster_speed_possible() const {
+  if (!speed_mbps || !version) return std::nullopt;
+  // bcdUSB says which release the device follows; from 3.1 on it no longer tells Gen 1 from Gen 2,
+  // so a USB 3 device is only known to reach 5 Gbit/s.
+  const double fastest = *version >= 3.0 ? 5000.0 : *version >= 2.0 ? 480.0 : 12.0;
+  return fastest > *speed_mbps ? std::optional<double>(fastest) : std::nullopt;
+}
+
+UsbLink read_usb_link(const std::string& sysfs_root, const std::string& usb_name) {
+  const std::filesystem::path dir = std::filesystem::path(sysfs_root) / "bus/usb/devices" / usb_name;
+  return {read_positive(dir / "speed"), read_positive(dir / "version")};
+}
 
 std::string UsbDevice::sysfs_name() const {
   std::string name = std::to_string(bus) + "-";

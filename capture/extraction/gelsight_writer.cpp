@@ -3,6 +3,7 @@
 #include "capture/storage/image_datasets.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"
+#include "dataset/channel_order.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 
@@ -23,7 +24,7 @@ void set_press_attributes(h5::Group& g, const GelsightPress& p) {
   g.set_attr("peak_score", double(p.peak_score));
   g.set_attr("height", std::int64_t(p.peak.rows));
   g.set_attr("width", std::int64_t(p.peak.cols));
-  g.set_attr("channel_order", "RGB");
+  g.set_attr(layout::kChannelOrder, dataset::channel_order_name(dataset::kWrittenChannelOrder));
   if (p.fps > 0) g.set_attr("fps", p.fps);
   g.set_attr("reference_source", p.reference_note);
   g.set_attr("score_method", "mean over the grey image averaged in 2, 4 or 8 pixel blocks of max(0, |d - median(d)| - pixel_threshold), "

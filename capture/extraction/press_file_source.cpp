@@ -1,5 +1,6 @@
 // Press files written by `haptex capture record`, read back for extraction.
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "capture/extraction/frame_source.hpp"
 #include "capture/scoring/scoring_image.hpp"
@@ -8,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/sha256.hpp"
+#include "dataset/channel_order.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 
@@ -30,7 +32,9 @@ class PressFileSource : public FrameSource {
     fps_ = root.attr_double("fps");
     material_ = root.attr_string("material");
     count_ = frames_.shape().at(0);
-    reference_.image = read_image(root.open_dataset(layout::kReference));
+    // The press's order covers its decoded frames too: a file whose frames hold B, G, R says BGR.
+    order_ = dataset::read_channel_order(root, layout::kReference);
+    reference_.image = read_image(root, layout::kReference);
     if (reference_.image.size() != size_)
       throw input_error(path_, "/reference", "the reference is not the frame size", "Record the press again");
     reference_.noise = float(root.attr_double("noise"));
@@ -82,7 +86,10 @@ class PressFileSource : public FrameSource {
     } catch (const cv::Exception&) {
       return {};
     }
-    return image.size() == size_ ? image : cv::Mat();
+    if (image.size() != size_) return {};
+    // imdecode hands the codec's R, G, B over as B, G, R; frames stored swapped are swapped back.
+    if (order_ == dataset::ChannelOrder::bgr) cv::cvtColor(image, image, cv::COLOR_RGB2BGR);
+    return image;
   }
 
   std::string path_;
@@ -92,6 +99,7 @@ class PressFileSource : public FrameSource {
   cv::Size size_;
   double fps_ = 0;
   std::size_t count_ = 0;
+  dataset::ChannelOrder order_ = dataset::kWrittenChannelOrder;
   StoredReference reference_;
 };
 

@@ -9,6 +9,7 @@
 #include "capture/device/fourcc.hpp"
 #include "capture/storage/image_datasets.hpp"
 #include "core/naming.hpp"
+#include "dataset/channel_order.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 
@@ -88,6 +89,8 @@ PressFileSummary PressFileWriter::finish(const std::string& ended_by) {
   root.set_attr("serial", info_.serial);
   root.set_attr("fourcc", fourcc_text(info_.fourcc));
   root.set_attr("encoding", info_.fourcc == V4L2_PIX_FMT_MJPEG ? "jpeg" : "png");
+  // JPEG and PNG decode to R, G, B; the reference is written RGB (storage/image_datasets.hpp).
+  root.set_attr(layout::kChannelOrder, dataset::channel_order_name(dataset::kWrittenChannelOrder));
   root.set_attr("width", info_.width);
   root.set_attr("height", info_.height);
   root.set_attr("fps", info_.fps);

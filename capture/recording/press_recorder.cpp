@@ -10,7 +10,9 @@
 
 #include "capture/device/camera_controls.hpp"
 #include "capture/device/fourcc.hpp"
+#include "capture/device/usb_bandwidth.hpp"
 #include "capture/device/v4l2_device.hpp"
+#include "capture/recording/delivered_rate.hpp"
 #include "capture/recording/frame_queue.hpp"
 #include "core/error.hpp"
 
@@ -78,7 +80,7 @@ std::string error_text(std::exception_ptr error) {
 
 // The capture thread's loop; returns why the take ended.
 std::string capture_loop(V4l2Stream& stream, FrameQueue<TakeFrame>& queue, const Worker& worker,
-                         const RecorderOptions& options, const std::atomic<bool>* stop) {
+                         const RecorderOptions& options, const std::atomic<bool>* stop, DeliveredRate& rate) {
   const Clock::time_point start = Clock::now();
   // Time without a frame, counted in poll timeouts (each one waited that long) rather than read
   // from the clock, so a stall means the same to a fake camera whose time is simulated.
@@ -92,6 +94,7 @@ std::string capture_loop(V4l2Stream& stream, FrameQueue<TakeFrame>& queue, const
     Frame frame;
     switch (stream.next(frame)) {
       case StreamStatus::frame:
+        rate.observe(frame.timestamp_ns);
         queue.push({std::move(frame), index++, stream.stats().error_buffers, stream.stats().poll_timeouts});
         quiet_seconds = 0;
         break;
@@ -159,11 +162,12 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
   TakeProcessor processor(session, output_dir, options, progress);
   FrameQueue<TakeFrame> queue;
   std::string ended_by;
+  DeliveredRate rate;
   {
     Worker worker(processor, queue);
     try {
       stream.start();
-      ended_by = capture_loop(stream, queue, worker, options, stop);
+      ended_by = capture_loop(stream, queue, worker, options, stop, rate);
     } catch (...) {
       stream.stop();
       queue.close();
@@ -182,6 +186,8 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
     result.totals.max_queue_depth = queue.max_depth();
     result.totals.wall_seconds = std::chrono::duration<double>(Clock::now() - wall_start).count();
     result.totals.cpu_seconds = cpu_seconds() - cpu_start;
+    result.totals.delivered_fps = rate.fps();
+    result.totals.timestamp_span_seconds = rate.span_seconds();
     if (worker.error()) {
       try {  // best effort: the manifest says what was saved before the failure
         processor.end_of_take("error", result.totals, error_text(worker.error()));
@@ -196,12 +202,13 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
     result.reference = processor.reference_summary();
     result.ended_by = ended_by;
     result.manifest = processor.manifest_path();
+    result.delivery_warning = delivery_warning(session, result.totals);
     return result;
   }
 }
 
 RecordingResult record_session(KernelInterface& kernel, const SessionRequest& request, const RecorderOptions& options,
-                               const std::atomic<bool>* stop, const Progress& progress) {
+                               const std::atomic<bool>* stop, const Progress& progress, const Warn& warn) {
   check_recorder_options(options);
   check_session_dir(request.output_dir, request.overwrite);  // refused before the device is touched
   V4l2Device device(kernel, request.node);
@@ -216,6 +223,8 @@ RecordingResult record_session(KernelInterface& kernel, const SessionRequest& re
   session.serial = request.serial;
   session.model = request.model;
   session.format = format;
+  session.link = request.link;
+  session.link_warning = link_warning(device.path(), format, request.link, enumerate_formats(device));
   session.controls = lock_controls(device, request.controls);
   session.warmup_frames = options.warmup_frames;
   session.reference_frames = options.reference_frames;
@@ -224,6 +233,7 @@ RecordingResult record_session(KernelInterface& kernel, const SessionRequest& re
   V4l2Stream stream(device, format, request.buffers);
   session.buffers = stream.buffer_count();
   prepare_session_dir(request.output_dir, request.overwrite);  // only now, so a refused device leaves nothing
+  if (warn && !session.link_warning.empty()) warn(session.link_warning);  // before the user starts pressing
   return record_take(stream, session, request.output_dir, options, stop, progress);
 }
 

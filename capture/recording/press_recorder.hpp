@@ -9,6 +9,7 @@
 // press being recorded is closed with every frame taken so far, and the manifest says how it ended.
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ namespace haptex::capture {
 struct SessionRequest {
   std::string node;           // the capture node, /dev/videoN
   std::string serial, model;  // from USB discovery, when known
+  UsbLink link;               // the sensor's USB link (sensor_discovery.hpp); unknown: nothing is judged
   FormatRequest format;
   std::map<std::uint32_t, std::int64_t> controls;  // by control ID
   unsigned buffers = 6;
@@ -40,13 +42,18 @@ struct RecordingResult {
   ReferenceSummary reference;
   std::string ended_by;  // presses, time limit, interrupted, disconnected, stalled
   std::string manifest;
+  std::string delivery_warning;  // the take delivered clearly fewer frames than granted; empty otherwise
   bool device_fault() const { return ended_by == "disconnected" || ended_by == "stalled"; }
 };
+
+// Told, before the take starts, what the user should know first: a mode the USB link cannot carry.
+using Warn = std::function<void(const std::string&)>;
 
 // Opens, negotiates, locks controls and records. Throws haptex::Error: bad_input for bad options,
 // devices and output folders (before anything is written), failed when the work fails.
 RecordingResult record_session(KernelInterface& kernel, const SessionRequest& request, const RecorderOptions& options,
-                               const std::atomic<bool>* stop = nullptr, const Progress& progress = {});
+                               const std::atomic<bool>* stop = nullptr, const Progress& progress = {},
+                               const Warn& warn = {});
 
 // The take alone, on a stream set up by the caller (tests and benchmarks use it directly).
 RecordingResult record_take(V4l2Stream& stream, const SessionDescription& session, const std::string& output_dir,

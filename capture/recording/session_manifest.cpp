@@ -4,6 +4,8 @@
 #include <nlohmann/json.hpp>
 
 #include "capture/device/fourcc.hpp"
+#include "capture/device/usb_bandwidth.hpp"
+#include "capture/recording/delivered_rate.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
@@ -38,7 +40,35 @@ nlohmann::json press_json(const RecordedPress& p) {
           {"ended_by", p.ended_by}};
 }
 
+double mbit(double bytes_per_second) { return bytes_per_second * 8 / 1e6; }
+
+nlohmann::json usb_link_json(const SessionDescription& s) {
+  nlohmann::json link = {{"speed_mbps", *s.link.speed_mbps},
+                         {"video_capacity_mbps", mbit(isochronous_bytes_per_second(*s.link.speed_mbps))}};
+  if (s.link.version) link["version"] = *s.link.version;
+  if (const auto budget = link_budget(s.format, s.link)) link["stream_mbps_estimate"] = mbit(budget->needed);
+  return link;
+}
+
+nlohmann::json totals_json(const TakeTotals& t) {
+  nlohmann::json totals = {{"frames", t.frames}, {"dropped_frames", t.dropped_frames}, {"error_buffers", t.error_buffers},
+                           {"corrupt_frames", t.corrupt_frames}, {"poll_timeouts", t.poll_timeouts},
+                           {"max_queue_depth", t.max_queue_depth}, {"wall_seconds", t.wall_seconds},
+                           {"cpu_seconds", t.cpu_seconds}};
+  if (t.delivered_fps) {
+    totals["delivered_fps"] = *t.delivered_fps;
+    totals["timestamp_span_seconds"] = t.timestamp_span_seconds;
+  }
+  return totals;
+}
+
 }  // namespace
+
+std::string delivery_warning(const SessionDescription& s, const TakeTotals& t) {
+  if (!t.delivered_fps) return "";
+  return slow_delivery_warning({s.identity.path, *t.delivered_fps, s.format.fps(), t.timestamp_span_seconds, t.frames,
+                                t.dropped_frames, t.error_buffers});
+}
 
 std::string locked_controls_json(const ControlLock& controls) { return locked_array(controls).dump(); }
 std::string missing_controls_json(const ControlLock& controls) { return nlohmann::json(controls.missing).dump(); }
@@ -64,12 +94,14 @@ nlohmann::json session_manifest(const SessionDescription& s, const ReferenceSumm
                     {"pre_frames", s.pre_frames}, {"post_frames", s.post_frames}, {"noise", r.noise},
                     {"pixel_threshold", r.pixel_threshold}, {"trigger", r.trigger}, {"release", r.release}}},
       {"presses", press_list},
-      {"totals", {{"frames", t.frames}, {"dropped_frames", t.dropped_frames}, {"error_buffers", t.error_buffers},
-                  {"corrupt_frames", t.corrupt_frames}, {"poll_timeouts", t.poll_timeouts},
-                  {"max_queue_depth", t.max_queue_depth}, {"wall_seconds", t.wall_seconds},
-                  {"cpu_seconds", t.cpu_seconds}}},
+      {"totals", totals_json(t)},
       {"ended_by", ended_by}};
   if (!s.model.empty()) doc["device"]["model"] = s.model;
+  if (s.link.speed_mbps) doc["device"]["usb_link"] = usb_link_json(s);
+  nlohmann::json warnings = nlohmann::json::array();
+  for (const std::string& w : {s.link_warning, delivery_warning(s, t)})
+    if (!w.empty()) warnings.push_back(w);
+  doc["warnings"] = warnings;
   if (!error.empty()) doc["error"] = error;
   return doc;
 }

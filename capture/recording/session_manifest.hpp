@@ -1,8 +1,10 @@
 #pragma once
-// session.json beside the press files (schemas/capture-session.schema.json): the device, its serial,
-// the granted format and rate, the locked controls, the thresholds, and per press its frame ranges and
-// losses. Rewritten after every press, so an interrupted take still describes what it saved.
+// session.json beside the press files (schemas/capture-session.schema.json): the device, its serial
+// and USB link, the granted format and rate, the locked controls, the thresholds, per press its frame
+// ranges and losses, the rate the take delivered, and warnings. Rewritten after every press, so an
+// interrupted take still describes what it saved.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +12,7 @@
 
 #include "capture/device/camera_controls.hpp"
 #include "capture/device/format_negotiation.hpp"
+#include "capture/device/usb_discovery.hpp"
 #include "capture/device/v4l2_device.hpp"
 
 namespace haptex::capture {
@@ -19,6 +22,8 @@ struct SessionDescription {
   DeviceIdentity identity;
   std::string serial, model;
   StreamFormat format;
+  UsbLink link;              // unknown for the fake camera and nodes sysfs does not place on USB
+  std::string link_warning;  // usb_bandwidth.hpp: the mode exceeds the link; empty when it fits or is unknown
   unsigned buffers = 0;
   ControlLock controls;
   int warmup_frames = 0, reference_frames = 0, pre_frames = 0, post_frames = 0;
@@ -42,7 +47,13 @@ struct TakeTotals {
   std::uint64_t frames = 0, dropped_frames = 0, error_buffers = 0, corrupt_frames = 0, poll_timeouts = 0,
                 max_queue_depth = 0;
   double wall_seconds = 0, cpu_seconds = 0;
+  // The rate the driver delivered (delivered_rate.hpp), once the take is over and long enough.
+  std::optional<double> delivered_fps;
+  double timestamp_span_seconds = 0;  // first frame to last, by the driver's timestamps
 };
+
+// The end-of-take warning when the take delivered clearly fewer frames than granted; empty otherwise.
+std::string delivery_warning(const SessionDescription& session, const TakeTotals& totals);
 
 nlohmann::json session_manifest(const SessionDescription& session, const ReferenceSummary& reference,
                                 const std::vector<RecordedPress>& presses, const TakeTotals& totals,

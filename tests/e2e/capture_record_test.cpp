@@ -53,6 +53,32 @@ TEST_F(RecordCli, RecordsPressesIntoFilesAndAManifest) {
   EXPECT_NO_THROW(json::validate(m, "capture-session.schema.json", "session.json"));
   EXPECT_EQ(m["material_id"], "brick_2");
   EXPECT_EQ(m["presses"].size(), 2u);
+  // A clean take delivers the granted rate, and says nothing more.
+  EXPECT_NE(r.out.find("at 30 fps (30.0 delivered)"), std::string::npos) << r.out;
+  EXPECT_NEAR(m["totals"]["delivered_fps"].get<double>(), 30.0, 1e-3);
+  EXPECT_TRUE(m["warnings"].empty()) << m["warnings"].dump();
+}
+
+// Section 3 of the any-sensor issue: a take that delivers fewer frames than granted says so at the
+// end, with the measured and the granted rate, on stderr, in --json and in session.json.
+TEST_F(RecordCli, ATakeThatDeliversFewerFramesSaysSoAtTheEnd) {
+  const CommandResult r = record("fake:size=320x240,lockstep,drop=30", {"--presses", "2"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("haptex capture: warning: /dev/video0: the sensor delivered "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("below the 30 fps it granted"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  const nlohmann::json m = manifest();
+  EXPECT_LT(m["totals"]["delivered_fps"].get<double>(), 27.0);
+  EXPECT_GT(m["totals"]["delivered_fps"].get<double>(), 15.0);
+  ASSERT_EQ(m["warnings"].size(), 1u);
+  EXPECT_NE(r.err.find(m["warnings"][0].get<std::string>()), std::string::npos);
+  const CommandResult json = record("fake:size=320x240,lockstep,drop=30", {"--presses", "2", "--json", "--force"});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json doc = nlohmann::json::parse(json.out);
+  EXPECT_NO_THROW(json::validate(doc, "capture-session.schema.json", "stdout"));
+  ASSERT_EQ(doc["warnings"].size(), 1u);
+  EXPECT_NE(doc["warnings"][0].get<std::string>().find("frames per second"), std::string::npos);
+  EXPECT_EQ(record("fake:size=320x240,lockstep,drop=30", {"--presses", "1", "-q", "--force"}).err, "") << "-q: only errors";
 }
 
 // Issue 11 point 5: error buffers are not drops, in the totals, each press entry and each press file.

@@ -39,7 +39,10 @@ void replace_image(Edit& e, const std::string& path, const cv::Mat& bgr) {
   capture::write_image(g, path.substr(slash + 1), bgr, "replaced by a qa test");
 }
 
-cv::Mat image_at(const Edit& e, const std::string& path) { return capture::read_image(e.dataset(path)); }
+cv::Mat image_at(const Edit& e, const std::string& path) {
+  const auto slash = path.rfind('/');
+  return capture::read_image(e.group(path.substr(0, slash)), path.substr(slash + 1));
+}
 
 TEST_F(GelsightMutation, MissingContrastIsLayoutRequired) {
   Edit(file_).remove(kPress + "/contrast");
@@ -60,6 +63,37 @@ TEST_F(GelsightMutation, ASourceWithUnreadableFramesIsGelsightSourceDamage) {
   expect_only(r, "gelsight.source_damage");
   EXPECT_NE(r.find("gelsight.source_damage")->message.find("16 frames that did not decode"), std::string::npos)
       << r.find("gelsight.source_damage")->message;
+}
+
+// The any-sensor issue, section 3: an order qa cannot read is reported, and its images not judged.
+TEST_F(GelsightMutation, AnUnknownChannelOrderIsGelsightChannelOrder) {
+  Edit(file_).group(kPress).set_attr("channel_order", "GRB");
+  const qa::Report r = qa();
+  expect_only(r, "gelsight.channel_order");
+  EXPECT_NE(r.find("gelsight.channel_order")->message.find("unknown channel order 'GRB'"), std::string::npos)
+      << r.find("gelsight.channel_order")->message;
+}
+
+TEST_F(GelsightMutation, AnImageContradictingItsPressIsGelsightChannelOrder) {
+  Edit(file_).dataset(kPress + "/frames").set_attr("channel_order", "BGR");
+  const qa::Report r = qa();
+  expect_only(r, "gelsight.channel_order");
+  EXPECT_NE(r.find("gelsight.channel_order")->message.find("says BGR but its press says RGB"), std::string::npos)
+      << r.find("gelsight.channel_order")->message;
+}
+
+TEST_F(GelsightMutation, APressStoredBlueFirstPassesLikeTheOriginal) {
+  {
+    Edit e(file_);
+    for (const std::string name : {"reference", "peak", "frames"}) {
+      e.change_bytes(kPress + "/" + name, [](std::vector<std::uint8_t>& pixels) {
+        for (std::size_t i = 0; i + 2 < pixels.size(); i += 3) std::swap(pixels[i], pixels[i + 2]);
+      });
+      e.dataset(kPress + "/" + name).set_attr("channel_order", "BGR");
+    }
+    e.group(kPress).set_attr("channel_order", "BGR");
+  }
+  EXPECT_TRUE(failed_ids(qa()).empty()) << describe(qa());
 }
 
 TEST_F(GelsightMutation, ReferenceTakenDuringContactIsGelsightReference) {

@@ -22,11 +22,11 @@ TEST(GoodFiles, RecordingsPassEveryCheck) {
 }
 
 TEST(GoodFiles, GelsightPassesEveryCheck) {
-  expect_clean(qa::run_qa({small_pipeline().gelsight, {}}), qa::FileKind::gelsight, 11);
+  expect_clean(qa::run_qa({small_pipeline().gelsight, {}}), qa::FileKind::gelsight, 12);
 }
 
 TEST(GoodFiles, DatasetWithItsSplitPassesEveryCheck) {
-  expect_clean(qa::run_qa({small_pipeline().dataset, small_pipeline().split}), qa::FileKind::dataset, 4 + 12 + 7 + 2 + 9);
+  expect_clean(qa::run_qa({small_pipeline().dataset, small_pipeline().split}), qa::FileKind::dataset, 4 + 12 + 8 + 2 + 9);
 }
 
 TEST(GoodFiles, SplitManifestAloneFindsItsDataset) {

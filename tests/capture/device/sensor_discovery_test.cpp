@@ -21,6 +21,13 @@ void add_node(const fs::path& sysfs, const std::string& usb, const std::string& 
   std::ofstream(dir / "index") << index << "\n";
 }
 
+// /sys/bus/usb/devices/<usb>/<file>: the device's own attributes (speed, version).
+void write_usb_file(const fs::path& sysfs, const std::string& usb, const std::string& file, const std::string& text) {
+  const fs::path dir = sysfs / "bus/usb/devices" / usb;
+  fs::create_directories(dir);
+  std::ofstream(dir / file) << text;
+}
+
 UsbDevice usb(std::uint16_t vendor, std::uint16_t product, int bus, std::vector<int> ports, std::string name,
               std::string serial = {}) {
   UsbDevice d;
@@ -117,6 +124,63 @@ TEST_F(Discovery, RefusesABadSensorList) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("/sensors/0/product_pattern"), std::string::npos) << e.what();
   }
+}
+
+TEST_F(Discovery, ReportsEachSensorsUsbLinkSpeed) {
+  write_usb_file(sysfs(), "1-2", "speed", "480\n");
+  write_usb_file(sysfs(), "1-2", "version", " 2.00\n");
+  write_usb_file(sysfs(), "3-1.4", "speed", "12\n");  // a USB 2.0 device behind a USB 1.1 hub
+  write_usb_file(sysfs(), "3-1.4", "version", " 2.00\n");
+  const auto sensors = discover_sensors(devices(), SensorCatalog::builtin(), sysfs().string());
+  ASSERT_EQ(sensors.size(), 2u);
+  EXPECT_EQ(sensors[0].link.speed_mbps, 480.0);
+  EXPECT_EQ(sensors[0].link.version, 2.0);
+  EXPECT_EQ(sensors[0].link.text(), "480 Mbit/s (USB 2.0 high speed)");
+  EXPECT_FALSE(sensors[0].link.faster_speed_possible()) << "a USB 2.0 device at 480 Mbit/s is as fast as it goes";
+  EXPECT_EQ(sensors[1].link.text(), "12 Mbit/s (USB 1.1 full speed)");
+  EXPECT_EQ(sensors[1].link.faster_speed_possible(), 480.0);
+  // As `haptex capture devices` lists them.
+  EXPECT_EQ(describe(sensors[0]), "GelSight Mini  serial 2BNK-CE6G  USB 1-2 (0c45:636d) 480 Mbit/s (USB 2.0 high speed)"
+                                  "  capture /dev/video2  metadata /dev/video3");
+  EXPECT_EQ(describe(sensors[1]), "DIGIT  serial D20345  USB 3-1.4 (2833:0209) 12 Mbit/s (USB 1.1 full speed)"
+                                  " [the device supports USB 2.0 high speed: try another port]  capture /dev/video0");
+}
+
+TEST_F(Discovery, AMissingOrGarbledSpeedIsUnknownAndBreaksNothing) {
+  // 1-2 has no speed file at all; the others hold what sysfs never writes, or a cut-off read.
+  for (const auto& [usb, text] : std::vector<std::pair<std::string, std::string>>{
+           {"3-1.4", "fast\n"}, {"1-5", ""}}) {
+    write_usb_file(sysfs(), usb, "speed", text);
+    write_usb_file(sysfs(), usb, "version", "two\n");
+  }
+  SensorCatalog catalog = SensorCatalog::builtin();
+  std::ofstream(dir_.file("mine.json")) << R"({"format": "tactile-sensors/1", "sensors": [
+      {"model": "Lab webcam GelSight", "vendor_id": "0c45", "product_id": "636d", "product_pattern": "^Integrated"}]})";
+  catalog.prepend(SensorCatalog::from_file(dir_.file("mine.json")));
+  const auto sensors = discover_sensors(devices(), catalog, sysfs().string());
+  ASSERT_EQ(sensors.size(), 3u) << "every sensor is still found";
+  for (const auto& s : sensors) {
+    EXPECT_FALSE(s.link.speed_mbps) << s.usb.sysfs_name();
+    EXPECT_FALSE(s.link.version) << s.usb.sysfs_name();
+    EXPECT_EQ(s.link.text(), "speed unknown");
+    EXPECT_NE(describe(s).find(") speed unknown  capture /dev/video"), std::string::npos) << describe(s);
+    EXPECT_FALSE(s.capture_node.empty()) << s.usb.sysfs_name() << ": its nodes are still found";
+  }
+  for (const std::string odd : {"53.3-480", "-480", "nan", "0"}) {
+    write_usb_file(sysfs(), "1-2", "speed", odd);
+    EXPECT_FALSE(read_usb_link(sysfs().string(), "1-2").speed_mbps) << odd;
+  }
+}
+
+TEST_F(Discovery, FindsTheLinkOfAVideoNode) {
+  write_usb_file(sysfs(), "1-2", "speed", "480\n");
+  write_usb_file(sysfs(), "3-1.4", "speed", "5000\n");
+  EXPECT_EQ(usb_link_of_node(sysfs().string(), "/dev/video2").speed_mbps, 480.0);
+  EXPECT_EQ(usb_link_of_node(sysfs().string(), "/dev/video3").speed_mbps, 480.0) << "the metadata node: the same device";
+  EXPECT_EQ(usb_link_of_node(sysfs().string(), "/dev/video0").text(), "5000 Mbit/s (USB 3 SuperSpeed)");
+  EXPECT_FALSE(usb_link_of_node(sysfs().string(), "/dev/video9").speed_mbps) << "not a USB node";
+  EXPECT_FALSE(usb_link_of_node(sysfs().string(), "/dev/video4").speed_mbps) << "a USB node without a speed file";
+  EXPECT_FALSE(usb_link_of_node(dir_.file("no-sysfs"), "/dev/video2").speed_mbps);
 }
 
 TEST(UsbDevices, ListingWorksWithoutAnySensor) {

@@ -38,14 +38,15 @@ RecorderOptions options(int presses = 3) {
 class Recorder : public ::testing::Test {
  protected:
   RecordingResult record(FakeCameraConfig config, const RecorderOptions& o, const std::atomic<bool>* stop = nullptr,
-                         const Progress& progress = {}) {
+                         const Progress& progress = {}, const UsbLink& link = {}, const Warn& warn = {}) {
     camera_ = std::make_unique<FakeCamera>(std::move(config));
     SessionRequest request;
     request.node = "/dev/video0";
     request.serial = "2BNK-CE6G";
+    request.link = link;
     request.output_dir = dir_.file("session");
     request.command = "test";
-    return record_session(*camera_, request, o, stop, progress);
+    return record_session(*camera_, request, o, stop, progress, warn);
   }
   std::string file(const std::string& name) const { return dir_.file("session/" + name); }
   nlohmann::json manifest() const {
@@ -243,6 +244,57 @@ TEST_F(Recorder, RefusesBadOptionsBeforeTouchingTheDevice) {
   EXPECT_EQ(camera_->open_descriptors(), 0u);
   o = options(0);
   EXPECT_THROW(record(small_camera(), o), Error);
+}
+
+// Section 3 of the any-sensor issue: a take that delivers fewer frames than granted says so.
+TEST_F(Recorder, ATakeThatLosesFramesReportsTheRateItDelivered) {
+  FakeCameraConfig config = small_camera();
+  config.drop_percent = 30;
+  const RecordingResult r = record(config, options(3));
+  ASSERT_TRUE(r.totals.delivered_fps);
+  const double kept = double(camera_->stats().delivered) / double(camera_->stats().produced);
+  EXPECT_NEAR(*r.totals.delivered_fps, 30 * kept, 1.0) << "about 70 % of the 30 fps granted";
+  EXPECT_LT(*r.totals.delivered_fps, 0.9 * 30);
+  EXPECT_NE(r.delivery_warning.find("/dev/video0: the sensor delivered"), std::string::npos) << r.delivery_warning;
+  EXPECT_NE(r.delivery_warning.find("below the 30 fps it granted"), std::string::npos) << r.delivery_warning;
+  const nlohmann::json m = manifest();
+  EXPECT_DOUBLE_EQ(m["totals"]["delivered_fps"].get<double>(), *r.totals.delivered_fps);
+  ASSERT_EQ(m["warnings"].size(), 1u) << m["warnings"].dump();
+  EXPECT_EQ(m["warnings"][0], r.delivery_warning);
+}
+
+TEST_F(Recorder, ACleanTakeMeasuresTheGrantedRateAndDoesNotWarn) {
+  const RecordingResult r = record(small_camera(), options(2));
+  ASSERT_TRUE(r.totals.delivered_fps);
+  EXPECT_NEAR(*r.totals.delivered_fps, 30.0, 1e-3) << "the driver's timestamps are a period apart";
+  EXPECT_EQ(r.delivery_warning, "");
+  EXPECT_TRUE(manifest()["warnings"].empty()) << manifest()["warnings"].dump();
+  EXPECT_FALSE(manifest()["device"].contains("usb_link")) << "the fake camera has no USB link";
+}
+
+TEST_F(Recorder, AModeTheLinkCannotCarryIsWarnedBeforeTheTake) {
+  // Raw 320x240 at 30 fps is 36.9 Mbit/s; a USB 2.0 sensor behind a USB 1.1 hub gets 8.2 for video.
+  std::vector<std::string> told;
+  bool pressed_before_warning = false;
+  const Progress progress = [&](std::size_t, std::size_t, std::string_view) { pressed_before_warning |= told.empty(); };
+  const RecordingResult r = record(small_camera(V4L2_PIX_FMT_YUYV), options(1), nullptr, progress, UsbLink{12.0, 2.0},
+                                   [&](const std::string& w) { told.push_back(w); });
+  ASSERT_EQ(told.size(), 1u);
+  EXPECT_FALSE(pressed_before_warning) << "the warning comes before the take";
+  EXPECT_NE(told[0].find("YUYV 320x240 at 30 fps needs about 36.9 Mbit/s"), std::string::npos) << told[0];
+  EXPECT_NE(told[0].find("USB 2.0 high speed port"), std::string::npos) << told[0];
+  EXPECT_EQ(r.presses.size(), 1u) << "the take goes on: the user decides";
+  const nlohmann::json m = manifest();
+  EXPECT_EQ(m["warnings"][0], told[0]);
+  EXPECT_EQ(m["device"]["usb_link"]["speed_mbps"], 12.0);
+  EXPECT_NEAR(m["device"]["usb_link"]["stream_mbps_estimate"].get<double>(), 36.864, 1e-9);
+  EXPECT_NEAR(m["device"]["usb_link"]["video_capacity_mbps"].get<double>(), 8.184, 1e-9);
+  // The same sensor on its USB 2.0 link: nothing to say.
+  told.clear();
+  fs::remove_all(dir_.file("session"));
+  record(small_camera(V4L2_PIX_FMT_YUYV), options(1), nullptr, {}, UsbLink{480.0, 2.0}, [&](const std::string& w) { told.push_back(w); });
+  EXPECT_TRUE(told.empty());
+  EXPECT_TRUE(manifest()["warnings"].empty());
 }
 
 TEST_F(Recorder, ATouchedSensorDuringTheReferenceIsWaitedFor) {
