@@ -100,6 +100,7 @@ std::string capture_loop(V4l2Stream& stream, FrameQueue<TakeFrame>& queue, const
         if (quiet_seconds >= options.stall_seconds) return "stalled";
         break;
       case StreamStatus::disconnected: return "disconnected";
+      case StreamStatus::ended: return "source ended";  // a replayed file's last frame was taken
     }
   }
 }
