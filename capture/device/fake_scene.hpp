@@ -58,7 +58,7 @@ class FakeScene : public CameraScene {
 // Renders from scratch; FakeScene keeps the encoded payloads instead.
 cv::Mat render_gel(int width, int height, int level, int noise_pattern, std::uint64_t seed = 1);
 
-// Packs a BGR image as YUYV (4:2:2) the way UVC cameras send it.
+// Packs a BGR image as YUYV (4:2:2) the way UVC cameras send it: BT.601 in video range. The width must be even.
 std::vector<std::uint8_t> bgr_to_yuyv(const cv::Mat& bgr);
 
 }  // namespace haptex::capture
