@@ -14,6 +14,7 @@
 #include "capture/device/sensor_discovery.hpp"
 #include "capture/device/system_kernel.hpp"
 #include "capture/recording/press_recorder.hpp"
+#include "capture/replay/replay_device.hpp"
 #include "core/error.hpp"
 #include "core/text/utf8.hpp"
 
@@ -49,7 +50,7 @@ class CaptureRecord : public CaptureSubcommand {
  public:
   CLI::App* declare(CLI::App& capture) override {
     CLI::App* app = capture.add_subcommand("record", "Record presses from a sensor: one press file per press");
-    auto* device = app->add_option("--device", device_, "Capture node (/dev/videoN), or fake[:KEY=VALUE,...] for the fake camera");
+    auto* device = app->add_option("--device", device_, "Capture node (/dev/videoN), fake[:KEY=VALUE,...] for the fake camera, or replay:FILE[,KEY=VALUE,...] to play a video or press file as a sensor");
     auto* serial = app->add_option("--serial", serial_, "Serial number of a sensor 'haptex capture devices' lists");
     device->excludes(serial);
     serial->excludes(device);
@@ -92,8 +93,9 @@ class CaptureRecord : public CaptureSubcommand {
  private:
   capture::RecordingResult record(const GlobalOptions& global) {
     const Progress progress = terminal_progress(global, "record");
-    if (capture::is_fake_device(device_)) {
-      const capture::FakeDevice fake = capture::parse_fake_device(device_);
+    if (capture::is_fake_device(device_) || capture::is_replay_device(device_)) {
+      const capture::FakeDevice fake =
+          capture::is_fake_device(device_) ? capture::parse_fake_device(device_) : capture::parse_replay_device(device_);
       capture::FakeCamera camera(fake.config);
       request_.node = fake.node;
       return capture::record_session(camera, request_, options_, &g_stop, progress);
