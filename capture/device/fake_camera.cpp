@@ -86,6 +86,10 @@ struct FakeCamera::State {
   std::uint64_t next_frame = 0;
   std::int64_t camera_t0_ns = 0, lockstep_now_ns = 0;
   Clock::time_point wall_t0;
+  // Real time: how long the scene took to make its frames (decoding a replayed file). The camera's
+  // schedule waits for it, so a scene slower than the rate plays slower instead of filling every
+  // buffer while the host, which shares this thread, had no chance to take a frame.
+  Clock::duration scene_time{};
   std::mt19937_64 rng;
 
   explicit State(FakeCameraConfig c) : config(std::move(c)), rng(config.seed) {
@@ -118,7 +122,9 @@ struct FakeCamera::State {
       disconnected = true;
       return;
     }
+    const Clock::time_point asked = Clock::now();
     const std::vector<std::uint8_t>* payload = scene->frame(next_frame);
+    if (config.realtime) scene_time += Clock::now() - asked;
     if (!payload) {
       scene_ended = true;
       return;
@@ -189,7 +195,7 @@ struct FakeCamera::State {
   }
 
   Clock::time_point wall_due(std::uint64_t k) const {
-    return wall_t0 + std::chrono::nanoseconds(std::int64_t(double(frame_time_ns(k)) / config.speed));
+    return wall_t0 + scene_time + std::chrono::nanoseconds(std::int64_t(double(frame_time_ns(k)) / config.speed));
   }
 
   short poll_realtime(int timeout_ms) {
@@ -437,6 +443,7 @@ struct FakeCamera::State {
     lockstep_now_ns = 0;
     camera_t0_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
     wall_t0 = Clock::now();
+    scene_time = {};
     return 0;
   }
 

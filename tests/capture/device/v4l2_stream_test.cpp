@@ -228,5 +228,27 @@ TEST_F(StreamTest, AFiniteSceneEndsInRealTimeOnePeriodAfterItsLastFrame) {
   EXPECT_EQ(s.timeouts, 0) << "the end is no stall";
 }
 
+// A scene that takes longer than a frame period to make each frame, like a large replayed video.
+class SlowScene : public FiniteScene {
+ public:
+  using FiniteScene::FiniteScene;
+  const std::vector<std::uint8_t>* frame(std::uint64_t k) override {
+    std::this_thread::sleep_for(std::chrono::milliseconds(15));
+    return FiniteScene::frame(k);
+  }
+};
+
+TEST_F(StreamTest, ASlowSceneInRealTimePlaysSlowerInsteadOfLosingFrames) {
+  FakeCameraConfig config = finite_camera(20, 100);  // a period of 10 ms, each frame taking 15 to make
+  config.film = [](const FakeMode& mode) { return std::make_unique<SlowScene>(mode, 20); };
+  config.realtime = true;
+  open(config, 4);
+  const Streamed s = stream_frames(*stream_, 1000);
+  EXPECT_EQ(s.last, StreamStatus::ended);
+  EXPECT_EQ(s.frames.size(), 20u);
+  EXPECT_EQ(camera_->stats().host_drops, 0u) << "the camera's own slowness is not the host's";
+  EXPECT_EQ(stream_->drops().dropped(), 0u);
+}
+
 }  // namespace
 }  // namespace haptex::capture
