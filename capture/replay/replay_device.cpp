@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "capture/replay/press_file_scene.hpp"
+#include "capture/storage/press_file_frames.hpp"
 #include "capture/replay/video_scene.hpp"
 #include "core/error.hpp"
 #include "core/text/utf8.hpp"
@@ -38,11 +39,6 @@ std::pair<std::string, std::string> split_file(const std::string& spec) {
       return {spec.substr(0, comma), spec.substr(comma + 1)};
   }
   return {spec, ""};
-}
-
-bool is_press_file(const std::string& file) {
-  const std::string ext = fs::path(file).extension().string();
-  return ext == ".h5" || ext == ".hdf5";
 }
 
 // The file must be there and readable; when it is not, but a part of the name before a comma is, the
@@ -79,7 +75,7 @@ FakeDevice parse_replay_device(const std::string& device) {
   FakeDevice replay;
   FakeCameraConfig& c = replay.config;
   c.realtime = true;
-  FakeMode mode = is_press_file(file) ? press_file_replay_mode(file) : video_replay_mode(file);
+  FakeMode mode = is_press_file_name(file) ? press_file_replay_mode(file) : video_replay_mode(file);
   std::stringstream list(items);
   std::string item;
   while (std::getline(list, item, ',')) {
@@ -107,7 +103,7 @@ FakeDevice parse_replay_device(const std::string& device) {
   c.card = "haptex replay";
   c.driver = "haptex replay";
   c.bus_info = "replay";
-  const bool press_file = is_press_file(file);
+  const bool press_file = is_press_file_name(file);
   const std::string path = file;
   c.film = [press_file, path](const FakeMode& granted) -> std::unique_ptr<CameraScene> {
     if (press_file) return std::make_unique<PressFileScene>(path);

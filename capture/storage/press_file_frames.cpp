@@ -1,11 +1,21 @@
 #include "capture/storage/press_file_frames.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
 #include "capture/storage/vlen_bytes.hpp"
 #include "core/error.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 
 namespace haptex::capture {
+
+bool is_press_file_name(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".h5" || ext == ".hdf5";
+}
 
 PressFileFrames::PressFileFrames(std::string path)
     : path_(std::move(path)), file_(dataset::open_checked(path_, dataset::Kind::press)) {

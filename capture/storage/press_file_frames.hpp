@@ -13,6 +13,9 @@
 
 namespace haptex::capture {
 
+// A name ending in .h5 or .hdf5 (any case): how `capture extract` and replay tell press files from videos.
+bool is_press_file_name(const std::string& path);
+
 class PressFileFrames {
  public:
   // Throws haptex::Error (bad_input) naming the file and the object when it is not a press file.
