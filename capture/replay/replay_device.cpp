@@ -10,8 +10,8 @@
 #include <string_view>
 
 #include "capture/replay/press_file_scene.hpp"
-#include "capture/storage/press_file_frames.hpp"
 #include "capture/replay/video_scene.hpp"
+#include "capture/storage/press_file_frames.hpp"
 #include "core/error.hpp"
 #include "core/text/utf8.hpp"
 
@@ -91,7 +91,8 @@ FakeDevice parse_replay_device(const std::string& device) {
     throw input_error(file, "frame rate", "the file does not say its frame rate", "Give it: replay:" + file + ",fps=N");
   if (mode.width > kMaxSide || mode.height > kMaxSide)
     throw input_error(file, "frame size", std::to_string(mode.width) + "x" + std::to_string(mode.height) +
-                      " is larger than the replay plays (8192x8192)", "Replay a smaller copy");
+                      " is larger than the replay plays (" + std::to_string(kMaxSide) + "x" + std::to_string(kMaxSide) + ")",
+                      "Replay a smaller copy");
   if (mode.fourcc == V4L2_PIX_FMT_YUYV && mode.width % 2)
     throw input_error(file, "frame size", "a lossless source is replayed as YUYV, which needs an even width (" +
                       std::to_string(mode.width) + ")", "Re-export it one pixel narrower");

@@ -32,9 +32,9 @@ class VideoScene : public CameraScene {
   std::vector<std::uint8_t> payload_;
 };
 
-// JPEG quality of the MJPG the replay sends: high enough that re-encoding moves no-contact pixels by
-// less than the contact score's pixel threshold for lossy sources (6 grey levels), so live scores stay
-// those of the video.
+// JPEG quality of the MJPG the replay sends: high, so re-encoding changes a frame far less than the
+// source's own compression did, and the recorder cuts the presses extraction finds in the video
+// (frame for frame on gsrobotics' mini_example, docs/capture.md).
 constexpr int kReplayJpegQuality = 95;
 
 }  // namespace haptex::capture
