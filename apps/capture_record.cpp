@@ -14,6 +14,7 @@
 #include "capture/device/sensor_discovery.hpp"
 #include "capture/device/system_kernel.hpp"
 #include "capture/recording/press_recorder.hpp"
+#include "capture/replay/replay_device.hpp"
 #include "core/error.hpp"
 #include "core/text/utf8.hpp"
 
@@ -49,7 +50,7 @@ class CaptureRecord : public CaptureSubcommand {
  public:
   CLI::App* declare(CLI::App& capture) override {
     CLI::App* app = capture.add_subcommand("record", "Record presses from a sensor: one press file per press");
-    auto* device = app->add_option("--device", device_, "Capture node (/dev/videoN), or fake[:KEY=VALUE,...] for the fake camera");
+    auto* device = app->add_option("--device", device_, "Capture node (/dev/videoN), fake[:KEY=VALUE,...] for the fake camera, or replay:FILE[,KEY=VALUE,...] to play a video or press file as a sensor");
     auto* serial = app->add_option("--serial", serial_, "Serial number of a sensor 'haptex capture devices' lists");
     device->excludes(serial);
     serial->excludes(device);
@@ -98,10 +99,12 @@ class CaptureRecord : public CaptureSubcommand {
     const capture::Warn warn = [&global](const std::string& warning) {
       if (!global.quiet) std::cerr << "haptex capture: warning: " << warning << "\n";
     };
-    if (capture::is_fake_device(device_)) {
-      const capture::FakeDevice fake = capture::parse_fake_device(device_);
+    if (capture::is_fake_device(device_) || capture::is_replay_device(device_)) {
+      const capture::FakeDevice fake =
+          capture::is_fake_device(device_) ? capture::parse_fake_device(device_) : capture::parse_replay_device(device_);
       capture::FakeCamera camera(fake.config);
       request_.node = fake.node;
+      if (fake.inter_frame) options_.calibration_frames = capture::kCalibrationFrames;
       return capture::record_session(camera, request_, options_, &g_stop, progress, warn);
     }
     capture::SystemKernel kernel;

@@ -29,8 +29,9 @@ void copy_text(__u8* out, std::size_t size, const std::string& text) {
   std::memcpy(out, text.data(), std::min(size - 1, text.size()));
 }
 
-std::uint32_t image_size(std::uint32_t fourcc, std::uint32_t w, std::uint32_t h) {
-  return fourcc == V4L2_PIX_FMT_YUYV ? w * h * 2 : w * h;  // MJPG: room for any sensible JPEG
+std::uint32_t image_size(const FakeMode& m) {
+  if (m.max_payload) return m.max_payload;
+  return m.fourcc == V4L2_PIX_FMT_YUYV ? m.width * m.height * 2 : m.width * m.height;  // MJPG: room for the fake's JPEGs
 }
 
 v4l2_fract interval_of(double fps) {
@@ -77,11 +78,18 @@ struct FakeCamera::State {
   std::deque<std::uint32_t> queued;
   std::deque<Completed> done;
   bool streaming = false, disconnected = false;
-  std::unique_ptr<FakeScene> scene;
+  std::unique_ptr<CameraScene> scene;
+  // The end of a finite scene: it had no more frames; the empty LAST buffer is in `done`; the host
+  // dequeued it (from then on DQBUF fails with EPIPE, as vb2 does).
+  bool scene_ended = false, last_queued = false, last_dequeued = false;
 
   std::uint64_t next_frame = 0;
   std::int64_t camera_t0_ns = 0, lockstep_now_ns = 0;
   Clock::time_point wall_t0;
+  // Real time: how long the scene took to make its frames (decoding a replayed file). The camera's
+  // schedule waits for it, so a scene slower than the rate plays slower instead of filling every
+  // buffer while the host, which shares this thread, had no chance to take a frame.
+  Clock::duration scene_time{};
   std::mt19937_64 rng;
 
   explicit State(FakeCameraConfig c) : config(std::move(c)), rng(config.seed) {
@@ -114,6 +122,13 @@ struct FakeCamera::State {
       disconnected = true;
       return;
     }
+    const Clock::time_point asked = Clock::now();
+    const std::vector<std::uint8_t>* payload = scene->frame(next_frame);
+    if (config.realtime) scene_time += Clock::now() - asked;
+    if (!payload) {
+      scene_ended = true;
+      return;
+    }
     const std::uint64_t k = next_frame++;
     ++stats.produced;
     if (chance(config.drop_percent)) {
@@ -127,8 +142,7 @@ struct FakeCamera::State {
     const std::uint32_t index = queued.front();
     queued.pop_front();
     Buffer& b = buffers[index];
-    const std::vector<std::uint8_t>& payload = scene->payload(k);
-    std::uint32_t bytes = std::uint32_t(std::min(payload.size(), b.length));
+    std::uint32_t bytes = std::uint32_t(std::min(payload->size(), b.length));
     std::uint32_t flags = V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC | V4L2_BUF_FLAG_TSTAMP_SRC_SOE | V4L2_BUF_FLAG_DONE;
     if (chance(config.error_percent)) {
       ++stats.error_buffers;
@@ -138,17 +152,35 @@ struct FakeCamera::State {
       ++stats.corrupt_payloads;
       bytes /= 3;
     }
-    std::memcpy(b.memory.get(), payload.data(), bytes);
+    std::memcpy(b.memory.get(), payload->data(), bytes);
     b.queued = false;
     b.done = true;
     done.push_back({index, bytes, std::uint32_t(k), flags, camera_t0_ns + frame_time_ns(k)});
   }
 
+  // After the scene's last frame the next free buffer comes back empty and flagged LAST: how a V4L2
+  // driver with a finite stream (a decoder draining) says there will be no more.
+  void queue_last_buffer() {
+    if (last_queued || queued.empty()) return;
+    const std::uint32_t index = queued.front();
+    queued.pop_front();
+    buffers[index].queued = false;
+    buffers[index].done = true;
+    const std::uint32_t flags = V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC | V4L2_BUF_FLAG_DONE | V4L2_BUF_FLAG_LAST;
+    done.push_back({index, 0, std::uint32_t(next_frame), flags, camera_t0_ns + frame_time_ns(next_frame)});
+    last_queued = true;
+  }
+
   short poll_lockstep(int timeout_ms) {
     for (;;) {
-      if (!done.empty()) return POLLIN | POLLRDNORM;
+      if (!done.empty() || last_dequeued) return POLLIN | POLLRDNORM;  // after LAST: readable, DQBUF says EPIPE
       if (disconnected) return POLLERR | POLLHUP;
       if (!streaming) return POLLERR;
+      if (scene_ended) {
+        queue_last_buffer();
+        if (done.empty()) return 0;  // the host holds every buffer
+        continue;
+      }
       const std::int64_t due = frame_time_ns(next_frame);
       const std::int64_t timeout_ns = std::int64_t(timeout_ms) * 1000000;
       // A stall longer than the poll timeout is seen as timeouts, each one moving the clock on.
@@ -163,19 +195,21 @@ struct FakeCamera::State {
   }
 
   Clock::time_point wall_due(std::uint64_t k) const {
-    return wall_t0 + std::chrono::nanoseconds(std::int64_t(double(frame_time_ns(k)) / config.speed));
+    return wall_t0 + scene_time + std::chrono::nanoseconds(std::int64_t(double(frame_time_ns(k)) / config.speed));
   }
 
   short poll_realtime(int timeout_ms) {
     const Clock::time_point deadline = Clock::now() + std::chrono::milliseconds(timeout_ms);
     for (;;) {
       const Clock::time_point now = Clock::now();
-      while (streaming && !disconnected && wall_due(next_frame) <= now) produce_one();
-      if (!done.empty()) return POLLIN | POLLRDNORM;
+      while (streaming && !disconnected && !scene_ended && wall_due(next_frame) <= now) produce_one();
+      if (streaming && scene_ended) queue_last_buffer();
+      if (!done.empty() || last_dequeued) return POLLIN | POLLRDNORM;
       if (disconnected) return POLLERR | POLLHUP;
       if (!streaming) return POLLERR;
       if (now >= deadline) return 0;
-      std::this_thread::sleep_until(std::min(wall_due(next_frame), deadline));
+      // Once the scene has ended nothing falls due: only a buffer given back could change anything.
+      std::this_thread::sleep_until(scene_ended ? deadline : std::min(wall_due(next_frame), deadline));
     }
   }
 
@@ -241,7 +275,7 @@ struct FakeCamera::State {
     f->fmt.pix.height = mode.height;
     f->fmt.pix.field = V4L2_FIELD_NONE;
     f->fmt.pix.bytesperline = mode.fourcc == V4L2_PIX_FMT_YUYV ? mode.width * 2 : 0;
-    f->fmt.pix.sizeimage = image_size(mode.fourcc, mode.width, mode.height);
+    f->fmt.pix.sizeimage = image_size(mode);
     f->fmt.pix.colorspace = V4L2_COLORSPACE_SRGB;
   }
 
@@ -338,7 +372,7 @@ struct FakeCamera::State {
     queued.clear();
     done.clear();
     r->count = std::min(r->count, config.max_buffers);
-    const std::size_t length = image_size(mode.fourcc, mode.width, mode.height);
+    const std::size_t length = image_size(mode);
     const std::size_t stride = (length + kPage - 1) / kPage * kPage;
     for (std::uint32_t i = 0; i < r->count; ++i) {
       Buffer b;
@@ -376,10 +410,11 @@ struct FakeCamera::State {
 
   int dequeue_buffer(v4l2_buffer* b) {
     if (b->type != V4L2_BUF_TYPE_VIDEO_CAPTURE || b->memory != V4L2_MEMORY_MMAP) return fail(EINVAL);
-    if (done.empty()) return fail(disconnected ? ENODEV : streaming ? EAGAIN : EINVAL);
+    if (done.empty()) return fail(disconnected ? ENODEV : last_dequeued ? EPIPE : streaming ? EAGAIN : EINVAL);
     const Completed c = done.front();
     done.pop_front();
     buffers[c.index].done = false;
+    if (c.flags & V4L2_BUF_FLAG_LAST) last_dequeued = true;
     ++stats.delivered;
     describe(c.index, b);
     b->index = c.index;
@@ -395,20 +430,26 @@ struct FakeCamera::State {
   int stream_on() {
     if (buffers.empty()) return fail(EINVAL);
     if (streaming) return 0;
-    if (!scene || scene_key != std::make_tuple(mode.fourcc, mode.width, mode.height)) {
+    if (config.film) {
+      scene = config.film(mode);
+    } else if (!scene || scene_key != std::make_tuple(mode.fourcc, mode.width, mode.height)) {
+      // Rendering the synthetic scene's payloads is costly at full size: kept while the mode stays.
       scene = std::make_unique<FakeScene>(mode.fourcc, int(mode.width), int(mode.height), config.scene, config.seed);
       scene_key = std::make_tuple(mode.fourcc, mode.width, mode.height);
     }
     streaming = true;
+    scene_ended = last_queued = last_dequeued = false;
     next_frame = 0;  // V4L2 restarts the sequence at every STREAMON
     lockstep_now_ns = 0;
     camera_t0_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
     wall_t0 = Clock::now();
+    scene_time = {};
     return 0;
   }
 
   int stream_off() {
     streaming = false;
+    last_dequeued = false;
     queued.clear();
     done.clear();
     for (auto& b : buffers) b.queued = b.done = false;
@@ -514,7 +555,7 @@ int FakeCamera::poll(pollfd* fds, nfds_t count, int timeout_ms) {
 const FakeCameraStats& FakeCamera::stats() const { return state_->stats; }
 const FakeCameraConfig& FakeCamera::config() const { return state_->config; }
 bool FakeCamera::streaming() const { return state_->streaming; }
-const FakeScene* FakeCamera::scene() const { return state_->scene.get(); }
+const FakeScene* FakeCamera::scene() const { return dynamic_cast<const FakeScene*>(state_->scene.get()); }
 std::size_t FakeCamera::open_descriptors() const { return state_->descriptors.size(); }
 
 std::int32_t FakeCamera::control_value(std::uint32_t id) const {

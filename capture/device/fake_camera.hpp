@@ -8,13 +8,19 @@
 // timestamps one period apart, so tests are exact and fast. In real-time mode frames fall due on the
 // wall clock (optionally `speed` times faster), and a frame that finds no free buffer is lost, as
 // with a real driver: that is how host-side drops are measured.
+//
+// What it films is pluggable (camera_scene.hpp): the synthetic gel of fake_scene.hpp by default, or
+// a replayed file (capture/replay/). A scene that ends ends the stream as V4L2 ends a finite one
+// (a decoder draining): an empty buffer flagged V4L2_BUF_FLAG_LAST, then EPIPE from every DQBUF.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "capture/device/camera_scene.hpp"
 #include "capture/device/fake_scene.hpp"
 #include "capture/device/kernel_interface.hpp"
 
@@ -24,6 +30,9 @@ struct FakeMode {
   std::uint32_t fourcc = 0;
   std::uint32_t width = 0, height = 0;
   std::vector<double> fps;
+  // Bytes a buffer holds (sizeimage); 0: width x height for MJPG (room for the fake's JPEGs), the
+  // frame's size for YUYV. A payload longer than this arrives cut off, as from a real driver.
+  std::uint32_t max_payload = 0;
 };
 
 struct FakeControl {
@@ -54,6 +63,9 @@ struct FakeCameraConfig {
   double speed = 1.0;                   // real-time mode: frames come this many times faster
   PressSchedule scene;
   std::uint64_t seed = 1;
+  // What the camera films in the granted mode, made anew at every STREAMON (V4L2 restarts the
+  // sequence there). Empty: the synthetic FakeScene of `scene` and `seed`.
+  std::function<std::unique_ptr<CameraScene>(const FakeMode& mode)> film;
 };
 
 // Defaults shared by the fake and its tests.
@@ -87,7 +99,8 @@ class FakeCamera : public KernelInterface {
   std::size_t mapped_buffers() const;
   std::size_t open_descriptors() const;
   bool streaming() const;
-  // The scene behind the granted format (made at the first STREAMON), nullptr before.
+  // The synthetic scene behind the granted format (made at the first STREAMON), nullptr before and
+  // when the camera films something else (config.film).
   const FakeScene* scene() const;
 
  private:

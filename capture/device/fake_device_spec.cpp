@@ -10,74 +10,84 @@
 namespace haptex::capture {
 namespace {
 
-[[noreturn]] void bad(const std::string& device, const std::string& key, const std::string& what) {
-  throw input_error("--device " + device, key, what,
-                    "Write fake:size=WxH,format=MJPG,fps=N,presses=N,drop=P,error=P,corrupt=P,disconnect=N,"
-                    "stall=FRAME:MS,speed=X,lockstep,seed=N,metadata");
+const char* const kFakeUsage =
+    "Write fake:size=WxH,format=MJPG,fps=N,presses=N,drop=P,error=P,corrupt=P,disconnect=N,"
+    "stall=FRAME:MS,speed=X,lockstep,seed=N,metadata";
+
+void apply(FakeDevice& fake, FakeMode& mode, bool& fps_given, const DeviceKeys& keys, const std::string& key,
+           const std::string& value) {
+  FakeCameraConfig& c = fake.config;
+  if (keys.apply_stream_key(c, key, value)) return;
+  if (key == "size") {
+    const auto x = value.find('x');
+    if (x == std::string::npos) keys.refuse(key, "expected WIDTHxHEIGHT");
+    const double width = keys.number(key, value.substr(0, x)), height = keys.number(key, value.substr(x + 1));
+    // 8192: above any tactile sensor's frame (a GelSight Mini's is 3280 x 2464), and a frame's bytes stay far from overflow.
+    if (width > 8192 || height > 8192) keys.refuse(key, "the fake camera makes frames of at most 8192x8192");
+    mode.width = std::uint32_t(width);
+    mode.height = std::uint32_t(height);
+    if (mode.width < 16 || mode.height < 16 || mode.width % 2) keys.refuse(key, "expected an even width and a size of at least 16x16");
+  } else if (key == "format") {
+    mode.fourcc = fourcc_code(value, "--device " + keys.device());
+    if (mode.fourcc != V4L2_PIX_FMT_MJPEG && mode.fourcc != V4L2_PIX_FMT_YUYV) keys.refuse(key, "the fake sends MJPG or YUYV");
+  } else if (key == "fps") {
+    mode.fps = {keys.number(key, value)};
+    fps_given = true;
+  } else if (key == "presses") {
+    c.scene.presses = value == "-1" ? -1 : int(keys.number(key, value));
+  } else if (key == "metadata") {
+    fake.node = c.metadata_path;
+  } else {
+    keys.refuse(key, "unknown key");
+  }
 }
 
-double number(const std::string& device, const std::string& key, const std::string& text) {
+}  // namespace
+
+void DeviceKeys::refuse(const std::string& key, const std::string& what) const {
+  throw input_error("--device " + device_, key, what, usage_);
+}
+
+double DeviceKeys::number(const std::string& key, const std::string& text) const {
   try {
     std::size_t used = 0;
     const double value = std::stod(text, &used);
     if (used == text.size() && value >= 0) return value;
   } catch (...) {
   }
-  bad(device, key, "'" + text + "' is not a number of 0 or more");
+  refuse(key, "'" + text + "' is not a number of 0 or more");
 }
 
-void apply(FakeDevice& fake, FakeMode& mode, bool& fps_given, const std::string& device, const std::string& key,
-           const std::string& value) {
-  FakeCameraConfig& c = fake.config;
-  if (key == "size") {
-    const auto x = value.find('x');
-    if (x == std::string::npos) bad(device, key, "expected WIDTHxHEIGHT");
-    const double width = number(device, key, value.substr(0, x)), height = number(device, key, value.substr(x + 1));
-    // 8192: above any tactile sensor's frame (a GelSight Mini's is 3280 x 2464), and a frame's bytes stay far from overflow.
-    if (width > 8192 || height > 8192) bad(device, key, "the fake camera makes frames of at most 8192x8192");
-    mode.width = std::uint32_t(width);
-    mode.height = std::uint32_t(height);
-    if (mode.width < 16 || mode.height < 16 || mode.width % 2) bad(device, key, "expected an even width and a size of at least 16x16");
-  } else if (key == "format") {
-    mode.fourcc = fourcc_code(value, "--device " + device);
-    if (mode.fourcc != V4L2_PIX_FMT_MJPEG && mode.fourcc != V4L2_PIX_FMT_YUYV) bad(device, key, "the fake sends MJPG or YUYV");
-  } else if (key == "fps") {
-    mode.fps = {number(device, key, value)};
-    fps_given = true;
-  } else if (key == "presses") {
-    c.scene.presses = value == "-1" ? -1 : int(number(device, key, value));
-  } else if (key == "drop") {
-    c.drop_percent = number(device, key, value);
+bool DeviceKeys::apply_stream_key(FakeCameraConfig& c, const std::string& key, const std::string& value) const {
+  if (key == "drop") {
+    c.drop_percent = number(key, value);
   } else if (key == "error") {
-    c.error_percent = number(device, key, value);
+    c.error_percent = number(key, value);
   } else if (key == "corrupt") {
-    c.corrupt_percent = number(device, key, value);
+    c.corrupt_percent = number(key, value);
   } else if (key == "disconnect") {
-    c.disconnect_after = std::uint64_t(number(device, key, value));
+    c.disconnect_after = std::uint64_t(number(key, value));
   } else if (key == "stall") {
     const auto colon = value.find(':');
-    if (colon == std::string::npos) bad(device, key, "expected FRAME:MILLISECONDS");
-    c.stalls.push_back({std::uint64_t(number(device, key, value.substr(0, colon))),
-                        int(number(device, key, value.substr(colon + 1)))});
+    if (colon == std::string::npos) refuse(key, "expected FRAME:MILLISECONDS");
+    c.stalls.push_back({std::uint64_t(number(key, value.substr(0, colon))), int(number(key, value.substr(colon + 1)))});
   } else if (key == "speed") {
-    c.speed = number(device, key, value);
-    if (c.speed <= 0) bad(device, key, "must be more than 0");
+    c.speed = number(key, value);
+    if (c.speed <= 0) refuse(key, "must be more than 0");
   } else if (key == "lockstep") {
     c.realtime = false;
   } else if (key == "seed") {
-    c.seed = std::uint64_t(number(device, key, value));
-  } else if (key == "metadata") {
-    fake.node = c.metadata_path;
+    c.seed = std::uint64_t(number(key, value));
   } else {
-    bad(device, key, "unknown key");
+    return false;
   }
+  return true;
 }
-
-}  // namespace
 
 bool is_fake_device(const std::string& device) { return device == "fake" || device.rfind("fake:", 0) == 0; }
 
 FakeDevice parse_fake_device(const std::string& device) {
+  const DeviceKeys keys(device, kFakeUsage);
   FakeDevice fake;
   fake.config.realtime = true;
   fake.node = fake.config.capture_path;
@@ -89,11 +99,11 @@ FakeDevice parse_fake_device(const std::string& device) {
     while (std::getline(items, item, ',')) {
       if (item.empty()) continue;
       const auto eq = item.find('=');
-      apply(fake, mode, fps_given, device, item.substr(0, eq), eq == std::string::npos ? "" : item.substr(eq + 1));
+      apply(fake, mode, fps_given, keys, item.substr(0, eq), eq == std::string::npos ? "" : item.substr(eq + 1));
     }
   }
   if (!fps_given && (mode.width != 3280 || mode.height != 2464)) mode.fps = {30.0};
-  if (mode.fps.front() <= 0) bad(device, "fps", "must be more than 0");
+  if (mode.fps.front() <= 0) keys.refuse("fps", "must be more than 0");
   fake.config.modes = {mode};
   return fake;
 }

@@ -4,6 +4,9 @@
 // 30), presses (-1: forever), drop, error, corrupt (percent of frames), disconnect=FRAMES,
 // stall=FRAME:MS (repeatable), speed (times real time), lockstep (no clock: as fast as the host
 // takes frames), seed, metadata (open the sensor's metadata node instead).
+//
+// The keys for timing and faults (drop to seed) are every fake camera's: `--device replay:FILE,...`
+// (capture/replay/replay_device.hpp) takes them too, through DeviceKeys.
 #include <optional>
 #include <string>
 
@@ -14,10 +17,30 @@ namespace haptex::capture {
 struct FakeDevice {
   FakeCameraConfig config;
   std::string node;  // the path to open on the fake
+  // What it sends was compressed across frames before (a replayed MPEG-4 or H.264 video): its
+  // no-contact frames repeat each other's artefacts, so the recorder calibrates its thresholds on the
+  // frames after the reference (RecorderOptions::calibration_frames).
+  bool inter_frame = false;
 };
 
 bool is_fake_device(const std::string& device);
 // Throws haptex::Error (bad_input) naming the key and what is expected.
 FakeDevice parse_fake_device(const std::string& device);
+
+// The KEY=VALUE items of a --device string for a fake camera. Refusals name the device and the key,
+// and show `usage` (the keys this kind of device takes) as the fix.
+class DeviceKeys {
+ public:
+  DeviceKeys(std::string device, std::string usage) : device_(std::move(device)), usage_(std::move(usage)) {}
+  const std::string& device() const { return device_; }
+  [[noreturn]] void refuse(const std::string& key, const std::string& what) const;
+  double number(const std::string& key, const std::string& text) const;  // 0 or more
+  // The stream's timing and faults: drop, error, corrupt, disconnect, stall, speed, lockstep, seed.
+  // Returns false when `key` is none of them.
+  bool apply_stream_key(FakeCameraConfig& config, const std::string& key, const std::string& value) const;
+
+ private:
+  std::string device_, usage_;
+};
 
 }  // namespace haptex::capture

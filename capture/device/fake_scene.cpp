@@ -66,17 +66,23 @@ struct SceneImages {
 }  // namespace
 
 std::vector<std::uint8_t> bgr_to_yuyv(const cv::Mat& bgr) {
+  // ITU-R BT.601 in video range (Y 16..235, U and V 16..240), as UVC cameras send it and as OpenCV's
+  // COLOR_YUV2BGR_YUYV (the recorder's decoder) reads it back; OpenCV's COLOR_BGR2YUV is full range,
+  // and its frames would decode with their contrast stretched by 255/219.
+  static const cv::Matx34f kBt601(24.966f / 255, 128.553f / 255, 65.481f / 255, 16,  // Y from B, G, R
+                                  112.0f / 255, -74.203f / 255, -37.797f / 255, 128,  // U (Cb)
+                                  -18.214f / 255, -93.786f / 255, 112.0f / 255, 128);  // V (Cr)
   cv::Mat yuv;
-  cv::cvtColor(bgr, yuv, cv::COLOR_BGR2YUV);
+  cv::transform(bgr, yuv, kBt601);
   std::vector<std::uint8_t> out(std::size_t(bgr.rows) * bgr.cols * 2);
   std::size_t o = 0;
   for (int y = 0; y < yuv.rows; ++y) {
     const auto* row = yuv.ptr<cv::Vec3b>(y);
     for (int x = 0; x + 1 < yuv.cols; x += 2) {
       out[o++] = row[x][0];
-      out[o++] = std::uint8_t((row[x][1] + row[x + 1][1]) / 2);
+      out[o++] = std::uint8_t((row[x][1] + row[x + 1][1] + 1) / 2);
       out[o++] = row[x + 1][0];
-      out[o++] = std::uint8_t((row[x][2] + row[x + 1][2]) / 2);
+      out[o++] = std::uint8_t((row[x][2] + row[x + 1][2] + 1) / 2);
     }
   }
   return out;

@@ -8,6 +8,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "capture/device/camera_scene.hpp"
+
 namespace haptex::capture {
 
 struct PressSchedule {
@@ -18,9 +20,12 @@ struct PressSchedule {
   int presses = -1;       // -1: press forever
 };
 
-class FakeScene {
+class FakeScene : public CameraScene {
  public:
   FakeScene(std::uint32_t fourcc, int width, int height, const PressSchedule& schedule, std::uint64_t seed = 1);
+
+  // Never ends: payload(k) for every k.
+  const std::vector<std::uint8_t>* frame(std::uint64_t k) override { return &payload(k); }
 
   // Press depth 0..1 of scene frame k (0 during black and no-contact frames).
   double depth(std::uint64_t frame) const;
@@ -53,7 +58,7 @@ class FakeScene {
 // Renders from scratch; FakeScene keeps the encoded payloads instead.
 cv::Mat render_gel(int width, int height, int level, int noise_pattern, std::uint64_t seed = 1);
 
-// Packs a BGR image as YUYV (4:2:2) the way UVC cameras send it.
+// Packs a BGR image as YUYV (4:2:2) the way UVC cameras send it: BT.601 in video range. The width must be even.
 std::vector<std::uint8_t> bgr_to_yuyv(const cv::Mat& bgr);
 
 }  // namespace haptex::capture

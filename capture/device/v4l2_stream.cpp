@@ -80,6 +80,7 @@ void V4l2Stream::start() {
   int type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
   device_.ioctl_or_throw(VIDIOC_STREAMON, &type, "VIDIOC_STREAMON");
   streaming_ = true;
+  ended_ = false;
 }
 
 void V4l2Stream::stop() {
@@ -98,12 +99,16 @@ V4l2Stream::Dequeue V4l2Stream::dequeue(Frame& out) {
   const int error = device_.try_ioctl(VIDIOC_DQBUF, &b);
   if (error == EAGAIN) return Dequeue::empty;
   if (error == ENODEV) return Dequeue::disconnected;
+  if (error == EPIPE) return Dequeue::ended;  // the LAST buffer was dequeued before
   if (error == EIO) {
     ++stats_.error_buffers;
     return ++consecutive_queue_errors_ >= kQueueErrorsBeforeDisconnect ? Dequeue::disconnected : Dequeue::skipped;
   }
   if (error != 0) throw failure(device_.path() + ": VIDIOC_DQBUF failed: " + std::strerror(error));
   consecutive_queue_errors_ = 0;
+  if (b.flags & V4L2_BUF_FLAG_LAST) ended_ = true;
+  // An empty LAST buffer only marks the end: it is no frame, no error and no loss.
+  if (ended_ && b.bytesused == 0) return Dequeue::ended;
   const std::int64_t timestamp_ns = std::int64_t(b.timestamp.tv_sec) * 1000000000 + std::int64_t(b.timestamp.tv_usec) * 1000;
   const bool bad = (b.flags & V4L2_BUF_FLAG_ERROR) || b.bytesused == 0 || b.index >= buffers_.size();
   if (b.index < buffers_.size() && !bad) {
@@ -126,10 +131,12 @@ V4l2Stream::Dequeue V4l2Stream::dequeue(Frame& out) {
 
 StreamStatus V4l2Stream::next(Frame& out) {
   for (;;) {
+    if (ended_) return StreamStatus::ended;  // a LAST buffer that carried the final frame
     switch (dequeue(out)) {
       case Dequeue::frame: return StreamStatus::frame;
       case Dequeue::skipped: continue;
       case Dequeue::disconnected: return StreamStatus::disconnected;
+      case Dequeue::ended: return StreamStatus::ended;
       case Dequeue::empty: break;
     }
     pollfd p{device_.fd(), POLLIN, 0};
@@ -144,6 +151,7 @@ StreamStatus V4l2Stream::next(Frame& out) {
       const Dequeue d = dequeue(out);  // ENODEV says so directly; otherwise count towards the error state
       if (d == Dequeue::frame) return StreamStatus::frame;
       if (d == Dequeue::disconnected) return StreamStatus::disconnected;
+      if (d == Dequeue::ended) return StreamStatus::ended;
       if (d == Dequeue::empty && ++consecutive_queue_errors_ >= kQueueErrorsBeforeDisconnect)
         return StreamStatus::disconnected;
     }

@@ -18,7 +18,9 @@ struct StreamStats {
   std::uint64_t poll_timeouts = 0;   // polls that saw no frame within the timeout
 };
 
-enum class StreamStatus { frame, timeout, disconnected };
+// `ended`: the device said it will send no more (a buffer flagged V4L2_BUF_FLAG_LAST, then EPIPE), as
+// a finite source does; a camera never does. A replayed file ends so (capture/replay/).
+enum class StreamStatus { frame, timeout, disconnected, ended };
 
 class V4l2Stream {
  public:
@@ -35,7 +37,7 @@ class V4l2Stream {
   void stop();   // STREAMOFF; safe to call twice and after a disconnect
 
   // Waits up to poll_timeout_ms() for the next good frame. `disconnected` (ENODEV, or a queue the
-  // driver has put in its error state) ends the take; frames delivered before stay the caller's.
+  // driver has put in its error state) and `ended` end the take; frames delivered before stay the caller's.
   StreamStatus next(Frame& out);
   // Three frame periods, at least 50 ms: long enough for jitter, short enough to notice a stall.
   int poll_timeout_ms() const;
@@ -50,7 +52,7 @@ class V4l2Stream {
     void* start = nullptr;
     std::size_t length = 0;
   };
-  enum class Dequeue { frame, skipped, empty, disconnected };
+  enum class Dequeue { frame, skipped, empty, disconnected, ended };
   Dequeue dequeue(Frame& out);
   void queue(std::uint32_t index);
   void release_buffers() noexcept;
@@ -61,6 +63,7 @@ class V4l2Stream {
   DropCounter drops_;
   StreamStats stats_;
   bool streaming_ = false;
+  bool ended_ = false;  // the driver flagged a buffer LAST
   int consecutive_queue_errors_ = 0;
 };
 

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "capture/storage/press_file_frames.hpp"
 #include "core/error.hpp"
 
 namespace haptex::capture {
@@ -93,10 +94,6 @@ bool is_video_name(const std::string& path) {
   return std::any_of(std::begin(kVideo), std::end(kVideo), [&](const char* v) { return ext == v; });
 }
 
-bool is_press_file_name(const std::string& path) {
-  const std::string ext = lower_extension(path);
-  return ext == ".h5" || ext == ".hdf5";
-}
 
 bool is_image_name(const std::string& path) {
   static const char* const kImage[] = {".png", ".jpg", ".jpeg", ".bmp", ".tif", ".tiff"};

@@ -20,7 +20,7 @@ struct ExtractSettings {
   int reference_frames = 10;   // leading no-contact frames averaged into the reference
   int frames_per_press = 12;   // the peak and its neighbours
   int margin_frames = 10;      // frames before and after the contact kept in each press's score curve
-  int calibration_frames = 25; // inter-frame video: no-contact frames after the reference that set the thresholds
+  int calibration_frames = kCalibrationFrames; // inter-frame video: no-contact frames after the reference that set the thresholds
   // --pixel-threshold and --trigger: replace what the footage (or a given image's floors) gives
   // (contact_score.hpp).
   std::optional<float> pixel_threshold, trigger;

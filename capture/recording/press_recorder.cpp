@@ -103,6 +103,7 @@ std::string capture_loop(V4l2Stream& stream, FrameQueue<TakeFrame>& queue, const
         if (quiet_seconds >= options.stall_seconds) return "stalled";
         break;
       case StreamStatus::disconnected: return "disconnected";
+      case StreamStatus::ended: return "source ended";  // a replayed file's last frame was taken
     }
   }
 }
@@ -177,6 +178,9 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
     stream.stop();
     queue.close();
     worker.join();
+    // A file read faster than it is scored ends while its frames still queue: once they are scored,
+    // the presses asked for may be there, and that is why the take ended.
+    if (ended_by == "source ended" && processor.enough_presses()) ended_by = "presses";
     if (worker.error()) ended_by = "error";
     RecordingResult result;
     result.totals.frames = stream.stats().frames;

@@ -40,7 +40,7 @@ struct RecordingResult {
   std::vector<RecordedPress> presses;
   TakeTotals totals;
   ReferenceSummary reference;
-  std::string ended_by;  // presses, time limit, interrupted, disconnected, stalled
+  std::string ended_by;  // presses, time limit, interrupted, disconnected, stalled, source ended (a replay)
   std::string manifest;
   std::string delivery_warning;  // the take delivered clearly fewer frames than granted; empty otherwise
   bool device_fault() const { return ended_by == "disconnected" || ended_by == "stalled"; }

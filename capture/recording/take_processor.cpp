@@ -69,7 +69,9 @@ void TakeProcessor::process(TakeFrame&& frame) {
     if (!small.empty()) collect_reference(frame, small);
     return;
   }
-  record(std::move(frame), small.empty() ? kNaN : contact_->score(small));
+  const float score = small.empty() ? kNaN : contact_->score(small);
+  if (!segmenter_) return calibrate(score);
+  record(std::move(frame), score);
 }
 
 // Averages reference_frames decodable, non-black frames; if they were not steady (the user touched
@@ -84,19 +86,38 @@ void TakeProcessor::collect_reference(const TakeFrame& frame, const cv::Mat& sma
   if (int(reference_small_.size()) < options_.reference_frames) return;
 
   ContactReference candidate = ContactReference::from_frames(reference_small_, score_);
-  if (!candidate.steady()) {
-    if (++reference_restarts_ > kMaxReferenceRestarts)
-      throw failure(session_.identity.path + ": the sensor image did not settle into a steady no-contact reference; "
-                    "keep the sensor untouched for the first seconds of the take");
-    reference_small_.clear();
-    reference_sum_.release();
-    return;
-  }
   reference_sum_.convertTo(reference_image_, CV_8UC3, 1.0 / double(reference_small_.size()));
-  contact_ = candidate;
-  segmenter_.emplace(contact_->segmenter(options_.segmenter));
   reference_small_.clear();
   reference_sum_.release();
+  // With calibration frames to come, steadiness is judged by the thresholds they give.
+  if (options_.calibration_frames > 0) {
+    contact_ = candidate;
+    return;
+  }
+  if (!candidate.steady()) return restart_reference();
+  contact_ = candidate;
+  start_recording();
+}
+
+void TakeProcessor::restart_reference() {
+  if (++reference_restarts_ > kMaxReferenceRestarts)
+    throw failure(session_.identity.path + ": the sensor image did not settle into a steady no-contact reference; "
+                  "keep the sensor untouched for the first seconds of the take");
+  contact_.reset();
+  calibration_scores_.clear();
+}
+
+void TakeProcessor::calibrate(float score) {
+  calibration_scores_.push_back(score);
+  if (int(calibration_scores_.size()) < options_.calibration_frames) return;
+  const ContactReference calibrated = contact_->calibrated(calibration_scores_, score_);
+  if (!calibrated.steady()) return restart_reference();
+  contact_ = calibrated;
+  start_recording();
+}
+
+void TakeProcessor::start_recording() {
+  segmenter_.emplace(contact_->segmenter(options_.segmenter));
   if (progress_) progress_(0, std::size_t(options_.presses), "reference taken; press the sensor");
 }
 

@@ -27,6 +27,10 @@
 
 namespace haptex::capture {
 
+// Inter-frame video: the no-contact frames after the reference whose scores set the level
+// (ContactReference::calibrated); a second at 25 fps.
+constexpr int kCalibrationFrames = 25;
+
 struct ScoreSettings {
   // Footage: t = noise_threshold x the reference frames' per-pixel noise (a soft threshold: most of
   // the noise goes, a press of a few noise levels stays), and trigger = level + max(level_factor x

@@ -68,8 +68,12 @@ cv::Mat scoring_image_from_jpeg(std::span<const std::uint8_t> jpeg, cv::Size fra
 cv::Mat scoring_image_from_yuyv(std::span<const std::uint8_t> yuyv, cv::Size frame) {
   if (yuyv.size() != std::size_t(frame.width) * frame.height * 2) return {};
   const cv::Mat packed(frame.height, frame.width, CV_8UC2, const_cast<std::uint8_t*>(yuyv.data()));
-  cv::Mat grey;
-  cv::extractChannel(packed, grey, 0);
+  cv::Mat luma, grey;
+  cv::extractChannel(packed, luma, 0);
+  // UVC sends luma in video range (16..235). Stretched to 0..255 it is the grey level of the decoded
+  // frame, which press files store (PNG) and extraction scores: live and offline scores and thresholds
+  // share one scale.
+  luma.convertTo(grey, CV_8U, 255.0 / 219, -16 * 255.0 / 219);
   return scoring_image(grey);
 }
 

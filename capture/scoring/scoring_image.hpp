@@ -25,7 +25,8 @@ cv::Mat scoring_image_from_jpeg(std::span<const std::uint8_t> jpeg, cv::Size fra
 // cameras add. A cut-off frame lacks EOI; libjpeg would still "decode" it, the missing part grey,
 // and that would score as contact.
 bool is_complete_jpeg(std::span<const std::uint8_t> jpeg);
-// From packed YUYV (4:2:2) bytes: the Y samples are the grey image. Empty Mat on a size mismatch.
+// From packed YUYV (4:2:2) bytes: the Y samples (BT.601 video range) are the grey image. Empty Mat on
+// a size mismatch.
 cv::Mat scoring_image_from_yuyv(std::span<const std::uint8_t> yuyv, cv::Size frame);
 // r: the block size (1, 2, 4 or 8) used for a frame of this size.
 int jpeg_reduction(cv::Size frame);

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <linux/videodev2.h>
 
+#include <chrono>
 #include <thread>
 
 #include "capture/device/format_negotiation.hpp"
@@ -25,7 +26,7 @@ Streamed stream_frames(V4l2Stream& stream, std::size_t frames) {
   while (out.frames.size() < frames && quiet < 50) {
     Frame f;
     out.last = stream.next(f);
-    if (out.last == StreamStatus::disconnected) break;
+    if (out.last == StreamStatus::disconnected || out.last == StreamStatus::ended) break;
     if (out.last == StreamStatus::timeout) {
       ++out.timeouts;
       ++quiet;
@@ -157,6 +158,96 @@ TEST_F(StreamTest, RealTimeCameraLosesFramesTheHostDoesNotCollect) {
   ASSERT_EQ(s.frames.size(), 10u);
   EXPECT_GE(camera_->stats().host_drops, 10u);
   EXPECT_GE(stream_->drops().dropped(), 10u) << "the host sees the gap in sequence numbers";
+}
+
+// The synthetic gel for `frames` frames, then nothing: what a replayed file is to the camera.
+class FiniteScene : public CameraScene {
+ public:
+  FiniteScene(const FakeMode& mode, std::uint64_t frames)
+      : scene_(mode.fourcc, int(mode.width), int(mode.height), fixtures::quick_presses()), frames_(frames) {}
+  const std::vector<std::uint8_t>* frame(std::uint64_t k) override { return k < frames_ ? scene_.frame(k) : nullptr; }
+
+ private:
+  FakeScene scene_;
+  std::uint64_t frames_;
+};
+
+FakeCameraConfig finite_camera(std::uint64_t frames, double fps = 30) {
+  FakeCameraConfig config = fixtures::small_camera(V4L2_PIX_FMT_MJPEG, 320, 240, fps);
+  config.film = [frames](const FakeMode& mode) { return std::make_unique<FiniteScene>(mode, frames); };
+  return config;
+}
+
+TEST_F(StreamTest, AFiniteSceneEndsTheStreamAfterItsLastFrame) {
+  open(finite_camera(25));
+  const Streamed s = stream_frames(*stream_, 1000);
+  EXPECT_EQ(s.last, StreamStatus::ended);
+  ASSERT_EQ(s.frames.size(), 25u) << "every frame, then the end";
+  for (std::size_t i = 0; i < s.frames.size(); ++i) EXPECT_EQ(s.frames[i].sequence, i);
+  EXPECT_EQ(stream_->stats().error_buffers, 0u) << "the empty LAST buffer is no error buffer";
+  EXPECT_EQ(stream_->drops().dropped(), 0u) << "nor a loss";
+  Frame f;
+  EXPECT_EQ(stream_->next(f), StreamStatus::ended) << "and it stays ended";
+  // What the driver says from now on, as vb2 does after a LAST buffer: readable, and DQBUF fails with EPIPE.
+  pollfd p{device_->fd(), POLLIN, 0};
+  EXPECT_EQ(camera_->poll(&p, 1, 100), 1);
+  EXPECT_TRUE(p.revents & POLLIN);
+  v4l2_buffer b{};
+  b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+  b.memory = V4L2_MEMORY_MMAP;
+  EXPECT_EQ(device_->try_ioctl(VIDIOC_DQBUF, &b), EPIPE);
+  v4l2_capability caps{};
+  EXPECT_EQ(device_->try_ioctl(VIDIOC_QUERYCAP, &caps), 0) << "ended, not unplugged";
+}
+
+TEST_F(StreamTest, AFiniteSceneEndsEvenWhenItsLastFramesAreLost) {
+  FakeCameraConfig config = finite_camera(200);
+  config.drop_percent = 30;
+  open(config);
+  const Streamed s = stream_frames(*stream_, 1000);
+  EXPECT_EQ(s.last, StreamStatus::ended);
+  const auto& fake = camera_->stats();
+  EXPECT_EQ(fake.produced, 200u);
+  EXPECT_GT(fake.camera_drops, 20u);
+  EXPECT_EQ(s.frames.size() + fake.camera_drops, 200u) << "every frame the scene had is accounted for";
+  // Losses before the first and after the last delivered frame leave no gap to see; the others are counted.
+  const std::uint64_t unseen = s.frames.front().sequence + (199 - s.frames.back().sequence);
+  EXPECT_EQ(stream_->drops().dropped() + unseen, fake.camera_drops);
+}
+
+TEST_F(StreamTest, AFiniteSceneEndsInRealTimeOnePeriodAfterItsLastFrame) {
+  FakeCameraConfig config = finite_camera(20, 100);
+  config.realtime = true;
+  const auto start = std::chrono::steady_clock::now();
+  open(config);
+  const Streamed s = stream_frames(*stream_, 1000);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(s.last, StreamStatus::ended);
+  EXPECT_EQ(s.frames.size(), 20u);
+  EXPECT_GE(seconds, 0.19) << "20 frames at 100 fps are played at their rate, not at once";
+  EXPECT_EQ(s.timeouts, 0) << "the end is no stall";
+}
+
+// A scene that takes longer than a frame period to make each frame, like a large replayed video.
+class SlowScene : public FiniteScene {
+ public:
+  using FiniteScene::FiniteScene;
+  const std::vector<std::uint8_t>* frame(std::uint64_t k) override {
+    std::this_thread::sleep_for(std::chrono::milliseconds(15));
+    return FiniteScene::frame(k);
+  }
+};
+
+TEST_F(StreamTest, ASlowSceneInRealTimePlaysSlowerInsteadOfLosingFrames) {
+  FakeCameraConfig config = finite_camera(20, 100);  // a period of 10 ms, each frame taking 15 to make
+  config.film = [](const FakeMode& mode) { return std::make_unique<SlowScene>(mode, 20); };
+  config.realtime = true;
+  open(config, 4);
+  const Streamed s = stream_frames(*stream_, 1000);
+  EXPECT_EQ(s.last, StreamStatus::ended);
+  EXPECT_EQ(s.frames.size(), 20u);
+  EXPECT_EQ(camera_->stats().host_drops, 0u) << "the camera's own slowness is not the host's";
+  EXPECT_EQ(stream_->drops().dropped(), 0u);
 }
 
 }  // namespace

@@ -61,9 +61,17 @@ TEST(ScoringImage, YuyvUsesTheLumaSamples) {
   const cv::Mat frame = gel(320, 240);
   const cv::Mat from_yuyv = scoring_image_from_yuyv(bgr_to_yuyv(frame), {320, 240});
   const cv::Mat from_bgr = scoring_image(frame);
+  // Luma comes in video range (16..235) and is scored on the decoded frame's grey scale.
   cv::Mat d;
   cv::absdiff(from_yuyv, from_bgr, d);
   EXPECT_LT(cv::mean(d)[0], 1.0);
+  std::vector<std::uint8_t> yuyv = bgr_to_yuyv(frame);
+  cv::Mat luma;
+  cv::extractChannel(cv::Mat(240, 320, CV_8UC2, yuyv.data()), luma, 0);
+  double low = 0, high = 0;
+  cv::minMaxLoc(luma, &low, &high);
+  EXPECT_GE(low, 16.0);
+  EXPECT_LE(high, 235.0);
 }
 
 }  // namespace

@@ -1,0 +1,43 @@
+#include "capture/replay/press_file_scene.hpp"
+
+#include <linux/videodev2.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "capture/device/fake_scene.hpp"
+
+namespace haptex::capture {
+
+FakeMode press_file_replay_mode(const std::string& path) {
+  const PressFileFrames frames(path);
+  FakeMode mode;
+  mode.fourcc = frames.encoding() == "jpeg" ? V4L2_PIX_FMT_MJPEG : V4L2_PIX_FMT_YUYV;
+  mode.width = std::uint32_t(frames.size().width);
+  mode.height = std::uint32_t(frames.size().height);
+  mode.fps = {frames.fps()};
+  return mode;
+}
+
+PressFileScene::PressFileScene(const std::string& path) : frames_(path) {}
+
+const std::vector<std::uint8_t>* PressFileScene::frame(std::uint64_t k) {
+  if (k >= frames_.count()) return nullptr;
+  payload_ = frames_.bytes(std::size_t(k));
+  if (frames_.encoding() == "jpeg") return &payload_;
+  cv::Mat bgr;
+  if (!payload_.empty()) {
+    try {
+      bgr = cv::imdecode(payload_, cv::IMREAD_COLOR);
+    } catch (const cv::Exception&) {
+    }
+  }
+  if (bgr.size() == frames_.size()) {
+    payload_ = bgr_to_yuyv(bgr);
+  } else {
+    // The recorder stored a cut-off raw frame empty: send a third of a frame, as the fake camera's corrupt fault does.
+    payload_.assign(std::size_t(frames_.size().area()) * 2 / 3, 0);
+  }
+  return &payload_;
+}
+
+}  // namespace haptex::capture

@@ -1,0 +1,29 @@
+#pragma once
+// A press file replayed as the sensor sent it: MJPG frames ("jpeg") are the stored bytes exactly, never
+// re-encoded; raw YUYV frames, stored as lossless PNG, become YUYV again. A stored frame that was
+// cut off is sent cut off again, so the recorder counts it corrupt as it did the first time.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "capture/device/camera_scene.hpp"
+#include "capture/device/fake_camera.hpp"
+#include "capture/storage/press_file_frames.hpp"
+
+namespace haptex::capture {
+
+// MJPG or YUYV (what the sensor sent) at the file's frame size and the rate its driver granted.
+// Throws haptex::Error (bad_input) naming the file and object when it is not a press file.
+FakeMode press_file_replay_mode(const std::string& path);
+
+class PressFileScene : public CameraScene {
+ public:
+  explicit PressFileScene(const std::string& path);
+  const std::vector<std::uint8_t>* frame(std::uint64_t k) override;  // nullptr after the last
+
+ private:
+  PressFileFrames frames_;
+  std::vector<std::uint8_t> payload_;
+};
+
+}  // namespace haptex::capture

@@ -1,0 +1,29 @@
+#pragma once
+// Video files through OpenCV's FFmpeg backend, opened the way every haptex reader needs them: quietly
+// (libraries never print), with packets cut short dropped (a copy that stopped early would otherwise
+// end in a concealed, half-grey frame that scores as the strongest contact), and with the codecs that
+// keep frames exactly told apart. Extraction reads videos through it, and so does replay.
+#include <cstdint>
+#include <string>
+
+#include <opencv2/core.hpp>
+#include <opencv2/videoio.hpp>
+
+namespace haptex::capture {
+
+// Throws haptex::Error (bad_input) naming the file when OpenCV cannot open it as a video.
+cv::VideoCapture open_video_file(const std::string& path);
+
+struct VideoProbe {
+  cv::Size size;       // of the first frame
+  double fps = 0;      // 0 when the container does not say (or says something absurd)
+  bool lossless = false;  // FFV1, HuffYUV, PNG or uncompressed: frames as they were made
+  // Lossy with prediction between frames (MPEG-4, H.264 ...): its no-contact frames copy each other's
+  // compression noise, unlike MJPG's, whose frames are each compressed alone.
+  bool inter_frame = false;
+};
+// Opens the video and reads its first frame. Throws haptex::Error (bad_input) naming the file when
+// it does not open or has no readable frame.
+VideoProbe probe_video_file(const std::string& path);
+
+}  // namespace haptex::capture
