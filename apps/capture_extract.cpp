@@ -1,5 +1,6 @@
 // haptex capture extract <press files | videos | folder per material | folder of those> -o gelsight.h5
 // Per press: the peak frame and its neighbours, the reference, the score curve; and a contact sheet PNG.
+#include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -67,7 +68,16 @@ class CaptureExtract : public CaptureSubcommand {
                            {"frame_end", p.frame_end}, {"contact_first", p.contact_first},
                            {"contact_last", p.contact_last}, {"peak_index", p.peak_index}, {"peak_score", p.peak_score},
                            {"contact_sheet", p.contact_sheet}});
-      std::cout << nlohmann::json{{"output", output_}, {"presses", presses}, {"sources", r.sources},
+      nlohmann::json detections = nlohmann::json::array();
+      for (const auto& d : r.detections) {
+        const float snr = d.signal_to_noise();
+        detections.push_back({{"source", d.source}, {"reference", d.reference}, {"presses", d.presses},
+                              {"noise", d.noise}, {"pixel_threshold", d.pixel_threshold}, {"no_contact_level", d.level},
+                              {"trigger", d.trigger}, {"release", d.release}, {"highest_score", d.highest_score},
+                              {"highest_frame", d.highest_frame},
+                              {"signal_to_noise", std::isfinite(snr) ? nlohmann::json(snr) : nlohmann::json()}});
+      }
+      std::cout << nlohmann::json{{"output", output_}, {"presses", presses}, {"detection", detections}, {"sources", r.sources},
                                   {"sources_without_press", r.sources_without_press}, {"frames_scored", r.frames_scored},
                                   {"frames_unreadable", r.frames_unreadable},
                                   {"sheets", r.sheets_dir}}
@@ -75,9 +85,12 @@ class CaptureExtract : public CaptureSubcommand {
                 << "\n";
       return;
     }
-    if (!global.quiet)
-      for (const auto& s : r.sources_without_press) std::cerr << "haptex capture: warning: " << s << ": no press found\n";
     if (global.quiet) return;
+    for (const auto& d : r.detections)
+      if (d.presses == 0) std::cerr << "haptex capture: warning: " << d.source << ": no press found: " << capture::describe(d) << "\n";
+    if (global.verbose)
+      for (const auto& d : r.detections)
+        std::cerr << d.source << ": " << d.presses << " presses; " << capture::describe(d) << "\n";
     if (global.verbose)
       for (const auto& p : r.presses)
         std::cerr << p.source << " -> /materials/" << p.material_id << "/presses/" << p.press << ": frames "

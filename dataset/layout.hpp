@@ -30,6 +30,9 @@ inline constexpr const char* kFrames = "frames";              // the 12 frames a
 inline constexpr const char* kFrameIndices = "frame_indices";
 inline constexpr const char* kContrast = "contrast";          // per-frame contact score
 inline constexpr const char* kChannelOrder = "channel_order"; // attribute of a press and its images (dataset/channel_order.hpp)
+// Attribute of press files and gelsight presses: the contact score of a no-contact frame, which the
+// trigger is a multiple of (docs/capture.md, "Finding presses"); absent in files from before it.
+inline constexpr const char* kNoContactLevel = "no_contact_level";
 
 // Dataset file (align): the model's windows, /windows/...
 inline constexpr const char* kWindows = "windows";

@@ -58,6 +58,7 @@ cv::Mat score_plot(const ContactSheetInput& in, int width) {
   cv::rectangle(plot, {x_of(double(in.contact_first)), top}, {x_of(double(in.contact_last)), bottom}, kContact, cv::FILLED);
   for (float level : {in.trigger, in.release})
     for (int x = left; x < right; x += 8) cv::line(plot, {x, y_of(level)}, {std::min(x + 4, right), y_of(level)}, kGrey);
+  for (int x = left; x < right; x += 4) cv::line(plot, {x, y_of(in.level)}, {x, y_of(in.level)}, kBlue);
   for (std::int64_t k : in.kept) cv::line(plot, {x_of(double(k)), bottom}, {x_of(double(k)), bottom + 6}, kBlue, 2);
   for (std::size_t i = 1; i < in.scores.size(); ++i) {
     const float a = in.scores[i - 1], b = in.scores[i];
@@ -73,7 +74,9 @@ cv::Mat score_plot(const ContactSheetInput& in, int width) {
   text(plot, number(top_score / 1.1f), {4, top + 10}, 0.35);
   text(plot, "0", {30, bottom}, 0.35);
   text(plot, "score", {4, (top + bottom) / 2}, 0.35);
-  text(plot, "orange: contact  blue: stored range  ticks: kept frames  dashed: trigger, release", {right - 560, bottom + 28}, 0.35, kGrey);
+  text(plot, "orange: contact  blue: stored range  ticks: kept frames  dashed: trigger, release  dotted: no-contact level",
+       {right - 700, bottom + 28}, 0.35, kGrey);
+  text(plot, in.detection, {left + 4, top - 3}, 0.35, kGrey);
   return plot;
 }
 

@@ -17,7 +17,8 @@ struct ContactSheetInput {
   std::int64_t contact_first = 0, contact_last = 0;  // contact
   std::int64_t peak_index = 0;
   std::vector<std::int64_t> kept;  // the frames kept for the dataset
-  float trigger = 0, release = 0;
+  float trigger = 0, release = 0, level = 0;  // level: the no-contact score the trigger stands above
+  std::string detection;  // the thresholds and signal-to-noise in words (extract_presses.hpp, describe)
 };
 
 cv::Mat contact_sheet(const ContactSheetInput& input);  // BGR image

@@ -2,6 +2,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
 #include <opencv2/imgcodecs.hpp>
 
 #include "capture/extraction/capture_inputs.hpp"
@@ -30,6 +33,23 @@ cv::Mat load_reference(const std::string& path) {
   if (image.empty())
     throw input_error(path, "", "cannot read the reference image", "Give a PNG or JPEG no-contact frame of the sensor");
   return image;
+}
+
+std::string format(double v) {
+  std::ostringstream s;
+  s << std::setprecision(3) << v;
+  return s.str();
+}
+
+SourceDetection detection_of(const std::string& path, const SourceScores& scores, int presses) {
+  const ContactReference& c = *scores.contact;
+  SourceDetection d{path, scores.reference_note, presses, c.noise(), c.pixel_threshold(), c.level(), c.trigger(), c.release()};
+  for (std::size_t i = 0; i < scores.scores.size(); ++i)
+    if (std::isfinite(scores.scores[i]) && (d.highest_frame < 0 || scores.scores[i] > d.highest_score)) {
+      d.highest_score = scores.scores[i];
+      d.highest_frame = std::int64_t(i);
+    }
+  return d;
 }
 
 std::string relative_to_output(const std::string& file, const std::string& output) {
@@ -62,6 +82,7 @@ class Extraction {
     const SegmenterSettings segmenter = scores.contact->segmenter(settings_.segmenter);
     const auto plans = plan_presses(scores.scores, segmenter, settings_.frames_per_press, settings_.margin_frames);
     if (plans.empty()) result_.sources_without_press.push_back(input.path);
+    result_.detections.push_back(detection_of(input.path, scores, int(plans.size())));
     const std::string sha = plans.empty() ? "" : source->sha256();
     read_press_frames(*source, plans, [&](const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak) {
       write_press(material, *source, scores, sha, plan, std::move(frames), peak);
@@ -69,10 +90,7 @@ class Extraction {
   }
 
   ExtractResult finish() {
-    if (result_.presses.empty())
-      throw failure("no press found in " + std::to_string(result_.sources) +
-                    " input(s); nothing was written. Check the contact sheets' thresholds with --verbose, "
-                    "or give a no-contact image with --reference");
+    if (result_.presses.empty()) throw failure(no_press_message());
     writer_.commit();
     if (sheets_) {
       sheets_->commit();
@@ -84,6 +102,16 @@ class Extraction {
   void count_source() { ++result_.sources; }
 
  private:
+  std::string no_press_message() const {
+    std::string m = "no press found in " + std::to_string(result_.sources) + " input(s); nothing was written.";
+    constexpr std::size_t kShown = 5;
+    for (std::size_t i = 0; i < std::min(kShown, result_.detections.size()); ++i)
+      m += "\n  " + result_.detections[i].source + ": " + describe(result_.detections[i]);
+    if (result_.detections.size() > kShown) m += "\n  ... and " + std::to_string(result_.detections.size() - kShown) + " more";
+    return m + "\nIf the sensor was pressed, give a lower --trigger (above the no-contact level), or a no-contact "
+               "image with --reference";
+  }
+
   void write_press(const std::string& material, const FrameSource& source, const SourceScores& scores,
                    const std::string& sha, const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak) {
     const ContactReference& contact = *scores.contact;
@@ -106,6 +134,7 @@ class Extraction {
     p.reference_note = scores.reference_note;
     p.noise = contact.noise();
     p.pixel_threshold = contact.pixel_threshold();
+    p.level = contact.level();
     p.trigger = contact.trigger();
     p.release = contact.release();
     p.source_frames_unreadable = scores.unreadable_frames + source.frames_missing();
@@ -116,7 +145,7 @@ class Extraction {
       p.contact_sheet = relative_to_output((fs::path(sheets_->final_path()) / sheet_name).string(), output_);
     }
     const int j = writer_.add_press(material, p);
-    if (sheets_) write_sheet(*sheets_, sheet_name, contact_sheet_png(sheet_input(material, j, source, scores, plan, peak)));
+    if (sheets_) write_sheet(*sheets_, sheet_name, contact_sheet_png(sheet_input(material, j, source, scores, plan, peak, result_.detections.back())));
     result_.presses.push_back({material, id, source.path(), j, plan.press_in_source, p.frame_start, p.frame_end,
                                p.contact_first, p.contact_last, p.peak_index, p.peak_score, p.contact_sheet});
   }
@@ -128,7 +157,8 @@ class Extraction {
   }
 
   static ContactSheetInput sheet_input(const std::string& material, int j, const FrameSource& source,
-                                       const SourceScores& scores, const PressPlan& plan, const cv::Mat& peak) {
+                                       const SourceScores& scores, const PressPlan& plan, const cv::Mat& peak,
+                                       const SourceDetection& detection) {
     ContactSheetInput in;
     in.title = material + "  press " + std::to_string(j) + "  " + fs::path(source.path()).filename().string() +
                "  frames " + std::to_string(plan.range_first) + "-" + std::to_string(plan.range_last) + ", contact " +
@@ -144,6 +174,10 @@ class Extraction {
     in.kept = plan.frame_indices;
     in.trigger = scores.contact->trigger();
     in.release = scores.contact->release();
+    in.level = scores.contact->level();
+    in.detection = "no-contact level " + format(detection.level) + "  trigger " + format(detection.trigger) + "  release " +
+                   format(detection.release) + "  pixel threshold " + format(detection.pixel_threshold) + "  noise " +
+                   format(detection.noise) + "  signal-to-noise " + format(detection.signal_to_noise());
     return in;
   }
 
@@ -156,6 +190,17 @@ class Extraction {
 };
 
 }  // namespace
+
+float SourceDetection::signal_to_noise() const {
+  return level > 0 ? highest_score / level : std::numeric_limits<float>::infinity();
+}
+
+std::string describe(const SourceDetection& d) {
+  std::string s = "highest score " + format(d.highest_score) + " (frame " + std::to_string(d.highest_frame) + "), trigger " +
+                  format(d.trigger) + " over a no-contact level of " + format(d.level);
+  if (d.level > 0) s += " (signal-to-noise " + format(d.signal_to_noise()) + ", a press needs " + format(d.trigger / d.level) + ")";
+  return s + "; per-pixel threshold " + format(d.pixel_threshold) + " grey levels, noise " + format(d.noise);
+}
 
 std::string default_sheets_dir(const std::string& output) {
   fs::path p(output);

@@ -30,8 +30,23 @@ struct ExtractedPressSummary {
   std::string contact_sheet;
 };
 
+// What a source's presses were judged by, so a user sees why one was or was not found.
+struct SourceDetection {
+  std::string source, reference;  // reference: where the no-contact reference came from
+  int presses = 0;
+  float noise = 0, pixel_threshold = 0, level = 0, trigger = 0, release = 0;
+  float highest_score = 0;  // the source's strongest frame
+  std::int64_t highest_frame = -1;
+  // The strongest frame over the no-contact level: the score's signal-to-noise. The trigger asks for
+  // trigger / level (3 by default). Infinite when the level is 0 (a given image, a quiet sensor).
+  float signal_to_noise() const;
+};
+// One line: the strongest frame, the trigger, the level and the signal-to-noise.
+std::string describe(const SourceDetection& d);
+
 struct ExtractResult {
   std::vector<ExtractedPressSummary> presses;
+  std::vector<SourceDetection> detections;  // one per source, in input order
   std::vector<std::string> sources_without_press;
   std::size_t sources = 0;
   std::int64_t frames_scored = 0;

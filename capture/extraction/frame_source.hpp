@@ -44,7 +44,7 @@ class FrameSource {
   // A source that carries its own no-contact reference and thresholds (press files).
   struct StoredReference {
     cv::Mat image;  // BGR
-    float noise = 0, pixel_threshold = 0, trigger = 0;
+    float noise = 0, pixel_threshold = 0, trigger = 0, level = 0;  // level 0: a file from before it was stored
   };
   virtual std::optional<StoredReference> stored_reference() const { return std::nullopt; }
   // The material a source names itself (press files); empty for videos.

@@ -27,10 +27,12 @@ void set_press_attributes(h5::Group& g, const GelsightPress& p) {
   g.set_attr(layout::kChannelOrder, dataset::channel_order_name(dataset::kWrittenChannelOrder));
   if (p.fps > 0) g.set_attr("fps", p.fps);
   g.set_attr("reference_source", p.reference_note);
-  g.set_attr("score_method", "mean over the grey image averaged in 2, 4 or 8 pixel blocks of max(0, |d - median(d)| - pixel_threshold), "
-                             "d = frame - reference (docs/capture.md)");
+  g.set_attr("score_method", "mean over the grey image averaged in 2, 4 or 8 pixel blocks of max(0, |d - drift(d)| - pixel_threshold), "
+                             "d = frame - reference, drift = the robust least-squares fit of an offset and a multiple of the "
+                             "reference (docs/capture.md)");
   g.set_attr("noise", double(p.noise));
   g.set_attr("pixel_threshold", double(p.pixel_threshold));
+  g.set_attr(layout::kNoContactLevel, double(p.level));
   g.set_attr("trigger", double(p.trigger));
   g.set_attr("release", double(p.release));
   if (!p.contact_sheet.empty()) g.set_attr("contact_sheet", p.contact_sheet);

@@ -27,7 +27,7 @@ struct GelsightPress {
   std::vector<float> contrast;                      // scores of frame_start..frame_end
   double fps = 0;                                   // 0: unknown
   std::string reference_note;
-  float noise = 0, pixel_threshold = 0, trigger = 0, release = 0;
+  float noise = 0, pixel_threshold = 0, level = 0, trigger = 0, release = 0;
   std::string contact_sheet;                        // path of its PNG relative to the gelsight file, or empty
   std::int64_t source_frames_unreadable = 0;        // frames of the source that did not decode (none is kept)
 };

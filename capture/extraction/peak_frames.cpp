@@ -30,8 +30,9 @@ class LeadingReference {
     if (contact.steady()) return;
     throw input_error(path_, "frames " + std::to_string(first_) + "-" + std::to_string(indices_.back()),
                       "the first " + std::to_string(settings_.reference_frames) +
-                          " frames are not a steady no-contact stretch (one differs from the others' mean by a score of " +
-                          std::to_string(contact.worst_reference_score()) + ", a press's)",
+                          " frames are not a steady no-contact stretch (two in a row differ from the others' mean by a score of " +
+                          std::to_string(contact.worst_reference_score()) + ", over the trigger " +
+                          std::to_string(contact.trigger()) + ")",
                       "Start the video with at least " + std::to_string(settings_.reference_frames) +
                           " frames without contact, or give a no-contact image with --reference");
   }
@@ -96,7 +97,8 @@ std::optional<ContactReference> given_reference(FrameSource& source, const Extra
   if (const auto stored = source.stored_reference()) {
     out.reference = stored->image;
     out.reference_note = "stored in the press file (mean of the session's no-contact frames)";
-    return ContactReference(scoring_image(stored->image), stored->noise, stored->pixel_threshold, stored->trigger);
+    return ContactReference(scoring_image(stored->image), stored->noise, stored->pixel_threshold, stored->trigger,
+                            stored->level);
   }
   return std::nullopt;
 }

@@ -29,6 +29,7 @@ class PressFileSource : public FrameSource {
     reference_.noise = float(root.attr_double("noise"));
     reference_.pixel_threshold = float(root.attr_double("pixel_threshold"));
     reference_.trigger = float(root.attr_double("trigger"));
+    if (root.has_attr(layout::kNoContactLevel)) reference_.level = float(root.attr_double(layout::kNoContactLevel));
   }
 
   const std::string& path() const override { return frames_.path(); }

@@ -107,6 +107,7 @@ PressFileSummary PressFileWriter::finish(const std::string& ended_by) {
   root.set_attr("noise", double(info_.noise));
   root.set_attr("pixel_threshold", double(info_.pixel_threshold));
   root.set_attr("trigger", double(info_.trigger));
+  root.set_attr(layout::kNoContactLevel, double(info_.level));
   frames_.reset();
   file_->commit();
   return summary_;

@@ -26,7 +26,7 @@ struct PressFileInfo {
   int width = 0, height = 0;
   double fps = 0, requested_fps = 0;
   std::string locked_controls = "[]", missing_controls = "[]";  // JSON arrays, as in the session manifest
-  float noise = 0, pixel_threshold = 0, trigger = 0;
+  float noise = 0, pixel_threshold = 0, trigger = 0, level = 0;
   std::string provenance;
 };
 

@@ -30,7 +30,7 @@ struct SessionDescription {
 };
 
 struct ReferenceSummary {
-  float noise = 0, pixel_threshold = 0, trigger = 0, release = 0;
+  float noise = 0, pixel_threshold = 0, level = 0, trigger = 0, release = 0;
 };
 
 struct RecordedPress {

@@ -169,6 +169,7 @@ void TakeProcessor::open_press(const PressInterval& contact) {
   info.noise = contact_->noise();
   info.pixel_threshold = contact_->pixel_threshold();
   info.trigger = contact_->trigger();
+  info.level = contact_->level();
   info.provenance = session_.command;
   writer_ = std::make_unique<PressFileWriter>((std::filesystem::path(output_dir_) / current_.file).string(), info,
                                               reference_image_);
@@ -233,7 +234,7 @@ void TakeProcessor::write_manifest(const std::string& ended_by, const std::strin
 
 ReferenceSummary TakeProcessor::reference_summary() const {
   if (!contact_) return {};
-  return {contact_->noise(), contact_->pixel_threshold(), contact_->trigger(), contact_->release()};
+  return {contact_->noise(), contact_->pixel_threshold(), contact_->level(), contact_->trigger(), contact_->release()};
 }
 
 void TakeProcessor::end_of_take(const std::string& ended_by, const TakeTotals& totals, const std::string& error) {

@@ -41,13 +41,12 @@ double median_abs(std::size_t n, const Value& value) {
 }
 
 // The median of the leave-one-out scores and their robust spread (1.4826 x the median absolute
-// deviation), and the largest.
+// deviation).
 struct Spread {
-  float level = 0, spread = 0, worst = 0;
+  float level = 0, spread = 0;
 };
 Spread spread_of(std::vector<float> scores) {
   Spread s;
-  s.worst = *std::max_element(scores.begin(), scores.end());
   auto middle = scores.begin() + std::ptrdiff_t(scores.size() / 2);
   std::nth_element(scores.begin(), middle, scores.end());
   s.level = *middle;
@@ -68,32 +67,42 @@ float footage_trigger(float level, const ScoreSettings& settings) {
 DriftFit::DriftFit(const cv::Mat& reference, bool gain) {
   CV_Assert(reference.type() == CV_32F && reference.isContinuous());
   centred_ = gain ? centred(reference.clone()) : cv::Mat::zeros(reference.size(), CV_32F);
-  // The offset's column of ones is orthogonal to the centred reference; a flat reference (or no
-  // gain) leaves the gain column empty and the pseudo-inverse drops it.
-  const double g = centred_.dot(centred_);
-  inverse_ = cv::Matx22d(1.0 / double(reference.total()), 0.0, 0.0, g > 0 ? 1.0 / g : 0.0);
+  // The columns: ones, the centred reference (gain), and centred x and y ramps (tilt). A flat
+  // reference (or no gain) leaves the gain column empty and the SVD solve drops it.
+  const int w = reference.cols, h = reference.rows;
+  x_.resize(std::size_t(w));
+  y_.resize(std::size_t(h));
+  for (int i = 0; i < w; ++i) x_[std::size_t(i)] = float((i + 0.5) / w - 0.5);
+  for (int j = 0; j < h; ++j) y_[std::size_t(j)] = float((j + 0.5) / h - 0.5);
+  cv::Matx44d gram = cv::Matx44d::zeros();
+  const float* g = centred_.ptr<float>();
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const cv::Vec4d b(1.0, g[std::size_t(j) * std::size_t(w) + std::size_t(i)], x_[std::size_t(i)], y_[std::size_t(j)]);
+      gram += b * b.t();
+    }
+  cv::invert(gram, inverse_, cv::DECOMP_SVD);
 }
 
 float DriftFit::score(const cv::Mat& image, const cv::Mat& reference, float pixel_threshold) const {
   CV_Assert(image.type() == CV_32F && reference.type() == CV_32F && image.size() == reference.size() && image.isContinuous());
+  const int w = image.cols;
   const std::size_t n = image.total();
   const float *f = image.ptr<float>(), *ref = reference.ptr<float>(), *g = centred_.ptr<float>();
-  const auto residual = [&](std::size_t i, const cv::Vec2d& c) { return double(f[i] - ref[i]) - c[0] - c[1] * g[i]; };
+  const auto basis = [&](std::size_t i) { return cv::Vec4d(1.0, g[i], x_[i % std::size_t(w)], y_[i / std::size_t(w)]); };
+  const auto residual = [&](std::size_t i, const cv::Vec4d& c) { return double(f[i] - ref[i]) - c.dot(basis(i)); };
   // Least squares over every pixel, then again over the pixels that fit (|r| within 3 robust
   // standard deviations): a press pulls the first fit, not the second.
-  cv::Vec2d moments(0, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double d = double(f[i] - ref[i]);
-    moments += cv::Vec2d(d, d * g[i]);
-  }
-  cv::Vec2d c = inverse_ * moments;
+  cv::Vec4d moments = cv::Vec4d::all(0);
+  for (std::size_t i = 0; i < n; ++i) moments += basis(i) * double(f[i] - ref[i]);
+  cv::Vec4d c = inverse_ * moments;
   const double cut = 3 * 1.4826 * median_abs(n, [&](std::size_t i) { return residual(i, c); });
   if (cut > 0) {
-    cv::Matx22d gram = cv::Matx22d::zeros();
-    moments = cv::Vec2d(0, 0);
+    cv::Matx44d gram = cv::Matx44d::zeros();
+    moments = cv::Vec4d::all(0);
     for (std::size_t i = 0; i < n; ++i) {
       if (std::abs(residual(i, c)) > cut) continue;
-      const cv::Vec2d b(1.0, g[i]);
+      const cv::Vec4d b = basis(i);
       gram += b * b.t();
       moments += b * double(f[i] - ref[i]);
     }
@@ -138,7 +147,10 @@ ContactReference ContactReference::from_frames(const std::vector<cv::Mat>& frame
   for (const auto& f : frames) scores.push_back(contact_score(f, (sum - f) / double(frames.size() - 1), t));
   const Spread s = spread_of(scores);
   ContactReference r(mean, noise, t, footage_trigger(s.level, settings), s.level, s.spread);
-  r.worst_reference_score_ = s.worst;
+  // What a press would show: two frames in a row (the lower of the two). A lone odd frame, such as
+  // the first an encoder writes at another quality, is no press, as the segmenter judges it too.
+  for (std::size_t i = 1; i < scores.size(); ++i)
+    r.worst_reference_score_ = std::max(r.worst_reference_score_, std::min(scores[i - 1], scores[i]));
   // A press during the reference frames raises most of their scores, and so the level it would be
   // judged by; but it changes the image from the first frames to the last, where noise does not:
   // the first half's mean against the second half's scores about 0.6 of a single frame's level
@@ -157,11 +169,14 @@ ContactReference ContactReference::calibrated(const std::vector<float>& scores, 
   std::vector<float> finite;
   for (float v : scores)
     if (std::isfinite(v)) finite.push_back(v);
-  if (finite.empty() || settings.trigger || settings.pixel_threshold) return *this;
-  const Spread s = spread_of(finite);
-  ContactReference r(mean_, noise_, pixel_threshold_, footage_trigger(s.level, settings), s.level, s.spread);
-  r.worst_reference_score_ = worst_reference_score_;
-  r.steady_limit_ = r.trigger_;  // the reference frames' own noise says little here (inter-frame video)
+  ContactReference r = *this;
+  if (!finite.empty() && !settings.trigger && !settings.pixel_threshold) {
+    const Spread s = spread_of(finite);
+    r.level_ = s.level;
+    r.spread_ = s.spread;
+    r.trigger_ = footage_trigger(s.level, settings);
+  }
+  r.steady_limit_ = r.trigger_;  // the reference frames' own trend says little here: they copy each other
   return r;
 }
 

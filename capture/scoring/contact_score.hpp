@@ -3,10 +3,10 @@
 // slow lighting drift, and when that is contact (docs/capture.md, "Finding presses"):
 //
 //   d     = frame - reference, per pixel of the scoring images (scoring_image.hpp)
-//   r     = d - drift(d)         drift: the least-squares fit of an offset and a gain (a multiple of
-//                                the reference: exposure and LED changes scale the image), refitted
-//                                without the pixels that do not fit, so a press does not move it. No
-//                                tilt: a broad press near an edge looks like one, and is not drift
+//   r     = d - drift(d)         drift: the least-squares fit of an offset, a gain (a multiple of
+//                                the reference: exposure and LED changes scale the image) and a tilt
+//                                (x and y ramps: a light warming unevenly), refitted without the
+//                                pixels that do not fit, so a press does not move it
 //   score = mean over pixels of max(0, |r| - t)      in grey levels
 //
 // With a reference taken from the footage itself (its leading no-contact frames, or a live take's),
@@ -34,10 +34,11 @@ constexpr int kCalibrationFrames = 25;
 struct ScoreSettings {
   // Footage: t = noise_threshold x the reference frames' per-pixel noise (a soft threshold: most of
   // the noise goes, a press of a few noise levels stays), and trigger = level + max(level_factor x
-  // level, min_trigger). A press that scores 3 times the no-contact level rises above it; the level
-  // doubling with drift and compression flicker does not (docs/capture.md has the figures).
+  // level, min_trigger). A press that scores 2.5 times the no-contact level rises above it; drift
+  // and compression flicker, which move the score by up to 1.2 times the level, do not
+  // (docs/capture.md, "Finding presses", has the figures).
   float noise_threshold = 1.0f;
-  float level_factor = 2.0f;
+  float level_factor = 1.5f;
   float min_trigger = 0.05f;  // grey levels: below any press a person sees
   // A single given image (its noise unknown): t and the trigger. Lossy images (JPEG) differ from
   // later frames by a few grey levels of compression; lossless ones (PNG) only by noise.
@@ -62,8 +63,9 @@ class DriftFit {
   float score(const cv::Mat& scoring_image, const cv::Mat& reference, float pixel_threshold) const;
 
  private:
-  cv::Mat centred_;      // the gain column: the reference, centred (zeros without gain)
-  cv::Matx22d inverse_;  // of the Gram matrix of [1, centred_]
+  cv::Mat centred_;            // the gain column: the reference, centred (zeros without gain)
+  std::vector<float> x_, y_;   // the tilt columns, per image column and row
+  cv::Matx44d inverse_;        // of the Gram matrix of [1, centred_, x, y]
 };
 
 class ContactReference {
@@ -87,12 +89,13 @@ class ContactReference {
   // The same reference with the level, spread and trigger taken from these no-contact scores instead
   // of the reference frames' own (for inter-frame video, whose first frames copy each other's
   // compression noise; the median and its spread are robust to a press in under half of them).
-  // With a --trigger or --pixel-threshold of the user's, or no scores, the reference is unchanged.
+  // With a --trigger or --pixel-threshold of the user's, or no scores, the thresholds stay. Either
+  // way steadiness is then judged by the trigger alone: frames that copy each other show no trend.
   ContactReference calibrated(const std::vector<float>& scores, const ScoreSettings& settings) const;
-  // The reference frames were a steady no-contact stretch: none counts as contact, and they do not
-  // change from the first to the last as a press coming or going does.
+  // The reference frames were a steady no-contact stretch: no two in a row count as contact, and
+  // they do not change from the first to the last as a press coming or going does.
   bool steady() const { return worst_reference_score_ <= steady_limit_; }
-  float worst_reference_score() const { return worst_reference_score_; }
+  float worst_reference_score() const { return worst_reference_score_; }  // the lower of the worst two in a row
   // The segmentation thresholds, over the level, with the rest of `base`.
   SegmenterSettings segmenter(SegmenterSettings base) const;
 
