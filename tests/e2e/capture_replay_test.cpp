@@ -16,6 +16,7 @@
 #include "tests/support/npy.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/temp_dir.hpp"
+#include "tests/support/weak_footage.hpp"
 
 namespace haptex::test {
 namespace {
@@ -84,6 +85,35 @@ TEST_F(ReplayCli, TheGsroboticsVideoCutsTheSamePressesLiveAsOffline) {
     EXPECT_LE(std::abs(l["peak_frame"].get<int>() - o["peak_index"].get<int>()), 2) << "press " << j;
     EXPECT_EQ(l["ended_by"], "release");
   }
+}
+
+// A weak press in a small MPEG-4 video (docs/capture.md, "Finding presses"): frames predicted from
+// each other copy their compression noise, so live, as offline, the thresholds come from the 25
+// frames after the reference, and the recorder cuts the press extraction finds.
+TEST_F(ReplayCli, AWeakMpeg4PressIsCutLiveAsOffline) {
+  const std::string video = dir_.file("weak.avi");
+  const capture::fixtures::PressTiming timing;
+  capture::fixtures::write_weak_video(video, capture::fixtures::press_sequence(capture::fixtures::synthetic_gel(),
+                                                                               capture::fixtures::synthetic_gel_pressed(), timing),
+                                      capture::fixtures::synthetic_gel(), {}, cv::VideoWriter::fourcc('m', 'p', '4', 'v'));
+  const CommandResult live = record("replay:" + video + ",lockstep", "live", {"--warmup", "0"});
+  ASSERT_EQ(live.exit_code, 0) << live.err;
+  const nlohmann::json m = manifest("live");
+  const CommandResult offline = run_haptex({"capture", "extract", video, "--material", "Finger", "-o", dir_.file("g.h5"),
+                                            "--json", "--no-sheets"});
+  ASSERT_EQ(offline.exit_code, 0) << offline.err;
+  const nlohmann::json x = nlohmann::json::parse(offline.out);
+  ASSERT_EQ(m["presses"].size(), 1u) << live.out;
+  ASSERT_EQ(x["presses"].size(), 1u) << offline.out;
+  const nlohmann::json &l = m["presses"][0], &o = x["presses"][0];
+  EXPECT_LE(std::abs(l["contact_first"].get<int>() - o["contact_first"].get<int>()), 1);
+  EXPECT_LE(std::abs(l["peak_frame"].get<int>() - o["peak_index"].get<int>()), 2);
+  EXPECT_GE(o["peak_index"].get<int>(), timing.first_contact());
+  EXPECT_LE(o["peak_index"].get<int>(), timing.last_contact());
+  // The same no-contact level, from the same frames scored alike (a JPEG re-encoding apart).
+  const double live_level = m["recorder"]["no_contact_level"], offline_level = x["detection"][0]["no_contact_level"];
+  EXPECT_NEAR(live_level, offline_level, 0.1 * offline_level);
+  EXPECT_GT(offline_level, 0.0);
 }
 
 // At the file's rate: the take lasts as long as the video, and every frame is taken or counted lost.

@@ -13,7 +13,7 @@
 #include "capture/device/fake_scene.hpp"
 #include "capture/extraction/frame_source.hpp"
 #include "capture/extraction/peak_frames.hpp"
-#include "tests/capture/weak_footage.hpp"
+#include "tests/support/weak_footage.hpp"
 #include "tests/support/npy.hpp"
 #include "tests/support/temp_dir.hpp"
 

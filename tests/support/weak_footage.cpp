@@ -1,4 +1,4 @@
-#include "tests/capture/weak_footage.hpp"
+#include "tests/support/weak_footage.hpp"
 
 #include <algorithm>
 #include <stdexcept>
