@@ -118,9 +118,10 @@ TEST_F(ExtractCli, FindsThePeaksOfSynthPressVideos) {
     const nlohmann::json truth = nlohmann::json::parse(std::ifstream(press.string() + ".json"));
     EXPECT_EQ(p["press_in_source"], 0);
     EXPECT_EQ(p["material"], truth["material"]);
-    // Within 3 frames: the faint, broad presses of a polished surface share a little of their change
-    // with the drift fit's tilt, which moves the peak up to 3 frames along its plateau (docs/capture.md).
-    EXPECT_NEAR(p["peak_index"].get<double>(), truth["peak_frame"].get<double>(), 3.0) << press;
+    // Within 4 frames: the faint presses of a polished surface, as broad as the gel, share part of
+    // their change with the drift fit's tilt, which moves the peak up to 4 frames earlier along its
+    // plateau (docs/capture.md, "The contact score").
+    EXPECT_NEAR(p["peak_index"].get<double>(), truth["peak_frame"].get<double>(), 4.0) << press;
     EXPECT_LE(p["contact_first"].get<int>(), truth["peak_frame"].get<int>());
     EXPECT_GE(p["contact_last"].get<int>(), truth["peak_frame"].get<int>());
   }
