@@ -10,15 +10,16 @@
 
 #include "apps/command.hpp"
 #include "apps/terminal_progress.hpp"
-#include "core/output_is_input.hpp"
 #include "core/error.hpp"
+#include "core/output_is_input.hpp"
+#include "core/text/format.hpp"
 #include "evaluate/report_writer.hpp"
 #include "evaluate/run_evaluation.hpp"
 #include "evaluate/truth_comparison.hpp"
-#include "synth/truth_file.hpp"
 #include "predict/model_file.hpp"
 #include "qa/sound_split.hpp"
 #include "render/reconstruction.hpp"
+#include "synth/truth_file.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -103,12 +104,10 @@ class EvaluateCommand : public Command {
     const auto found = evaluate::compare_with_truth(m.model, truth_);
     const evaluate::TruthComparison all = evaluate::overall(found);
     if (all.points == 0) return m.label + ": no point of " + truth_ + " lies inside the training range";
-    char text[400];
-    std::snprintf(text, sizeof text,
+    return text::format(
                   "%s against the noise-free spectra of %s (%zu materials, %zu speed-force points inside the training range): "
                   "mean distance %.4g m/s^2; a constant spectrum per material (the truth's own mean) %.4g; mean true spectrum norm %.4g",
                   m.label.c_str(), truth_.c_str(), found.size(), all.points, all.model, all.constant, all.truth_norm);
-    return text;
   }
 
   std::string dataset_, split_, output_, reconstruct_ = "fgla";

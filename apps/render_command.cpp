@@ -10,6 +10,7 @@
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/output_is_input.hpp"
+#include "core/text/format.hpp"
 #include "predict/model_file.hpp"
 #include "predict/texture_choice.hpp"
 #include "render/vibration_render.hpp"
@@ -129,7 +130,7 @@ class RenderCommand : public Command {
 
   void print_summary(const Report& r) const {
     const double seconds = double(r.wav.samples) / render::kWavSampleRate;
-    const std::string sc = std::isnan(r.convergence_db) ? std::string("SC n/a (under 0.1 s)") : format("SC %.1f dB", r.convergence_db);
+    const std::string sc = std::isnan(r.convergence_db) ? std::string("SC n/a (under 0.1 s)") : text::format("SC %.1f dB", r.convergence_db);
     std::printf("wrote %s%s: %zu samples, %.3f s, peak %.4g m/s^2, full scale %.9g m/s^2 (24-bit PCM), %s, %s, %.3g s compute per s of vibration\n",
                 output_.c_str(), csv_.empty() ? "" : (" and " + csv_).c_str(), r.wav.samples, seconds, r.wav.peak_m_s2,
                 r.wav.full_scale_m_s2, method(r.options).c_str(), sc.c_str(), r.compute_per_second);
@@ -143,7 +144,7 @@ class RenderCommand : public Command {
     if (texture_.reference.empty() && !texture_.image.empty())
       std::cerr << "note: no --reference: the image's own blur stands in for the no-contact frame\n";
     if (r.options.reconstruction != render::Reconstruction::fgla)
-      std::cerr << format("note: slowest frame (predict + reconstruct) %.3f ms of the 10 ms budget; latency %zu ms\n",
+      std::cerr << text::format("note: slowest frame (predict + reconstruct) %.3f ms of the 10 ms budget; latency %zu ms\n",
                           r.rendering.slowest_frame_seconds * 1e3, r.rendering.latency_samples / 10);
   }
 
@@ -181,13 +182,6 @@ class RenderCommand : public Command {
   }
 
   static nlohmann::json number_or_null(double x) { return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(x); }
-
-  template <typename... Args>
-  static std::string format(const char* pattern, Args... args) {
-    char text[256];
-    std::snprintf(text, sizeof text, pattern, args...);
-    return text;
-  }
 
   std::string model_path_, trajectory_path_, output_, csv_, reconstruction_ = "fgla";
   CLI::Option* reconstruct_option_ = nullptr;

@@ -5,14 +5,13 @@
 
 #include "convert/units.hpp"
 #include "core/error.hpp"
+#include "core/text/format.hpp"
 
 namespace haptex::convert {
 namespace {
 
 std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  return text;
+  return text::format("%.10g", value);
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+#include "core/text/format.hpp"
 #include "evaluate/paper_figures.hpp"
 
 #include <cstdio>
@@ -6,9 +7,7 @@ namespace haptex::evaluate {
 namespace {
 
 std::string percent_text(double share) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f %%", 100 * share);
-  return text;
+  return text::format("%.1f %%", 100 * share);
 }
 
 }  // namespace
@@ -22,9 +21,7 @@ double PaperFigure::significantly_better_share() const { return double(significa
 std::string PaperFigure::text() const {
   const std::string of = " of " + std::to_string(materials);
   if (!better) {
-    char given[32];
-    std::snprintf(given, sizeof given, "%.2f %%", better_percent.value_or(0));
-    return "better on " + std::string(given) + ", significantly better on " + std::to_string(significantly_better) + of +
+    return "better on " + text::format("%.2f %%", better_percent.value_or(0)) + ", significantly better on " + std::to_string(significantly_better) + of +
            " (" + percent_text(significantly_better_share()) + "), significantly worse on " +
            std::to_string(significantly_worse.value_or(0)) + " (" +
            percent_text(double(significantly_worse.value_or(0)) / double(materials)) + ")";

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/text/format.hpp"
 #include "core/version.hpp"
 #include "evaluate/paper_figures.hpp"
 #include "evaluate/results_json.hpp"
@@ -32,9 +33,7 @@ std::string code(std::string_view text) {
 }
 
 std::string percent(double share) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.0f %%", 100.0 * share);
-  return buffer;
+  return text::format("%.0f %%", 100.0 * share);
 }
 std::string percent(std::size_t count, std::size_t of) { return of == 0 ? "n/a" : percent(double(count) / double(of)); }
 
@@ -449,9 +448,7 @@ std::string format_number(double x) {
 std::string format_p(double p) {
   if (std::isnan(p)) return "n/a";
   if (p == 0) return "0";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, p < 1e-3 ? "%.2e" : "%.3g", p);
-  return buffer;
+  return p < 1e-3 ? text::format("%.2e", p) : text::format("%.3g", p);
 }
 
 std::string report_markdown(const Evaluation& e, const ReportLayout& layout, const ChartResult& charts,

@@ -5,10 +5,11 @@
 #include <numeric>
 #include <random>
 
-#include "dataset/window.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "core/random_seeds.hpp"
+#include "core/text/format.hpp"
+#include "dataset/window.hpp"
 #include "split/coverage.hpp"
 #include "split/sections.hpp"
 
@@ -68,9 +69,7 @@ MaterialSplit best_split(const MaterialWindows& m, const SplitOptions& o) {
 }
 
 std::string format_fraction(double x) {
-  char text[16];
-  std::snprintf(text, sizeof text, "%.3f", x);
-  return text;
+  return text::format("%.3f", x);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/json/schema.hpp"
+#include "core/text/format.hpp"
 
 namespace haptex::synth {
 namespace fs = std::filesystem;
@@ -23,9 +24,7 @@ namespace {
 constexpr const char* kSchema = "press-sidecar.schema.json";
 
 std::string frame_name(int index) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%04d.png", index);
-  return name;
+  return text::format("frame_%04d.png", index);
 }
 
 // OpenCV's default PNG settings are its fast path (SUB filter, zlib level 1); Huffman-only coding

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "core/text/format.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -57,9 +58,7 @@ const std::vector<LockGroup>& lock_groups() {
 }
 
 std::string hex(std::uint32_t id) {
-  char text[16];
-  std::snprintf(text, sizeof text, "0x%08x", id);
-  return text;
+  return text::format("0x%08x", id);
 }
 
 std::optional<v4l2_queryctrl> query(const V4l2Device& device, std::uint32_t id) {

@@ -8,6 +8,7 @@
 
 #include "capture/device/fourcc.hpp"
 #include "core/error.hpp"
+#include "core/text/format.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -15,9 +16,7 @@ namespace {
 std::string size_text(std::uint32_t w, std::uint32_t h) { return std::to_string(w) + "x" + std::to_string(h); }
 
 std::string fps_text(double fps) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", std::round(fps * 1000) / 1000);
-  return text;
+  return text::format("%g", std::round(fps * 1000) / 1000);
 }
 
 double interval_fps(const v4l2_fract& interval) {

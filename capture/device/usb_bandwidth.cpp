@@ -6,20 +6,17 @@
 #include <cstdio>
 
 #include "capture/device/fourcc.hpp"
+#include "core/text/format.hpp"
 
 namespace haptex::capture {
 namespace {
 
 std::string mbit_text(double bytes_per_second) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f Mbit/s", bytes_per_second * 8 / 1e6);
-  return text;
+  return text::format("%.1f Mbit/s", bytes_per_second * 8 / 1e6);
 }
 
 std::string number_text(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", std::round(value * 1000) / 1000);
-  return text;
+  return text::format("%g", std::round(value * 1000) / 1000);
 }
 
 bool fits(std::uint32_t fourcc, std::uint32_t width, std::uint32_t height, double fps, double capacity) {

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "core/error.hpp"
+#include "core/text/format.hpp"
 #include "core/text/parse_number.hpp"
 
 namespace haptex::capture {
@@ -51,17 +52,13 @@ std::optional<double> read_positive(const std::filesystem::path& path) {
 }
 
 std::string speed_text(double mbps) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g Mbit/s", mbps);
-  return text;
+  return text::format("%g Mbit/s", mbps);
 }
 
 }  // namespace
 
 std::string usb_id_text(std::uint16_t id) {
-  char text[8];
-  std::snprintf(text, sizeof text, "%04x", id);
-  return text;
+  return text::format("%04x", id);
 }
 
 std::string usb_speed_name(double mbps) {

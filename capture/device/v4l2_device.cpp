@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "core/error.hpp"
+#include "core/text/format.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -18,9 +19,7 @@ std::string fixed_string(const __u8* bytes, std::size_t size) {
 }
 
 std::string hex(std::uint32_t value) {
-  char text[16];
-  std::snprintf(text, sizeof text, "0x%08x", value);
-  return text;
+  return text::format("0x%08x", value);
 }
 
 void throw_open_error(const std::string& path, int error) {

@@ -1,4 +1,5 @@
 #include "capture/extraction/contact_sheet.hpp"
+#include "core/text/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,9 +19,7 @@ void text(cv::Mat& image, const std::string& s, cv::Point at, double scale = 0.4
 }
 
 std::string number(double value, int digits = 2) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.*f", digits, value);
-  return buffer;
+  return text::format("%.*f", digits, value);
 }
 
 cv::Mat panel(const cv::Mat& image, int height, const std::string& label) {

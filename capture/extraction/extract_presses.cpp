@@ -2,9 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <limits>
-#include <sstream>
 #include <opencv2/imgcodecs.hpp>
 
 #include "capture/extraction/capture_inputs.hpp"
@@ -15,6 +13,7 @@
 #include "core/naming.hpp"
 #include "core/partial_directory.hpp"
 #include "core/sha256.hpp"
+#include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
 
 namespace haptex::capture {
@@ -35,11 +34,8 @@ cv::Mat load_reference(const std::string& path) {
   return image;
 }
 
-std::string format(double v) {
-  std::ostringstream s;
-  s << std::setprecision(3) << v;
-  return s.str();
-}
+// Three significant digits: thresholds and scores as a person reads them.
+std::string figure(double v) { return text::format("%.3g", v); }
 
 SourceDetection detection_of(const std::string& path, const SourceScores& scores, int presses) {
   const ContactReference& c = *scores.contact;
@@ -175,9 +171,9 @@ class Extraction {
     in.trigger = scores.contact->trigger();
     in.release = scores.contact->release();
     in.level = scores.contact->level();
-    in.detection = "no-contact level " + format(detection.level) + "  trigger " + format(detection.trigger) + "  release " +
-                   format(detection.release) + "  pixel threshold " + format(detection.pixel_threshold) + "  noise " +
-                   format(detection.noise) + "  signal-to-noise " + format(detection.signal_to_noise());
+    in.detection = "no-contact level " + figure(detection.level) + "  trigger " + figure(detection.trigger) + "  release " +
+                   figure(detection.release) + "  pixel threshold " + figure(detection.pixel_threshold) + "  noise " +
+                   figure(detection.noise) + "  signal-to-noise " + figure(detection.signal_to_noise());
     return in;
   }
 
@@ -196,10 +192,10 @@ float SourceDetection::signal_to_noise() const {
 }
 
 std::string describe(const SourceDetection& d) {
-  std::string s = "highest score " + format(d.highest_score) + " (frame " + std::to_string(d.highest_frame) + "), trigger " +
-                  format(d.trigger) + " over a no-contact level of " + format(d.level);
-  if (d.level > 0) s += " (signal-to-noise " + format(d.signal_to_noise()) + ", a press needs " + format(d.trigger / d.level) + ")";
-  return s + "; per-pixel threshold " + format(d.pixel_threshold) + " grey levels, noise " + format(d.noise);
+  std::string s = "highest score " + figure(d.highest_score) + " (frame " + std::to_string(d.highest_frame) + "), trigger " +
+                  figure(d.trigger) + " over a no-contact level of " + figure(d.level);
+  if (d.level > 0) s += " (signal-to-noise " + figure(d.signal_to_noise()) + ", a press needs " + figure(d.trigger / d.level) + ")";
+  return s + "; per-pixel threshold " + figure(d.pixel_threshold) + " grey levels, noise " + figure(d.noise);
 }
 
 std::string default_sheets_dir(const std::string& output) {

@@ -1,4 +1,5 @@
 #include "capture/recording/delivered_rate.hpp"
+#include "core/text/format.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -7,9 +8,7 @@ namespace haptex::capture {
 namespace {
 
 std::string fixed(double value, int decimals) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
+  return text::format("%.*f", decimals, value);
 }
 
 }  // namespace

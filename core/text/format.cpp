@@ -1,0 +1,20 @@
+#include "core/text/format.hpp"
+
+#include <cstdarg>
+#include <cstdio>
+
+namespace haptex::text {
+
+std::string format(const char* pattern, ...) {
+  va_list args, again;
+  va_start(args, pattern);
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, pattern, args);
+  va_end(args);
+  std::string out(n > 0 ? std::size_t(n) : 0, '\0');
+  if (n > 0) std::vsnprintf(out.data(), out.size() + 1, pattern, again);
+  va_end(again);
+  return out;
+}
+
+}  // namespace haptex::text
