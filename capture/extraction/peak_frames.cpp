@@ -19,13 +19,14 @@ constexpr double kBlackLevel = 10.0;
 // Collects the leading no-contact frames into the reference, scoring them once it is complete.
 class LeadingReference {
  public:
-  LeadingReference(const ExtractSettings& settings, const ScoreSettings& score, const std::string& path)
-      : settings_(settings), score_(score), path_(path) {}
+  // calibration_frames: no-contact frames after the reference that set the thresholds (inter-frame
+  // video, ContactReference::from_calibration), or 0.
+  LeadingReference(const ExtractSettings& settings, const ScoreSettings& score, const std::string& path, int calibration_frames)
+      : settings_(settings), score_(score), path_(path), calibration_frames_(calibration_frames) {}
 
   bool complete() const { return done_; }
-  std::int64_t last_index() const { return indices_.back(); }
 
-  // After calibration (inter-frame video): were the reference frames no contact?
+  // Were the reference frames no contact?
   void require_steady(const ContactReference& contact) const {
     if (contact.steady()) return;
     throw input_error(path_, "frames " + std::to_string(first_) + "-" + std::to_string(indices_.back()),
@@ -39,14 +40,21 @@ class LeadingReference {
   bool collecting() const { return !done_; }
 
   void add(std::int64_t index, const cv::Mat& scoring, const cv::Mat& full, SourceScores& out) {
-    if (sum_.empty()) sum_ = cv::Mat::zeros(full.size(), CV_16UC3);  // 255 x 250 frames fits
-    cv::add(sum_, full, sum_, cv::noArray(), CV_16UC3);
-    small_.push_back(scoring);
-    indices_.push_back(index);
-    if (int(small_.size()) == settings_.reference_frames) finish(out);
+    if (int(small_.size()) < settings_.reference_frames) {
+      if (sum_.empty()) sum_ = cv::Mat::zeros(full.size(), CV_16UC3);  // 255 x 250 frames fits
+      cv::add(sum_, full, sum_, cv::noArray(), CV_16UC3);
+      small_.push_back(scoring);
+      indices_.push_back(index);
+    } else {
+      later_.push_back(scoring);
+      later_indices_.push_back(index);
+    }
+    if (int(small_.size()) == settings_.reference_frames && int(later_.size()) == calibration_frames_) finish(out);
   }
 
-  void require_complete() const {
+  // At the source's end: a video too short for all its calibration frames uses those it has.
+  void require_complete(SourceScores& out) {
+    if (!done_ && int(small_.size()) == settings_.reference_frames) finish(out);
     if (!done_)
       throw input_error(path_, "", "only " + std::to_string(small_.size()) + " usable frames; " +
                                        std::to_string(settings_.reference_frames) +
@@ -57,13 +65,16 @@ class LeadingReference {
  private:
   void finish(SourceScores& out) {
     done_ = true;
-    const ContactReference contact = ContactReference::from_frames(small_, score_);
+    const ContactReference contact = calibration_frames_ > 0 ? ContactReference::from_calibration(small_, later_, score_)
+                                                             : ContactReference::from_frames(small_, score_);
     first_ = indices_.front();
     sum_.convertTo(out.reference, CV_8UC3, 1.0 / double(small_.size()));
     out.reference_note = "mean of frames " + std::to_string(indices_.front()) + "-" + std::to_string(indices_.back());
     for (std::size_t i = 0; i < small_.size(); ++i) out.scores[std::size_t(indices_[i])] = contact.score(small_[i]);
+    for (std::size_t i = 0; i < later_.size(); ++i) out.scores[std::size_t(later_indices_[i])] = contact.score(later_[i]);
     out.contact = contact;
     small_.clear();
+    later_.clear();
     indices_.erase(indices_.begin(), indices_.end() - 1);
   }
 
@@ -71,8 +82,9 @@ class LeadingReference {
   ScoreSettings score_;
   std::string path_;
   cv::Mat sum_;
-  std::vector<cv::Mat> small_;
-  std::vector<std::int64_t> indices_;
+  int calibration_frames_ = 0;
+  std::vector<cv::Mat> small_, later_;
+  std::vector<std::int64_t> indices_, later_indices_;
   std::int64_t first_ = 0;
   bool done_ = false;
 };
@@ -136,14 +148,6 @@ std::vector<std::int64_t> choose_window(const std::vector<float>& scores, std::i
   return window;
 }
 
-// The scores of the frames after the reference that calibrate the thresholds of inter-frame video.
-std::vector<float> calibration_scores(const std::vector<float>& scores, std::int64_t reference_last, const ExtractSettings& settings) {
-  std::vector<float> out;
-  for (std::size_t i = std::size_t(reference_last) + 1; i < scores.size() && int(out.size()) < settings.calibration_frames; ++i)
-    if (std::isfinite(scores[i])) out.push_back(scores[i]);
-  return out;
-}
-
 }  // namespace
 
 ScoreSettings score_settings(const FrameSource& source, const ExtractSettings& settings) {
@@ -157,7 +161,7 @@ SourceScores score_source(FrameSource& source, const ExtractSettings& settings) 
   SourceScores out;
   const ScoreSettings score = score_settings(source, settings);
   out.contact = given_reference(source, settings, out);
-  LeadingReference leading(settings, score, source.path());
+  LeadingReference leading(settings, score, source.path(), source.inter_frame() ? settings.calibration_frames : 0);
   const bool from_leading = !out.contact;
   bool started = false;  // past the black frames sensors send after stream start
   source.scan(
@@ -177,9 +181,8 @@ SourceScores score_source(FrameSource& source, const ExtractSettings& settings) 
         }
       },
       [&](std::int64_t) { return from_leading && leading.collecting(); });
-  if (from_leading) leading.require_complete();
   if (!from_leading) return out;
-  if (source.inter_frame()) out.contact = out.contact->calibrated(calibration_scores(out.scores, leading.last_index(), settings), score);
+  leading.require_complete(out);
   leading.require_steady(*out.contact);
   return out;
 }

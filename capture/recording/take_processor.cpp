@@ -66,12 +66,11 @@ void TakeProcessor::process(TakeFrame&& frame) {
   const cv::Mat small = scoring(frame.frame);
   if (small.empty()) ++corrupt_frames_;
   if (!contact_) {
-    if (!small.empty()) collect_reference(frame, small);
-    return;
+    if (small.empty()) return;
+    if (reference_taken_) return calibrate(small);
+    return collect_reference(frame, small);
   }
-  const float score = small.empty() ? kNaN : contact_->score(small);
-  if (!segmenter_) return calibrate(score);
-  record(std::move(frame), score);
+  record(std::move(frame), small.empty() ? kNaN : contact_->score(small));
 }
 
 // Averages reference_frames decodable, non-black frames; if they were not steady (the user touched
@@ -85,35 +84,32 @@ void TakeProcessor::collect_reference(const TakeFrame& frame, const cv::Mat& sma
   reference_small_.push_back(small);
   if (int(reference_small_.size()) < options_.reference_frames) return;
 
-  ContactReference candidate = ContactReference::from_frames(reference_small_, score_);
   reference_sum_.convertTo(reference_image_, CV_8UC3, 1.0 / double(reference_small_.size()));
-  reference_small_.clear();
   reference_sum_.release();
-  // With calibration frames to come, steadiness is judged by the thresholds they give.
-  if (options_.calibration_frames > 0) {
-    contact_ = candidate;
-    return;
-  }
-  if (!candidate.steady()) return restart_reference();
-  contact_ = candidate;
-  start_recording();
+  // With calibration frames to come, the thresholds (and steadiness) wait for them.
+  reference_taken_ = true;
+  if (options_.calibration_frames == 0) take_reference(ContactReference::from_frames(reference_small_, score_));
 }
 
-void TakeProcessor::restart_reference() {
+// Decodable frames after the reference, until there are calibration_frames of them.
+void TakeProcessor::calibrate(const cv::Mat& small) {
+  calibration_small_.push_back(small);
+  if (int(calibration_small_.size()) == options_.calibration_frames)
+    take_reference(ContactReference::from_calibration(reference_small_, calibration_small_, score_));
+}
+
+// The reference if it was steady, else (the user touched the sensor) a new one from the next frames.
+void TakeProcessor::take_reference(const ContactReference& candidate) {
+  reference_small_.clear();
+  calibration_small_.clear();
+  reference_taken_ = false;
+  if (candidate.steady()) {
+    contact_ = candidate;
+    return start_recording();
+  }
   if (++reference_restarts_ > kMaxReferenceRestarts)
     throw failure(session_.identity.path + ": the sensor image did not settle into a steady no-contact reference; "
                   "keep the sensor untouched for the first seconds of the take");
-  contact_.reset();
-  calibration_scores_.clear();
-}
-
-void TakeProcessor::calibrate(float score) {
-  calibration_scores_.push_back(score);
-  if (int(calibration_scores_.size()) < options_.calibration_frames) return;
-  const ContactReference calibrated = contact_->calibrated(calibration_scores_, score_);
-  if (!calibrated.steady()) return restart_reference();
-  contact_ = calibrated;
-  start_recording();
 }
 
 void TakeProcessor::start_recording() {

@@ -28,7 +28,7 @@ struct RecorderOptions {
   double seconds = 0;          // and after this long (0: no limit)
   int warmup_frames = 10;      // discarded after stream start (black and settling frames)
   int reference_frames = 10;   // averaged into the no-contact reference
-  int calibration_frames = 0;  // then scored to set the thresholds (ContactReference::calibrated; 0: the reference's own)
+  int calibration_frames = 0;  // then set the thresholds (ContactReference::from_calibration; 0: the reference's own)
   int pre_frames = 10;         // kept before each contact
   int post_frames = 10;        // kept after each release
   double stall_seconds = 2.0;  // no frame for this long ends the take
@@ -66,8 +66,8 @@ class TakeProcessor {
   cv::Mat scoring(const Frame& frame) const;
   cv::Mat decode_full(const Frame& frame) const;
   void collect_reference(const TakeFrame& frame, const cv::Mat& small);
-  void calibrate(float score);
-  void restart_reference();
+  void calibrate(const cv::Mat& small);
+  void take_reference(const ContactReference& candidate);
   void start_recording();
   void record(TakeFrame&& frame, float score);
   void open_press(const PressInterval& contact);
@@ -88,7 +88,8 @@ class TakeProcessor {
   cv::Mat reference_sum_;  // CV_16UC3: 255 x 250 frames fits
   int reference_restarts_ = 0;
   std::optional<ContactReference> contact_;
-  std::vector<float> calibration_scores_;
+  bool reference_taken_ = false;         // the reference frames are in; calibration frames follow
+  std::vector<cv::Mat> calibration_small_;
   cv::Mat reference_image_;
 
   // Recording.

@@ -58,6 +58,28 @@ Spread spread_of(std::vector<float> scores) {
 
 cv::Mat centred(cv::Mat m) { return m - cv::mean(m)[0]; }
 
+cv::Mat mean_of(const std::vector<cv::Mat>& frames) {
+  cv::Mat sum = cv::Mat::zeros(frames.front().size(), CV_32F);
+  for (const auto& f : frames) sum += f;
+  return sum / double(frames.size());
+}
+
+// Each frame against the mean of the others: what a later no-contact frame scores.
+std::vector<float> leave_one_out_scores(const std::vector<cv::Mat>& frames, float t) {
+  const cv::Mat sum = mean_of(frames) * double(frames.size());
+  std::vector<float> scores;
+  for (const auto& f : frames) scores.push_back(contact_score(f, (sum - f) / double(frames.size() - 1), t));
+  return scores;
+}
+
+// What a press would show: two frames in a row (the lower of the two). A lone odd frame, such as the
+// first an encoder writes at another quality, is no press, as the segmenter judges it too.
+float worst_two_in_a_row(const std::vector<float>& scores) {
+  float worst = 0;
+  for (std::size_t i = 1; i < scores.size(); ++i) worst = std::max(worst, std::min(scores[i - 1], scores[i]));
+  return worst;
+}
+
 float footage_trigger(float level, const ScoreSettings& settings) {
   return settings.trigger.value_or(level + std::max(settings.level_factor * level, settings.min_trigger));
 }
@@ -137,20 +159,13 @@ ContactReference::ContactReference(cv::Mat mean, float noise, float pixel_thresh
 
 ContactReference ContactReference::from_frames(const std::vector<cv::Mat>& frames, const ScoreSettings& settings) {
   if (frames.size() < 2) throw failure("internal: a contact reference from frames needs at least two of them");
-  cv::Mat sum = cv::Mat::zeros(frames.front().size(), CV_32F);
-  for (const auto& f : frames) sum += f;
-  cv::Mat mean = sum / double(frames.size());
+  const cv::Mat mean = mean_of(frames);
   const float noise = temporal_noise(frames, mean);
   const float t = settings.pixel_threshold.value_or(settings.noise_threshold * noise);
-  // Each frame against the mean of the others: what a later no-contact frame scores.
-  std::vector<float> scores;
-  for (const auto& f : frames) scores.push_back(contact_score(f, (sum - f) / double(frames.size() - 1), t));
+  const std::vector<float> scores = leave_one_out_scores(frames, t);
   const Spread s = spread_of(scores);
   ContactReference r(mean, noise, t, footage_trigger(s.level, settings), s.level, s.spread);
-  // What a press would show: two frames in a row (the lower of the two). A lone odd frame, such as
-  // the first an encoder writes at another quality, is no press, as the segmenter judges it too.
-  for (std::size_t i = 1; i < scores.size(); ++i)
-    r.worst_reference_score_ = std::max(r.worst_reference_score_, std::min(scores[i - 1], scores[i]));
+  r.worst_reference_score_ = worst_two_in_a_row(scores);
   // A press during the reference frames raises most of their scores, and so the level it would be
   // judged by; but it changes the image from the first frames to the last, where noise does not:
   // the first half's mean against the second half's scores about 0.6 of a single frame's level
@@ -165,18 +180,20 @@ ContactReference ContactReference::from_frames(const std::vector<cv::Mat>& frame
   return r;
 }
 
-ContactReference ContactReference::calibrated(const std::vector<float>& scores, const ScoreSettings& settings) const {
-  std::vector<float> finite;
-  for (float v : scores)
-    if (std::isfinite(v)) finite.push_back(v);
-  ContactReference r = *this;
-  if (!finite.empty() && !settings.trigger && !settings.pixel_threshold) {
-    const Spread s = spread_of(finite);
-    r.level_ = s.level;
-    r.spread_ = s.spread;
-    r.trigger_ = footage_trigger(s.level, settings);
+ContactReference ContactReference::from_calibration(const std::vector<cv::Mat>& frames, const std::vector<cv::Mat>& later,
+                                                     const ScoreSettings& settings) {
+  if (frames.size() < 2) throw failure("internal: a contact reference from frames needs at least two of them");
+  ContactReference r = from_frames(frames, settings);
+  if (later.size() >= 2) {
+    const float noise = temporal_noise(later, mean_of(later));
+    const float t = settings.pixel_threshold.value_or(settings.noise_threshold * noise);
+    std::vector<float> scores;
+    for (const auto& f : later) scores.push_back(r.fit_.score(f, r.mean_, t));
+    const Spread s = spread_of(scores);
+    r = ContactReference(r.mean_, noise, t, footage_trigger(s.level, settings), s.level, s.spread);
+    r.worst_reference_score_ = worst_two_in_a_row(leave_one_out_scores(frames, t));
   }
-  r.steady_limit_ = r.trigger_;  // the reference frames' own trend says little here: they copy each other
+  r.steady_limit_ = r.trigger_;  // the reference frames' trend says little: they copy each other
   return r;
 }
 

@@ -13,7 +13,7 @@
 // t is the frames' per-pixel noise and the trigger comes from that footage: each reference frame is
 // scored against the mean of the others, which gives the no-contact level of the score without a
 // single extra frame (inter-frame video takes it over the frames after the reference instead:
-// ContactReference::calibrated), and contact is a score above that level by a multiple of it. So
+// ContactReference::from_calibration), and contact is a score above that level by a multiple of it. So
 // the trigger adapts to each sensor's noise, compression and resolution, and a press of a few grey
 // levels on a 320 x 240 MPEG-4 is found as surely as a deep one on a 3280 x 2464 MJPG. A single
 // given no-contact image shows no noise: then t and the trigger are fixed floors.
@@ -28,7 +28,7 @@
 namespace haptex::capture {
 
 // Inter-frame video: the no-contact frames after the reference whose scores set the level
-// (ContactReference::calibrated); a second at 25 fps.
+// (ContactReference::from_calibration); a second at 25 fps.
 constexpr int kCalibrationFrames = 25;
 
 struct ScoreSettings {
@@ -86,12 +86,13 @@ class ContactReference {
   float spread() const { return spread_; }                 // its robust standard deviation
   float trigger() const { return trigger_; }               // a score above this is contact
   float release() const { return level_ + (trigger_ - level_) / 2; }  // a press ends below this
-  // The same reference with the level, spread and trigger taken from these no-contact scores instead
-  // of the reference frames' own (for inter-frame video, whose first frames copy each other's
-  // compression noise; the median and its spread are robust to a press in under half of them).
-  // With a --trigger or --pixel-threshold of the user's, or no scores, the thresholds stay. Either
-  // way steadiness is then judged by the trigger alone: frames that copy each other show no trend.
-  ContactReference calibrated(const std::vector<float>& scores, const ScoreSettings& settings) const;
+  // Inter-frame video (MPEG-4, H.264): its first frames copy each other's compression noise, so the
+  // reference is the mean of `frames` but the noise, t, the level and the trigger come from the
+  // no-contact frames `later` (ContactReference's rules above; the median is robust to a press in
+  // under half of them). Steadiness is judged by the trigger alone: frames that copy each other show
+  // no trend. With fewer than two later frames, the reference frames' own thresholds.
+  static ContactReference from_calibration(const std::vector<cv::Mat>& frames, const std::vector<cv::Mat>& later,
+                                           const ScoreSettings& settings = {});
   // The reference frames were a steady no-contact stretch: no two in a row count as contact, and
   // they do not change from the first to the last as a press coming or going does.
   bool steady() const { return worst_reference_score_ <= steady_limit_; }

@@ -109,21 +109,30 @@ TEST(ContactReference, ALoneOddFrameInTheReferenceIsNoPress) {
   EXPECT_GT(r.score(frames[0]), r.trigger()) << "alone, the frame is contact";
 }
 
-// Inter-frame video: the level is taken over later no-contact scores, robust to a press in some.
-TEST(ContactReference, CalibrationTakesTheLevelFromLaterScores) {
-  std::vector<cv::Mat> frames;
-  for (int i = 0; i < 10; ++i) frames.push_back(with_noise(flat_gel(), 1.0, 90 + std::uint64_t(i)));
-  const ContactReference r = ContactReference::from_frames(frames);
-  std::vector<float> later(25, 0.6f);
-  later[3] = 9.0f;  // a press already
-  later[4] = std::nanf("");
-  const ContactReference c = r.calibrated(later, {});
-  EXPECT_FLOAT_EQ(c.level(), 0.6f);
-  EXPECT_FLOAT_EQ(c.trigger(), 1.5f);
-  EXPECT_EQ(c.pixel_threshold(), r.pixel_threshold());
+// Inter-frame video: the reference frames copy each other (no noise to see), so the noise, t and the
+// level come from the later no-contact frames, robust to a press in a few of them.
+TEST(ContactReference, CalibrationTakesTheThresholdsFromLaterFrames) {
+  const cv::Mat gel = flat_gel();
+  const cv::Mat first = with_noise(gel, 2.0, 90);
+  const std::vector<cv::Mat> copies(10, first);
+  std::vector<cv::Mat> later;
+  for (int i = 0; i < 25; ++i) later.push_back(with_noise(i == 3 || i == 4 ? pressed(first, 30) : first, 2.0, 100 + std::uint64_t(i)));
+  const ContactReference own = ContactReference::from_frames(copies);
+  EXPECT_LT(own.noise(), 0.01f) << "copies show no noise";
+  const ContactReference c = ContactReference::from_calibration(copies, later);
+  EXPECT_NEAR(c.noise(), 2.0f, 0.2f);
+  EXPECT_FLOAT_EQ(c.pixel_threshold(), c.noise());
+  // Against a noise-free reference r ~ N(0, 2): E max(0, |r| - 2) = 0.166 x 2.
+  EXPECT_NEAR(c.level(), 0.166f * 2.0f, 0.06f) << "the press in frames 3 and 4 does not move the median";
+  EXPECT_FLOAT_EQ(c.trigger(), 2.5f * c.level());
+  EXPECT_TRUE(c.steady());
+  EXPECT_GT(c.score(later[3]), 2 * c.trigger());
   ScoreSettings fixed;
   fixed.trigger = 0.4f;
-  EXPECT_EQ(r.calibrated(later, fixed).trigger(), r.trigger()) << "the user's trigger stands";
+  const ContactReference given = ContactReference::from_calibration(copies, later, fixed);
+  EXPECT_EQ(given.trigger(), 0.4f) << "the user's trigger stands";
+  EXPECT_NEAR(given.level(), c.level(), 1e-6f) << "and the level is still measured";
+  EXPECT_EQ(ContactReference::from_calibration(copies, {}).trigger(), own.trigger()) << "no later frames: the reference's own";
 }
 
 TEST(ContactReference, AGivenImageUsesTheFloors) {
