@@ -8,6 +8,7 @@
 
 #include "capture/scoring/scoring_image.hpp"
 #include "core/error.hpp"
+#include "core/text/format.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -29,11 +30,16 @@ class LeadingReference {
   // Were the reference frames no contact?
   void require_steady(const ContactReference& contact) const {
     if (contact.steady()) return;
+    const std::string why =
+        contact.trending()
+            ? text::format("they change from the first to the last as a press coming or going does (the first "
+                           "half's mean against the second half's scores %.3g, over the no-contact level %.3g)",
+                           double(contact.trend()), double(contact.trend_limit()))
+            : text::format("two in a row differ from the others' mean by a score of %.3g, over the trigger %.3g",
+                           double(contact.worst_reference_score()), double(contact.trigger()));
     throw input_error(path_, "frames " + std::to_string(first_) + "-" + std::to_string(indices_.back()),
                       "the first " + std::to_string(settings_.reference_frames) +
-                          " frames are not a steady no-contact stretch (two in a row differ from the others' mean by a score of " +
-                          std::to_string(contact.worst_reference_score()) + ", over the trigger " +
-                          std::to_string(contact.trigger()) + ")",
+                          " frames are not a steady no-contact stretch: " + why,
                       "Start the video with at least " + std::to_string(settings_.reference_frames) +
                           " frames without contact, or give a no-contact image with --reference");
   }

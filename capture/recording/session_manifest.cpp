@@ -92,7 +92,8 @@ nlohmann::json session_manifest(const SessionDescription& s, const ReferenceSumm
       {"controls", {{"locked", locked_array(s.controls)}, {"missing", s.controls.missing}}},
       {"recorder", {{"warmup_frames", s.warmup_frames}, {"reference_frames", s.reference_frames},
                     {"pre_frames", s.pre_frames}, {"post_frames", s.post_frames}, {"noise", r.noise},
-                    {"pixel_threshold", r.pixel_threshold}, {"no_contact_level", r.level}, {"trigger", r.trigger}, {"release", r.release}}},
+                    {"pixel_threshold", r.pixel_threshold}, {"no_contact_level", r.level}, {"trigger", r.trigger}, {"release", r.release},
+                    {"reference_restarts", r.restarts}}},
       {"presses", press_list},
       {"totals", totals_json(t)},
       {"ended_by", ended_by}};

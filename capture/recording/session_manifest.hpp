@@ -31,6 +31,7 @@ struct SessionDescription {
 
 struct ReferenceSummary {
   float noise = 0, pixel_threshold = 0, level = 0, trigger = 0, release = 0;
+  int restarts = 0;  // references refused as not steady (the sensor was touched) before this one
 };
 
 struct RecordedPress {

@@ -229,8 +229,9 @@ void TakeProcessor::write_manifest(const std::string& ended_by, const std::strin
 }
 
 ReferenceSummary TakeProcessor::reference_summary() const {
-  if (!contact_) return {};
-  return {contact_->noise(), contact_->pixel_threshold(), contact_->level(), contact_->trigger(), contact_->release()};
+  if (!contact_) return {.restarts = reference_restarts_};
+  return {contact_->noise(), contact_->pixel_threshold(), contact_->level(), contact_->trigger(), contact_->release(),
+          reference_restarts_};
 }
 
 void TakeProcessor::end_of_take(const std::string& ended_by, const TakeTotals& totals, const std::string& error) {

@@ -139,6 +139,14 @@ float contact_score(const cv::Mat& image, const cv::Mat& reference, float pixel_
   return DriftFit(reference).score(image, reference, pixel_threshold);
 }
 
+void require_reference_frames(int count) {
+  if (count < kMinReferenceFrames || count > kMaxReferenceFrames)
+    throw input_error("--reference-frames", std::to_string(count),
+                      "must be " + std::to_string(kMinReferenceFrames) + " to " + std::to_string(kMaxReferenceFrames),
+                      "Give at least " + std::to_string(kMinReferenceFrames) +
+                          " frames, so the reference's noise and no-contact level can be measured");
+}
+
 ScoreSettings score_settings_for(bool lossless) {
   ScoreSettings s;
   if (lossless) {
@@ -157,6 +165,46 @@ ContactReference::ContactReference(cv::Mat mean, float noise, float pixel_thresh
       level_(level),
       spread_(spread) {}
 
+namespace {
+
+// The first half's mean against the second half's: about 0.6 of a single frame's level for noise (each
+// mean holds half the frames), more than the level for a press coming or going. The frame least like
+// the others is left out: a lone odd frame, such as the first an encoder writes at another quality,
+// would move its half's mean as a press does.
+float trend_of(const std::vector<cv::Mat>& frames, const std::vector<float>& scores, float t) {
+  const std::size_t odd = std::size_t(std::max_element(scores.begin(), scores.end()) - scores.begin());
+  std::vector<const cv::Mat*> kept;
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    if (i != odd || frames.size() < 4) kept.push_back(&frames[i]);
+  const std::size_t half = kept.size() / 2;
+  cv::Mat early = cv::Mat::zeros(frames.front().size(), CV_32F), late = early.clone();
+  for (std::size_t i = 0; i < kept.size(); ++i) (i < half ? early : late) += *kept[i];
+  // Without the gain term: a press in the reference is part of the reference image the gain scales.
+  const cv::Mat late_mean = late / double(kept.size() - half);
+  return DriftFit(late_mean, false).score(early / double(half), late_mean, t);
+}
+
+// The later frames free of contact: those scoring under the trigger their quietest quarter would set
+// (with t from the noise of all of them: a press moves too few pixels to move its median). A press in
+// the calibration second scores above it, and would otherwise raise the noise, the level and the
+// trigger until no press stood out (a press in most of those frames moved their median).
+std::vector<cv::Mat> quiet_frames(const std::vector<cv::Mat>& later, const cv::Mat& reference, const ScoreSettings& settings) {
+  const float t = settings.pixel_threshold.value_or(settings.noise_threshold * temporal_noise(later, mean_of(later)));
+  const DriftFit fit(reference);
+  std::vector<float> scores;
+  for (const auto& f : later) scores.push_back(fit.score(f, reference, t));
+  std::vector<float> sorted = scores;
+  auto quarter = sorted.begin() + std::ptrdiff_t(sorted.size() / 4);
+  std::nth_element(sorted.begin(), quarter, sorted.end());
+  const float quiet = *quarter + std::max(settings.level_factor * *quarter, settings.min_trigger);
+  std::vector<cv::Mat> kept;
+  for (std::size_t i = 0; i < later.size(); ++i)
+    if (scores[i] <= quiet) kept.push_back(later[i]);
+  return kept;
+}
+
+}  // namespace
+
 ContactReference ContactReference::from_frames(const std::vector<cv::Mat>& frames, const ScoreSettings& settings) {
   if (frames.size() < 2) throw failure("internal: a contact reference from frames needs at least two of them");
   const cv::Mat mean = mean_of(frames);
@@ -167,16 +215,9 @@ ContactReference ContactReference::from_frames(const std::vector<cv::Mat>& frame
   ContactReference r(mean, noise, t, footage_trigger(s.level, settings), s.level, s.spread);
   r.worst_reference_score_ = worst_two_in_a_row(scores);
   // A press during the reference frames raises most of their scores, and so the level it would be
-  // judged by; but it changes the image from the first frames to the last, where noise does not:
-  // the first half's mean against the second half's scores about 0.6 of a single frame's level
-  // for noise (each mean holds half the frames), more than the level for a press coming or going.
-  const std::size_t half = frames.size() / 2;
-  cv::Mat early = cv::Mat::zeros(mean.size(), CV_32F), late = cv::Mat::zeros(mean.size(), CV_32F);
-  for (std::size_t i = 0; i < frames.size(); ++i) (i < half ? early : late) += frames[i];
-  // Without the gain term: a press in the reference is part of the reference image the gain scales.
-  const cv::Mat late_mean = late / double(frames.size() - half);
-  const float trend = DriftFit(late_mean, false).score(early / double(half), late_mean, t);
-  r.steady_limit_ = trend <= s.level ? r.trigger_ : -1.0f;
+  // judged by; but it changes the image from the first frames to the last, where noise does not.
+  r.trend_ = trend_of(frames, scores, t);
+  r.trend_limit_ = s.level;
   return r;
 }
 
@@ -184,16 +225,21 @@ ContactReference ContactReference::from_calibration(const std::vector<cv::Mat>& 
                                                      const ScoreSettings& settings) {
   if (frames.size() < 2) throw failure("internal: a contact reference from frames needs at least two of them");
   ContactReference r = from_frames(frames, settings);
-  if (later.size() >= 2) {
-    const float noise = temporal_noise(later, mean_of(later));
+  const std::vector<cv::Mat> quiet = later.size() >= 2 ? quiet_frames(later, r.mean_, settings) : std::vector<cv::Mat>{};
+  if (quiet.size() >= 2) {
+    const float noise = temporal_noise(quiet, mean_of(quiet));
     const float t = settings.pixel_threshold.value_or(settings.noise_threshold * noise);
     std::vector<float> scores;
-    for (const auto& f : later) scores.push_back(r.fit_.score(f, r.mean_, t));
+    for (const auto& f : quiet) scores.push_back(r.fit_.score(f, r.mean_, t));
     const Spread s = spread_of(scores);
     r = ContactReference(r.mean_, noise, t, footage_trigger(s.level, settings), s.level, s.spread);
-    r.worst_reference_score_ = worst_two_in_a_row(leave_one_out_scores(frames, t));
+    const std::vector<float> reference_scores = leave_one_out_scores(frames, t);
+    r.worst_reference_score_ = worst_two_in_a_row(reference_scores);
+    // The trend against the calibration level: the copies' own level is near 0, which any change
+    // of a grey level would exceed.
+    r.trend_ = trend_of(frames, reference_scores, t);
+    r.trend_limit_ = s.level;
   }
-  r.steady_limit_ = r.trigger_;  // the reference frames' trend says little: they copy each other
   return r;
 }
 

@@ -27,6 +27,13 @@
 
 namespace haptex::capture {
 
+// The no-contact frames averaged into a reference: enough for a quiet mean and for the steadiness
+// rules to judge (docs/capture.md, "The thresholds"), few enough that their sum of 8-bit pixels fits
+// 16 bits.
+constexpr int kMinReferenceFrames = 10, kMaxReferenceFrames = 250;
+// Throws haptex::Error (bad_input, naming --reference-frames) for a count outside those.
+void require_reference_frames(int count);
+
 // Inter-frame video: the no-contact frames after the reference whose scores set the level
 // (ContactReference::from_calibration); a second at 25 fps.
 constexpr int kCalibrationFrames = 25;
@@ -88,15 +95,21 @@ class ContactReference {
   float release() const { return level_ + (trigger_ - level_) / 2; }  // a press ends below this
   // Inter-frame video (MPEG-4, H.264): its first frames copy each other's compression noise, so the
   // reference is the mean of `frames` but the noise, t, the level and the trigger come from the
-  // no-contact frames `later` (ContactReference's rules above; the median is robust to a press in
-  // under half of them). Steadiness is judged by the trigger alone: frames that copy each other show
-  // no trend. With fewer than two later frames, the reference frames' own thresholds.
+  // no-contact frames `later` (ContactReference's rules above), leaving out those that score over the
+  // trigger their quietest quarter sets: a press in up to three quarters of them. Steadiness is judged
+  // against those thresholds, the trend against the level of `later` (the copies' own is near 0).
+  // With fewer than two later frames, the reference frames' own thresholds.
   static ContactReference from_calibration(const std::vector<cv::Mat>& frames, const std::vector<cv::Mat>& later,
                                            const ScoreSettings& settings = {});
   // The reference frames were a steady no-contact stretch: no two in a row count as contact, and
   // they do not change from the first to the last as a press coming or going does.
-  bool steady() const { return worst_reference_score_ <= steady_limit_; }
+  bool steady() const { return worst_reference_score_ <= trigger_ && !trending(); }
   float worst_reference_score() const { return worst_reference_score_; }  // the lower of the worst two in a row
+  // The first half of the reference frames against the second (the frame least like the others left
+  // out), and the limit it must stay within: the no-contact level.
+  bool trending() const { return trend_ > trend_limit_; }
+  float trend() const { return trend_; }
+  float trend_limit() const { return trend_limit_; }
   // The segmentation thresholds, over the level, with the rest of `base`.
   SegmenterSettings segmenter(SegmenterSettings base) const;
 
@@ -104,7 +117,7 @@ class ContactReference {
   cv::Mat mean_;
   DriftFit fit_;
   float noise_ = 0, pixel_threshold_ = 0, trigger_ = 0, level_ = 0, spread_ = 0, worst_reference_score_ = 0;
-  float steady_limit_ = INFINITY;
+  float trend_ = 0, trend_limit_ = INFINITY;
 };
 
 }  // namespace haptex::capture

@@ -99,6 +99,7 @@ TEST_F(ReplayCli, AWeakMpeg4PressIsCutLiveAsOffline) {
   const CommandResult live = record("replay:" + video + ",lockstep", "live", {"--warmup", "0"});
   ASSERT_EQ(live.exit_code, 0) << live.err;
   const nlohmann::json m = manifest("live");
+  EXPECT_EQ(m["recorder"]["reference_restarts"], 0);
   const CommandResult offline = run_haptex({"capture", "extract", video, "--material", "Finger", "-o", dir_.file("g.h5"),
                                             "--json", "--no-sheets"});
   ASSERT_EQ(offline.exit_code, 0) << offline.err;
@@ -114,6 +115,26 @@ TEST_F(ReplayCli, AWeakMpeg4PressIsCutLiveAsOffline) {
   const double live_level = m["recorder"]["no_contact_level"], offline_level = x["detection"][0]["no_contact_level"];
   EXPECT_NEAR(live_level, offline_level, 0.1 * offline_level);
   EXPECT_GT(offline_level, 0.0);
+}
+
+// Touched while its reference frames are taken (frames 4 to 7), an MPEG-4 take starts its reference
+// again, and then calibrates on the frames after the new reference: only the later press is cut.
+TEST_F(ReplayCli, AnMpeg4TakeTouchedDuringItsReferenceTakesItAgain) {
+  using namespace capture::fixtures;
+  const PressTiming touch{4, 1, 2, 70}, press;
+  std::vector<cv::Mat> frames = press_sequence(synthetic_gel(), synthetic_gel_pressed(), touch);
+  const std::vector<cv::Mat> later = press_sequence(synthetic_gel(), synthetic_gel_pressed(), press);
+  frames.insert(frames.end(), later.begin(), later.end());
+  const std::string video = dir_.file("touched.avi");
+  write_weak_video(video, frames, synthetic_gel(), {}, cv::VideoWriter::fourcc('m', 'p', '4', 'v'));
+  const CommandResult live = record("replay:" + video + ",lockstep", "live", {"--warmup", "0"});
+  ASSERT_EQ(live.exit_code, 0) << live.err;
+  const nlohmann::json m = manifest("live");
+  EXPECT_GE(m["recorder"]["reference_restarts"].get<int>(), 1) << "the touched reference was refused";
+  ASSERT_EQ(m["presses"].size(), 1u) << live.out;
+  const int peak = m["presses"][0]["peak_frame"];
+  EXPECT_GE(peak, touch.frames() + press.first_contact());
+  EXPECT_LE(peak, touch.frames() + press.last_contact());
 }
 
 // At the file's rate: the take lasts as long as the video, and every frame is taken or counted lost.

@@ -2,8 +2,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <map>
+#include <regex>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "capture/extraction/peak_frames.hpp"
 #include "core/error.hpp"
@@ -149,6 +154,40 @@ TEST_F(VideoScores, RefusesAVideoThatStartsWithContact) {
     const std::string m = e.what();
     EXPECT_NE(m.find("touched.mkv: frames 0-9: the first 10 frames are not a steady no-contact stretch"), std::string::npos) << m;
     EXPECT_NE(m.find("--reference"), std::string::npos) << m;
+    // The reason names a figure and the limit it went over (two in a row over the trigger, or the
+    // halves' trend over the level), and the figure is over it.
+    std::smatch over;
+    ASSERT_TRUE(std::regex_search(m, over, std::regex("scores? ([0-9.e+-]+), over the (trigger|no-contact level) ([0-9.e+-]+)"))) << m;
+    EXPECT_GT(std::stod(over[1]), std::stod(over[3])) << m;
+  }
+}
+
+// A press coming on slowly over the reference frames (0.6 grey levels a frame) puts no two of them
+// over the trigger, but the trend between their halves refuses them, and the message says so.
+TEST_F(VideoScores, NamesTheTrendOfAPressComingDuringTheReferenceFrames) {
+  const std::string folder = dir_.file("slow");
+  std::filesystem::create_directories(folder);
+  cv::RNG rng(5);
+  for (int i = 0; i < 30; ++i) {
+    cv::Mat frame(120, 160, CV_32FC3);
+    for (int y = 0; y < frame.rows; ++y)
+      for (int x = 0; x < frame.cols; ++x) frame.at<cv::Vec3f>(y, x) = cv::Vec3f::all(80.0f + 0.5f * float(x) + 0.3f * float(y));
+    cv::Mat mask = cv::Mat::zeros(frame.size(), CV_8U);
+    cv::circle(mask, {80, 60}, 50, cv::Scalar(255), cv::FILLED);
+    cv::add(frame, cv::Scalar::all(0.6 * std::min(i, 12)), frame, mask);
+    cv::Mat noise(frame.size(), CV_32FC3);
+    rng.fill(noise, cv::RNG::NORMAL, 0, 1.0);
+    cv::Mat pixels;
+    cv::Mat(frame + noise).convertTo(pixels, CV_8UC3);
+    cv::imwrite(folder + "/frame_" + std::to_string(100 + i) + ".png", pixels);
+  }
+  auto source = open_image_sequence(folder);
+  try {
+    score_source(*source, {});
+    FAIL() << "a reference with a press coming was taken";
+  } catch (const Error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("not a steady no-contact stretch: they change from the first to the last"), std::string::npos) << m;
   }
 }
 

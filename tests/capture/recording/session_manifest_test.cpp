@@ -36,8 +36,12 @@ TEST(SessionManifest, FollowsItsSchemaAndIsWrittenAtomically) {
   p.file = "press_0.h5";
   p.frames = 40;
   p.ended_by = "release";
-  const nlohmann::json doc = session_manifest(session(), {0.4f, 6, 0.25f, 0.125f}, {p}, {}, "presses");
+  const ReferenceSummary reference{.noise = 0.4f, .pixel_threshold = 0.4f, .level = 0.1f, .trigger = 0.25f,
+                                    .release = 0.175f, .restarts = 1};
+  const nlohmann::json doc = session_manifest(session(), reference, {p}, {}, "presses");
   EXPECT_NO_THROW(json::validate(doc, "capture-session.schema.json", "session.json"));
+  EXPECT_EQ(doc["recorder"]["no_contact_level"], 0.1f);
+  EXPECT_EQ(doc["recorder"]["reference_restarts"], 1);
   EXPECT_EQ(doc["stream"]["granted_fps"], 25.0);
   EXPECT_EQ(doc["device"]["model"], "GelSight Mini");
   haptex::test::TempDir dir;

@@ -109,6 +109,32 @@ TEST(ContactReference, ALoneOddFrameInTheReferenceIsNoPress) {
   EXPECT_GT(r.score(frames[0]), r.trigger()) << "alone, the frame is contact";
 }
 
+// Nor does a lone odd frame with structure (a checkerboard of 8 grey levels, as an encoder's first
+// frame can show) make a trend: the frame least like the others is left out of the halves' means.
+TEST(ContactReference, ALoneStructuredOddFrameMakesNoTrend) {
+  const cv::Mat gel = flat_gel();
+  cv::Mat checker(gel.size(), CV_32F);
+  for (int y = 0; y < gel.rows; ++y)
+    for (int x = 0; x < gel.cols; ++x) checker.at<float>(y, x) = (x / 4 + y / 4) % 2 ? 8.0f : -8.0f;
+  std::vector<cv::Mat> frames;
+  for (int i = 0; i < 10; ++i) frames.push_back(with_noise(i == 0 ? gel + checker : gel, 1.0, 200 + std::uint64_t(i)));
+  const ContactReference r = ContactReference::from_frames(frames);
+  EXPECT_FALSE(r.trending()) << "trend " << r.trend() << " over " << r.trend_limit();
+  EXPECT_TRUE(r.steady());
+}
+
+// A press coming on so slowly that no frame stands out from the mean of the others still changes the
+// first half of the reference frames against the second: the trend refuses it.
+TEST(ContactReference, APressComingSlowlyIsATrend) {
+  const cv::Mat gel = flat_gel();
+  std::vector<cv::Mat> frames;
+  for (int i = 0; i < 10; ++i) frames.push_back(with_noise(pressed(gel, 0.6f * float(i), 50), 1.0, 300 + std::uint64_t(i)));
+  const ContactReference r = ContactReference::from_frames(frames);
+  EXPECT_LE(r.worst_reference_score(), r.trigger()) << "no two frames in a row stand out";
+  EXPECT_TRUE(r.trending()) << "trend " << r.trend() << " over " << r.trend_limit();
+  EXPECT_FALSE(r.steady());
+}
+
 // Inter-frame video: the reference frames copy each other (no noise to see), so the noise, t and the
 // level come from the later no-contact frames, robust to a press in a few of them.
 TEST(ContactReference, CalibrationTakesTheThresholdsFromLaterFrames) {
@@ -133,6 +159,23 @@ TEST(ContactReference, CalibrationTakesTheThresholdsFromLaterFrames) {
   EXPECT_EQ(given.trigger(), 0.4f) << "the user's trigger stands";
   EXPECT_NEAR(given.level(), c.level(), 1e-6f) << "and the level is still measured";
   EXPECT_EQ(ContactReference::from_calibration(copies, {}).trigger(), own.trigger()) << "no later frames: the reference's own";
+}
+
+// A press in most of the calibration frames (18 of 25, a user who pressed right after the reference)
+// is left out of them: it scores over the trigger their quietest quarter sets, so the level stays the
+// no-contact one and the press stands above the trigger.
+TEST(ContactReference, CalibrationLeavesOutAPressInMostOfItsFrames) {
+  const cv::Mat gel = flat_gel();
+  const cv::Mat first = with_noise(gel, 2.0, 90);
+  const std::vector<cv::Mat> copies(10, first);
+  std::vector<cv::Mat> later;
+  for (int i = 0; i < 25; ++i)
+    later.push_back(with_noise(i >= 2 && i < 20 ? pressed(first, 10) : first, 2.0, 400 + std::uint64_t(i)));
+  const ContactReference c = ContactReference::from_calibration(copies, later);
+  EXPECT_NEAR(c.noise(), 2.0f, 0.2f);
+  EXPECT_NEAR(c.level(), 0.166f * 2.0f, 0.06f);
+  EXPECT_GT(c.score(later[10]), c.trigger()) << "the press is found";
+  EXPECT_LT(c.score(later[22]), c.trigger());
 }
 
 TEST(ContactReference, AGivenImageUsesTheFloors) {
