@@ -22,15 +22,14 @@ class CaptureExtract : public CaptureSubcommand {
     app->add_option("-o,--output", output_, "GelSight file to write (HDF5)")->required();
     app->add_option("--reference", reference_, "A no-contact image of the sensor, instead of each video's leading frames");
     app->add_option("--material", material_, "Material name for every input (default: the folder's name)");
-    app->add_option("--reference-frames", options_.settings.reference_frames, "Leading no-contact frames averaged")
-        ->capture_default_str()
-        ->check(CLI::Range(2, 250));
+    app->add_option("--reference-frames", options_.settings.reference_frames, "Leading no-contact frames averaged (10 to 250)")
+        ->capture_default_str();
     app->add_option("--frames-per-press", options_.settings.frames_per_press, "The peak and its neighbours kept")
         ->capture_default_str()
         ->check(CLI::Range(1, 100));
     app->add_option("--pixel-threshold", pixel_threshold_,
-                    "Least per-pixel change that counts, in grey levels (default: 0 with the footage's own reference frames; "
-                    "with --reference, 6 for lossy sources, 1 for lossless)")
+                    "Least per-pixel change that counts, in grey levels (default: the noise of the footage's own "
+                    "no-contact frames; with --reference, 6 for lossy sources, 1 for lossless)")
         ->check(CLI::NonNegativeNumber);
     app->add_option("--trigger", trigger_,
                     "Least contact score that starts a press (default: from the footage's own no-contact frames; with "
@@ -53,38 +52,44 @@ class CaptureExtract : public CaptureSubcommand {
     if (trigger_) options_.settings.trigger = *trigger_;
     options_.sheets = !no_sheets_;
     options_.provenance = global.command_line;
-    const auto result = capture::extract_presses(inputs_, output_, options_, terminal_progress(global, "extract"));
-    print(result, global);
+    try {
+      print(capture::extract_presses(inputs_, output_, options_, terminal_progress(global, "extract")), global);
+    } catch (const capture::NoPressFound& e) {
+      if (global.json) print_json(e.result(), false);  // what each source was judged by, then the error
+      throw;
+    }
     return 0;
   }
 
  private:
-  void print(const capture::ExtractResult& r, const GlobalOptions& global) const {
-    if (global.json) {
-      nlohmann::json presses = nlohmann::json::array();
-      for (const auto& p : r.presses)
-        presses.push_back({{"material", p.material}, {"material_id", p.material_id}, {"press", p.press},
-                           {"source", p.source}, {"press_in_source", p.press_in_source}, {"frame_start", p.frame_start},
-                           {"frame_end", p.frame_end}, {"contact_first", p.contact_first},
-                           {"contact_last", p.contact_last}, {"peak_index", p.peak_index}, {"peak_score", p.peak_score},
-                           {"contact_sheet", p.contact_sheet}});
-      nlohmann::json detections = nlohmann::json::array();
-      for (const auto& d : r.detections) {
-        const float snr = d.signal_to_noise();
-        detections.push_back({{"source", d.source}, {"reference", d.reference}, {"presses", d.presses},
-                              {"noise", d.noise}, {"pixel_threshold", d.pixel_threshold}, {"no_contact_level", d.level},
-                              {"trigger", d.trigger}, {"release", d.release}, {"highest_score", d.highest_score},
-                              {"highest_frame", d.highest_frame},
-                              {"signal_to_noise", std::isfinite(snr) ? nlohmann::json(snr) : nlohmann::json()}});
-      }
-      std::cout << nlohmann::json{{"output", output_}, {"presses", presses}, {"detection", detections}, {"sources", r.sources},
-                                  {"sources_without_press", r.sources_without_press}, {"frames_scored", r.frames_scored},
-                                  {"frames_unreadable", r.frames_unreadable},
-                                  {"sheets", r.sheets_dir}}
-                       .dump(2)
-                << "\n";
-      return;
+  // written: false when no input held a press (the output is null).
+  void print_json(const capture::ExtractResult& r, bool written) const {
+    nlohmann::json presses = nlohmann::json::array();
+    for (const auto& p : r.presses)
+      presses.push_back({{"material", p.material}, {"material_id", p.material_id}, {"press", p.press},
+                         {"source", p.source}, {"press_in_source", p.press_in_source}, {"frame_start", p.frame_start},
+                         {"frame_end", p.frame_end}, {"contact_first", p.contact_first},
+                         {"contact_last", p.contact_last}, {"peak_index", p.peak_index}, {"peak_score", p.peak_score},
+                         {"contact_sheet", p.contact_sheet}});
+    nlohmann::json detections = nlohmann::json::array();
+    for (const auto& d : r.detections) {
+      const float snr = d.signal_to_noise();
+      detections.push_back({{"source", d.source}, {"reference", d.reference}, {"presses", d.presses},
+                            {"noise", d.noise}, {"pixel_threshold", d.pixel_threshold}, {"no_contact_level", d.level},
+                            {"trigger", d.trigger}, {"release", d.release}, {"highest_score", d.highest_score},
+                            {"highest_frame", d.highest_frame},
+                            {"signal_to_noise", std::isfinite(snr) ? nlohmann::json(snr) : nlohmann::json()}});
     }
+    std::cout << nlohmann::json{{"output", written ? nlohmann::json(output_) : nlohmann::json()}, {"presses", presses},
+                                {"detection", detections}, {"sources", r.sources},
+                                {"sources_without_press", r.sources_without_press}, {"frames_scored", r.frames_scored},
+                                {"frames_unreadable", r.frames_unreadable}, {"sheets", r.sheets_dir}}
+                     .dump(2)
+              << "\n";
+  }
+
+  void print(const capture::ExtractResult& r, const GlobalOptions& global) const {
+    if (global.json) return print_json(r, true);
     if (global.quiet) return;
     for (const auto& d : r.detections)
       if (d.presses == 0) std::cerr << "haptex capture: warning: " << d.source << ": no press found: " << capture::describe(d) << "\n";

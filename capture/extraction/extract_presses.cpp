@@ -8,6 +8,7 @@
 #include "capture/extraction/capture_inputs.hpp"
 #include "capture/extraction/contact_sheet.hpp"
 #include "capture/extraction/gelsight_writer.hpp"
+#include "capture/scoring/contact_score.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"
@@ -86,7 +87,7 @@ class Extraction {
   }
 
   ExtractResult finish() {
-    if (result_.presses.empty()) throw failure(no_press_message());
+    if (result_.presses.empty()) throw NoPressFound(no_press_message(), result_);
     writer_.commit();
     if (sheets_) {
       sheets_->commit();
@@ -173,7 +174,8 @@ class Extraction {
     in.level = scores.contact->level();
     in.detection = "no-contact level " + figure(detection.level) + "  trigger " + figure(detection.trigger) + "  release " +
                    figure(detection.release) + "  pixel threshold " + figure(detection.pixel_threshold) + "  noise " +
-                   figure(detection.noise) + "  signal-to-noise " + figure(detection.signal_to_noise());
+                   figure(detection.noise);
+    if (detection.level > 0) in.detection += "  signal-to-noise " + figure(detection.signal_to_noise());
     return in;
   }
 
@@ -192,8 +194,9 @@ float SourceDetection::signal_to_noise() const {
 }
 
 std::string describe(const SourceDetection& d) {
-  std::string s = "highest score " + figure(d.highest_score) + " (frame " + std::to_string(d.highest_frame) + "), trigger " +
-                  figure(d.trigger) + " over a no-contact level of " + figure(d.level);
+  std::string s = d.highest_frame < 0 ? "no frame decoded" : "highest score " + figure(d.highest_score) + " (frame " +
+                                                                 std::to_string(d.highest_frame) + ")";
+  s += ", trigger " + figure(d.trigger) + " over a no-contact level of " + figure(d.level);
   if (d.level > 0) s += " (signal-to-noise " + figure(d.signal_to_noise()) + ", a press needs " + figure(d.trigger / d.level) + ")";
   return s + "; per-pixel threshold " + figure(d.pixel_threshold) + " grey levels, noise " + figure(d.noise);
 }
@@ -205,6 +208,7 @@ std::string default_sheets_dir(const std::string& output) {
 
 ExtractResult extract_presses(const std::vector<std::string>& inputs, const std::string& output,
                               const ExtractOptions& options, const Progress& progress) {
+  require_reference_frames(options.settings.reference_frames);
   check_output_path(output, options.overwrite);
   const std::vector<CaptureInput> expanded = expand_capture_inputs(inputs, options.material);
   Extraction extraction(output, options);

@@ -5,9 +5,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "capture/extraction/peak_frames.hpp"
+#include "core/error.hpp"
 #include "core/progress.hpp"
 
 namespace haptex::capture {
@@ -38,7 +40,7 @@ struct SourceDetection {
   float highest_score = 0;  // the source's strongest frame
   std::int64_t highest_frame = -1;
   // The strongest frame over the no-contact level: the score's signal-to-noise. The trigger asks for
-  // trigger / level (3 by default). Infinite when the level is 0 (a given image, a quiet sensor).
+  // trigger / level (2.5 by default). Infinite when the level is 0 (a given image, a quiet sensor).
   float signal_to_noise() const;
 };
 // One line: the strongest frame, the trigger, the level and the signal-to-noise.
@@ -55,7 +57,19 @@ struct ExtractResult {
   std::string sheets_dir;  // empty without sheets
 };
 
-// Throws haptex::Error: bad_input for unreadable inputs or outputs, failed when no input holds a press.
+// No input held a press, and nothing was written: what each source was judged by comes with the error.
+class NoPressFound : public Error {
+ public:
+  NoPressFound(const std::string& message, ExtractResult result)
+      : Error(Kind::failed, message), result_(std::move(result)) {}
+  const ExtractResult& result() const { return result_; }
+
+ private:
+  ExtractResult result_;
+};
+
+// Throws haptex::Error: bad_input for unreadable inputs or outputs; NoPressFound (failed) when no input
+// holds a press.
 ExtractResult extract_presses(const std::vector<std::string>& inputs, const std::string& output,
                               const ExtractOptions& options, const Progress& progress = {});
 

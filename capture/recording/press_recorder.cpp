@@ -14,6 +14,7 @@
 #include "capture/device/v4l2_device.hpp"
 #include "capture/recording/delivered_rate.hpp"
 #include "capture/recording/frame_queue.hpp"
+#include "capture/scoring/contact_score.hpp"
 #include "core/error.hpp"
 
 namespace haptex::capture {
@@ -116,8 +117,7 @@ void check_recorder_options(const RecorderOptions& o) {
   };
   if (o.material.empty()) refuse("--material", "the material name is empty", "Name the material you press, e.g. --material \"Brick 2\"");
   if (o.presses < 1) refuse("--presses", "must be at least 1", "Give the number of presses to record");
-  if (o.reference_frames < 10 || o.reference_frames > 250)
-    refuse("--reference-frames", "must be 10 to 250", "At least 10 frames make a reference whose noise can be measured");
+  require_reference_frames(o.reference_frames);
   if (o.warmup_frames < 0 || o.pre_frames < 0 || o.post_frames < 0)
     refuse("--warmup/--pre-frames/--post-frames", "must not be negative", "Give 0 or more frames");
   if (o.seconds < 0) refuse("--seconds", "must not be negative", "Give a time limit in seconds, or 0 for none");

@@ -135,6 +135,19 @@ TEST_F(ExtractCli, NoPressAnywhereExitsOneAndWritesNothing) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("no press found"), std::string::npos) << r.err;
   expect_nothing_written();
+  // --json still says what each source was judged by, then fails the same way.
+  const CommandResult j = run_haptex({"--json", "capture", "extract", dir_.file("still"), "-o", out()});
+  EXPECT_EQ(j.exit_code, 1);
+  EXPECT_NE(j.err.find("no press found"), std::string::npos) << j.err;
+  const auto result = nlohmann::json::parse(j.out);
+  EXPECT_TRUE(result["output"].is_null());
+  EXPECT_TRUE(result["presses"].empty());
+  ASSERT_EQ(result["detection"].size(), 1u) << j.out;
+  const auto& d = result["detection"][0];
+  EXPECT_EQ(d["presses"], 0);
+  EXPECT_LT(d["highest_score"].get<double>(), d["trigger"].get<double>());
+  EXPECT_GT(d["no_contact_level"].get<double>(), 0.0);
+  expect_nothing_written();
 }
 
 TEST_F(ExtractCli, BadInputIsRefusedWithOneMessageAndNothingWritten) {
@@ -153,6 +166,7 @@ TEST_F(ExtractCli, BadInputIsRefusedWithOneMessageAndNothingWritten) {
   cv::imwrite(dir_.file("ref.png"), cv::Mat(10, 10, CV_8UC3, cv::Scalar::all(100)));
   refused({dir_.file("gelsight"), "-o", out(), "--reference", dir_.file("ref.png")}, {"ref.png", "10x10", "160x120"});
   refused({dir_.file("gelsight"), "-o", dir_.file("no/such/dir/g.h5")}, {"does not exist"});
+  refused({dir_.file("gelsight"), "-o", out(), "--reference-frames", "3"}, {"--reference-frames", "10 to 250"});
   std::ofstream(out()) << "old";
   const CommandResult r = run_haptex({"capture", "extract", dir_.file("gelsight"), "-o", out()});
   EXPECT_EQ(r.exit_code, 2);
