@@ -1,3 +1,5 @@
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -7,6 +9,25 @@
 #include "core/version.hpp"
 
 namespace haptex::apps {
+namespace {
+
+// CLI11 reads "nan", "inf" and 1e999 as numbers, and its range checks let NaN through: every
+// floating-point option of every command takes finite numbers only.
+void require_finite_numbers(CLI::App& app) {
+  const CLI::Validator finite(
+      [](std::string& input) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(input.c_str(), &end);
+        if (end != input.c_str() && !std::isfinite(value)) return "must be a finite number, not " + input;
+        return "";
+      },
+      "");
+  for (CLI::Option* option : app.get_options())
+    if (option->get_type_name().find("FLOAT") != std::string::npos) option->check(finite);
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) require_finite_numbers(*sub);
+}
+
+}  // namespace
 
 int run_main(int argc, char** argv) {
   CLI::App app{"haptex: build, check and model haptic texture data (GelSight images + vibrations)", "haptex"};
@@ -26,6 +47,7 @@ int run_main(int argc, char** argv) {
     command->declare(*sub);
     parsed.emplace_back(sub, command.get());
   }
+  require_finite_numbers(app);
 
   try {
     app.parse(argc, argv);

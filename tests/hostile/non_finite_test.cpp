@@ -1,12 +1,15 @@
 // Issue 11 point 3: nothing non-finite is trained on, written or printed with exit code 0. A dataset
 // window holding NaN stops train before any epoch; a model holding NaN, infinity or a zero scale is
-// refused by every command that loads it, naming the file and the array.
+// refused by every command that loads it, naming the file and the array; no floating-point option
+// takes NaN or infinity.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <regex>
+#include <sstream>
 
 #include "core/sha256.hpp"
 #include "tests/hostile/hostile_support.hpp"
@@ -49,6 +52,55 @@ TEST(NonFinite, TrainRefusesAWindowWithNaNBeforeAnyEpoch) {
     EXPECT_FALSE(fs::exists(d.dir.file("m.h5")));
     EXPECT_FALSE(fs::exists(d.dir.file("m.training.json")));
   }
+}
+
+// The command paths (e.g. "capture extract") under `path`, from the help's Subcommands section.
+std::vector<std::vector<std::string>> commands_under(std::vector<std::string> path) {
+  std::vector<std::string> args = path;
+  args.push_back("--help");
+  std::istringstream help(run_haptex(args).out);
+  std::vector<std::vector<std::string>> found;
+  bool listing = false;
+  static const std::regex subcommand("^  ([a-z-]+) {2,}.*");
+  std::smatch m;
+  for (std::string line; std::getline(help, line);) {
+    if (line.rfind("Subcommands:", 0) == 0) listing = true;
+    else if (listing && std::regex_match(line, m, subcommand)) {
+      std::vector<std::string> sub = path;
+      sub.push_back(m[1]);
+      const auto deeper = commands_under(sub);
+      found.insert(found.end(), deeper.begin(), deeper.end());
+    }
+  }
+  if (found.empty() && !path.empty()) found.push_back(path);
+  return found;
+}
+
+// CLI11 reads "nan" and "inf" as numbers, and range checks let NaN through: every option whose help
+// says FLOAT, in every command, refuses them before any work.
+TEST(NonFinite, NoFloatingPointOptionTakesNaNOrInfinity) {
+  static const std::regex float_option("^ *(--[a-z-]+) FLOAT.*");
+  int options = 0;
+  for (const auto& command : commands_under({})) {
+    std::vector<std::string> help_args = command;
+    help_args.push_back("--help");
+    std::istringstream help(run_haptex(help_args).out);
+    std::smatch m;
+    for (std::string line; std::getline(help, line);) {
+      if (!std::regex_match(line, m, float_option)) continue;
+      ++options;
+      for (const char* value : {"nan", "inf", "-inf"}) {
+        std::vector<std::string> args = command;
+        args.push_back(m[1].str() + "=" + value);
+        SCOPED_TRACE(args.front() + " " + args.back());
+        const CommandResult r = run_haptex(args);
+        EXPECT_EQ(r.exit_code, 2) << r.err;
+        EXPECT_NE(r.err.find(m[1].str() + ": "), std::string::npos) << r.err;
+        if (std::string(value) == "nan") EXPECT_NE(r.err.find("must be a finite number"), std::string::npos) << r.err;
+      }
+    }
+  }
+  EXPECT_GE(options, 9) << "the help lists the floating-point options";
 }
 
 // The model's arrays a damaged or diverged training could leave, and what loading it must say.
