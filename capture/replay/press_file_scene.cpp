@@ -3,10 +3,19 @@
 #include <linux/videodev2.h>
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "capture/device/fake_scene.hpp"
+#include "capture/scoring/scoring_image.hpp"
+#include "dataset/layout.hpp"
 
 namespace haptex::capture {
+namespace {
+
+// A sensor's JPEG re-encoded after its channels were put back in order: close to what it sent.
+constexpr int kReencodeQuality = 95;
+
+}  // namespace
 
 FakeMode press_file_replay_mode(const std::string& path) {
   const PressFileFrames frames(path);
@@ -18,12 +27,14 @@ FakeMode press_file_replay_mode(const std::string& path) {
   return mode;
 }
 
-PressFileScene::PressFileScene(const std::string& path) : frames_(path) {}
+PressFileScene::PressFileScene(const std::string& path)
+    : frames_(path), order_(dataset::read_channel_order(frames_.root(), dataset::layout::kReference)) {}
 
 const std::vector<std::uint8_t>* PressFileScene::frame(std::uint64_t k) {
   if (k >= frames_.count()) return nullptr;
   payload_ = frames_.bytes(std::size_t(k));
-  if (frames_.encoding() == "jpeg") return &payload_;
+  const bool jpeg = frames_.encoding() == "jpeg";
+  if (jpeg && (order_ == dataset::kWrittenChannelOrder || !is_complete_jpeg(payload_))) return &payload_;
   cv::Mat bgr;
   if (!payload_.empty()) {
     try {
@@ -31,12 +42,17 @@ const std::vector<std::uint8_t>* PressFileScene::frame(std::uint64_t k) {
     } catch (const cv::Exception&) {
     }
   }
-  if (bgr.size() == frames_.size()) {
-    payload_ = bgr_to_yuyv(bgr);
-  } else {
+  if (bgr.size() != frames_.size()) {
     // The recorder stored a cut-off raw frame empty: send a third of a frame, as the fake camera's corrupt fault does.
     payload_.assign(std::size_t(frames_.size().area()) * 2 / 3, 0);
+    return &payload_;
   }
+  // Frames stored B, G, R decode with red and blue swapped: the sensor sent them the other way round.
+  if (order_ == dataset::ChannelOrder::bgr) cv::cvtColor(bgr, bgr, cv::COLOR_RGB2BGR);
+  if (jpeg)
+    cv::imencode(".jpg", bgr, payload_, {cv::IMWRITE_JPEG_QUALITY, kReencodeQuality});
+  else
+    payload_ = bgr_to_yuyv(bgr);
   return &payload_;
 }
 

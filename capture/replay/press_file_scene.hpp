@@ -1,6 +1,8 @@
 #pragma once
 // A press file replayed as the sensor sent it: MJPG frames ("jpeg") are the stored bytes exactly, never
-// re-encoded; raw YUYV frames, stored as lossless PNG, become YUYV again. A stored frame that was
+// re-encoded (unless the file states its frames hold B, G, R: those are decoded, put back in order and
+// re-encoded at quality 95, so the replayed take is RGB as haptex writes it); raw YUYV frames, stored as
+// lossless PNG, become YUYV again. A stored frame that was
 // cut off is sent cut off again, so the recorder counts it corrupt as it did the first time.
 #include <cstdint>
 #include <string>
@@ -9,6 +11,7 @@
 #include "capture/device/camera_scene.hpp"
 #include "capture/device/fake_camera.hpp"
 #include "capture/storage/press_file_frames.hpp"
+#include "dataset/channel_order.hpp"
 
 namespace haptex::capture {
 
@@ -23,6 +26,7 @@ class PressFileScene : public CameraScene {
 
  private:
   PressFileFrames frames_;
+  dataset::ChannelOrder order_;
   std::vector<std::uint8_t> payload_;
 };
 

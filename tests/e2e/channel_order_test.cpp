@@ -138,6 +138,29 @@ TEST_F(ColourOrder, APressFileStoredBlueFirstExtractsAsTheOriginal) {
   EXPECT_GT(largest_difference(descriptor_of(dir_.file("g_ignored.h5"), kGelsightPress), d), 1e-3);
 }
 
+// Replayed as a sensor (`--device replay:`), a press file stored blue first sends its frames in their
+// true colours again: the new take's reference is the original's replayed, pixel for pixel.
+TEST_F(ColourOrder, APressFileStoredBlueFirstReplaysInItsTrueColours) {
+  const std::string session = dir_.file("session");
+  const CommandResult r = run_haptex({"capture", "record", "--device", "fake:size=320x240,format=YUYV,lockstep", "--material",
+                                      "Cork", "--presses", "1", "-o", session});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string original = session + "/press_0.h5";
+  const std::string blue_first = copy_into(dir_, original, "blue_first.h5"), ignored = copy_into(dir_, original, "ignored.h5");
+  swap_press_file(blue_first, "BGR");
+  swap_press_file(ignored, "RGB");
+  const auto replay = [&](const std::string& file, const std::string& name) {
+    const CommandResult take = run_haptex({"capture", "record", "--device", "replay:" + file + ",lockstep", "--material", "Cork",
+                                           "--presses", "1", "--warmup", "0", "-o", dir_.file(name)});
+    EXPECT_EQ(take.exit_code, 0) << take.err;
+    return stored(dir_.file(name) + "/press_0.h5", "reference");
+  };
+  const std::vector<std::uint8_t> reference = replay(original, "again");
+  ASSERT_GT(red_blue_difference(reference), 20.0);
+  EXPECT_EQ(replay(blue_first, "blue_first"), reference);
+  EXPECT_NE(replay(ignored, "ignored"), reference);
+}
+
 TEST_F(ColourOrder, AVideoIsStoredInItsTrueColoursAndReadBackInTheStatedOrder) {
   const capture::PressSchedule schedule = capture::fixtures::quick_presses(1);
   const std::string video = dir_.file("cork.mkv");
