@@ -155,7 +155,9 @@ TEST(WeakFootage, RealStillGelsGiveNoPress) {
 }
 
 // The gsrobotics video (three finger presses, docs/capture.md) with its contrast cut to 30 and 15 %:
-// every press found lies in one of the three, and the strongest (peak 98) is always found.
+// every press found lies in one of the three, and no press in two; MJPG finds all three, MPEG-4 at
+// least the last two (at 30 % its first two presses, 4 frames apart, merge into one: measured
+// 60-153 peak 98 and 161-214 peak 197).
 TEST(WeakFootage, TheGsroboticsVideoWithItsContrastCut) {
   const std::string gs = gelsight_data("gsrobotics_gsmini_markers");
   if (gs.empty()) GTEST_SKIP() << "../shared/data/gelsight/gsrobotics_gsmini_markers is absent";
@@ -170,6 +172,8 @@ TEST(WeakFootage, TheGsroboticsVideoWithItsContrastCut) {
   cv::Mat background = cv::Mat::zeros(frames.front().size(), CV_32FC3);
   for (int i = 5; i < 15; ++i) background += frames[std::size_t(i)] / 10.0;
   background.convertTo(background, CV_8UC3);
+  // The three presses of the original (first-last frame of contact, with a frame's margin).
+  const std::vector<std::pair<std::int64_t, std::int64_t>> truth = {{57, 88}, {89, 153}, {159, 208}};
   TempDir dir;
   for (double contrast : {0.3, 0.15})
     for (int fourcc : {kMpeg4, kMjpg}) {
@@ -179,14 +183,17 @@ TEST(WeakFootage, TheGsroboticsVideoWithItsContrastCut) {
       fixtures::write_weak_video(path, frames, background, d, fourcc);
       const auto plans = presses_in(path);
       SCOPED_TRACE(path + ": " + describe(plans));
-      ASSERT_FALSE(plans.empty());
-      bool strongest = false;
+      std::vector<int> found(truth.size(), 0);
       for (const auto& p : plans) {
-        const std::int64_t peak = p.contact.peak;
-        EXPECT_TRUE((peak >= 58 && peak <= 88) || (peak >= 90 && peak <= 153) || (peak >= 160 && peak <= 208)) << peak;
-        strongest = strongest || std::abs(peak - 98) <= 3;
+        int in = 0;
+        for (std::size_t k = 0; k < truth.size(); ++k)
+          if (p.contact.peak >= truth[k].first && p.contact.peak <= truth[k].second) ++found[k], ++in;
+        EXPECT_EQ(in, 1) << "peak " << p.contact.peak << " lies in one of the presses";
       }
-      EXPECT_TRUE(strongest);
+      for (std::size_t k = 0; k < truth.size(); ++k) {
+        EXPECT_LE(found[k], 1) << "press " << k << " cut once";
+        if (fourcc == kMjpg || k > 0) EXPECT_EQ(found[k], 1) << "press " << k << " found";
+      }
     }
 }
 
