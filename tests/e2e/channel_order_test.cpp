@@ -106,19 +106,26 @@ const std::string kGelsightPress = "materials/cork/presses/0";
 
 class ColourOrder : public ::testing::Test {
  protected:
+  // A press file recorded from the fake YUYV sensor, and its twins: blue first saying BGR
+  // (blue_first.h5), and blue first still saying RGB (ignored.h5).
+  std::string record_press_and_twins() const {
+    const std::string session = dir_.file("session");
+    const CommandResult r = run_haptex({"capture", "record", "--device", "fake:size=320x240,format=YUYV,lockstep",
+                                        "--material", "Cork", "--presses", "1", "-o", session});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const std::string original = session + "/press_0.h5";
+    swap_press_file(copy_into(dir_, original, "blue_first.h5"), "BGR");
+    swap_press_file(copy_into(dir_, original, "ignored.h5"), "RGB");
+    return original;
+  }
   TempDir dir_;
 };
 
 TEST_F(ColourOrder, APressFileStoredBlueFirstExtractsAsTheOriginal) {
-  const std::string session = dir_.file("session");
-  const CommandResult r = run_haptex({"capture", "record", "--device", "fake:size=320x240,format=YUYV,lockstep", "--material",
-                                      "Cork", "--presses", "1", "-o", session});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string original = session + "/press_0.h5";
+  const std::string original = record_press_and_twins();
+  ASSERT_FALSE(HasFailure());
   EXPECT_EQ(h5::File::open(original).root().attr_string("channel_order"), "RGB") << "press files say their order";
-  const std::string blue_first = copy_into(dir_, original, "blue_first.h5"), ignored = copy_into(dir_, original, "ignored.h5");
-  swap_press_file(blue_first, "BGR");
-  swap_press_file(ignored, "RGB");
+  const std::string blue_first = dir_.file("blue_first.h5"), ignored = dir_.file("ignored.h5");
   extract(original, dir_.file("g.h5"));
   extract(blue_first, dir_.file("g_blue_first.h5"));
   extract(ignored, dir_.file("g_ignored.h5"));
@@ -141,14 +148,9 @@ TEST_F(ColourOrder, APressFileStoredBlueFirstExtractsAsTheOriginal) {
 // Replayed as a sensor (`--device replay:`), a press file stored blue first sends its frames in their
 // true colours again: the new take's reference is the original's replayed, pixel for pixel.
 TEST_F(ColourOrder, APressFileStoredBlueFirstReplaysInItsTrueColours) {
-  const std::string session = dir_.file("session");
-  const CommandResult r = run_haptex({"capture", "record", "--device", "fake:size=320x240,format=YUYV,lockstep", "--material",
-                                      "Cork", "--presses", "1", "-o", session});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string original = session + "/press_0.h5";
-  const std::string blue_first = copy_into(dir_, original, "blue_first.h5"), ignored = copy_into(dir_, original, "ignored.h5");
-  swap_press_file(blue_first, "BGR");
-  swap_press_file(ignored, "RGB");
+  const std::string original = record_press_and_twins();
+  ASSERT_FALSE(HasFailure());
+  const std::string blue_first = dir_.file("blue_first.h5"), ignored = dir_.file("ignored.h5");
   const auto replay = [&](const std::string& file, const std::string& name) {
     const CommandResult take = run_haptex({"capture", "record", "--device", "replay:" + file + ",lockstep", "--material", "Cork",
                                            "--presses", "1", "--warmup", "0", "-o", dir_.file(name)});
