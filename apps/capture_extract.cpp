@@ -7,6 +7,7 @@
 #include <set>
 
 #include "apps/capture_subcommands.hpp"
+#include "apps/number_checks.hpp"
 #include "core/output_is_input.hpp"
 #include "apps/terminal_progress.hpp"
 #include "capture/extraction/extract_presses.hpp"
@@ -30,11 +31,11 @@ class CaptureExtract : public CaptureSubcommand {
     app->add_option("--pixel-threshold", pixel_threshold_,
                     "Least per-pixel change that counts, in grey levels (default: the noise of the footage's own "
                     "no-contact frames; with --reference, 6 for lossy sources, 1 for lossless)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(non_negative_number());
     app->add_option("--trigger", trigger_,
                     "Least contact score that starts a press (default: from the footage's own no-contact frames; with "
                     "--reference, 0.25 lossy, 0.02 lossless)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
     app->add_option("--sheets", options_.sheets_dir, "Folder for the contact sheets (default: <output>_sheets)");
     app->add_flag("--no-sheets", no_sheets_, "Write no contact sheets");
     app->add_flag("--force", options_.overwrite, "Replace the output file, and the sheets folder while it holds only the sheets its haptex-files.json lists");
@@ -62,7 +63,7 @@ class CaptureExtract : public CaptureSubcommand {
   }
 
  private:
-  // written: false when no input held a press (the output is null).
+  // written: false when no input held a press (the output and the sheets are null).
   void print_json(const capture::ExtractResult& r, bool written) const {
     nlohmann::json presses = nlohmann::json::array();
     for (const auto& p : r.presses)
@@ -83,7 +84,8 @@ class CaptureExtract : public CaptureSubcommand {
     std::cout << nlohmann::json{{"output", written ? nlohmann::json(output_) : nlohmann::json()}, {"presses", presses},
                                 {"detection", detections}, {"sources", r.sources},
                                 {"sources_without_press", r.sources_without_press}, {"frames_scored", r.frames_scored},
-                                {"frames_unreadable", r.frames_unreadable}, {"sheets", r.sheets_dir}}
+                                {"frames_unreadable", r.frames_unreadable},
+                                {"sheets", written ? nlohmann::json(r.sheets_dir) : nlohmann::json()}}
                      .dump(2)
               << "\n";
   }

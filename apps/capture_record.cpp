@@ -64,7 +64,7 @@ class CaptureRecord : public CaptureSubcommand {
         ->take_all();
     app->add_option("--seconds", options_.seconds, "End the take after this long (0: no limit)")->capture_default_str();
     app->add_option("--warmup", options_.warmup_frames, "Frames discarded after stream start")->capture_default_str();
-    app->add_option("--reference-frames", options_.reference_frames, "No-contact frames averaged into the reference")
+    app->add_option("--reference-frames", options_.reference_frames, "No-contact frames averaged into the reference (10 to 250)")
         ->capture_default_str();
     app->add_option("--pre-frames", options_.pre_frames, "Frames kept before each contact")->capture_default_str();
     app->add_option("--post-frames", options_.post_frames, "Frames kept after each release")->capture_default_str();

@@ -33,10 +33,10 @@ class LeadingReference {
     const std::string why =
         contact.trending()
             ? text::format("they change from the first to the last as a press coming or going does (the first "
-                           "half's mean against the second half's scores %.3g, over the no-contact level %.3g)",
+                           "half's mean against the second half's scores %.4g, over the no-contact level %.4g)",
                            double(contact.trend()), double(contact.trend_limit()))
-            : text::format("two in a row differ from the others' mean by a score of %.3g, over the trigger %.3g",
-                           double(contact.worst_reference_score()), double(contact.trigger()));
+            : text::format("two in a row differ from the others' mean by a score of %.4g, over the trigger %.4g",
+                           double(contact.worst_reference_score()), double(contact.reference_limit()));
     throw input_error(path_, "frames " + std::to_string(first_) + "-" + std::to_string(indices_.back()),
                       "the first " + std::to_string(settings_.reference_frames) +
                           " frames are not a steady no-contact stretch: " + why,

@@ -143,8 +143,8 @@ void require_reference_frames(int count) {
   if (count < kMinReferenceFrames || count > kMaxReferenceFrames)
     throw input_error("--reference-frames", std::to_string(count),
                       "must be " + std::to_string(kMinReferenceFrames) + " to " + std::to_string(kMaxReferenceFrames),
-                      "Give at least " + std::to_string(kMinReferenceFrames) +
-                          " frames, so the reference's noise and no-contact level can be measured");
+                      "Give " + std::to_string(kMinReferenceFrames) + " to " + std::to_string(kMaxReferenceFrames) +
+                          " no-contact frames (docs/capture.md, \"The thresholds\")");
 }
 
 ScoreSettings score_settings_for(bool lossless) {
@@ -167,10 +167,10 @@ ContactReference::ContactReference(cv::Mat mean, float noise, float pixel_thresh
 
 namespace {
 
-// The first half's mean against the second half's: about 0.6 of a single frame's level for noise (each
-// mean holds half the frames), more than the level for a press coming or going. The frame least like
-// the others is left out: a lone odd frame, such as the first an encoder writes at another quality,
-// would move its half's mean as a press does.
+// The first half's mean against the second half's: well under a single frame's level for noise (each
+// mean holds half the frames, and t removes most of what is left), more than the level for a press
+// coming or going. The frame least like the others is left out: a lone odd frame, such as the first
+// an encoder writes at another quality, would move its half's mean as a press does.
 float trend_of(const std::vector<cv::Mat>& frames, const std::vector<float>& scores, float t) {
   const std::size_t odd = std::size_t(std::max_element(scores.begin(), scores.end()) - scores.begin());
   std::vector<const cv::Mat*> kept;
@@ -188,15 +188,17 @@ float trend_of(const std::vector<cv::Mat>& frames, const std::vector<float>& sco
 // (with t from the noise of all of them: a press moves too few pixels to move its median). A press in
 // the calibration second scores above it, and would otherwise raise the noise, the level and the
 // trigger until no press stood out (a press in most of those frames moved their median).
-std::vector<cv::Mat> quiet_frames(const std::vector<cv::Mat>& later, const cv::Mat& reference, const ScoreSettings& settings) {
+std::vector<cv::Mat> quiet_frames(const std::vector<cv::Mat>& later, const cv::Mat& reference, const DriftFit& fit,
+                                  const ScoreSettings& settings) {
   const float t = settings.pixel_threshold.value_or(settings.noise_threshold * temporal_noise(later, mean_of(later)));
-  const DriftFit fit(reference);
   std::vector<float> scores;
   for (const auto& f : later) scores.push_back(fit.score(f, reference, t));
   std::vector<float> sorted = scores;
   auto quarter = sorted.begin() + std::ptrdiff_t(sorted.size() / 4);
   std::nth_element(sorted.begin(), quarter, sorted.end());
-  const float quiet = *quarter + std::max(settings.level_factor * *quarter, settings.min_trigger);
+  ScoreSettings own = settings;
+  own.trigger.reset();  // the bar is the footage's, whatever trigger the user set for the presses
+  const float quiet = footage_trigger(*quarter, own);
   std::vector<cv::Mat> kept;
   for (std::size_t i = 0; i < later.size(); ++i)
     if (scores[i] <= quiet) kept.push_back(later[i]);
@@ -214,10 +216,12 @@ ContactReference ContactReference::from_frames(const std::vector<cv::Mat>& frame
   const Spread s = spread_of(scores);
   ContactReference r(mean, noise, t, footage_trigger(s.level, settings), s.level, s.spread);
   r.worst_reference_score_ = worst_two_in_a_row(scores);
+  r.reference_limit_ = r.trigger_;
   // A press during the reference frames raises most of their scores, and so the level it would be
   // judged by; but it changes the image from the first frames to the last, where noise does not.
+  // The floor: a noise-free source has a level of 0, which a change nobody sees would pass.
   r.trend_ = trend_of(frames, scores, t);
-  r.trend_limit_ = s.level;
+  r.trend_limit_ = std::max(s.level, settings.min_trigger);
   return r;
 }
 
@@ -225,21 +229,28 @@ ContactReference ContactReference::from_calibration(const std::vector<cv::Mat>& 
                                                      const ScoreSettings& settings) {
   if (frames.size() < 2) throw failure("internal: a contact reference from frames needs at least two of them");
   ContactReference r = from_frames(frames, settings);
-  const std::vector<cv::Mat> quiet = later.size() >= 2 ? quiet_frames(later, r.mean_, settings) : std::vector<cv::Mat>{};
-  if (quiet.size() >= 2) {
-    const float noise = temporal_noise(quiet, mean_of(quiet));
-    const float t = settings.pixel_threshold.value_or(settings.noise_threshold * noise);
-    std::vector<float> scores;
-    for (const auto& f : quiet) scores.push_back(r.fit_.score(f, r.mean_, t));
-    const Spread s = spread_of(scores);
-    r = ContactReference(r.mean_, noise, t, footage_trigger(s.level, settings), s.level, s.spread);
-    const std::vector<float> reference_scores = leave_one_out_scores(frames, t);
-    r.worst_reference_score_ = worst_two_in_a_row(reference_scores);
-    // The trend against the calibration level: the copies' own level is near 0, which any change
-    // of a grey level would exceed.
-    r.trend_ = trend_of(frames, reference_scores, t);
-    r.trend_limit_ = s.level;
+  // Fewer quiet frames measure no level worth judging by (a video cut short after its reference).
+  constexpr std::size_t kFewestQuiet = 5;
+  const std::vector<cv::Mat> quiet = later.size() >= kFewestQuiet ? quiet_frames(later, r.mean_, r.fit_, settings)
+                                                                  : std::vector<cv::Mat>{};
+  if (quiet.size() < kFewestQuiet) {
+    r.trend_limit_ = INFINITY;  // the copies' own level is near 0, which any change would pass
+    return r;
   }
+  const float noise = temporal_noise(quiet, mean_of(quiet));
+  const float t = settings.pixel_threshold.value_or(settings.noise_threshold * noise);
+  std::vector<float> scores;
+  for (const auto& f : quiet) scores.push_back(r.fit_.score(f, r.mean_, t));
+  const Spread s = spread_of(scores);
+  r = ContactReference(r.mean_, noise, t, footage_trigger(s.level, settings), s.level, s.spread);
+  // Steadiness by the quiet frames' own leave-one-out level, as from_frames judges: their level
+  // against the reference mean rises with a press in the reference, so it would excuse that press.
+  const float own_level = spread_of(leave_one_out_scores(quiet, t)).level;
+  const std::vector<float> reference_scores = leave_one_out_scores(frames, t);
+  r.worst_reference_score_ = worst_two_in_a_row(reference_scores);
+  r.reference_limit_ = footage_trigger(own_level, settings);
+  r.trend_ = trend_of(frames, reference_scores, t);
+  r.trend_limit_ = std::max(own_level, settings.min_trigger);
   return r;
 }
 

@@ -97,16 +97,17 @@ class ContactReference {
   // reference is the mean of `frames` but the noise, t, the level and the trigger come from the
   // no-contact frames `later` (ContactReference's rules above), leaving out those that score over the
   // trigger their quietest quarter sets: a press in up to three quarters of them. Steadiness is judged
-  // against those thresholds, the trend against the level of `later` (the copies' own is near 0).
-  // With fewer than two later frames, the reference frames' own thresholds.
+  // by the leave-one-out level of those quiet frames (the copies' own is near 0). With fewer than five
+  // quiet frames, the reference frames' own thresholds, and no trend.
   static ContactReference from_calibration(const std::vector<cv::Mat>& frames, const std::vector<cv::Mat>& later,
                                            const ScoreSettings& settings = {});
   // The reference frames were a steady no-contact stretch: no two in a row count as contact, and
   // they do not change from the first to the last as a press coming or going does.
-  bool steady() const { return worst_reference_score_ <= trigger_ && !trending(); }
+  bool steady() const { return worst_reference_score_ <= reference_limit_ && !trending(); }
   float worst_reference_score() const { return worst_reference_score_; }  // the lower of the worst two in a row
+  float reference_limit() const { return reference_limit_; }  // what it must stay within: the trigger, as a rule
   // The first half of the reference frames against the second (the frame least like the others left
-  // out), and the limit it must stay within: the no-contact level.
+  // out), and the limit it must stay within: the no-contact level (at least min_trigger).
   bool trending() const { return trend_ > trend_limit_; }
   float trend() const { return trend_; }
   float trend_limit() const { return trend_limit_; }
@@ -117,7 +118,7 @@ class ContactReference {
   cv::Mat mean_;
   DriftFit fit_;
   float noise_ = 0, pixel_threshold_ = 0, trigger_ = 0, level_ = 0, spread_ = 0, worst_reference_score_ = 0;
-  float trend_ = 0, trend_limit_ = INFINITY;
+  float reference_limit_ = INFINITY, trend_ = 0, trend_limit_ = INFINITY;
 };
 
 }  // namespace haptex::capture

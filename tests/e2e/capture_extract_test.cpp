@@ -141,6 +141,7 @@ TEST_F(ExtractCli, NoPressAnywhereExitsOneAndWritesNothing) {
   EXPECT_NE(j.err.find("no press found"), std::string::npos) << j.err;
   const auto result = nlohmann::json::parse(j.out);
   EXPECT_TRUE(result["output"].is_null());
+  EXPECT_TRUE(result["sheets"].is_null());
   EXPECT_TRUE(result["presses"].empty());
   ASSERT_EQ(result["detection"].size(), 1u) << j.out;
   const auto& d = result["detection"][0];

@@ -159,6 +159,42 @@ TEST(ContactReference, CalibrationTakesTheThresholdsFromLaterFrames) {
   EXPECT_EQ(given.trigger(), 0.4f) << "the user's trigger stands";
   EXPECT_NEAR(given.level(), c.level(), 1e-6f) << "and the level is still measured";
   EXPECT_EQ(ContactReference::from_calibration(copies, {}).trigger(), own.trigger()) << "no later frames: the reference's own";
+  // A video cut short after its reference: too few later frames to judge by, and no trend either
+  // (the copies' own level is near 0, which a step of compression would pass).
+  std::vector<cv::Mat> stepped = copies;
+  for (std::size_t i = 5; i < stepped.size(); ++i) stepped[i] = first + 0.5;
+  const std::vector<cv::Mat> three(later.begin() + 10, later.begin() + 13);
+  const ContactReference short_video = ContactReference::from_calibration(stepped, three);
+  EXPECT_EQ(short_video.trigger(), ContactReference::from_frames(stepped).trigger());
+  EXPECT_FALSE(short_video.trending());
+}
+
+// A touch while an inter-frame video's reference frames are taken (frames 6 to 9, copies of a pressed
+// frame) and its first calibration frames: the quiet frames' own level judges it, not their level
+// against the reference mean, which the touch raises as much as the touch's own scores.
+TEST(ContactReference, ATouchDuringAnInterFrameReferenceIsNotSteady) {
+  const cv::Mat gel = flat_gel();
+  const cv::Mat first = with_noise(gel, 2.0, 90), touched = with_noise(pressed(gel, 10), 2.0, 91);
+  std::vector<cv::Mat> copies(10, first);
+  for (std::size_t i = 6; i < 10; ++i) copies[i] = touched;
+  std::vector<cv::Mat> later;
+  for (int i = 0; i < 25; ++i) later.push_back(with_noise(i < 4 ? pressed(first, 10) : first, 2.0, 500 + std::uint64_t(i)));
+  const ContactReference c = ContactReference::from_calibration(copies, later);
+  EXPECT_FALSE(c.steady()) << "worst " << c.worst_reference_score() << " limit " << c.reference_limit() << " trend "
+                           << c.trend() << " limit " << c.trend_limit();
+}
+
+// A noise-free source (PNG from a simulator) has a level of 0: a change of a fraction of a grey level
+// in a few pixels is no trend.
+TEST(ContactReference, TheTrendHasAFloorForANoiseFreeSource) {
+  cv::Mat step = flat_gel();
+  step(cv::Rect(10, 10, 4, 4)) += 2.0;
+  std::vector<cv::Mat> frames(5, flat_gel());
+  for (int i = 0; i < 5; ++i) frames.push_back(step);
+  const ContactReference r = ContactReference::from_frames(frames);
+  EXPECT_LT(r.level(), 1e-4f);
+  EXPECT_GT(r.trend(), r.level()) << "over the level alone, the step would be refused";
+  EXPECT_TRUE(r.steady()) << "trend " << r.trend() << " limit " << r.trend_limit();
 }
 
 // A press in most of the calibration frames (18 of 25, a user who pressed right after the reference)
