@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.hpp"
+#include "apps/number_checks.hpp"
 #include "core/output_is_input.hpp"
 #include "apps/terminal_progress.hpp"
 #include "convert/convert_recordings.hpp"
@@ -24,7 +25,7 @@ class ConvertCommand : public Command {
     hatt_->add_option("--map", map_, "Field map JSON naming your files' elements (default: schemas/hatt-recording-map.json)");
     hatt_->add_option("--max-bytes", options_.max_bytes, "Refuse input files larger than this")
         ->capture_default_str()
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
     hatt_->add_flag("--force", options_.overwrite, "Replace the output file if it exists");
   }
 

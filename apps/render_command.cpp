@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "apps/command.hpp"
+#include "apps/number_checks.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/output_is_input.hpp"
@@ -45,7 +46,7 @@ class RenderCommand : public Command {
     app.add_flag("--live", live_, "Render as a live haptic loop plays it: one frame per 10 ms (online, or noise with "
                                   "--reconstruct noise), output delayed as played");
     app.add_option("--full-scale", full_scale_, "m/s^2 at WAV full scale (default: the peak, rounded up to 3 digits)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive_number());
     app.add_flag("--steady", steady_, "online: play the predicted spectra as they are, without drawing each frame's magnitudes "
                                       "around them (steadier than any surface; docs/render.md)");
     app.add_option("--seed", seed_, "fgla: seed of the random initial phase; online: of the frames' scatter; noise: of the noise")

@@ -1,9 +1,8 @@
-#include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
 #include "apps/command.hpp"
+#include "apps/number_checks.hpp"
 #include "apps/provenance.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
@@ -11,19 +10,10 @@
 namespace haptex::apps {
 namespace {
 
-// CLI11 reads "nan", "inf" and 1e999 as numbers, and its range checks let NaN through: every
-// floating-point option of every command takes finite numbers only.
+// Every floating-point option of every command takes finite numbers only (apps/number_checks.hpp).
 void require_finite_numbers(CLI::App& app) {
-  const CLI::Validator finite(
-      [](std::string& input) -> std::string {
-        char* end = nullptr;
-        const double value = std::strtod(input.c_str(), &end);
-        if (end != input.c_str() && !std::isfinite(value)) return "must be a finite number, not " + input;
-        return "";
-      },
-      "");
   for (CLI::Option* option : app.get_options())
-    if (option->get_type_name().find("FLOAT") != std::string::npos) option->check(finite);
+    if (option->get_type_name().find("FLOAT") != std::string::npos) option->check(finite_number());
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) require_finite_numbers(*sub);
 }
 

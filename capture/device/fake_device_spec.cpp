@@ -52,10 +52,11 @@ double DeviceKeys::number(const std::string& key, const std::string& text) const
   try {
     std::size_t used = 0;
     const double value = std::stod(text, &used);
-    if (used == text.size() && value >= 0) return value;
+    // At most 1e12: frame counts and rates are cast to integers, and no take runs that long.
+    if (used == text.size() && value >= 0 && value <= 1e12) return value;
   } catch (...) {
   }
-  refuse(key, "'" + text + "' is not a number of 0 or more");
+  refuse(key, "'" + text + "' is not a number from 0 to 1e12");
 }
 
 bool DeviceKeys::apply_stream_key(FakeCameraConfig& c, const std::string& key, const std::string& value) const {

@@ -136,8 +136,11 @@ TEST_F(ReplayDevice, RefusesUnknownKeysAndBadValuesNamingThem) {
   expect_refused("replay:" + path + ",lockstep,size=64x48", {"size: unknown key"});
   expect_refused("replay:" + path + ",fps=0", {"fps", "above 0"});
   expect_refused("replay:" + path + ",fps=fast", {"fps", "'fast' is not a number"});
-  expect_refused("replay:" + path + ",drop=-5", {"drop", "'-5' is not a number of 0 or more"});
+  expect_refused("replay:" + path + ",drop=-5", {"drop", "'-5' is not a number from 0 to 1e12"});
   expect_refused("replay:" + path + ",disconnect=", {"disconnect", "'' is not a number"});
+  expect_refused("replay:" + path + ",disconnect=inf", {"disconnect", "'inf' is not a number from 0 to 1e12"});
+  expect_refused("replay:" + path + ",drop=nan", {"drop", "'nan' is not a number"});
+  expect_refused("replay:" + path + ",speed=1e999", {"speed", "'1e999' is not a number"});
   expect_refused("replay:" + path + ",stall=10", {"stall", "FRAME:MILLISECONDS"});
   expect_refused("replay:" + path + ",speed=0", {"speed", "more than 0"});
 }

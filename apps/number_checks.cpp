@@ -1,0 +1,32 @@
+#include "apps/number_checks.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+namespace haptex::apps {
+namespace {
+
+// An empty string when `input` is a finite number of at least `min` (above it when `strict`); what is
+// wrong otherwise. Text that is no number is left to CLI11's conversion, which names the type.
+std::string judge(const std::string& input, double min, bool strict) {
+  char* end = nullptr;
+  const double value = std::strtod(input.c_str(), &end);
+  if (end == input.c_str()) return "";
+  if (!std::isfinite(value)) return "must be a finite number, not " + input;
+  if (value < min || (strict && value == min))
+    return std::string("must be ") + (strict ? "above " : "at least ") + std::to_string(int(min)) + ", not " + input;
+  return "";
+}
+
+CLI::Validator checking(double min, bool strict, const std::string& description) {
+  return CLI::Validator([=](std::string& input) { return judge(input, min, strict); }, description);
+}
+
+}  // namespace
+
+CLI::Validator finite_number() { return checking(-INFINITY, false, ""); }
+CLI::Validator positive_number() { return checking(0, true, "POSITIVE"); }
+CLI::Validator non_negative_number() { return checking(0, false, "NONNEGATIVE"); }
+
+}  // namespace haptex::apps

@@ -1,0 +1,12 @@
+#pragma once
+// Checks of numeric options. CLI11 reads "nan", "inf" and 1e999 as numbers; its range checks let NaN
+// through and answer infinity with a bound of 309 digits. These refuse both first, saying so.
+#include <CLI/CLI.hpp>
+
+namespace haptex::apps {
+
+CLI::Validator finite_number();        // every floating-point option has it (run_main.cpp)
+CLI::Validator positive_number();      // finite and > 0
+CLI::Validator non_negative_number();  // finite and >= 0
+
+}  // namespace haptex::apps
