@@ -3,19 +3,13 @@
 #include <linux/videodev2.h>
 
 #include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "capture/device/fake_scene.hpp"
+#include "capture/replay/video_scene.hpp"
 #include "capture/scoring/scoring_image.hpp"
 #include "dataset/layout.hpp"
 
 namespace haptex::capture {
-namespace {
-
-// A sensor's JPEG re-encoded after its channels were put back in order: close to what it sent.
-constexpr int kReencodeQuality = 95;
-
-}  // namespace
 
 FakeMode press_file_replay_mode(const std::string& path) {
   const PressFileFrames frames(path);
@@ -47,10 +41,11 @@ const std::vector<std::uint8_t>* PressFileScene::frame(std::uint64_t k) {
     payload_.assign(std::size_t(frames_.size().area()) * 2 / 3, 0);
     return &payload_;
   }
-  // Frames stored B, G, R decode with red and blue swapped: the sensor sent them the other way round.
-  if (order_ == dataset::ChannelOrder::bgr) cv::cvtColor(bgr, bgr, cv::COLOR_RGB2BGR);
+  // Frames stored B, G, R decode to R, G, B where OpenCV expects B, G, R: the sensor sent them swapped back.
+  if (order_ == dataset::ChannelOrder::bgr)
+    dataset::reorder_channels({bgr.data, bgr.total() * 3}, dataset::ChannelOrder::rgb, dataset::ChannelOrder::bgr);
   if (jpeg)
-    cv::imencode(".jpg", bgr, payload_, {cv::IMWRITE_JPEG_QUALITY, kReencodeQuality});
+    cv::imencode(".jpg", bgr, payload_, {cv::IMWRITE_JPEG_QUALITY, kReplayJpegQuality});
   else
     payload_ = bgr_to_yuyv(bgr);
   return &payload_;

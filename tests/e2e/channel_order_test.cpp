@@ -59,23 +59,25 @@ void swap_images(const std::string& file, const std::string& press, const std::v
   (press.empty() ? e.root() : e.group(press)).set_attr("channel_order", order);
 }
 
-// A press file (YUYV frames stored as lossless PNG) with every colour swapped, saying `order`.
+// A press file with every colour swapped, saying `order`: its frames encoded again as they were
+// (YUYV frames as lossless PNG, MJPG frames as JPEG of quality 100).
 void swap_press_file(const std::string& file, const std::string& order) {
   swap_images(file, "", {"reference"}, order);
   Edit e(file);
-  std::vector<std::vector<std::uint8_t>> pngs;
+  const bool jpeg = e.root().attr_string("encoding") == "jpeg";
+  std::vector<std::vector<std::uint8_t>> encoded;
   const h5::Dataset frames = e.dataset("frames");
   for (std::size_t i = 0; i < frames.shape()[0]; ++i) {
     cv::Mat image = cv::imdecode(capture::read_vlen_bytes(frames, i), cv::IMREAD_COLOR);
     cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
-    std::vector<std::uint8_t> png;
-    ASSERT_TRUE(cv::imencode(".png", image, png));
-    pngs.push_back(std::move(png));
+    std::vector<std::uint8_t> bytes;
+    ASSERT_TRUE(cv::imencode(jpeg ? ".jpg" : ".png", image, bytes, {cv::IMWRITE_JPEG_QUALITY, 100}));
+    encoded.push_back(std::move(bytes));
   }
   e.remove("frames");
   h5::Group root = e.root();
   capture::VlenBytesWriter writer(root, "frames");
-  for (const auto& png : pngs) writer.append(png);
+  for (const auto& bytes : encoded) writer.append(bytes);
 }
 
 void extract(const std::string& input, const std::string& output, std::vector<std::string> extra = {}) {
@@ -106,26 +108,29 @@ const std::string kGelsightPress = "materials/cork/presses/0";
 
 class ColourOrder : public ::testing::Test {
  protected:
-  // A press file recorded from the fake YUYV sensor, and its twins: blue first saying BGR
-  // (blue_first.h5), and blue first still saying RGB (ignored.h5).
-  std::string record_press_and_twins() const {
-    const std::string session = dir_.file("session");
-    const CommandResult r = run_haptex({"capture", "record", "--device", "fake:size=320x240,format=YUYV,lockstep",
+  // A press file recorded from the fake sensor (YUYV or MJPG), and its twins: blue first saying BGR,
+  // and blue first still saying RGB.
+  struct Twins {
+    std::string original, blue_first, ignored;
+  };
+  Twins record_press_and_twins(const std::string& format = "YUYV") const {
+    const std::string session = dir_.file("session_" + format);
+    const CommandResult r = run_haptex({"capture", "record", "--device", "fake:size=320x240,format=" + format + ",lockstep",
                                         "--material", "Cork", "--presses", "1", "-o", session});
     EXPECT_EQ(r.exit_code, 0) << r.err;
-    const std::string original = session + "/press_0.h5";
-    swap_press_file(copy_into(dir_, original, "blue_first.h5"), "BGR");
-    swap_press_file(copy_into(dir_, original, "ignored.h5"), "RGB");
-    return original;
+    const Twins t{session + "/press_0.h5", copy_into(dir_, session + "/press_0.h5", format + "_blue_first.h5"),
+                  copy_into(dir_, session + "/press_0.h5", format + "_ignored.h5")};
+    swap_press_file(t.blue_first, "BGR");
+    swap_press_file(t.ignored, "RGB");
+    return t;
   }
   TempDir dir_;
 };
 
 TEST_F(ColourOrder, APressFileStoredBlueFirstExtractsAsTheOriginal) {
-  const std::string original = record_press_and_twins();
+  const auto [original, blue_first, ignored] = record_press_and_twins();
   ASSERT_FALSE(HasFailure());
   EXPECT_EQ(h5::File::open(original).root().attr_string("channel_order"), "RGB") << "press files say their order";
-  const std::string blue_first = dir_.file("blue_first.h5"), ignored = dir_.file("ignored.h5");
   extract(original, dir_.file("g.h5"));
   extract(blue_first, dir_.file("g_blue_first.h5"));
   extract(ignored, dir_.file("g_ignored.h5"));
@@ -146,21 +151,32 @@ TEST_F(ColourOrder, APressFileStoredBlueFirstExtractsAsTheOriginal) {
 }
 
 // Replayed as a sensor (`--device replay:`), a press file stored blue first sends its frames in their
-// true colours again: the new take's reference is the original's replayed, pixel for pixel.
+// true colours again: the new take's reference is the original's replayed, pixel for pixel from raw
+// frames, and within a grey level on average from MJPG (decoded, reordered and encoded again).
 TEST_F(ColourOrder, APressFileStoredBlueFirstReplaysInItsTrueColours) {
-  const std::string original = record_press_and_twins();
-  ASSERT_FALSE(HasFailure());
-  const std::string blue_first = dir_.file("blue_first.h5"), ignored = dir_.file("ignored.h5");
-  const auto replay = [&](const std::string& file, const std::string& name) {
-    const CommandResult take = run_haptex({"capture", "record", "--device", "replay:" + file + ",lockstep", "--material", "Cork",
-                                           "--presses", "1", "--warmup", "0", "-o", dir_.file(name)});
-    EXPECT_EQ(take.exit_code, 0) << take.err;
-    return stored(dir_.file(name) + "/press_0.h5", "reference");
-  };
-  const std::vector<std::uint8_t> reference = replay(original, "again");
-  ASSERT_GT(red_blue_difference(reference), 20.0);
-  EXPECT_EQ(replay(blue_first, "blue_first"), reference);
-  EXPECT_NE(replay(ignored, "ignored"), reference);
+  for (const std::string format : {"YUYV", "MJPG"}) {
+    SCOPED_TRACE(format);
+    const Twins twins = record_press_and_twins(format);
+    ASSERT_FALSE(HasFailure());
+    const auto replay = [&](const std::string& file, const std::string& name) {
+      const CommandResult take = run_haptex({"capture", "record", "--device", "replay:" + file + ",lockstep", "--material",
+                                             "Cork", "--presses", "1", "--warmup", "0", "-o", dir_.file(format + name)});
+      EXPECT_EQ(take.exit_code, 0) << take.err;
+      return stored(dir_.file(format + name) + "/press_0.h5", "reference");
+    };
+    const auto mean_difference = [](const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+      double sum = 0;
+      for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) sum += std::abs(int(a[i]) - int(b[i]));
+      return a.size() == b.size() ? sum / double(a.size()) : INFINITY;
+    };
+    const std::vector<std::uint8_t> reference = replay(twins.original, "again");
+    ASSERT_GT(red_blue_difference(reference), 20.0);
+    const double blue_first = mean_difference(replay(twins.blue_first, "blue_first"), reference);
+    const double ignored = mean_difference(replay(twins.ignored, "ignored"), reference);
+    if (format == "YUYV") EXPECT_EQ(blue_first, 0.0);
+    EXPECT_LT(blue_first, 1.0);
+    EXPECT_GT(ignored, 10.0);
+  }
 }
 
 TEST_F(ColourOrder, AVideoIsStoredInItsTrueColoursAndReadBackInTheStatedOrder) {
