@@ -1,0 +1,28 @@
+#pragma once
+// Resampling onto haptex's 10 kHz grid without aliasing, as scipy does it (docs/convert.md,
+// "Sources at other rates"):
+//   - a uniform source: scipy.signal.resample_poly(x, up, down, padtype='mean'), a polyphase FIR
+//     whose Kaiser-windowed sinc (beta 5, 10 zero crossings each side) cuts at the lower Nyquist;
+//   - an irregular one (time stamps that wander, as the Cluster database's accelerometer logs):
+//     numpy.interp onto a uniform grid at the source's nominal rate, then the above.
+// padtype 'mean': the signal's mean is taken out before the zero padding and put back after, so a
+// force of 2 N does not sag towards 0 over the first and last filter length.
+#include <span>
+#include <vector>
+
+namespace haptex::signal {
+
+// scipy.signal.firwin(taps, cutoff, window=('kaiser', beta)): a low-pass, cutoff as a fraction of
+// Nyquist, scaled to unit gain at 0 Hz; taps odd.
+std::vector<double> kaiser_lowpass(int taps, double cutoff, double beta);
+
+// scipy.signal.resample_poly(x, up, down, padtype='mean'); up, down >= 1. The output has
+// ceil(x.size() * up / down) samples; the first is at the time of x's first.
+std::vector<double> resample_poly(std::span<const double> x, int up, int down);
+
+// numpy.interp(start_s + k / grid_hz, times, values) for k = 0 .. count - 1: samples at strictly
+// increasing times (seconds) onto a uniform grid (held at the end values outside them, as numpy does).
+std::vector<double> interpolate_uniform(std::span<const double> times, std::span<const double> values, double start_s,
+                                        double grid_hz, std::size_t count);
+
+}  // namespace haptex::signal

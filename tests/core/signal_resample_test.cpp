@@ -1,0 +1,76 @@
+// Resampling against scipy 1.10 (tests/golden/resample_golden.py): the Kaiser low-pass, resample_poly
+// with padtype 'mean' for five ratios, and irregular time stamps through numpy.interp then 5/3.
+#include "core/signal/resample.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "tests/support/npy.hpp"
+
+namespace haptex::signal {
+namespace {
+
+using test::load_golden;
+using test::max_scaled_error;
+
+TEST(Resample, TheKaiserLowPassIsScipysFirwin) {
+  EXPECT_LT(max_scaled_error(kaiser_lowpass(101, 0.2, 5.0), load_golden("resample/kaiser_101_0p2.npy").data), 1e-13);
+}
+
+TEST(Resample, ResamplePolyMatchesScipyForEveryRatio) {
+  const std::vector<double> x = load_golden("resample/poly_x.npy").data;
+  for (const auto& [up, down] : {std::pair{5, 3}, {3, 5}, {100, 441}, {2, 1}, {10, 6}}) {
+    SCOPED_TRACE(std::to_string(up) + "/" + std::to_string(down));
+    const std::vector<double> expected =
+        load_golden("resample/poly_" + std::to_string(up) + "_" + std::to_string(down) + ".npy").data;
+    const std::vector<double> y = resample_poly(x, up, down);
+    ASSERT_EQ(y.size(), expected.size());
+    EXPECT_LT(max_scaled_error(y, expected), 1e-12);
+  }
+  EXPECT_EQ(resample_poly(x, 4, 4), x) << "equal rates: the input";
+}
+
+TEST(Resample, IrregularStampsGoThroughInterpolationAtTheNominalRate) {
+  const std::vector<double> t = load_golden("resample/irregular_t.npy").data, x = load_golden("resample/irregular_x.npy").data;
+  const std::vector<double> uniform =
+      interpolate_uniform(t, x, t.front(), 6000.0, std::size_t(std::floor((t.back() - t.front()) * 6000.0)) + 1);
+  const std::vector<double> expected = load_golden("resample/irregular_uniform_6000.npy").data;
+  ASSERT_EQ(uniform.size(), expected.size());
+  EXPECT_LT(max_scaled_error(uniform, expected), 1e-13);
+  const std::vector<double> at_10k = resample_poly(uniform, 10000, 6000);
+  EXPECT_LT(max_scaled_error(at_10k, load_golden("resample/irregular_10000.npy").data), 1e-12);
+}
+
+// What the filter is for: a tone above the target's Nyquist (4.5 kHz at 12 kHz, resampled to 6 kHz)
+// is removed, not folded onto 1.5 kHz; a tone below it passes.
+TEST(Resample, AToneAboveTheNewNyquistDoesNotAlias) {
+  std::vector<double> above(12000), below(12000);
+  for (std::size_t i = 0; i < above.size(); ++i) {
+    above[i] = std::sin(2 * M_PI * 4500.0 * double(i) / 12000.0);
+    below[i] = std::sin(2 * M_PI * 1000.0 * double(i) / 12000.0);
+  }
+  const auto rms = [](const std::vector<double>& v) {
+    double s = 0;
+    for (std::size_t i = 200; i + 200 < v.size(); ++i) s += v[i] * v[i];  // away from the edges
+    return std::sqrt(s / double(v.size() - 400));
+  };
+  EXPECT_LT(rms(resample_poly(above, 1, 2)), 0.01);
+  EXPECT_NEAR(rms(resample_poly(below, 1, 2)), std::sqrt(0.5), 0.01);
+}
+
+TEST(Resample, RefusesTimesThatDoNotIncrease) {
+  const std::vector<double> t = {0.0, 1e-3, 1e-3, 2e-3}, x = {1, 2, 3, 4};
+  EXPECT_THROW(interpolate_uniform(t, x, 0.0, 1000.0, 3), Error);
+  EXPECT_THROW(interpolate_uniform(std::vector<double>{0.0}, std::vector<double>{1.0}, 0.0, 1000.0, 1), Error);
+  // Outside the stamps, numpy.interp holds the end values.
+  const std::vector<double> held = interpolate_uniform(std::vector<double>{1.0, 2.0}, std::vector<double>{5.0, 7.0}, 0.0, 1.0, 4);
+  EXPECT_EQ(held, (std::vector<double>{5.0, 5.0, 7.0, 7.0}));
+}
+
+}  // namespace
+}  // namespace haptex::signal
