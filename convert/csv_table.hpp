@@ -1,0 +1,24 @@
+#pragma once
+// A CSV file of numbers with one header row, as rigs and databases log them: the columns a reader
+// asks for, parsed, every bad cell refused naming its line and column (docs/convert.md).
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace haptex::convert {
+
+struct CsvTable {
+  std::vector<std::string> header;                     // as written, without quotes and white space
+  std::map<std::string, std::vector<double>> columns;  // the kept columns, by header name
+  std::string sha256;                                  // of the file's bytes
+};
+
+// Reads `path` (refused over max_bytes), keeping the columns whose header name `keep` accepts.
+// Throws haptex::Error (bad_input) for an empty file, a row with another number of fields than the
+// header, and a kept cell that is not a finite number.
+CsvTable read_csv_table(const std::string& path, std::uintmax_t max_bytes,
+                        const std::function<bool(const std::string&)>& keep);
+
+}  // namespace haptex::convert
