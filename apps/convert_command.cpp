@@ -1,4 +1,5 @@
 // haptex convert hatt <files or directories> -o recordings.h5 [--map FILE] [--max-bytes N] [--force]
+// haptex convert cluster <database folder> -o recordings.h5 [--names FILE] [--max-bytes N] [--force]
 #include <chrono>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -21,28 +22,44 @@ class ConvertCommand : public Command {
     app.require_subcommand(1);
     hatt_ = app.add_subcommand("hatt", "HaTT recorded-data XML and CSV recordings -> recordings.h5");
     hatt_->add_option("inputs", inputs_, "Recording files, or directories searched for *.xml and *.csv")->required();
-    hatt_->add_option("-o,--output", output_, "Recordings file to write (HDF5)")->required();
     hatt_->add_option("--map", map_, "Field map JSON naming your files' elements (default: schemas/hatt-recording-map.json)");
-    hatt_->add_option("--max-bytes", options_.max_bytes, "Refuse input files larger than this")
-        ->capture_default_str()
-        ->check(positive_number());
-    hatt_->add_flag("--force", options_.overwrite, "Replace the output file if it exists");
+    add_output_options(*hatt_);
+
+    cluster_ = app.add_subcommand("cluster", "Cluster Haptic Texture Database (sensor_data/ CSV takes) -> recordings.h5");
+    cluster_->add_option("database", database_, "The database's folder (holding sensor_data/), or sensor_data itself")
+        ->required();
+    cluster_->add_option("--names", names_, "Texture names: JSON {\"0\": \"name\", ...} or CSV id,name (default: cluster N)");
+    add_output_options(*cluster_);
   }
 
   int run(const GlobalOptions& global) override {
     if (!map_.empty()) options_.map_path = map_;
-    std::vector<std::string> inputs = inputs_;
+    std::vector<std::string> inputs = cluster_->parsed() ? std::vector<std::string>{database_, names_} : inputs_;
     inputs.push_back(map_);
     refuse_output_among_inputs(output_, inputs);
     options_.provenance = global.command_line;
     const auto start = std::chrono::steady_clock::now();
-    const auto result = convert::convert_recordings(inputs_, output_, options_, terminal_progress(global, "convert"));
+    const auto result =
+        cluster_->parsed()
+            ? convert::convert_cluster(database_, output_, options_,
+                                       names_.empty() ? std::nullopt : std::optional<std::string>(names_),
+                                       terminal_progress(global, "convert"))
+            : convert::convert_recordings(inputs_, output_, options_, terminal_progress(global, "convert"));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     print(result, seconds, global);
     return 0;
   }
 
  private:
+  // What every reader shares: the output, the input size limit and --force.
+  void add_output_options(CLI::App& sub) {
+    sub.add_option("-o,--output", output_, "Recordings file to write (HDF5)")->required();
+    sub.add_option("--max-bytes", options_.max_bytes, "Refuse input files larger than this")
+        ->capture_default_str()
+        ->check(positive_number());
+    sub.add_flag("--force", options_.overwrite, "Replace the output file if it exists");
+  }
+
   void print(const convert::ConvertResult& result, double seconds, const GlobalOptions& global) const {
     std::size_t samples = 0;
     for (const auto& r : result.recordings) samples += r.samples;
@@ -65,9 +82,9 @@ class ConvertCommand : public Command {
               << " samples, in " << seconds << " s\n";
   }
 
-  CLI::App* hatt_ = nullptr;
+  CLI::App *hatt_ = nullptr, *cluster_ = nullptr;
   std::vector<std::string> inputs_;
-  std::string output_, map_;
+  std::string output_, map_, database_, names_;
   convert::ConvertOptions options_;
 };
 

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <set>
 
+#include "convert/cluster_database.hpp"
 #include "convert/csv_recording_reader.hpp"
 #include "convert/field_map.hpp"
 #include "convert/hatt_recording_reader.hpp"
 #include "convert/recordings_writer.hpp"
+#include "convert/texture_names.hpp"
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "dataset/format.hpp"
@@ -62,6 +66,28 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
   return files;
 }
 
+namespace {
+
+// Reads source i (and the bytes it read) and writes it into the open recordings file, in turn.
+ConvertResult write_all(h5::AtomicFile& out, const std::vector<std::string>& sources, const Progress& progress,
+                        const std::function<Recording(std::size_t, std::uintmax_t&)>& read) {
+  ConvertResult result;
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    if (progress) progress(i, sources.size(), sources[i]);
+    std::uintmax_t bytes = 0;
+    const Recording recording = read(i, bytes);
+    const WrittenRecording written = write_recording(out.root(), recording);
+    result.recordings.push_back({sources[i], recording.material, written.material_id, written.index,
+                                 recording.samples(), recording.sample_rate_hz});
+    result.input_bytes += bytes;
+  }
+  if (progress) progress(sources.size(), sources.size(), "");
+  out.commit();
+  return result;
+}
+
+}  // namespace
+
 ConvertResult convert_recordings(const std::vector<std::string>& inputs, const std::string& output,
                                  const ConvertOptions& options, const Progress& progress) {
   const FieldMap map = options.map_path ? load_field_map(*options.map_path) : default_field_map();
@@ -69,21 +95,27 @@ ConvertResult convert_recordings(const std::vector<std::string>& inputs, const s
   h5::AtomicFile out(output, options.overwrite);
   dataset::stamp(out.root(), dataset::Kind::recordings, options.provenance);
   out.root().set_attr("field_map", map.origin);
+  return write_all(out, files, progress, [&](std::size_t i, std::uintmax_t& bytes) {
+    bytes = fs::file_size(files[i]);
+    return lower_extension(files[i]) == ".csv" ? read_csv_recording(files[i], map, options.max_bytes)
+                                               : read_hatt_recording_xml(files[i], map, options.max_bytes);
+  });
+}
 
-  ConvertResult result;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    const std::string& file = files[i];
-    if (progress) progress(i, files.size(), file);
-    const Recording recording = lower_extension(file) == ".csv" ? read_csv_recording(file, map, options.max_bytes)
-                                                                : read_hatt_recording_xml(file, map, options.max_bytes);
-    const WrittenRecording written = write_recording(out.root(), recording);
-    result.recordings.push_back({file, recording.material, written.material_id, written.index, recording.samples(),
-                                 recording.sample_rate_hz});
-    result.input_bytes += fs::file_size(file);
-  }
-  if (progress) progress(files.size(), files.size(), "");
-  out.commit();
-  return result;
+ConvertResult convert_cluster(const std::string& root, const std::string& output, const ConvertOptions& options,
+                              const std::optional<std::string>& names_path, const Progress& progress) {
+  const std::map<int, std::string> names = names_path ? read_texture_names(*names_path) : std::map<int, std::string>{};
+  const std::vector<ClusterTake> takes = find_cluster_takes(root);
+  std::vector<std::string> sources;
+  for (const auto& take : takes) sources.push_back(take.accel);
+  h5::AtomicFile out(output, options.overwrite);
+  dataset::stamp(out.root(), dataset::Kind::recordings, options.provenance);
+  out.root().set_attr("field_map", kClusterLayout);
+  return write_all(out, sources, progress, [&](std::size_t i, std::uintmax_t& bytes) {
+    const ClusterTake& take = takes[i];
+    bytes = fs::file_size(take.accel) + fs::file_size(take.force) + fs::file_size(take.position);
+    return read_cluster_take(take, names, options.max_bytes);
+  });
 }
 
 }  // namespace haptex::convert

@@ -37,4 +37,9 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs);
 ConvertResult convert_recordings(const std::vector<std::string>& inputs, const std::string& output,
                                  const ConvertOptions& options, const Progress& progress = {});
 
+// `haptex convert cluster`: the Cluster Haptic Texture Database under `root` (convert/cluster_database.hpp),
+// one recording per take; textures named from `names_path` (convert/texture_names.hpp) when given.
+ConvertResult convert_cluster(const std::string& root, const std::string& output, const ConvertOptions& options,
+                              const std::optional<std::string>& names_path, const Progress& progress = {});
+
 }  // namespace haptex::convert

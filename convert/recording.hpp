@@ -26,6 +26,10 @@ struct Recording {
   std::map<std::string, std::vector<double>> channels;
   std::string source_path;
   std::string source_sha256;
+  // More attributes the source states (schemas/hdf5-layout.md): a Cluster take's conditions and its
+  // other files, by their names in dataset/layout.hpp.
+  std::map<std::string, double> source_numbers;
+  std::map<std::string, std::string> source_texts;
 
   std::size_t samples() const { return channels.empty() ? 0 : channels.begin()->second.size(); }
   bool has(const std::string& channel) const { return channels.count(channel) > 0; }

@@ -73,6 +73,8 @@ WrittenRecording write_recording(h5::Group root, const Recording& r) {
   g.set_attr("source_file", r.source_path);
   g.set_attr("source_sha256", r.source_sha256);
   if (r.texture) g.set_attr("hatt_texture", *r.texture);
+  for (const auto& [name, value] : r.source_numbers) g.set_attr(name, value);
+  for (const auto& [name, value] : r.source_texts) g.set_attr(name, value);
 
   const std::string accel_units = r.units.at("accel"), force_units = r.units.at("force");
   write_signal(g, layout::kAccel, narrow(signal::dft321(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z"))), {n},

@@ -20,6 +20,17 @@ inline constexpr const char* kSpeedLp = "speed_lp";                   // mm/s, l
 inline constexpr const char* kPosition = "position";                  // mm, optional
 inline constexpr const char* kSampleRate = "sample_rate_hz";          // attribute of a recording
 inline constexpr const char* kSourceSha256 = "source_sha256";         // attribute: the source file's hash
+// Attributes of a recording converted from the Cluster Haptic Texture Database (docs/convert.md):
+// the take's conditions as its file name states them, and its force and position files.
+inline constexpr const char* kClusterTexture = "cluster_texture";
+inline constexpr const char* kStrokeDirection = "stroke_direction_deg";
+inline constexpr const char* kCommandedSpeed = "commanded_speed_mm_s";
+inline constexpr const char* kCommandedForce = "commanded_force_n";
+inline constexpr const char* kRepeat = "repeat";
+inline constexpr const char* kForceSourceFile = "force_source_file";
+inline constexpr const char* kForceSourceSha256 = "force_source_sha256";
+inline constexpr const char* kPositionSourceFile = "position_source_file";
+inline constexpr const char* kPositionSourceSha256 = "position_source_sha256";
 
 // Gelsight file (capture extract), and the dataset's copy: /materials/{material}/presses/{j}/...
 inline constexpr const char* kPresses = "presses";

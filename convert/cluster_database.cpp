@@ -1,0 +1,210 @@
+#include "convert/cluster_database.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <regex>
+#include <tuple>
+
+#include "convert/csv_table.hpp"
+#include "convert/recording_checks.hpp"
+#include "convert/units.hpp"
+#include "core/error.hpp"
+#include "core/signal/butterworth.hpp"
+#include "core/signal/resample.hpp"
+#include "core/signal/sosfilt.hpp"
+#include "core/text/format.hpp"
+#include "core/text/utf8.hpp"
+#include "dataset/layout.hpp"
+
+namespace haptex::convert {
+namespace fs = std::filesystem;
+namespace layout = dataset::layout;
+namespace {
+
+constexpr int kRateHz = int(kSampleRateHz);
+// The position is differentiated for the speed: its 100 Hz steps are low-passed first at 10 Hz
+// (a machine's stroke changes speed slower; quantisation noise differentiated does not).
+constexpr double kPositionLowpassHz = 10.0;
+// The file name's velocity against the median speed of the stroke (where it moves faster than a
+// quarter of it): a position in other units or a misnamed file is off by far more.
+constexpr double kSpeedTolerance = 0.25;
+// Half a second: the speed filter's padding and a stroke worth keeping.
+constexpr double kShortestTakeS = 0.5;
+
+// One file's time stamps and the columns asked for.
+struct Series {
+  std::string path, sha256;
+  std::vector<double> times;
+  std::vector<std::vector<double>> columns;
+};
+
+void require_increasing(const Series& s) {
+  for (std::size_t i = 1; i < s.times.size(); ++i)
+    if (!(s.times[i] > s.times[i - 1]))
+      throw input_error(s.path, "line " + std::to_string(i + 2) + ", column 'time'",
+                        text::format("the time stamp %.9g s does not come after the one before (%.9g s)", s.times[i],
+                                     s.times[i - 1]),
+                        "Remove repeated or out-of-order rows from the file");
+}
+
+Series read_series(const std::string& path, const std::vector<std::string>& names, int nominal_hz, std::uintmax_t max_bytes) {
+  std::vector<std::string> wanted = {"time"};
+  wanted.insert(wanted.end(), names.begin(), names.end());
+  std::string header;
+  for (const auto& name : wanted) header += (header.empty() ? "" : ",") + name;
+  CsvTable table = read_csv_table(path, max_bytes, [&](const std::string& column) {
+    return std::find(wanted.begin(), wanted.end(), column) != wanted.end();
+  });
+  Series s{path, table.sha256, {}, {}};
+  for (const std::string& name : wanted) {
+    auto column = table.columns.find(name);
+    if (column == table.columns.end())
+      throw input_error(path, "line 1", "the header has no '" + name + "' column",
+                        "The database's files have the header " + header);
+    (name == "time" ? s.times : s.columns.emplace_back()) = std::move(column->second);
+  }
+  if (s.times.size() < 2) throw input_error(path, "", "holds fewer than two samples", "Give the take's whole file");
+  require_increasing(s);
+  const double rate = double(s.times.size() - 1) / (s.times.back() - s.times.front());
+  if (rate > 1.1 * nominal_hz || rate < 0.5 * nominal_hz)
+    throw input_error(path, "column 'time'",
+                      text::format("the samples come at %.0f Hz on average, not about %d Hz as the database's do", rate,
+                                   nominal_hz),
+                      "Check that the time column is in seconds and the file is the take's own");
+  return s;
+}
+
+// Column c of s over [start, start + span] at 10 kHz: numpy.interp at the nominal rate, then
+// resample_poly to 10 kHz.
+std::vector<double> at_10khz(const Series& s, std::size_t c, double start, double span, int nominal_hz) {
+  const std::size_t count = std::size_t(std::floor(span * nominal_hz)) + 1;
+  return signal::resample_poly(signal::interpolate_uniform(s.times, s.columns[c], start, nominal_hz, count), kRateHz,
+                               nominal_hz);
+}
+
+// numpy.gradient(x) * rate: central differences inside, one-sided at the ends.
+std::vector<double> derivative(const std::vector<double>& x, double rate) {
+  std::vector<double> d(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const std::size_t a = i == 0 ? 0 : i - 1, b = std::min(i + 1, x.size() - 1);
+    d[i] = (x[b] - x[a]) / double(b - a) * rate;
+  }
+  return d;
+}
+
+// The tool's speed from the positions at 100 Hz, in mm/s.
+std::vector<double> stroke_speed(const Series& position, double start, double span) {
+  static const signal::Sos sos = signal::butter_lowpass_hz(4, kPositionLowpassHz, kClusterPositionHz);
+  const std::size_t count = std::size_t(std::floor(span * kClusterPositionHz)) + 1;
+  std::vector<double> v[2];
+  for (std::size_t c = 0; c < 2; ++c)
+    v[c] = derivative(signal::sosfiltfilt(sos, signal::interpolate_uniform(position.times, position.columns[c], start,
+                                                                           kClusterPositionHz, count)),
+                      kClusterPositionHz);
+  std::vector<double> speed(count);
+  for (std::size_t i = 0; i < count; ++i) speed[i] = std::hypot(v[0][i], v[1][i]);
+  return speed;
+}
+
+void check_speed(const std::vector<double>& speed, const ClusterTake& take) {
+  std::vector<double> moving;
+  for (double v : speed)
+    if (v > 0.25 * take.velocity_mm_s) moving.push_back(v);
+  const std::string where = "columns 'X', 'Y'";
+  if (moving.empty())
+    throw input_error(take.position, where, "the tool does not move", "Give the take's own position file");
+  auto middle = moving.begin() + std::ptrdiff_t(moving.size() / 2);
+  std::nth_element(moving.begin(), middle, moving.end());
+  if (std::abs(*middle / take.velocity_mm_s - 1.0) > kSpeedTolerance)
+    throw input_error(take.position, where,
+                      text::format("the stroke's median speed is %.1f mm/s where the file name says %d mm/s",
+                                   *middle, take.velocity_mm_s),
+                      "Check that the position is in millimetres and the file is the take's own");
+}
+
+std::string take_name(const ClusterTake& t) {
+  return text::format("%d_%d_%d_%d_%d.csv", t.texture, t.direction_deg, t.velocity_mm_s, t.force_mn, t.repeat);
+}
+
+}  // namespace
+
+std::vector<ClusterTake> find_cluster_takes(const std::string& root) {
+  std::error_code ec;
+  const fs::path sensor = fs::is_directory(fs::path(root) / "sensor_data" / "accel", ec) ? fs::path(root) / "sensor_data"
+                                                                                          : fs::path(root);
+  if (!fs::is_directory(sensor / "accel", ec))
+    throw input_error(root, "", "holds no sensor_data/accel folder",
+                      "Give the Cluster database's folder (the one holding sensor_data/ and images/)");
+  static const std::regex name(R"((\d{1,6})_(\d{1,3})_(\d{1,4})_(\d{1,6})_(\d{1,3})\.csv)");
+  std::vector<ClusterTake> takes;
+  for (const auto& entry : fs::directory_iterator(sensor / "accel", ec)) {
+    const std::string file = entry.path().filename().string();
+    if (!entry.is_regular_file() || entry.path().extension() != ".csv") continue;
+    std::smatch m;
+    if (!std::regex_match(file, m, name))
+      throw input_error(entry.path().string(), "", "is not named TEXTURE_DIRECTION_VELOCITY_FORCE_REPEAT.csv",
+                        "Keep the database's file names (e.g. 0_135_40_500_0.csv)");
+    ClusterTake t{std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3]), std::stoi(m[4]), std::stoi(m[5]),
+                  entry.path().string(), (sensor / "force" / file).string(), (sensor / "position" / file).string()};
+    if (t.velocity_mm_s == 0 || t.force_mn == 0)
+      throw input_error(t.accel, "file name", "names a velocity or force of 0", "Keep the database's file names");
+    for (const std::string* partner : {&t.force, &t.position})
+      if (!fs::is_regular_file(*partner, ec))
+        throw input_error(*partner, "", "is missing: the take " + file + " needs its accel, force and position files",
+                          "Copy the database's sensor_data folder whole");
+    takes.push_back(std::move(t));
+  }
+  if (ec) throw input_error((sensor / "accel").string(), "", "cannot list the folder (" + ec.message() + ")", "Check its permissions");
+  if (takes.empty()) throw input_error((sensor / "accel").string(), "", "holds no take (*.csv)", "Give the database's folder");
+  const auto key = [](const ClusterTake& t) {
+    return std::tie(t.texture, t.direction_deg, t.velocity_mm_s, t.force_mn, t.repeat);
+  };
+  std::sort(takes.begin(), takes.end(), [&](const ClusterTake& a, const ClusterTake& b) { return key(a) < key(b); });
+  return takes;
+}
+
+Recording read_cluster_take(const ClusterTake& take, const std::map<int, std::string>& names, std::uintmax_t max_bytes) {
+  const Series accel = read_series(take.accel, {"X", "Y", "Z"}, kClusterAccelHz, max_bytes);
+  const Series force = read_series(take.force, {"force"}, kClusterForceHz, max_bytes);
+  const Series position = read_series(take.position, {"X", "Y"}, kClusterPositionHz, max_bytes);
+  const double start = std::max({accel.times.front(), force.times.front(), position.times.front()});
+  const double span = std::min({accel.times.back(), force.times.back(), position.times.back()}) - start;
+  if (!(span >= kShortestTakeS))
+    throw input_error(take.accel, "column 'time'",
+                      text::format("the take's accel, force and position files overlap for %.3g s", std::max(0.0, span)),
+                      text::format("A take needs at least %.1f s of all three", kShortestTakeS));
+
+  Recording r;
+  auto it = names.find(take.texture);
+  r.material = it != names.end() ? it->second : "cluster " + std::to_string(take.texture);
+  r.sample_rate_hz = kSampleRateHz;
+  for (const auto& [quantity, unit] : kExpectedUnits) r.units[quantity] = unit;
+  const double g = *unit_scale("accel", "g");
+  const char* axes[] = {"accel_x", "accel_y", "accel_z"};
+  for (std::size_t c = 0; c < 3; ++c) {
+    std::vector<double> a = at_10khz(accel, c, start, span, kClusterAccelHz);
+    for (double& v : a) v *= g;
+    r.channels[axes[c]] = std::move(a);
+  }
+  r.channels[layout::kForceNormal] = at_10khz(force, 0, start, span, kClusterForceHz);
+  const std::vector<double> speed = stroke_speed(position, start, span);
+  check_speed(speed, take);
+  r.channels[layout::kSpeed] = signal::resample_poly(speed, kRateHz, kClusterPositionHz);
+  // The channels' lengths differ by the rounding of each rate's grid: all end at the shortest.
+  std::size_t n = std::size_t(std::floor(span * kRateHz)) + 1;
+  for (const auto& [channel, values] : r.channels) n = std::min(n, values.size());
+  for (auto& [channel, values] : r.channels) values.resize(n);
+
+  r.source_path = take.accel;
+  r.source_sha256 = accel.sha256;
+  r.source_texts = {{layout::kForceSourceFile, take.force}, {layout::kForceSourceSha256, force.sha256},
+                    {layout::kPositionSourceFile, take.position}, {layout::kPositionSourceSha256, position.sha256}};
+  r.source_numbers = {{layout::kClusterTexture, take.texture}, {layout::kStrokeDirection, take.direction_deg},
+                      {layout::kCommandedSpeed, take.velocity_mm_s}, {layout::kCommandedForce, take.force_mn * 1e-3},
+                      {layout::kRepeat, take.repeat}};
+  check_channels(r, [&](const std::string& channel) { return take_name(take) + ": " + channel; });
+  return r;
+}
+
+}  // namespace haptex::convert
