@@ -10,6 +10,7 @@
 #include <set>
 
 #include "tests/hostile/hostile_support.hpp"
+#include "tests/support/cluster_tree.hpp"
 #include "tests/support/mutations.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/sample_recording.hpp"
@@ -87,6 +88,39 @@ std::vector<HostileCase> csv_cases() {
         return text;
       }, "line 2"),
       csv("name not UTF-8", [=] { return good; }, "UTF-8", "Caf\xe9_0.csv"),
+  };
+}
+
+// One good Cluster take in a folder whose name holds quotes and back-quotes; `damage` spoils one of its
+// files (or writes a names file) and returns that file.
+std::vector<HostileCase> cluster_cases() {
+  const std::string db = "db `ls` \"x\" 'y'", take = "3_0_40_500_0.csv";
+  auto in_db = [=](const TempDir& d, const std::string& folder) { return d.file(db + "/sensor_data/" + folder + "/" + take); };
+  auto cluster = [=](std::string name, std::function<std::string(const TempDir&)> damage, std::string says,
+                     std::vector<std::string> extra = {}) {
+    auto make = [=](const TempDir& d) {
+      write_cluster_tree(d.file(db), {{3, 0, 40, 500, 0}});
+      return damage(d);
+    };
+    auto command = [=](const TempDir& d, const std::string& file) {
+      std::vector<std::string> args = {"convert", "cluster", d.file(db), "-o", d.file("out.h5")};
+      for (const auto& e : extra) args.push_back(e == "FILE" ? file : e);
+      return args;
+    };
+    return HostileCase{"Cluster take", name, make, command, says};
+  };
+  auto overwrite = [=](std::string folder, std::string bytes) {
+    return [=](const TempDir& d) { std::ofstream(in_db(d, folder), std::ios::binary) << bytes; return in_db(d, folder); };
+  };
+  return {
+      cluster("empty accel file", overwrite("accel", ""), "empty"),
+      cluster("accel cut inside a row", overwrite("accel", "time,X,Y,Z\n0.000999,0.1"), "fields"),
+      cluster("binary garbage", overwrite("force", std::string("time,force\n\x00\xff,\x01\n", 16)), "line 2"),
+      cluster("NaN force", overwrite("force", "time,force\n0.000999,nan\n0.001209,0.5\n"), "not a finite number"),
+      cluster("no time column", overwrite("position", "t,X,Y\n0,1,2\n"), "time"),
+      cluster("over --max-bytes", [=](const TempDir& d) { return in_db(d, "accel"); }, "max-bytes", {"--max-bytes", "1000"}),
+      cluster("names file not UTF-8", [=](const TempDir& d) { return write(d, "names.csv", "id,name\n3,Caf\xe9\n"); }, "UTF-8",
+              {"--names", "FILE"}),
   };
 }
 
@@ -242,7 +276,7 @@ std::set<std::string> names_in(const TempDir& dir) {
 
 std::vector<HostileCase> corpus() {
   std::vector<HostileCase> all;
-  for (auto part : {xml_cases(), csv_cases(), manifest_cases(), trajectory_cases(), hdf5_cases(), image_cases(), video_cases()})
+  for (auto part : {xml_cases(), csv_cases(), cluster_cases(), manifest_cases(), trajectory_cases(), hdf5_cases(), image_cases(), video_cases()})
     all.insert(all.end(), part.begin(), part.end());
   return all;
 }
