@@ -8,7 +8,7 @@
 
 #include "convert/csv_table.hpp"
 #include "convert/recording_checks.hpp"
-#include "convert/units.hpp"
+#include "convert/resampling.hpp"
 #include "core/error.hpp"
 #include "core/signal/butterworth.hpp"
 #include "core/signal/resample.hpp"
@@ -22,7 +22,6 @@ namespace fs = std::filesystem;
 namespace layout = dataset::layout;
 namespace {
 
-constexpr int kRateHz = int(kSampleRateHz);
 // The position is differentiated for the speed: its 100 Hz steps are low-passed first at 10 Hz
 // (a machine's stroke changes speed slower; quantisation noise differentiated does not).
 constexpr double kPositionLowpassHz = 10.0;
@@ -75,14 +74,6 @@ Series read_series(const std::string& path, const std::vector<std::string>& name
   return s;
 }
 
-// Column c of s over [start, start + span] at 10 kHz: numpy.interp at the nominal rate, then
-// resample_poly to 10 kHz.
-std::vector<double> at_10khz(const Series& s, std::size_t c, double start, double span, int nominal_hz) {
-  const std::size_t count = std::size_t(std::floor(span * nominal_hz)) + 1;
-  return signal::resample_poly(signal::interpolate_uniform(s.times, s.columns[c], start, nominal_hz, count), kRateHz,
-                               nominal_hz);
-}
-
 // numpy.gradient(x) * rate: central differences inside, one-sided at the ends.
 std::vector<double> derivative(const std::vector<double>& x, double rate) {
   std::vector<double> d(x.size());
@@ -93,10 +84,12 @@ std::vector<double> derivative(const std::vector<double>& x, double rate) {
   return d;
 }
 
-// The tool's speed from the positions at 100 Hz, in mm/s.
-std::vector<double> stroke_speed(const Series& position, double start, double span) {
+// The tool's speed in mm/s, on a 100 Hz grid over the position file's stamps (`grid` gets its times).
+std::vector<double> stroke_speed(const Series& position, std::vector<double>& grid) {
   static const signal::Sos sos = signal::butter_lowpass_hz(4, kPositionLowpassHz, kClusterPositionHz);
-  const std::size_t count = std::size_t(std::floor(span * kClusterPositionHz)) + 1;
+  const double start = position.times.front();
+  const std::size_t count = std::size_t(std::floor((position.times.back() - start) * kClusterPositionHz)) + 1;
+  for (std::size_t k = 0; k < count; ++k) grid.push_back(start + double(k) / kClusterPositionHz);
   std::vector<double> v[2];
   for (std::size_t c = 0; c < 2; ++c)
     v[c] = derivative(signal::sosfiltfilt(sos, signal::interpolate_uniform(position.times, position.columns[c], start,
@@ -178,25 +171,19 @@ Recording read_cluster_take(const ClusterTake& take, const std::map<int, std::st
   Recording r;
   auto it = names.find(take.texture);
   r.material = it != names.end() ? it->second : "cluster " + std::to_string(take.texture);
-  r.sample_rate_hz = kSampleRateHz;
   for (const auto& [quantity, unit] : kExpectedUnits) r.units[quantity] = unit;
-  const double g = *unit_scale("accel", "g");
-  const char* axes[] = {"accel_x", "accel_y", "accel_z"};
-  for (std::size_t c = 0; c < 3; ++c) {
-    std::vector<double> a = at_10khz(accel, c, start, span, kClusterAccelHz);
-    for (double& v : a) v *= g;
-    r.channels[axes[c]] = std::move(a);
-  }
-  r.channels[layout::kForceNormal] = at_10khz(force, 0, start, span, kClusterForceHz);
-  const std::vector<double> speed = stroke_speed(position, start, span);
-  check_speed(speed, take);
-  r.channels[layout::kSpeed] = signal::resample_poly(speed, kRateHz, kClusterPositionHz);
-  // The channels' lengths differ by the rounding of each rate's grid: all end at the shortest.
-  std::size_t n = std::size_t(std::floor(span * kRateHz)) + 1;
-  for (const auto& [channel, values] : r.channels) n = std::min(n, values.size());
-  for (auto& [channel, values] : r.channels) values.resize(n);
-
   r.source_path = take.accel;
+  const char* axes[] = {"accel_x", "accel_y", "accel_z"};
+  for (std::size_t c = 0; c < 3; ++c) r.channels[axes[c]] = accel.columns[c];
+  apply_units(r, "accel", "g", "columns 'X', 'Y', 'Z'");
+  r.channels[layout::kForceNormal] = force.columns[0];
+  std::vector<double> speed_times;
+  r.channels[layout::kSpeed] = stroke_speed(position, speed_times);
+  check_speed(r.channels[layout::kSpeed], take);
+  resample_stamped(r, {{"accel time", accel.times, {axes[0], axes[1], axes[2]}, kClusterAccelHz},
+                       {"force time", force.times, {layout::kForceNormal}, kClusterForceHz},
+                       {"position time", speed_times, {layout::kSpeed}, kClusterPositionHz}});
+
   r.source_sha256 = accel.sha256;
   r.source_texts = {{layout::kForceSourceFile, take.force}, {layout::kForceSourceSha256, force.sha256},
                     {layout::kPositionSourceFile, take.position}, {layout::kPositionSourceSha256, position.sha256}};

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <set>
 
 #include "convert/csv_table.hpp"
 #include "convert/recording_checks.hpp"
+#include "convert/resampling.hpp"
 #include "core/error.hpp"
 #include "core/text/utf8.hpp"
 
@@ -13,16 +16,64 @@ namespace haptex::convert {
 
 namespace {
 
-double sample_rate_from_times(const std::string& path, const std::string& column, const std::vector<double>& t) {
-  if (t.size() < 2) return 0;
-  const double dt = (t.back() - t.front()) / double(t.size() - 1);
-  for (std::size_t i = 1; i < t.size(); ++i)
-    if (std::abs((t[i] - t[i - 1]) - dt) > 0.01 * std::abs(dt))
-      throw input_error(path, "line " + std::to_string(i + 2) + ", column '" + column + "'",
-                        "the time step is " + std::to_string(t[i] - t[i - 1]) + " s, not the file's mean " +
-                            std::to_string(dt) + " s: samples were dropped or the clock jumped",
-                        "Resample the recording onto a uniform 10 kHz time base");
-  return dt > 0 ? 1.0 / dt : 0;
+// The time column of each channel present, with its channels and stamps.
+std::vector<StampedChannels> group_by_time(const std::string& path, const FieldMap& map, const Recording& recording,
+                                           CsvTable& table) {
+  std::map<std::string, StampedChannels> groups;
+  for (const auto& [channel, values] : recording.channels) {
+    auto own = map.csv_channel_times.find(channel);
+    const std::string& time = own == map.csv_channel_times.end() ? map.csv_time_column : own->second;
+    StampedChannels& g = groups[time];
+    g.time_column = time;
+    g.channels.push_back(channel);
+  }
+  std::vector<StampedChannels> out;
+  for (auto& [time, g] : groups) {
+    auto column = table.columns.find(time);
+    if (column == table.columns.end())
+      throw input_error(path, "line 1", "the header has no '" + time + "' column",
+                        "Add a time column in seconds named " + time + " (the field map's csv_time_column or csv_channel_times)");
+    g.times = std::move(column->second);
+    for (const auto& channel : g.channels)
+      if (recording.channels.at(channel).size() != g.times.size())
+        throw input_error(path, "column '" + map.channels.at(channel) + "'",
+                          "has " + std::to_string(recording.channels.at(channel).size()) + " values but its time column '" +
+                              time + "' has " + std::to_string(g.times.size()),
+                          "Give each sample its time in the same row, and leave both cells empty where there is none");
+    out.push_back(std::move(g));
+  }
+  return out;
+}
+
+// The stamps' whole-Hz rate; refuses stamps that do not increase and gaps of dropped samples.
+// uniform: every step within 1 % of the mean.
+int stamped_rate(const std::string& path, const StampedChannels& g, const std::vector<std::size_t>& lines, bool& uniform) {
+  const std::vector<double>& t = g.times;
+  const std::string where = "column '" + g.time_column + "'";
+  if (t.size() < 2) throw input_error(path, where, "holds fewer than two samples", "Give one row per sample");
+  std::vector<double> steps;
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    if (!(t[i] > t[i - 1]))
+      throw input_error(path, "line " + std::to_string(lines[i]) + ", " + where,
+                        "the time does not increase (" + std::to_string(t[i]) + " s after " + std::to_string(t[i - 1]) + " s)",
+                        "Remove repeated or out-of-order rows");
+    steps.push_back(t[i] - t[i - 1]);
+  }
+  std::vector<double> sorted = steps;
+  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+  const double median = sorted[sorted.size() / 2], mean = (t.back() - t.front()) / double(steps.size());
+  uniform = true;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    // Stamps may wander (irregular logging); a step of several samples is a gap no interpolation fills.
+    if (steps[i] > 3 * median)
+      throw input_error(path, "line " + std::to_string(lines[i + 1]) + ", " + where,
+                        "a gap of " + std::to_string(steps[i]) + " s where samples come every " + std::to_string(median) +
+                            " s: samples were dropped or the clock jumped",
+                        "Convert the parts before and after the gap as separate recordings");
+    uniform = uniform && std::abs(steps[i] - mean) <= 0.01 * mean;
+  }
+  const bool accel = std::any_of(g.channels.begin(), g.channels.end(), [](const std::string& c) { return quantity_of(c) == "accel"; });
+  return whole_source_rate(path, where, std::round(1.0 / mean), accel ? kLowestAccelRateHz : kLowestRateHz);
 }
 
 }  // namespace
@@ -42,13 +93,16 @@ Recording read_csv_recording(const std::string& path, const FieldMap& map, std::
   text::require_utf8(recording.material, path, "the material name (the file's name)");
   std::map<std::string, std::string> channel_of;  // column name -> channel
   for (const auto& [channel, name] : map.channels) channel_of[name] = channel;
-  CsvTable table = read_csv_table(path, max_bytes, [&](const std::string& name) {
-    return name == map.csv_time_column || channel_of.count(name) > 0;
-  });
+  std::set<std::string> times = {map.csv_time_column}, sparse;
+  for (const auto& [channel, time] : map.csv_channel_times) {
+    times.insert(time);
+    sparse.insert(time);
+    if (auto name = map.channels.find(channel); name != map.channels.end()) sparse.insert(name->second);
+  }
+  CsvTable table = read_csv_table(
+      path, max_bytes, [&](const std::string& name) { return times.count(name) > 0 || channel_of.count(name) > 0; },
+      [&](const std::string& name) { return sparse.count(name) > 0; });
   recording.source_sha256 = table.sha256;
-  if (!table.columns.count(map.csv_time_column))
-    throw input_error(path, "line 1", "the header has no '" + map.csv_time_column + "' column",
-                      "Add a time column in seconds named " + map.csv_time_column);
   for (const auto& [channel, name] : map.channels) {
     if (auto column = table.columns.find(name); column != table.columns.end())
       recording.channels[channel] = std::move(column->second);
@@ -56,14 +110,24 @@ Recording read_csv_recording(const std::string& path, const FieldMap& map, std::
       throw input_error(path, "line 1", "the header has no '" + name + "' column (" + channel + ")",
                         "Add the column, or map \"" + channel + "\" to your column's name in a field map (--map)");
   }
-  const std::vector<double>& times = table.columns.at(map.csv_time_column);
+  std::vector<StampedChannels> timed = group_by_time(path, map, recording, table);
+  bool all_uniform = true;
+  for (auto& g : timed) {
+    bool uniform = false;
+    g.nominal_hz = stamped_rate(path, g, table.lines.at(g.time_column), uniform);
+    all_uniform = all_uniform && uniform;
+  }
+  recording.sample_rate_hz = timed.front().nominal_hz;
+  // Channels sampled together at a steady rate keep their samples (10 kHz) or are resampled as they
+  // are; stamps that wander, or channels of their own times, go onto one grid.
+  if (timed.size() == 1 && all_uniform) resample_uniform(recording, timed.front().nominal_hz);
+  else resample_stamped(recording, timed);
+  for (const auto& [quantity, unit] : kExpectedUnits) recording.units[quantity] = unit;
+  for (const auto& [quantity, unit] : map.csv_units) apply_units(recording, quantity, unit, "csv_units of " + map.origin);
   check_channels(recording, [&](const std::string& channel) {
     auto it = map.channels.find(channel);
     return "column '" + (it == map.channels.end() ? channel : it->second) + "'";
   });
-  recording.sample_rate_hz = sample_rate_from_times(path, map.csv_time_column, times);
-  check_sample_rate(path, "column '" + map.csv_time_column + "'", recording.sample_rate_hz);
-  for (const auto& [quantity, unit] : kExpectedUnits) recording.units[quantity] = unit;
   return recording;
 }
 

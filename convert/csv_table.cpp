@@ -55,7 +55,8 @@ class Lines {
 }  // namespace
 
 CsvTable read_csv_table(const std::string& path, std::uintmax_t max_bytes,
-                        const std::function<bool(const std::string&)>& keep) {
+                        const std::function<bool(const std::string&)>& keep,
+                        const std::function<bool(const std::string&)>& sparse) {
   const std::vector<char> buffer = read_whole_file(path, max_bytes);
   CsvTable table;
   table.sha256 = sha256_hex(buffer);
@@ -64,10 +65,15 @@ CsvTable read_csv_table(const std::string& path, std::uintmax_t max_bytes,
   if (!lines.next(line))
     throw input_error(path, "line 1", "the file is empty", "Write a header row and one row per sample");
   std::vector<std::vector<double>*> kept;  // per column: where its values go, or null
+  std::vector<std::vector<std::size_t>*> kept_lines;
+  std::vector<bool> may_be_empty;
   for (auto field : split_fields(line)) {
     table.header.push_back(column_name(field));
     const std::string& name = table.header.back();
-    kept.push_back(keep(name) && !table.columns.count(name) ? &table.columns[name] : nullptr);
+    const bool wanted = keep(name) && !table.columns.count(name);
+    kept.push_back(wanted ? &table.columns[name] : nullptr);
+    kept_lines.push_back(wanted ? &table.lines[name] : nullptr);
+    may_be_empty.push_back(sparse && sparse(name));
   }
   while (lines.next(line)) {
     if (line.find_first_not_of(" \t") == std::string_view::npos) continue;
@@ -78,13 +84,14 @@ CsvTable read_csv_table(const std::string& path, std::uintmax_t max_bytes,
                                          std::to_string(table.header.size()),
                         "Every row needs one value per header column");
     for (std::size_t c = 0; c < fields.size(); ++c) {
-      if (!kept[c]) continue;
+      if (!kept[c] || (may_be_empty[c] && text::trim(fields[c]).empty())) continue;
       const std::optional<double> value = text::parse_number(fields[c]);
       if (!value || !std::isfinite(*value))
         throw input_error(path, where + ", column '" + table.header[c] + "'",
                           text::describe_bad_number(fields[c], value.has_value()),
                           "Remove or interpolate bad samples in the source before converting");
       kept[c]->push_back(*value);
+      kept_lines[c]->push_back(lines.number());
     }
   }
   return table;

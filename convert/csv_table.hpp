@@ -12,13 +12,16 @@ namespace haptex::convert {
 struct CsvTable {
   std::vector<std::string> header;                     // as written, without quotes and white space
   std::map<std::string, std::vector<double>> columns;  // the kept columns, by header name
+  std::map<std::string, std::vector<std::size_t>> lines;  // each value's line number (1: the header)
   std::string sha256;                                  // of the file's bytes
 };
 
-// Reads `path` (refused over max_bytes), keeping the columns whose header name `keep` accepts.
+// Reads `path` (refused over max_bytes), keeping the columns whose header name `keep` accepts; in
+// columns `sparse` accepts, an empty cell is no sample (a channel logged slower than the others).
 // Throws haptex::Error (bad_input) for an empty file, a row with another number of fields than the
 // header, and a kept cell that is not a finite number.
 CsvTable read_csv_table(const std::string& path, std::uintmax_t max_bytes,
-                        const std::function<bool(const std::string&)>& keep);
+                        const std::function<bool(const std::string&)>& keep,
+                        const std::function<bool(const std::string&)>& sparse = {});
 
 }  // namespace haptex::convert

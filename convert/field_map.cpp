@@ -19,6 +19,8 @@ FieldMap from_json(const nlohmann::json& doc, const std::string& origin) {
   map.csv_time_column = doc.at("csv_time_column");
   map.units = doc.at("units").get<std::map<std::string, std::string>>();
   map.channels = doc.at("channels").get<std::map<std::string, std::string>>();
+  map.csv_channel_times = doc.value("csv_channel_times", std::map<std::string, std::string>{});
+  map.csv_units = doc.value("csv_units", std::map<std::string, std::string>{});
   map.origin = origin;
   return map;
 }

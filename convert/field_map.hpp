@@ -9,6 +9,8 @@ struct FieldMap {
   std::string root, material, texture_attribute, sample_rate, value, csv_time_column;
   std::map<std::string, std::string> units;     // quantity -> element name
   std::map<std::string, std::string> channels;  // canonical channel -> element / column name
+  std::map<std::string, std::string> csv_channel_times;  // canonical channel -> its own CSV time column
+  std::map<std::string, std::string> csv_units;          // quantity -> the unit of its CSV columns
   std::string origin;                           // "built-in default" or the map file's path
 };
 

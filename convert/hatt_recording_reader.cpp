@@ -2,6 +2,7 @@
 
 #include "core/text/parse_number.hpp"
 #include "convert/recording_checks.hpp"
+#include "convert/resampling.hpp"
 #include "convert/xml_file.hpp"
 #include "core/text/utf8.hpp"
 
@@ -21,9 +22,8 @@ void read_identity(const XmlFile& xml, const pugi::xml_node& root, const FieldMa
   if (!map.texture_attribute.empty())
     if (auto texture = xml.integer_attribute(root, map.texture_attribute)) recording.texture = int(*texture);
   const pugi::xml_node rate = xml.require(
-      root, map.sample_rate, "Add <" + map.sample_rate + ">10000</" + map.sample_rate + ">; haptex needs 10 kHz recordings");
-  recording.sample_rate_hz = xml.number(rate);
-  check_sample_rate(xml.source(), xml.where(rate), recording.sample_rate_hz);
+      root, map.sample_rate, "Add <" + map.sample_rate + ">10000</" + map.sample_rate + "> (the rate in Hz; 10 kHz in HaTT)");
+  recording.sample_rate_hz = whole_source_rate(xml.source(), xml.where(rate), xml.number(rate), kLowestAccelRateHz);
 }
 
 }  // namespace
@@ -55,10 +55,13 @@ Recording read_hatt_recording_xml(const std::string& path, const FieldMap& map, 
     if (node) apply_units(recording, quantity, std::string(trim(node.child_value())), xml.where(node));
     else recording.units[quantity] = kExpectedUnits.at(quantity);  // the format's documented default
   }
-  check_channels(recording, [&](const std::string& channel) {
+  const auto where = [&](const std::string& channel) {
     auto it = channel_nodes.find(channel);
     return it == channel_nodes.end() ? "<" + map.channels.at(channel) + ">" : xml.where(it->second);
-  });
+  };
+  check_channels(recording, where);  // lengths as the file holds them, where they can be named
+  resample_uniform(recording, int(recording.sample_rate_hz));
+  check_channels(recording, where);  // and at least one model window at 10 kHz
   return recording;
 }
 

@@ -1,28 +1,11 @@
 #include "convert/recording_checks.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 #include "convert/units.hpp"
 #include "core/error.hpp"
-#include "core/text/format.hpp"
 
 namespace haptex::convert {
-namespace {
-
-std::string format_number(double value) {
-  return text::format("%.10g", value);
-}
-
-}  // namespace
-
-void check_sample_rate(const std::string& file, const std::string& where, double rate_hz) {
-  if (std::abs(rate_hz - kSampleRateHz) > 1e-6 * kSampleRateHz)
-    throw input_error(file, where,
-                      "the sample rate is " + format_number(rate_hz) + " Hz; haptex works at 10000 Hz",
-                      "Resample the recording to 10 kHz before converting it");
-}
-
 void apply_units(Recording& recording, const std::string& quantity, const std::string& unit,
                  const std::string& where) {
   auto scale = unit_scale(quantity, unit);

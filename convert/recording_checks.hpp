@@ -11,7 +11,6 @@ namespace haptex::convert {
 // Minimum length: one model window.
 inline constexpr std::size_t kMinimumSamples = dataset::kWindowSamples;
 
-void check_sample_rate(const std::string& file, const std::string& where, double rate_hz);
 // Scales a quantity's channels into haptex units; refuses unknown units.
 void apply_units(Recording& recording, const std::string& quantity, const std::string& unit,
                  const std::string& where);

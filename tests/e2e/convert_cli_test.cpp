@@ -108,9 +108,11 @@ TEST_F(BadInput, NotANumber) {
   expect_refused(xml, {"'1.2.3' is not a number"});
 }
 
-TEST_F(BadInput, WrongSampleRate) {
-  expect_refused(replace_first(good_xml(), "<SampleRate>10000<", "<SampleRate>5000<"),
-                 {"<SampleRate> at line 4", "5000 Hz", "Resample"});
+TEST_F(BadInput, ASampleRateTooLowOrNotWholeHz) {
+  expect_refused(replace_first(good_xml(), "<SampleRate>10000<", "<SampleRate>1000<"),
+                 {"<SampleRate> at line 4", "1000 Hz", "at least 2 kHz"});
+  expect_refused(replace_first(good_xml(), "<SampleRate>10000<", "<SampleRate>44100.5<"),
+                 {"<SampleRate> at line 4", "44100.5 Hz", "whole Hz"});
 }
 
 TEST_F(BadInput, MissingSampleRate) {

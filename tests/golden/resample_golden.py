@@ -45,6 +45,11 @@ def main():
     uniform = np.interp(grid, times, values)
     save("irregular_uniform_6000", uniform)
     save("irregular_10000", sig.resample_poly(uniform, 5, 3, padtype="mean"))
+    # A CSV's stamps: the grid at their own mean rate, whole Hz (docs/convert.md).
+    own = int(round((times.size - 1) / (times[-1] - times[0])))
+    grid = times[0] + np.arange(int(np.floor((times[-1] - times[0]) * own)) + 1) / own
+    save("irregular_own_rate", np.array([own], dtype=np.float64))
+    save("irregular_own_rate_10000", sig.resample_poly(np.interp(grid, times, values), 10000, own, padtype="mean"))
 
 
 if __name__ == "__main__":

@@ -1,0 +1,73 @@
+#include "convert/resampling.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "convert/recording_checks.hpp"
+#include "core/error.hpp"
+#include "core/signal/resample.hpp"
+#include "core/text/format.hpp"
+
+namespace haptex::convert {
+namespace {
+
+constexpr int kRateHz = int(kSampleRateHz);
+
+std::string rate_text(const std::vector<StampedChannels>& groups) {
+  std::string text;
+  for (const auto& g : groups) text += (text.empty() ? "" : "; ") + g.time_column + " " + std::to_string(g.nominal_hz) + " Hz";
+  return text;
+}
+
+}  // namespace
+
+int whole_source_rate(const std::string& file, const std::string& where, double rate_hz, double lowest_hz) {
+  const double whole = std::round(rate_hz);
+  if (!(rate_hz >= lowest_hz) || std::abs(rate_hz - whole) > 1e-6 * whole)
+    throw input_error(file, where,
+                      text::format("the sample rate is %.10g Hz; haptex resamples whole numbers of Hz from %.0f Hz up",
+                                   rate_hz, lowest_hz),
+                      lowest_hz == kLowestAccelRateHz
+                          ? "Give the rate in whole Hz, at least 2 kHz for acceleration (the model's spectrum reaches 1000 Hz)"
+                          : "Give the rate in whole Hz");
+  return int(whole);
+}
+
+void resample_uniform(Recording& recording, int source_hz) {
+  if (source_hz == kRateHz) return;
+  for (auto& [channel, values] : recording.channels) values = signal::resample_poly(values, kRateHz, source_hz);
+  recording.sample_rate_hz = kSampleRateHz;
+  recording.source_texts["resampled"] =
+      text::format("from %d Hz by resample_poly (scipy semantics, padtype mean; docs/convert.md)", source_hz);
+}
+
+void resample_stamped(Recording& recording, const std::vector<StampedChannels>& groups) {
+  double start = -INFINITY, end = INFINITY;
+  for (const auto& g : groups) {
+    start = std::max(start, g.times.front());
+    end = std::min(end, g.times.back());
+  }
+  const double span = end - start;
+  if (!(span * kSampleRateHz + 1 >= double(kMinimumSamples)))
+    throw input_error(recording.source_path, "time columns " + rate_text(groups),
+                      text::format("the channels' time stamps overlap for %.4g s", std::max(0.0, span)),
+                      "A recording needs 0.1 s that every channel covers");
+  std::size_t n = std::size_t(std::floor(span * kSampleRateHz)) + 1;
+  for (const auto& g : groups) {
+    const std::size_t count = std::size_t(std::floor(span * g.nominal_hz)) + 1;
+    for (const auto& channel : g.channels) {
+      std::vector<double>& values = recording.channels.at(channel);
+      values = signal::resample_poly(signal::interpolate_uniform(g.times, values, start, g.nominal_hz, count), kRateHz,
+                                     g.nominal_hz);
+      n = std::min(n, values.size());
+    }
+  }
+  // Each rate's grid rounds the span its own way: all channels end at the shortest.
+  for (auto& [channel, values] : recording.channels) values.resize(n);
+  recording.sample_rate_hz = kSampleRateHz;
+  recording.source_texts["resampled"] = "from time stamps (" + rate_text(groups) +
+                                        ") by numpy.interp at those rates, then resample_poly (scipy semantics, padtype "
+                                        "mean; docs/convert.md)";
+}
+
+}  // namespace haptex::convert
