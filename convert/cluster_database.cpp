@@ -38,15 +38,6 @@ struct Series {
   std::vector<std::vector<double>> columns;
 };
 
-void require_increasing(const Series& s) {
-  for (std::size_t i = 1; i < s.times.size(); ++i)
-    if (!(s.times[i] > s.times[i - 1]))
-      throw input_error(s.path, "line " + std::to_string(i + 2) + ", column 'time'",
-                        text::format("the time stamp %.9g s does not come after the one before (%.9g s)", s.times[i],
-                                     s.times[i - 1]),
-                        "Remove repeated or out-of-order rows from the file");
-}
-
 Series read_series(const std::string& path, const std::vector<std::string>& names, int nominal_hz, std::uintmax_t max_bytes) {
   std::vector<std::string> wanted = {"time"};
   wanted.insert(wanted.end(), names.begin(), names.end());
@@ -63,9 +54,7 @@ Series read_series(const std::string& path, const std::vector<std::string>& name
                         "The database's files have the header " + header);
     (name == "time" ? s.times : s.columns.emplace_back()) = std::move(column->second);
   }
-  if (s.times.size() < 2) throw input_error(path, "", "holds fewer than two samples", "Give the take's whole file");
-  require_increasing(s);
-  const double rate = double(s.times.size() - 1) / (s.times.back() - s.times.front());
+  const double rate = check_stamps(path, "time", s.times, table.lines.at("time"));
   if (rate > 1.1 * nominal_hz || rate < 0.5 * nominal_hz)
     throw input_error(path, "column 'time'",
                       text::format("the samples come at %.0f Hz on average, not about %d Hz as the database's do", rate,

@@ -45,35 +45,11 @@ std::vector<StampedChannels> group_by_time(const std::string& path, const FieldM
   return out;
 }
 
-// The stamps' whole-Hz rate; refuses stamps that do not increase and gaps of dropped samples.
-// uniform: every step within 1 % of the mean.
+// The stamps' rate in whole Hz (acceleration needs kLowestAccelRateHz).
 int stamped_rate(const std::string& path, const StampedChannels& g, const std::vector<std::size_t>& lines, bool& uniform) {
-  const std::vector<double>& t = g.times;
-  const std::string where = "column '" + g.time_column + "'";
-  if (t.size() < 2) throw input_error(path, where, "holds fewer than two samples", "Give one row per sample");
-  std::vector<double> steps;
-  for (std::size_t i = 1; i < t.size(); ++i) {
-    if (!(t[i] > t[i - 1]))
-      throw input_error(path, "line " + std::to_string(lines[i]) + ", " + where,
-                        "the time does not increase (" + std::to_string(t[i]) + " s after " + std::to_string(t[i - 1]) + " s)",
-                        "Remove repeated or out-of-order rows");
-    steps.push_back(t[i] - t[i - 1]);
-  }
-  std::vector<double> sorted = steps;
-  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
-  const double median = sorted[sorted.size() / 2], mean = (t.back() - t.front()) / double(steps.size());
-  uniform = true;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    // Stamps may wander (irregular logging); a step of several samples is a gap no interpolation fills.
-    if (steps[i] > 3 * median)
-      throw input_error(path, "line " + std::to_string(lines[i + 1]) + ", " + where,
-                        "a gap of " + std::to_string(steps[i]) + " s where samples come every " + std::to_string(median) +
-                            " s: samples were dropped or the clock jumped",
-                        "Convert the parts before and after the gap as separate recordings");
-    uniform = uniform && std::abs(steps[i] - mean) <= 0.01 * mean;
-  }
+  const double rate = check_stamps(path, g.time_column, g.times, lines, &uniform);
   const bool accel = std::any_of(g.channels.begin(), g.channels.end(), [](const std::string& c) { return quantity_of(c) == "accel"; });
-  return whole_source_rate(path, where, std::round(1.0 / mean), accel ? kLowestAccelRateHz : kLowestRateHz);
+  return whole_source_rate(path, "column '" + g.time_column + "'", std::round(rate), accel ? kLowestAccelRateHz : kLowestRateHz);
 }
 
 }  // namespace

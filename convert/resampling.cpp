@@ -33,6 +33,34 @@ int whole_source_rate(const std::string& file, const std::string& where, double 
   return int(whole);
 }
 
+double check_stamps(const std::string& file, const std::string& column, const std::vector<double>& t,
+                    const std::vector<std::size_t>& lines, bool* uniform) {
+  const std::string where = "column '" + column + "'";
+  if (t.size() < 2) throw input_error(file, where, "holds fewer than two samples", "Give one row per sample");
+  std::vector<double> steps;
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    if (!(t[i] > t[i - 1]))
+      throw input_error(file, "line " + std::to_string(lines[i]) + ", " + where,
+                        text::format("the time %.9g s does not come after the one before (%.9g s)", t[i], t[i - 1]),
+                        "Remove repeated or out-of-order rows");
+    steps.push_back(t[i] - t[i - 1]);
+  }
+  std::vector<double> sorted = steps;
+  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+  const double median = sorted[sorted.size() / 2], mean = (t.back() - t.front()) / double(steps.size());
+  if (uniform) *uniform = true;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (steps[i] > 3 * median)
+      throw input_error(file, "line " + std::to_string(lines[i + 1]) + ", " + where,
+                        text::format("a gap of %.6f s where samples come every %.6f s: samples were dropped or the "
+                                     "clock jumped",
+                                     steps[i], median),
+                        "Convert the parts before and after the gap as separate recordings");
+    if (uniform) *uniform = *uniform && std::abs(steps[i] - mean) <= 0.01 * mean;
+  }
+  return 1.0 / mean;
+}
+
 void resample_uniform(Recording& recording, int source_hz) {
   if (source_hz == kRateHz) return;
   for (auto& [channel, values] : recording.channels) values = signal::resample_poly(values, kRateHz, source_hz);

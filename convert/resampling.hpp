@@ -18,6 +18,13 @@ inline constexpr double kLowestAccelRateHz = 2000.0, kLowestRateHz = 1.0;
 // rate under `lowest_hz`, or one that is no whole number of Hz.
 int whole_source_rate(const std::string& file, const std::string& where, double rate_hz, double lowest_hz);
 
+// The mean rate of time stamps (seconds) read from `column` of `file`, lines[i] the line of stamp i.
+// Throws haptex::Error (bad_input) naming the line: fewer than two stamps, a stamp that does not
+// come after the one before, a step over three times the median step (samples dropped: stamps may
+// wander, but no interpolation fills a gap). uniform, when given: every step within 1 % of the mean.
+double check_stamps(const std::string& file, const std::string& column, const std::vector<double>& times,
+                    const std::vector<std::size_t>& lines, bool* uniform = nullptr);
+
 // Every channel, sampled together at `source_hz`, to 10 kHz; says so in the recording's `resampled`.
 void resample_uniform(Recording& recording, int source_hz);
 
