@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "dataset/format.hpp"
+#include "dataset/layout.hpp"
 
 namespace haptex::convert {
 namespace fs = std::filesystem;
@@ -68,7 +69,7 @@ ConvertResult convert_recordings(const std::vector<std::string>& inputs, const s
   const std::vector<std::string> files = expand_inputs(inputs);
   h5::AtomicFile out(output, options.overwrite);
   dataset::stamp(out.root(), dataset::Kind::recordings, options.provenance);
-  out.root().set_attr("field_map", map.origin);
+  out.root().set_attr(dataset::layout::kFieldMap, map.origin);
 
   ConvertResult result;
   for (std::size_t i = 0; i < files.size(); ++i) {

@@ -4,6 +4,13 @@
 // never by a string of its own.
 namespace haptex::dataset::layout {
 
+// Root attributes naming a file's inputs, beside the stamp every file carries (core/h5/file.hpp).
+inline constexpr const char* kFieldMap = "field_map";                // recordings: the field map convert read with
+inline constexpr const char* kRecordingsFile = "recordings_file";    // dataset: align's recordings file
+inline constexpr const char* kRecordingsSha256 = "recordings_sha256";
+inline constexpr const char* kGelsightFile = "gelsight_file";        // dataset: align's gelsight file
+inline constexpr const char* kGelsightSha256 = "gelsight_sha256";
+
 // Every file with materials: /materials/{material}/...
 inline constexpr const char* kMaterials = "materials";
 inline constexpr const char* kName = "name";  // attribute: the material's name as the source spells it
