@@ -54,4 +54,12 @@ inline constexpr const char* kActionSamplesAttr = "action_samples";
 inline constexpr const char* kWindowSamplesAttr = "window_samples";
 inline constexpr const char* kActionEndAttr = "action_end";
 
+// Merged files (haptex merge): /shards/{s}/..., one group per input in command-line order, holding
+// the input's stamp and root attributes as they were, and these.
+inline constexpr const char* kShards = "shards";
+inline constexpr const char* kShardFile = "file";            // the input's path as given
+inline constexpr const char* kShardSha256 = "sha256";        // the SHA-256 of its bytes
+inline constexpr const char* kShardMaterials = "materials";  // the material ids taken from it, space-separated
+inline constexpr const char* kShardLeftOut = "left_out";     // its material ids --keep-first left out, space-separated
+
 }  // namespace haptex::dataset::layout
