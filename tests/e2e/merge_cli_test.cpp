@@ -81,7 +81,8 @@ TEST_F(MergeCli, MergedShardsHoldWhatTheUnshardedFilesHold) {
 
 TEST_F(MergeCli, InfoAndQaTakeAMergedFileAsAnUnshardedOne) {
   const SmallPipeline& p = small_pipeline();
-  for (const auto& [merged, unsharded] : {std::pair{files_->merged_dataset, p.dataset}, std::pair{files_->merged_recordings, p.recordings}}) {
+  for (const auto& [merged, unsharded] : {std::pair{files_->merged_dataset, p.dataset}, std::pair{files_->merged_recordings, p.recordings},
+                                          std::pair{files_->merged_gelsight, p.gelsight}}) {
     SCOPED_TRACE(merged);
     const CommandResult info = run_haptex({"info", merged, "--json"}), before = run_haptex({"info", unsharded, "--json"});
     ASSERT_EQ(info.exit_code, 0) << info.err;
