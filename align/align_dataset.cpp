@@ -84,10 +84,10 @@ AlignResult align_dataset(const AlignOptions& o, const Progress& progress) {
   h5::AtomicFile out(o.output, o.overwrite);
   h5::Group root = out.root();
   dataset::stamp(root, dataset::Kind::dataset, o.provenance);
-  root.set_attr("recordings_file", o.recordings);
-  root.set_attr("recordings_sha256", sha256_file(o.recordings));
-  root.set_attr("gelsight_file", o.gelsight);
-  root.set_attr("gelsight_sha256", sha256_file(o.gelsight));
+  root.set_attr(kRecordingsFile, o.recordings);
+  root.set_attr(kRecordingsSha256, sha256_file(o.recordings));
+  root.set_attr(kGelsightFile, o.gelsight);
+  root.set_attr(kGelsightSha256, sha256_file(o.gelsight));
   h5::Group materials = root.create_group(kMaterials);
   for (const MaterialPair& pair : result.match.pairs) {
     h5::Group m = materials.create_group(pair.id);

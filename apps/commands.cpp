@@ -9,6 +9,7 @@ std::unique_ptr<Command> make_qa_command();
 std::unique_ptr<Command> make_capture_command();
 std::unique_ptr<Command> make_synth_command();
 std::unique_ptr<Command> make_align_command();
+std::unique_ptr<Command> make_merge_command();
 std::unique_ptr<Command> make_split_command();
 std::unique_ptr<Command> make_train_command();
 std::unique_ptr<Command> make_predict_command();
@@ -22,6 +23,7 @@ std::vector<std::unique_ptr<Command>> all_commands() {
   commands.push_back(make_capture_command());
   commands.push_back(make_synth_command());
   commands.push_back(make_align_command());
+  commands.push_back(make_merge_command());
   commands.push_back(make_split_command());
   commands.push_back(make_qa_command());
   commands.push_back(make_train_command());

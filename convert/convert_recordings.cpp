@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "dataset/format.hpp"
+#include "dataset/layout.hpp"
 
 namespace haptex::convert {
 namespace fs = std::filesystem;
@@ -94,7 +95,7 @@ ConvertResult convert_recordings(const std::vector<std::string>& inputs, const s
   const std::vector<std::string> files = expand_inputs(inputs);
   h5::AtomicFile out(output, options.overwrite);
   dataset::stamp(out.root(), dataset::Kind::recordings, options.provenance);
-  out.root().set_attr("field_map", map.origin);
+  out.root().set_attr(dataset::layout::kFieldMap, map.origin);
   return write_all(out, files, progress, [&](std::size_t i, std::uintmax_t& bytes) {
     bytes = fs::file_size(files[i]);
     return lower_extension(files[i]) == ".csv" ? read_csv_recording(files[i], map, options.max_bytes)
@@ -110,7 +111,7 @@ ConvertResult convert_cluster(const std::string& root, const std::string& output
   for (const auto& take : takes) sources.push_back(take.accel);
   h5::AtomicFile out(output, options.overwrite);
   dataset::stamp(out.root(), dataset::Kind::recordings, options.provenance);
-  out.root().set_attr("field_map", kClusterLayout);
+  out.root().set_attr(dataset::layout::kFieldMap, kClusterLayout);
   return write_all(out, sources, progress, [&](std::size_t i, std::uintmax_t& bytes) {
     const ClusterTake& take = takes[i];
     bytes = fs::file_size(take.accel) + fs::file_size(take.force) + fs::file_size(take.position);

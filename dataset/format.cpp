@@ -1,6 +1,7 @@
 #include "dataset/format.hpp"
 
 #include <array>
+#include <filesystem>
 
 #include "core/error.hpp"
 
@@ -39,11 +40,11 @@ std::optional<Kind> kind_named(std::string_view name) {
 
 std::string read_format(const h5::File& file) {
   const h5::Group root = file.root();
-  if (!root.has_attr("haptex_format"))
+  if (!root.has_attr(h5::kFormatAttribute))
     throw input_error(file.path(), "/", "no haptex_format attribute: the file was not written by haptex",
                       "Give a file haptex wrote (haptex info FILE tells what a file is)");
   try {
-    return root.attr_string("haptex_format");
+    return root.attr_string(h5::kFormatAttribute);
   } catch (const Error&) {
     throw input_error(file.path(), "/@haptex_format", "is not a string", "Write the file again with haptex");
   }
@@ -54,7 +55,7 @@ h5::File open_checked(const std::string& path, Kind kind) {
   const Format& want = format_of(kind);
   const std::string wanted = format_name(kind);
   const std::string give = "Give the file " + std::string(want.written_by) + " wrote";
-  if (!file.root().has_attr("haptex_format"))
+  if (!file.root().has_attr(h5::kFormatAttribute))
     throw input_error(path, "/", "no haptex_format attribute: not a " + wanted + " file haptex wrote", give);
   const std::string found = read_format(file);
   if (found == wanted) return file;
@@ -62,6 +63,19 @@ h5::File open_checked(const std::string& path, Kind kind) {
     throw input_error(path, "/@haptex_format", "is " + found + ", written by an older haptex: " + std::string(want.older),
                       "Run " + std::string(want.written_by) + " again to write " + wanted);
   throw input_error(path, "/@haptex_format", "is '" + found + "', not " + wanted, give);
+}
+
+void require_replaceable(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return;
+  std::string why = "it has no haptex_format attribute";
+  try {
+    if (h5::File::open(path).root().has_attr(h5::kFormatAttribute)) return;
+  } catch (const Error&) {
+    why = "it is not an HDF5 file haptex can read";
+  }
+  throw input_error(path, "", "--force replaces only a file haptex wrote, and " + why,
+                    "Choose another output name, or move the file away yourself");
 }
 
 void stamp(h5::Group root, Kind kind, const std::string& source) { h5::stamp_root(root, format_name(kind), source); }

@@ -4,6 +4,13 @@
 // never by a string of its own.
 namespace haptex::dataset::layout {
 
+// Root attributes naming a file's inputs, beside the stamp every file carries (core/h5/file.hpp).
+inline constexpr const char* kFieldMap = "field_map";                // recordings: the field map convert read with
+inline constexpr const char* kRecordingsFile = "recordings_file";    // dataset: align's recordings file
+inline constexpr const char* kRecordingsSha256 = "recordings_sha256";
+inline constexpr const char* kGelsightFile = "gelsight_file";        // dataset: align's gelsight file
+inline constexpr const char* kGelsightSha256 = "gelsight_sha256";
+
 // Every file with materials: /materials/{material}/...
 inline constexpr const char* kMaterials = "materials";
 inline constexpr const char* kName = "name";  // attribute: the material's name as the source spells it
@@ -57,5 +64,13 @@ inline constexpr const char* kStride = "stride";                    // attribute
 inline constexpr const char* kActionSamplesAttr = "action_samples";
 inline constexpr const char* kWindowSamplesAttr = "window_samples";
 inline constexpr const char* kActionEndAttr = "action_end";
+
+// Merged files (haptex merge): /shards/{s}/..., one group per input in command-line order, holding
+// the input's stamp and root attributes as they were, and these.
+inline constexpr const char* kShards = "shards";
+inline constexpr const char* kShardFile = "file";            // the input's path as given
+inline constexpr const char* kShardSha256 = "sha256";        // the SHA-256 of its bytes
+inline constexpr const char* kShardMaterials = "materials";  // the material ids taken from it, space-separated
+inline constexpr const char* kShardLeftOut = "left_out";     // its material ids --keep-first left out, space-separated
 
 }  // namespace haptex::dataset::layout

@@ -102,12 +102,14 @@ std::vector<LayoutRow> rows_for_format(const std::vector<LayoutSection>& layout,
   std::vector<LayoutRow> rows;
   for (const auto& section : layout) {
     const bool every_file = section.format.empty() && section.heading.rfind("Every file", 0) == 0;
+    // /shards of `haptex merge`: optional rows, present only in merged files of any format.
+    const bool merged = section.format.empty() && section.heading.rfind("Merged file", 0) == 0;
     const bool own = !section.format.empty() && section.format == format;
     const bool copied_into_dataset =
         format == dataset::format_name(dataset::Kind::dataset) &&
         (section.format == dataset::format_name(dataset::Kind::recordings) || section.format == dataset::format_name(dataset::Kind::gelsight));
     for (const auto& row : section.rows)
-      if (every_file || own || (copied_into_dataset && under_materials_collection(row.path))) rows.push_back(row);
+      if (every_file || merged || own || (copied_into_dataset && under_materials_collection(row.path))) rows.push_back(row);
   }
   return rows;
 }

@@ -29,8 +29,9 @@ std::vector<LayoutSection> parse_layout(std::string_view markdown);
 // schemas/hdf5-layout.md as compiled in, parsed once.
 const std::vector<LayoutSection>& embedded_layout();
 
-// The rows a file of this haptex_format must satisfy: "Every file", its own section, and for
-// dataset/2 the recordings/1 and gelsight/1 rows below /materials/{material}/recordings/ and
+// The rows a file of this haptex_format must satisfy: "Every file", its own section, the optional
+// rows of "Merged file" (/shards, present only in files haptex merge wrote), and for dataset/2 the
+// recordings/1 and gelsight/1 rows below /materials/{material}/recordings/ and
 // /materials/{material}/presses/ (the dataset file copies those groups unchanged).
 std::vector<LayoutRow> rows_for_format(const std::vector<LayoutSection>& layout, std::string_view format);
 // True when the layout has a section for this haptex_format.

@@ -54,10 +54,10 @@ std::string utc_now_iso8601() {
 }
 
 void stamp_root(Group root, const std::string& format, const std::string& source) {
-  root.set_attr("haptex_format", format);
-  root.set_attr("haptex_version", kVersion);
-  root.set_attr("created_utc", utc_now_iso8601());
-  root.set_attr("source", source);
+  root.set_attr(kFormatAttribute, format);
+  root.set_attr(kVersionAttribute, kVersion);
+  root.set_attr(kCreatedAttribute, utc_now_iso8601());
+  root.set_attr(kSourceAttribute, source);
 }
 
 }  // namespace haptex::h5

@@ -1,6 +1,7 @@
 #pragma once
 // An HDF5 file opened for reading or created for writing. New files are written through
 // AtomicFile (core/h5/atomic_file.hpp) so a crash never leaves a half file under the final name.
+#include <array>
 #include <string>
 
 #include "core/h5/node.hpp"
@@ -27,6 +28,12 @@ class File {
 
 // Root attributes every haptex file carries (docs/architecture.md, "Formats"): haptex_format (e.g. "recordings/1"),
 // haptex_version, created_utc (ISO 8601; SOURCE_DATE_EPOCH is honoured for reproducible files), source.
+inline constexpr const char* kFormatAttribute = "haptex_format";
+inline constexpr const char* kVersionAttribute = "haptex_version";
+inline constexpr const char* kCreatedAttribute = "created_utc";
+inline constexpr const char* kSourceAttribute = "source";
+inline constexpr std::array<const char*, 4> kStampAttributes{kFormatAttribute, kVersionAttribute, kCreatedAttribute,
+                                                            kSourceAttribute};
 void stamp_root(Group root, const std::string& format, const std::string& source);
 std::string utc_now_iso8601();
 

@@ -9,6 +9,7 @@
 #include "align/window_table.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
+#include "tests/support/bad_input.hpp"
 #include "tests/support/pipeline_fixture.hpp"
 #include "tests/support/sample_recording.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -16,6 +17,7 @@
 namespace haptex::align {
 namespace {
 
+using test::bad_input_message;
 using test::TempDir;
 
 using Inputs = test::PipelineFiles;
@@ -28,17 +30,6 @@ AlignOptions options_for(const Inputs& in) {
   o.gelsight = in.gelsight;
   o.output = in.dataset;
   return o;
-}
-
-std::string error_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& e) {
-    EXPECT_EQ(e.kind(), Error::Kind::bad_input) << e.what();
-    return e.what();
-  }
-  ADD_FAILURE() << "no error";
-  return "";
 }
 
 TEST(AlignDataset, JoinsMaterialsByNormalisedNameAndListsTheRest) {
@@ -116,18 +107,18 @@ TEST(AlignDataset, NameMapJoinsOtherNamesAndRefusesTwoToOne) {
   test::write_text_file(in.dir.file("twice.json"), R"({"Glass": "Book"})");
   o.names_file = in.dir.file("twice.json");
   o.overwrite = true;
-  const std::string message = error_of([&] { align_dataset(o); });
+  const std::string message = bad_input_message([&] { align_dataset(o); });
   EXPECT_NE(message.find("joined with two gelsight materials"), std::string::npos) << message;
 
   test::write_text_file(in.dir.file("typo.json"), R"({"Glas": "Felt"})");
   o.names_file = in.dir.file("typo.json");
-  EXPECT_NE(error_of([&] { align_dataset(o); }).find("no such material in the gelsight file"), std::string::npos);
+  EXPECT_NE(bad_input_message([&] { align_dataset(o); }).find("no such material in the gelsight file"), std::string::npos);
 }
 
 TEST(AlignDataset, RefusesPressesOfDifferentSizesWithinAMaterial) {
   Inputs in;
   make_inputs(in, 40);
-  const std::string message = error_of([&] { align_dataset(options_for(in)); });
+  const std::string message = bad_input_message([&] { align_dataset(options_for(in)); });
   EXPECT_NE(message.find("/materials/book/presses/4/peak"), std::string::npos) << message;
   EXPECT_FALSE(std::filesystem::exists(in.dataset));
 }
@@ -139,12 +130,12 @@ TEST(AlignDataset, RefusesAnotherSampleRateAndSwappedFiles) {
     h5::File file = h5::File::open(in.recordings, true);
     file.root().open_group("materials").open_group("book").open_group("recordings").open_group("0").set_attr("sample_rate_hz", 5000.0);
   }
-  const std::string message = error_of([&] { align_dataset(options_for(in)); });
+  const std::string message = bad_input_message([&] { align_dataset(options_for(in)); });
   EXPECT_NE(message.find("/materials/book/recordings/0"), std::string::npos) << message;
   EXPECT_NE(message.find("5000"), std::string::npos) << message;
   AlignOptions swapped = options_for(in);
   std::swap(swapped.recordings, swapped.gelsight);
-  EXPECT_NE(error_of([&] { align_dataset(swapped); }).find("not recordings/1"), std::string::npos);
+  EXPECT_NE(bad_input_message([&] { align_dataset(swapped); }).find("not recordings/1"), std::string::npos);
 }
 
 }  // namespace

@@ -7,12 +7,14 @@
 
 #include "convert/csv_recording_reader.hpp"
 #include "core/error.hpp"
+#include "tests/support/bad_input.hpp"
 #include "tests/support/sample_recording.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::convert {
 namespace {
 
+using test::bad_input_message;
 using test::SampleRecordingSpec;
 using test::TempDir;
 
@@ -20,17 +22,6 @@ std::string replace_all(std::string text, const std::string& from, const std::st
   for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
     text.replace(at, from.size(), to);
   return text;
-}
-
-std::string error_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& e) {
-    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
-    return e.what();
-  }
-  ADD_FAILURE() << "no error was thrown";
-  return "";
 }
 
 TEST(HattRecordingReader, ReadsTheDefaultFormat) {
@@ -78,7 +69,7 @@ TEST(HattRecordingReader, FieldMapPointsAtOtherElementNames) {
   xml = replace_all(xml, "<value>", "<v>");
   xml = replace_all(xml, "</value>", "</v>");
   test::write_text_file(dir.file("renamed.xml"), xml);
-  EXPECT_NE(error_of([&] { read_hatt_recording_xml(dir.file("renamed.xml"), default_field_map()); }).find("<trial>"),
+  EXPECT_NE(bad_input_message([&] { read_hatt_recording_xml(dir.file("renamed.xml"), default_field_map()); }).find("<trial>"),
             std::string::npos);
 
   FieldMap map = default_field_map();
@@ -99,11 +90,11 @@ TEST(HattRecordingReader, InvalidFieldMapIsRefusedWithItsPlace) {
   test::write_text_file(dir.file("map.json"), R"({"root": "x", "material": "m", "sample_rate": "r", "value": "v",
     "csv_time_column": "t", "units": {"accel": "a", "force": "f", "speed": "s"},
     "channels": {"accel_x": "ax", "accel_y": "ay", "accel_z": 3, "force_normal": "f", "speed": "s"}})");
-  const std::string message = error_of([&] { load_field_map(dir.file("map.json")); });
+  const std::string message = bad_input_message([&] { load_field_map(dir.file("map.json")); });
   EXPECT_NE(message.find("map.json"), std::string::npos);
   EXPECT_NE(message.find("/channels/accel_z"), std::string::npos) << message;
   test::write_text_file(dir.file("broken.json"), "{\"root\": ");
-  EXPECT_NE(error_of([&] { load_field_map(dir.file("broken.json")); }).find("not valid JSON"), std::string::npos);
+  EXPECT_NE(bad_input_message([&] { load_field_map(dir.file("broken.json")); }).find("not valid JSON"), std::string::npos);
 }
 
 TEST(HattRecordingReader, ConvertsKnownUnitsAndRefusesUnknownOnes) {
@@ -118,7 +109,7 @@ TEST(HattRecordingReader, ConvertsKnownUnitsAndRefusesUnknownOnes) {
   EXPECT_EQ(in_g.units.at("accel"), "m/s^2");
 
   test::write_text_file(dir.file("lbf.xml"), replace_all(xml, "<ForceUnits>N<", "<ForceUnits>lbf<"));
-  const std::string message = error_of([&] { read_hatt_recording_xml(dir.file("lbf.xml"), default_field_map()); });
+  const std::string message = bad_input_message([&] { read_hatt_recording_xml(dir.file("lbf.xml"), default_field_map()); });
   EXPECT_NE(message.find("unknown force unit 'lbf'"), std::string::npos) << message;
   EXPECT_NE(message.find("<ForceUnits> at line 6"), std::string::npos) << message;
 }
@@ -135,7 +126,7 @@ TEST(HattRecordingReader, LineNumbersCountNewlinesInsideTags) {
   xml.replace(text, xml.find('<', text) - text, "oops");
   test::write_text_file(dir.file("split.xml"), xml);
   const std::size_t line = 1 + std::count(xml.begin(), xml.begin() + std::ptrdiff_t(value), '\n');
-  const std::string message = error_of([&] { read_hatt_recording_xml(dir.file("split.xml"), default_field_map()); });
+  const std::string message = bad_input_message([&] { read_hatt_recording_xml(dir.file("split.xml"), default_field_map()); });
   EXPECT_NE(message.find("<value> at line " + std::to_string(line) + " "), std::string::npos) << message;
 }
 
@@ -144,7 +135,7 @@ TEST(HattRecordingReader, TextureNumberMustBeAnInteger) {
   SampleRecordingSpec spec;
   spec.seconds = 0.2;
   test::write_text_file(dir.file("t.xml"), replace_all(test::sample_recording_xml(spec), "texture=\"7\"", "texture=\"abc\""));
-  EXPECT_NE(error_of([&] { read_hatt_recording_xml(dir.file("t.xml"), default_field_map()); }).find("texture=\"abc\" is not an integer"),
+  EXPECT_NE(bad_input_message([&] { read_hatt_recording_xml(dir.file("t.xml"), default_field_map()); }).find("texture=\"abc\" is not an integer"),
             std::string::npos);
 }
 
@@ -153,7 +144,7 @@ TEST(HattRecordingReader, TooShortRecordingIsRefused) {
   SampleRecordingSpec spec;
   spec.seconds = 0.05;
   test::write_text_file(dir.file("short.xml"), test::sample_recording_xml(spec));
-  EXPECT_NE(error_of([&] { read_hatt_recording_xml(dir.file("short.xml"), default_field_map()); }).find("only 500 samples"),
+  EXPECT_NE(bad_input_message([&] { read_hatt_recording_xml(dir.file("short.xml"), default_field_map()); }).find("only 500 samples"),
             std::string::npos);
 }
 
@@ -185,7 +176,7 @@ TEST(CsvRecordingReader, RefusesRaggedRowsBadValuesAndGaps) {
   std::string ragged = csv;
   ragged.insert(ragged.find('\n', ragged.find('\n', ragged.find('\n') + 1) + 1), ",5");  // line 3
   test::write_text_file(dir.file("ragged.csv"), ragged);
-  EXPECT_NE(error_of([&] { read_csv_recording(dir.file("ragged.csv"), default_field_map()); })
+  EXPECT_NE(bad_input_message([&] { read_csv_recording(dir.file("ragged.csv"), default_field_map()); })
                 .find("line 3: has 7 fields but the header has 6"),
             std::string::npos);
 
@@ -193,7 +184,7 @@ TEST(CsvRecordingReader, RefusesRaggedRowsBadValuesAndGaps) {
   const auto line5 = nan.find('\n', nan.find('\n', nan.find('\n', nan.find('\n') + 1) + 1) + 1) + 1;
   nan.replace(nan.find(',', line5) + 1, nan.find(',', nan.find(',', line5) + 1) - nan.find(',', line5) - 1, "nan");
   test::write_text_file(dir.file("nan.csv"), nan);
-  const std::string message = error_of([&] { read_csv_recording(dir.file("nan.csv"), default_field_map()); });
+  const std::string message = bad_input_message([&] { read_csv_recording(dir.file("nan.csv"), default_field_map()); });
   EXPECT_NE(message.find("line 5, column 'accelX'"), std::string::npos) << message;
   EXPECT_NE(message.find("NaN or Inf"), std::string::npos) << message;
 
@@ -207,12 +198,12 @@ TEST(CsvRecordingReader, RefusesRaggedRowsBadValuesAndGaps) {
   const auto row = gap.find("0.010000,");
   gap.erase(row, gap.find("0.010500,") - row);
   test::write_text_file(dir.file("gap.csv"), gap);
-  const std::string dropped = error_of([&] { read_csv_recording(dir.file("gap.csv"), default_field_map()); });
+  const std::string dropped = bad_input_message([&] { read_csv_recording(dir.file("gap.csv"), default_field_map()); });
   EXPECT_NE(dropped.find("a gap of 0.0006"), std::string::npos) << dropped;
   EXPECT_NE(dropped.find("samples were dropped"), std::string::npos) << dropped;
 
   test::write_text_file(dir.file("notime.csv"), replace_all(csv, "time_s", "t"));
-  EXPECT_NE(error_of([&] { read_csv_recording(dir.file("notime.csv"), default_field_map()); }).find("no 'time_s' column"),
+  EXPECT_NE(bad_input_message([&] { read_csv_recording(dir.file("notime.csv"), default_field_map()); }).find("no 'time_s' column"),
             std::string::npos);
 }
 

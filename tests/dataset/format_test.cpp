@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
+#include "tests/support/bad_input.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::dataset {
@@ -63,6 +64,18 @@ TEST(Format, OpensTheRightKindAndRefusesEveryOtherWithTheFix) {
   std::ofstream(dir.file("text.h5")) << "not HDF5";
   EXPECT_NE(refusal(dir.file("text.h5"), Kind::gelsight).find("text.h5"), std::string::npos);
   EXPECT_NE(refusal(dir.file("missing.h5"), Kind::gelsight).find("missing.h5"), std::string::npos);
+}
+
+// --force replaces a file only when haptex wrote it; a user's file of another kind is left alone.
+TEST(Format, OnlyAFileHaptexWroteIsReplaceable) {
+  const test::TempDir dir;
+  EXPECT_NO_THROW(require_replaceable(dir.file("new.h5")));
+  EXPECT_NO_THROW(require_replaceable(file_with_format(dir, "ours.h5", "recordings/1")));
+  std::ofstream(dir.file("notes.h5")) << "my notes";
+  for (const std::string& theirs : {dir.file("notes.h5"), file_with_format(dir, "plain.h5", "")}) {
+    const std::string message = test::bad_input_message([&] { require_replaceable(theirs); });
+    EXPECT_NE(message.find(theirs + ": --force replaces only a file haptex wrote"), std::string::npos) << message;
+  }
 }
 
 }  // namespace

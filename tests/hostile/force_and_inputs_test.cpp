@@ -88,6 +88,7 @@ TEST(Force, NoCommandWritesOverItsInput) {
                                          "-o", d.file("out.wav"), "--csv", d.file("victim")};
        }, ""},
       {"extract", [](const TempDir& d) { return std::vector<std::string>{"capture", "extract", d.file("victim"), "-o", d.file("victim")}; }, p.gelsight},
+      {"merge", [&](const TempDir& d) { return std::vector<std::string>{"merge", p.gelsight, d.file("victim"), "-o", d.file("victim")}; }, p.gelsight},
   };
   for (const SameFileCase& c : cases) {
     for (const char* how : {"name", "symlink", "hardlink"}) {

@@ -122,6 +122,7 @@ TEST(Layout, DatasetRowsIncludeTheCopiedRecordingsAndPresses) {
   EXPECT_TRUE(has("/materials/{material}/presses/{j}/frames"));
   EXPECT_FALSE(has("/@field_map"));                      // a recordings file's root attribute
   EXPECT_FALSE(has("/materials/{material}/spectrum"));  // the truth file's
+  EXPECT_TRUE(has("/shards/{s}/@sha256"));              // a merged file's provenance, optional
 }
 
 TEST(Layout, ParsesAttributesOptionalRowsAndRefusesBrokenTables) {

@@ -16,7 +16,9 @@
 #include "capture/extraction/gelsight_writer.hpp"
 #include "capture/scoring/contact_score.hpp"
 #include "capture/scoring/scoring_image.hpp"
+#include "core/h5/file.hpp"
 #include "core/sha256.hpp"
+#include "tests/support/mutations.hpp"
 #include "tests/support/run_haptex.hpp"
 
 namespace haptex::test {
@@ -180,6 +182,20 @@ std::string copy_into(const TempDir& dir, const std::string& file, const std::st
   const fs::path to = dir.path() / name;
   fs::copy_file(file, to, fs::copy_options::overwrite_existing);
   return to.string();
+}
+
+std::vector<std::string> material_ids(const std::string& file) {
+  return h5::File::open(file).root().open_group("materials").children();
+}
+
+std::string copy_with_materials(const TempDir& dir, const std::string& file, const std::string& name,
+                                const std::vector<std::string>& keep) {
+  const std::string copy = copy_into(dir, file, name);
+  const std::vector<std::string> ids = material_ids(copy);
+  Edit edit(copy);
+  for (const std::string& id : ids)
+    if (std::find(keep.begin(), keep.end(), id) == keep.end()) edit.remove("materials/" + id);
+  return copy;
 }
 
 }  // namespace haptex::test

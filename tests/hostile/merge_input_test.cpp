@@ -1,0 +1,107 @@
+// `haptex merge` given shards it must refuse: each case exits 2 with one message naming the shard,
+// where in it and the fix, and writes nothing (no output, no NAME.partial). Names with quotes and
+// back-quotes are ordinary names: they merge, and a bad shard so named is named intact.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include "core/h5/file.hpp"
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/mutations.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kQuoted = "it's \"a\" `touch x` shard.h5";
+
+struct BadShard {
+  std::string name;
+  std::function<std::string(const TempDir&)> make;  // writes the shard, returns its path
+  std::vector<std::string> says;                      // besides the shard's path
+};
+
+// The first material's recordings: the good shard every bad one is merged with.
+std::string good_shard(const TempDir& dir) {
+  return copy_with_materials(dir, small_pipeline().recordings, "good.h5", {material_ids(small_pipeline().recordings).front()});
+}
+
+std::string second_material_of(const TempDir& dir, const std::string& file, const std::string& name) {
+  return copy_with_materials(dir, file, name, {material_ids(file).back()});
+}
+
+std::vector<BadShard> bad_shards() {
+  const SmallPipeline& p = small_pipeline();
+  auto truncated = [&](const TempDir& d, const std::string& name) {
+    const std::string copy = second_material_of(d, p.recordings, name);
+    fs::resize_file(copy, fs::file_size(copy) / 2);
+    return copy;
+  };
+  return {
+      {"missing", [](const TempDir& d) { return d.file("nowhere.h5"); }, {"no such file"}},
+      {"not HDF5", [](const TempDir& d) { std::ofstream(d.file("notes.h5")) << "not hdf5"; return d.file("notes.h5"); }, {"not an HDF5 file"}},
+      {"truncated", [=](const TempDir& d) { return truncated(d, "half.h5"); }, {"copy it again"}},
+      {"truncated, quoted name", [=](const TempDir& d) { return truncated(d, kQuoted); }, {"copy it again"}},
+      {"another format", [&](const TempDir&) { return p.truth; }, {"/@haptex_format", "is 'truth/2'", "haptex merge joins"}},
+      {"another shard's format", [&](const TempDir& d) { return second_material_of(d, p.gelsight, "g.h5"); },
+       {"is gelsight/1, but", "good.h5 is recordings/1", "Merge files of one format"}},
+      {"no material", [&](const TempDir& d) { return copy_with_materials(d, p.recordings, "empty.h5", {}); },
+       {"/materials: holds no material", "Leave the file out"}},
+      {"a root object merge cannot join", [&](const TempDir& d) {
+         const std::string copy = second_material_of(d, p.recordings, "extra.h5");
+         Edit(copy).root().create_group("notes");
+         return copy;
+       }, {"/notes: is not an object haptex writes", "merge the copy"}},
+  };
+}
+
+TEST(MergeInput, EveryBadShardIsNamedAndNothingIsWritten) {
+  for (const BadShard& c : bad_shards()) {
+    SCOPED_TRACE(c.name);
+    const TempDir dir;
+    const std::string bad = c.make(dir);
+    std::vector<std::string> says = c.says;
+    says.push_back(bad);
+    expect_refusal(run_haptex({"merge", good_shard(dir), bad, "-o", dir.file("out.h5")}), says);
+    EXPECT_FALSE(fs::exists(dir.file("out.h5")));
+    EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+  }
+}
+
+TEST(MergeInput, ANameThatIsNotUtf8IsRefusedAtTheDoor) {
+  const TempDir dir;
+  const std::string bad = second_material_of(dir, small_pipeline().recordings, "Caf\xe9.h5");
+  expect_refusal(run_haptex({"merge", good_shard(dir), bad, "-o", dir.file("out.h5")}),
+                 {"a shard's file name", "not valid UTF-8", "Caf\\xe9.h5"});
+  expect_refusal(run_haptex({"merge", good_shard(dir), dir.file("x.h5"), "-o", dir.file("out\xff.h5")}), {"not valid UTF-8"});
+  EXPECT_EQ(files_named(dir.path().string(), {"out.h5", "out\xff.h5"}), std::vector<std::string>{});
+}
+
+TEST(MergeInput, QuotesAndBackQuotesInNamesAreKeptAsTheyAre) {
+  const TempDir dir;
+  const std::string quoted = second_material_of(dir, small_pipeline().recordings, kQuoted);
+  const std::string out = dir.file("out `x` 'y'.h5");
+  const CommandResult r = run_haptex_in(dir.path().string(), {"merge", good_shard(dir), quoted, "-o", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(h5::File::open(out).root().open_group("shards").open_group("1").attr_string("file"), quoted);
+  EXPECT_FALSE(fs::exists(dir.file("x"))) << "no shell ran the back-quotes";
+}
+
+TEST(MergeInput, ForceReplacesOnlyAFileHaptexWrote) {
+  const TempDir dir;
+  const std::string a = good_shard(dir), b = second_material_of(dir, small_pipeline().recordings, "b.h5");
+  std::ofstream(dir.file("mine.h5")) << "my notes";
+  expect_refusal(run_haptex({"merge", a, b, "-o", dir.file("mine.h5"), "--force"}),
+                 {dir.file("mine.h5"), "--force replaces only a file haptex wrote"});
+  EXPECT_EQ(file_bytes(dir.file("mine.h5")), "my notes");
+  ASSERT_EQ(run_haptex({"merge", a, b, "-o", dir.file("m.h5")}).exit_code, 0);
+  expect_refusal(run_haptex({"merge", a, b, "-o", dir.file("m.h5")}), {"already exists", "--force"});
+  EXPECT_EQ(run_haptex({"merge", a, b, "-o", dir.file("m.h5"), "--force"}).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace haptex::test
