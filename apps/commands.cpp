@@ -13,6 +13,7 @@ std::unique_ptr<Command> make_merge_command();
 std::unique_ptr<Command> make_split_command();
 std::unique_ptr<Command> make_train_command();
 std::unique_ptr<Command> make_predict_command();
+std::unique_ptr<Command> make_windows_command();
 std::unique_ptr<Command> make_evaluate_command();
 std::unique_ptr<Command> make_render_command();
 
@@ -28,6 +29,7 @@ std::vector<std::unique_ptr<Command>> all_commands() {
   commands.push_back(make_qa_command());
   commands.push_back(make_train_command());
   commands.push_back(make_predict_command());
+  commands.push_back(make_windows_command());
   commands.push_back(make_evaluate_command());
   commands.push_back(make_render_command());
   return commands;

@@ -15,6 +15,7 @@ constexpr std::array kFormats{
     Format{Kind::model, "model", 2, "haptex train", "it was trained on the action before its window (model/2 takes it at the window's middle)"},
     Format{Kind::truth, "truth", 2, "haptex synth", "it does not record what generated each recording"},
     Format{Kind::press, "press", 1, "haptex capture record", ""},
+    Format{Kind::windows, "windows", 1, "haptex windows", ""},
 };
 
 std::string_view family_of(std::string_view name) { return name.substr(0, name.find('/')); }

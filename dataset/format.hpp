@@ -11,7 +11,7 @@
 
 namespace haptex::dataset {
 
-enum class Kind { recordings, gelsight, dataset, model, truth, press };
+enum class Kind { recordings, gelsight, dataset, model, truth, press, windows };
 
 struct Format {
   Kind kind;

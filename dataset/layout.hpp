@@ -73,4 +73,15 @@ inline constexpr const char* kShardSha256 = "sha256";        // the SHA-256 of i
 inline constexpr const char* kShardMaterials = "materials";  // the material ids taken from it, space-separated
 inline constexpr const char* kShardLeftOut = "left_out";     // its material ids --keep-first left out, space-separated
 
+// Files made from a dataset and its split (model, windows): the inputs' SHA-256, root attributes.
+inline constexpr const char* kDatasetSha256 = "dataset_sha256";
+inline constexpr const char* kSplitSha256 = "split_sha256";
+inline constexpr const char* kDatasetFile = "dataset_file";
+inline constexpr const char* kSplitFile = "split_file";
+
+// Windows file (haptex windows): the evaluation's grid, /windows/... as in the dataset file plus
+// which test section each window lies in and the material's test press.
+inline constexpr const char* kWindowSection = "section";
+inline constexpr const char* kWindowPress = "press";
+
 }  // namespace haptex::dataset::layout

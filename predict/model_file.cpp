@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "dataset/format.hpp"
+#include "dataset/layout.hpp"
 #include "dataset/window.hpp"
 
 namespace haptex::predict {
@@ -174,8 +175,8 @@ void write_model(const Model& model, const std::string& path, bool overwrite, co
   h5::Group root = out.root();
   dataset::stamp(root, dataset::Kind::model, source);
   root.set_attr("variant", variant_name(model.variant));
-  root.set_attr("dataset_sha256", model.dataset_sha256);
-  root.set_attr("split_sha256", model.split_sha256);
+  root.set_attr(dataset::layout::kDatasetSha256, model.dataset_sha256);
+  root.set_attr(dataset::layout::kSplitSha256, model.split_sha256);
   root.set_attr("config", model.config.dump());
   root.set_attr("metrics", model.metrics.dump());
   h5::Group materials = root.create_group("materials");
@@ -206,8 +207,8 @@ Model read_model(const std::string& path) {
   if (variant != variant_name(Variant::unified) && variant != variant_name(Variant::per_material))
     throw input_error(path, "/ attribute 'variant'", "is '" + variant + "', neither unified nor per_material", kRetrain);
   m.variant = variant == variant_name(Variant::unified) ? Variant::unified : Variant::per_material;
-  m.dataset_sha256 = root.attr_string("dataset_sha256");
-  m.split_sha256 = root.attr_string("split_sha256");
+  m.dataset_sha256 = root.attr_string(dataset::layout::kDatasetSha256);
+  m.split_sha256 = root.attr_string(dataset::layout::kSplitSha256);
   m.config = r.json(root, "config");
   m.metrics = r.json(root, "metrics");
   m.material_ids = root.open_dataset("materials/ids").read_strings();

@@ -36,7 +36,8 @@ TEST(Format, NamesAndKindsAgree) {
   EXPECT_EQ(format_name(Kind::dataset), "dataset/2");
   EXPECT_EQ(format_name(Kind::recordings), "recordings/1");
   EXPECT_EQ(format_name(Kind::model), "model/2");
-  for (Kind k : {Kind::recordings, Kind::gelsight, Kind::dataset, Kind::model, Kind::truth, Kind::press})
+  EXPECT_EQ(format_name(Kind::windows), "windows/1");
+  for (Kind k : {Kind::recordings, Kind::gelsight, Kind::dataset, Kind::model, Kind::truth, Kind::press, Kind::windows})
     EXPECT_EQ(kind_named(format_name(k)), k);
   EXPECT_FALSE(kind_named("dataset/1"));
   EXPECT_FALSE(kind_named("dataset"));

@@ -3,10 +3,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <nlohmann/json.hpp>
 
 #include "core/json/schema.hpp"
+#include "dataset/format.hpp"
+#include "dataset/window_table.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
@@ -49,6 +52,26 @@ TEST(EvaluateCli, WritesAReportWhoseTotalsMatchItsTables) {
   const std::string text{std::istreambuf_iterator<char>(report), {}};
   EXPECT_NE(text.find("better on"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir.file("report.partial")));
+}
+
+// haptex windows writes the windows evaluate scores (docs/windows.md): per material as many as it
+// scored, read through the dataset's own /windows reader since the layouts agree.
+TEST(EvaluateCli, ScoresAsManyWindowsPerMaterialAsHaptexWindowsWrites) {
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  const CommandResult r = run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", models().per_material, "--repeats", "2",
+                                      "--reconstruct", "none", "-o", dir.file("report"), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_EQ(run_haptex({"windows", p.dataset, "--split", p.split, "-o", dir.file("windows.h5")}).exit_code, 0);
+  const dataset::WindowTable grid = dataset::read_window_table(dataset::open_checked(dir.file("windows.h5"), dataset::Kind::windows));
+  std::map<std::string, std::size_t> written;
+  for (std::int32_t m : grid.material) ++written[grid.materials.at(std::size_t(m))];
+  const nlohmann::json results = nlohmann::json::parse(r.out);
+  ASSERT_FALSE(results["experiments"].empty());
+  for (const auto& e : results["experiments"]) {
+    ASSERT_EQ(e["materials"].size(), written.size()) << e["id"];
+    for (const auto& m : e["materials"]) EXPECT_EQ(m["windows"].get<std::size_t>(), written[m["id"].get<std::string>()]) << e["id"] << " " << m["id"];
+  }
 }
 
 // synth materials' truth.h5 knows what generated every recording: the floor is the oracle, and no

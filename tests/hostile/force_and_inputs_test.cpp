@@ -87,6 +87,7 @@ TEST(Force, NoCommandWritesOverItsInput) {
          return std::vector<std::string>{"render", quick_model(), "--material", "any", "--trajectory", d.file("victim"),
                                          "-o", d.file("out.wav"), "--csv", d.file("victim")};
        }, ""},
+      {"windows", [&](const TempDir& d) { return std::vector<std::string>{"windows", d.file("victim"), "--split", p.split, "-o", d.file("victim")}; }, p.dataset},
       {"extract", [](const TempDir& d) { return std::vector<std::string>{"capture", "extract", d.file("victim"), "-o", d.file("victim")}; }, p.gelsight},
       {"merge", [&](const TempDir& d) { return std::vector<std::string>{"merge", p.gelsight, d.file("victim"), "-o", d.file("victim")}; }, p.gelsight},
   };

@@ -1,0 +1,64 @@
+#include "evaluate/evaluation_grid.hpp"
+
+#include "core/h5/atomic_file.hpp"
+#include "dataset/format.hpp"
+#include "dataset/layout.hpp"
+
+namespace haptex::evaluate {
+namespace {
+
+// One test section's windows appended to the grid: the same offsets, actions and spectra the
+// evaluation scores (section_grid, grid_actions, grid_spectra).
+void append_section(EvaluationGrid& g, std::int32_t material, std::int32_t press, const SectionSignals& s) {
+  const std::vector<std::size_t> offsets = section_grid(s.accel.size());
+  if (offsets.empty()) return;
+  const Eigen::MatrixXf actions = grid_actions(s, offsets);
+  const std::vector<std::vector<double>> spectra = grid_spectra(s.accel, offsets);
+  dataset::WindowTable& w = g.windows;
+  for (std::size_t j = 0; j < offsets.size(); ++j) {
+    w.material.push_back(material);
+    w.recording.push_back(s.recording);
+    w.start.push_back(s.begin + std::int64_t(offsets[j]));
+    w.action.insert(w.action.end(), actions.col(Eigen::Index(j)).data(), actions.col(Eigen::Index(j)).data() + dataset::kActionValues);
+    w.target.insert(w.target.end(), spectra[j].begin(), spectra[j].end());
+    g.section.push_back(s.section);
+    g.press.push_back(press);
+  }
+}
+
+}  // namespace
+
+EvaluationGrid evaluation_grid(const split::DatasetSplit& split, const std::vector<MaterialSignals>& signals) {
+  EvaluationGrid g;
+  g.dataset_sha256 = split.dataset_sha256, g.split_sha256 = split.manifest_sha256;
+  g.windows.stride = dataset::kGridStride;
+  for (std::size_t m = 0; m < signals.size(); ++m) {
+    // A sound split (qa/sound_split.hpp, which the command passes it through) gives every material
+    // exactly one test press; the new-press experiment encodes it.
+    const int press = split.materials[m].presses[split::kTest].front();
+    g.windows.materials.push_back(signals[m].id);
+    for (const SectionSignals& s : signals[m].test) append_section(g, std::int32_t(m), press, s);
+  }
+  return g;
+}
+
+void write_windows_file(const EvaluationGrid& grid, const split::DatasetSplit& split, const std::string& path, bool overwrite,
+                        const std::string& source) {
+  namespace layout = dataset::layout;
+  h5::AtomicFile out(path, overwrite);
+  h5::Group root = out.root();
+  dataset::stamp(root, dataset::Kind::windows, source);
+  root.set_attr(layout::kDatasetFile, split.dataset_path);
+  root.set_attr(layout::kDatasetSha256, grid.dataset_sha256);
+  root.set_attr(layout::kSplitFile, split.manifest_path);
+  root.set_attr(layout::kSplitSha256, grid.split_sha256);
+  dataset::write_window_table(root, grid.windows);
+  h5::Group windows = root.open_group(layout::kWindows);
+  windows.write(layout::kWindowSection, grid.section)
+      .set_attr("description", "the window's test section of its recording (the split's section number)");
+  windows.write(layout::kWindowPress, grid.press)
+      .set_attr("description", "the material's test press: /materials/{material}/presses/{press} of the dataset file");
+  out.commit();
+}
+
+}  // namespace haptex::evaluate

@@ -1,0 +1,172 @@
+"""Read haptex's files from Python: a dataset's training windows as its split assigns them, and the
+evaluation's grid (`haptex windows`), so a model trained in PyTorch learns from haptex's windows and
+predicts for exactly the windows `haptex evaluate` scores.
+
+Needs python3, numpy and h5py. `WindowDataset` (a torch.utils.data.Dataset) exists only when torch
+imports. The file layouts are schemas/hdf5-layout.md ("Dataset file", "Windows file"); the split
+manifest is schemas/split.schema.json.
+"""
+import hashlib
+import json
+from dataclasses import dataclass
+
+import h5py
+import numpy as np
+
+WINDOW_SAMPLES = 1000  # dataset/window.hpp: a window uses samples [start, start + 1000)
+ACTION_SAMPLES = 10    # the action: 10 force samples (N), then 10 speed samples (mm/s)
+TARGET_BINS = 100      # 10, 20, ..., 1000 Hz
+SETS = ("train", "val", "test")
+
+
+class HaptexFileError(ValueError):
+    """A file that is not what haptex wrote, or inputs that do not belong together."""
+
+
+def sha256_file(path):
+    digest = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def _text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def _check_format(f, path, wanted):
+    found = _text(f.attrs.get("haptex_format", ""))
+    if found != wanted:
+        raise HaptexFileError(f"{path}: /@haptex_format is '{found}', not {wanted}")
+
+
+@dataclass
+class Windows:
+    """Rows of a /windows table. action is (W, 20) float32, target (W, 100) float32 in m/s^2;
+    material indexes materials; section and press are -1 where the file does not say."""
+    materials: list
+    material: np.ndarray
+    recording: np.ndarray
+    section: np.ndarray
+    start: np.ndarray
+    press: np.ndarray
+    action: np.ndarray
+    target: np.ndarray
+    dataset_sha256: str = ""
+    split_sha256: str = ""
+
+    def __len__(self):
+        return len(self.start)
+
+    def rows(self, keep):
+        """The windows where the boolean mask `keep` holds, in order."""
+        pick = lambda a: a[keep]
+        return Windows(self.materials, pick(self.material), pick(self.recording), pick(self.section), pick(self.start),
+                       pick(self.press), pick(self.action), pick(self.target), self.dataset_sha256, self.split_sha256)
+
+
+def _read_table(group, path):
+    def column(name, width=None):
+        if name not in group:
+            raise HaptexFileError(f"{path}: {group.name}/{name} is missing")
+        a = group[name][()]
+        if a.ndim != (1 if width is None else 2) or (width is not None and a.shape[1] != width):
+            raise HaptexFileError(f"{path}: {group.name}/{name} has shape {a.shape}")
+        return a
+    n = len(column("start"))
+    absent = np.full(n, -1, dtype=np.int32)
+    w = Windows([_text(m) for m in column("materials")], column("material"), column("recording"),
+                column("section") if "section" in group else absent, column("start"),
+                column("press") if "press" in group else absent,
+                column("action", 2 * ACTION_SAMPLES), column("target", TARGET_BINS))
+    if any(len(a) != n for a in (w.material, w.recording, w.section, w.press, w.action, w.target)):
+        raise HaptexFileError(f"{path}: the columns of {group.name} differ in length")
+    return w
+
+
+def read_windows(path):
+    """The evaluation's grid written by `haptex windows` (windows/1), in the order evaluate scores it."""
+    with h5py.File(path, "r") as f:
+        _check_format(f, path, "windows/1")
+        w = _read_table(f["windows"], path)
+        w.dataset_sha256 = _text(f.attrs["dataset_sha256"])
+        w.split_sha256 = _text(f.attrs["split_sha256"])
+    return w
+
+
+@dataclass
+class Split:
+    """A split manifest (split/1): per material id its section numbers and press numbers per set."""
+    path: str
+    sha256: str
+    dataset_sha256: str
+    sections: int
+    material_sections: dict  # id -> {"train": [...], "val": [...], "test": [...]}
+    material_presses: dict   # id -> {"train": [...], "val": [...], "test": [...]}
+
+
+def read_split(path):
+    with open(path, "rb") as f:
+        raw = f.read()
+    doc = json.loads(raw)
+    if doc.get("format") != "split/1":
+        raise HaptexFileError(f"{path}: format is '{doc.get('format')}', not split/1 (haptex split writes it)")
+    return Split(path, hashlib.sha256(raw).hexdigest(), doc["dataset"]["sha256"], int(doc["parameters"]["sections"]),
+                 {m["id"]: m["sections"] for m in doc["materials"]}, {m["id"]: m["presses"] for m in doc["materials"]})
+
+
+def _section_begin(s, samples, sections):
+    return s * samples // sections
+
+
+def section_of(start, samples, sections):
+    """The section holding windows [start, start + 1000) of a recording, -1 for a window crossing a
+    boundary: split/sections.cpp's rule (section_begin(s) = s * samples // sections), vectorised."""
+    start = np.asarray(start, dtype=np.int64)
+    s = start * sections // samples
+    s = np.where((s + 1 < sections) & (_section_begin(s + 1, samples, sections) <= start), s + 1, s)
+    s = np.where((s > 0) & (_section_begin(s, samples, sections) > start), s - 1, s)
+    inside = (start >= 0) & (start + WINDOW_SAMPLES <= _section_begin(s + 1, samples, sections))
+    return np.where(inside, s, -1)
+
+
+def read_set_windows(dataset_path, split, sets=("train",)):
+    """The dataset's /windows rows lying wholly inside a section of `sets` (as haptex train reads them),
+    with their section numbers. Refuses a split made from another dataset file."""
+    if sha256_file(dataset_path) != split.dataset_sha256:
+        raise HaptexFileError(f"{split.path}: was made from another dataset than {dataset_path} (dataset.sha256)")
+    with h5py.File(dataset_path, "r") as f:
+        _check_format(f, dataset_path, "dataset/2")
+        w = _read_table(f["windows"], dataset_path)
+        keep = np.zeros(len(w), dtype=bool)
+        for m, material_id in enumerate(w.materials):
+            wanted = [s for name in sets for s in split.material_sections[material_id][name]]
+            for k in np.unique(w.recording[w.material == m]):
+                rows = (w.material == m) & (w.recording == k)
+                samples = int(f[f"materials/{material_id}/recordings/{k}"].attrs["samples"])
+                w.section[rows] = section_of(w.start[rows], samples, split.sections)
+                keep |= rows & np.isin(w.section, wanted)
+    w.dataset_sha256, w.split_sha256 = split.dataset_sha256, split.sha256
+    return w.rows(keep)
+
+
+try:
+    import torch
+    from torch.utils.data import Dataset
+
+    class WindowDataset(Dataset):
+        """(material, action, target) tensors of a Windows table: int64, float32 (20), float32 (100)."""
+
+        def __init__(self, windows):
+            self.windows = windows
+
+        def __len__(self):
+            return len(self.windows)
+
+        def __getitem__(self, i):
+            w = self.windows
+            return (torch.tensor(int(w.material[i])), torch.from_numpy(np.asarray(w.action[i], dtype=np.float32)),
+                    torch.from_numpy(np.asarray(w.target[i], dtype=np.float32)))
+except ImportError:  # torch is optional: numpy users need none of it
+    pass

@@ -1,0 +1,42 @@
+// haptex windows as a user runs it on the small pipeline, then python/'s kNN example on its grid,
+// both checked with h5py (tests/e2e/check_windows.py). Its refusals: tests/hostile/windows_refusals_test.cpp.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "core/sha256.hpp"
+#include "tests/support/run_haptex.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kSource = std::string(HAPTEX_SCHEMA_DIR) + "/../";
+
+TEST(WindowsCli, WritesTheEvaluationGridThatTheKnnExamplePredicts) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  const std::string windows = dir.file("windows.h5"), preds = dir.file("preds.h5");
+  const CommandResult r = run_haptex({"windows", p.dataset, "--split", p.split, "-o", windows, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json printed = nlohmann::json::parse(r.out);
+  EXPECT_GT(printed["windows"].get<int>(), 0);
+  EXPECT_EQ(printed["materials"], 2);
+  EXPECT_EQ(printed["split_sha256"], sha256_file(p.split));
+
+  const CommandResult layout = run_python({kSource + "tests/e2e/check_layout.py", kSource + "schemas/hdf5-layout.md", windows, "Windows file"});
+  EXPECT_EQ(layout.exit_code, 0) << layout.out << layout.err;
+  const CommandResult knn = run_python({kSource + "python/examples/knn_baseline.py", p.dataset, p.split, windows, "-o", preds});
+  ASSERT_EQ(knn.exit_code, 0) << knn.out << knn.err;
+  EXPECT_FALSE(fs::exists(preds + ".partial"));
+  const CommandResult checked = run_python({kSource + "tests/e2e/check_windows.py", kSource + "python", p.dataset, p.split, windows, preds});
+  EXPECT_EQ(checked.exit_code, 0) << checked.out << checked.err;
+  EXPECT_NE(checked.out.find("windows ok"), std::string::npos) << checked.out;
+}
+
+}  // namespace
+}  // namespace haptex::test
