@@ -66,19 +66,6 @@ h5::File open_checked(const std::string& path, Kind kind) {
   throw input_error(path, "/@haptex_format", "is '" + found + "', not " + wanted, give);
 }
 
-void require_replaceable(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return;
-  std::string why = "it has no haptex_format attribute";
-  try {
-    if (h5::File::open(path).root().has_attr(h5::kFormatAttribute)) return;
-  } catch (const Error&) {
-    why = "it is not an HDF5 file haptex can read";
-  }
-  throw input_error(path, "", "--force replaces only a file haptex wrote, and " + why,
-                    "Choose another output name, or move the file away yourself");
-}
-
 void stamp(h5::Group root, Kind kind, const std::string& source) { h5::stamp_root(root, format_name(kind), source); }
 
 }  // namespace haptex::dataset

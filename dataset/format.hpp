@@ -35,10 +35,6 @@ std::string read_format(const h5::File& file);
 // an older version (saying what changed and which command writes the current one).
 h5::File open_checked(const std::string& path, Kind kind);
 
-// For --force: refuses (haptex::Error, bad_input) to replace an existing file at path that haptex
-// did not write (not HDF5, or no haptex_format), so a user's own file is never overwritten. A path
-// that does not exist, or is not a regular file (core/durable_file.hpp refuses that), passes.
-void require_replaceable(const std::string& path);
 
 // The root attributes every haptex file carries (core/h5/file.hpp, stamp_root) for `kind`.
 void stamp(h5::Group root, Kind kind, const std::string& source);

@@ -57,8 +57,6 @@ MergeResult merge_files(const MergeOptions& o, const Progress& progress) {
   const std::vector<Shard> shards = open_shards(o.shards);
   MergeResult result{shards.front().kind, plan_for(shards, o.keep_first), 0};
   const std::optional<dataset::WindowTable> windows = windows_for(shards, result.plan);
-  if (o.overwrite) dataset::require_replaceable(o.output);
-
   h5::AtomicFile out(o.output, o.overwrite);
   h5::Group root = out.root();
   dataset::stamp(root, result.kind, o.provenance);

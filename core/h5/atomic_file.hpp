@@ -9,9 +9,15 @@
 
 namespace haptex::h5 {
 
+// For --force: refuses (haptex::Error, bad_input) to replace an existing file at path that haptex
+// did not write (not HDF5, or no haptex_format), so a user's own file is never overwritten. A path
+// that does not exist, or is not a regular file (core/durable_file.hpp refuses that), passes.
+void require_replaceable(const std::string& path);
+
 class AtomicFile {
  public:
-  // Refuses (haptex::Error, bad_input) when final_path exists and overwrite is false, when its
+  // Refuses (haptex::Error, bad_input) when final_path exists and overwrite is false, or exists and
+  // is not a file haptex wrote (--force replaces only those: require_replaceable), when its
   // directory does not exist or is not writable, or when another run is writing it.
   AtomicFile(std::string final_path, bool overwrite);
   ~AtomicFile();

@@ -190,6 +190,13 @@ TEST(H5, RefusesExistingOutputUnlessOverwrite) {
   std::string kept;
   std::getline(in, kept);
   EXPECT_EQ(kept, "keep me");
+  EXPECT_THROW(AtomicFile(path, true), Error) << "--force replaces only a file haptex wrote";
+  std::filesystem::remove(path);
+  {
+    AtomicFile ours(path, false);
+    ours.root().set_attr(kFormatAttribute, "recordings/1");
+    ours.commit();
+  }
   AtomicFile replaced(path, true);
   replaced.commit();
   std::filesystem::create_directory(dir.file("a_directory"));

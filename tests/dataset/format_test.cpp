@@ -70,11 +70,11 @@ TEST(Format, OpensTheRightKindAndRefusesEveryOtherWithTheFix) {
 // --force replaces a file only when haptex wrote it; a user's file of another kind is left alone.
 TEST(Format, OnlyAFileHaptexWroteIsReplaceable) {
   const test::TempDir dir;
-  EXPECT_NO_THROW(require_replaceable(dir.file("new.h5")));
-  EXPECT_NO_THROW(require_replaceable(file_with_format(dir, "ours.h5", "recordings/1")));
+  EXPECT_NO_THROW(h5::require_replaceable(dir.file("new.h5")));
+  EXPECT_NO_THROW(h5::require_replaceable(file_with_format(dir, "ours.h5", "recordings/1")));
   std::ofstream(dir.file("notes.h5")) << "my notes";
   for (const std::string& theirs : {dir.file("notes.h5"), file_with_format(dir, "plain.h5", "")}) {
-    const std::string message = test::bad_input_message([&] { require_replaceable(theirs); });
+    const std::string message = test::bad_input_message([&] { h5::require_replaceable(theirs); });
     EXPECT_NE(message.find(theirs + ": --force replaces only a file haptex wrote"), std::string::npos) << message;
   }
 }

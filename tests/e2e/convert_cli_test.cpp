@@ -162,7 +162,7 @@ TEST(ConvertCli, UnwritableOutputDirectoryIsRefused) {
   EXPECT_FALSE(std::filesystem::exists(output));
 }
 
-TEST(ConvertCli, ExistingOutputIsRefusedUnlessForced) {
+TEST(ConvertCli, ExistingOutputIsRefusedUnlessForcedAndHaptexsOwn) {
   TempDir dir;
   write_text_file(dir.file("a.xml"), good_xml());
   write_text_file(dir.file("r.h5"), "precious");
@@ -174,6 +174,12 @@ TEST(ConvertCli, ExistingOutputIsRefusedUnlessForced) {
   std::string content;
   kept >> content;
   EXPECT_EQ(content, "precious");
+  // --force replaces only a file haptex wrote: not the user's "precious", but a recordings file.
+  const CommandResult not_ours = run_haptex({"convert", "hatt", dir.file("a.xml"), "-o", dir.file("r.h5"), "--force"});
+  EXPECT_EQ(not_ours.exit_code, 2);
+  EXPECT_NE(not_ours.err.find("--force replaces only a file haptex wrote"), std::string::npos) << not_ours.err;
+  std::filesystem::remove(dir.file("r.h5"));
+  ASSERT_EQ(run_haptex({"convert", "hatt", dir.file("a.xml"), "-o", dir.file("r.h5")}).exit_code, 0);
   const CommandResult forced = run_haptex({"convert", "hatt", dir.file("a.xml"), "-o", dir.file("r.h5"), "--force"});
   EXPECT_EQ(forced.exit_code, 0) << forced.err;
 }

@@ -115,6 +115,32 @@ TEST(Force, NoCommandWritesOverItsInput) {
   }
 }
 
+// --force replaces only what haptex wrote: every command writing an HDF5 file leaves a user's file of
+// the same name alone (core/h5/atomic_file.hpp), and replaces its own.
+TEST(Force, NoCommandReplacesAFileHaptexDidNotWrite) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir synth_dir;
+  ASSERT_EQ(run_haptex(tiny_synth(synth_dir.file("s"), false)).exit_code, 0);
+  const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
+      {"convert", {"convert", "hatt", synth_dir.file("s/recordings")}},
+      {"align", {"align", "--recordings", p.recordings, "--gelsight", p.gelsight}},
+      {"windows", {"windows", p.dataset, "--split", p.split}},
+      {"merge", {"merge", p.gelsight}},
+  };
+  for (const auto& [name, command] : commands) {
+    SCOPED_TRACE(name);
+    const TempDir d;
+    std::ofstream(d.file("out.h5")) << "my own notes";
+    std::vector<std::string> args = command;
+    args.insert(args.end(), {"-o", d.file("out.h5"), "--force"});
+    expect_refusal(run_haptex(args), {"--force replaces only a file haptex wrote"});
+    EXPECT_EQ(file_bytes(d.file("out.h5")), "my own notes");
+    fs::remove(d.file("out.h5"));
+    ASSERT_EQ(run_haptex(args).exit_code, 0) << "a new file";
+    EXPECT_EQ(run_haptex(args).exit_code, 0) << "and its own, replaced";
+  }
+}
+
 TEST(Force, TrainRefusesALogThatIsTheModel) {
   const TempDir dir;
   std::vector<std::string> args = quick_train_args(small_pipeline().dataset, small_pipeline().split, dir.file("m.h5"));

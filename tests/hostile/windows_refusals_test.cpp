@@ -1,6 +1,7 @@
 // haptex windows refuses what it cannot use (exit code 2, naming the file) and writes nothing then:
 // an earlier output without --force, a split of another dataset, a file that is not a dataset.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -21,8 +22,17 @@ TEST(WindowsRefusals, ReplacesAnEarlierFileOnlyWithForce) {
   std::ofstream(out) << "mine";
   expect_refusal(run_haptex({"windows", p.dataset, "--split", p.split, "-o", out}), {out, "--force"});
   EXPECT_EQ(file_bytes(out), "mine");
+  expect_refusal(run_haptex({"windows", p.dataset, "--split", p.split, "-o", out, "--force"}),
+                 {out, "--force replaces only a file haptex wrote"});
+  EXPECT_EQ(file_bytes(out), "mine");
+  fs::remove(out);
+  ASSERT_EQ(run_haptex({"windows", p.dataset, "--split", p.split, "-o", out}).exit_code, 0);
+  struct stat first {};
+  ASSERT_EQ(stat(out.c_str(), &first), 0);
   ASSERT_EQ(run_haptex({"windows", p.dataset, "--split", p.split, "-o", out, "--force"}).exit_code, 0);
-  EXPECT_NE(file_bytes(out), "mine");
+  struct stat second {};
+  ASSERT_EQ(stat(out.c_str(), &second), 0);
+  EXPECT_NE(first.st_ino, second.st_ino) << "replaced: a new file renamed over the old one";
   EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
 }
 

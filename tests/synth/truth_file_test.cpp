@@ -131,6 +131,7 @@ TEST_F(TruthFile, RefusesWhatIsNotHdf5OrIsTruncated) {
   std::ofstream(path_) << "speed,force\n1,2\n";
   EXPECT_EQ(refusal(path_), path_ + ": not an HDF5 file. Give a file written by haptex (recordings, gelsight, dataset or model)");
 
+  fs::remove(path_);  // --force would not replace the user's text file
   written();
   fs::resize_file(path_, fs::file_size(path_) / 2);
   const std::string message = refusal(path_);
