@@ -14,7 +14,6 @@
 #include "core/signal/resample.hpp"
 #include "core/signal/sosfilt.hpp"
 #include "core/text/format.hpp"
-#include "core/text/utf8.hpp"
 #include "dataset/layout.hpp"
 
 namespace haptex::convert {
