@@ -1,4 +1,5 @@
-// haptex evaluate dataset.h5 --split split.json --model model.h5 [--model ...] [--baseline ar-refit|hatt-published]
+// haptex evaluate dataset.h5 --split split.json --model model.h5 [--model ...] [--predictions NAME=preds.h5 ...]
+//                [--baseline ar-refit|hatt-published]
 //                [--hatt-models DIR] [--reconstruct fgla|online|noise|none] [--repeats 10] -o report/
 #include <algorithm>
 #include <cmath>
@@ -32,7 +33,10 @@ class EvaluateCommand : public Command {
   void declare(CLI::App& app) override {
     app.add_option("dataset", dataset_, "Dataset file (haptex align)")->required();
     app.add_option("--split", split_, "Split manifest the models were trained with")->required();
-    app.add_option("--model", models_, "Model file (haptex train); repeat for several (unified sizes, per-material)")->required();
+    app.add_option("--model", models_, "Model file (haptex train); repeat for several (unified sizes, per-material)");
+    app.add_option("--predictions", predictions_,
+                   "NAME=FILE: predictions of a model trained elsewhere on the grid of `haptex windows` (docs/benchmark.md); "
+                   "repeat for several. At least one --model or --predictions");
     const std::map<std::string, evaluate::Baseline> baselines{{"ar-refit", evaluate::Baseline::ar_refit},
                                                               {"hatt-published", evaluate::Baseline::hatt_published}};
     app.add_option("--baseline", options_.baseline, "ar-refit (fitted here from train+val) or hatt-published (--hatt-models)")
@@ -60,7 +64,9 @@ class EvaluateCommand : public Command {
       options_.reconstruct = render::parse_reconstruction(reconstruct_);
     if (options_.baseline == evaluate::Baseline::hatt_published && options_.hatt_models.empty())
       throw Error(Error::Kind::bad_input, "evaluate: --baseline hatt-published needs --hatt-models DIR (the toolkit's Models_*.xml)");
+    for (const std::string& argument : predictions_) options_.predictions.push_back(evaluate::parse_predictions_argument(argument));
     std::vector<std::string> inputs = models_;
+    for (const evaluate::PredictionsInput& p : options_.predictions) inputs.push_back(p.path);
     inputs.insert(inputs.end(), {dataset_, split_, options_.truth, options_.hatt_models});
     refuse_output_among_inputs(output_, inputs);
     if (std::filesystem::exists(output_) && !force_)
@@ -111,7 +117,7 @@ class EvaluateCommand : public Command {
   }
 
   std::string dataset_, split_, output_, reconstruct_ = "fgla";
-  std::vector<std::string> models_;
+  std::vector<std::string> models_, predictions_;
   evaluate::EvaluationOptions options_;
   bool force_ = false;
 };

@@ -36,7 +36,7 @@ struct MaterialComparison {
 };
 
 struct Experiment {
-  std::string id;           // per-material | unified-new-actions | unified-new-presses | stitched-<method>
+  std::string id;           // per-material | unified-new-actions | unified-new-presses | stitched-<method> | external-<name> | stitched-external-<name>
   std::string title;        // what it tests, in the paper's words
   std::string model_label;  // e.g. "unified (model.h5)"
   std::string baseline_label;
@@ -115,9 +115,15 @@ struct InputFile {
   std::string path, sha256;
 };
 
+// A predictions file of a model trained elsewhere (docs/benchmark.md), as the report names it.
+struct PredictionsFile {
+  std::string name, path, sha256, source;  // source: the file's own account of how it was made
+};
+
 struct Evaluation {
   InputFile dataset, split;
   std::vector<InputFile> models;
+  std::vector<PredictionsFile> predictions;
   std::string baseline, reconstruct;  // options as given
   std::size_t repeats = 0;            // baseline renderings per test section
   std::vector<Experiment> experiments;

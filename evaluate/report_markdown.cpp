@@ -76,6 +76,13 @@ constexpr std::pair<std::string_view, std::string_view> kExplanations[] = {
     {"unified-new-presses",
      "The same unified model, but the texture comes from the material's test press, a GelSight image the model never "
      "saw: does it generalise to a new image of a known surface?"},
+    {"external-",
+     "A model trained outside haptex (docs/benchmark.md): its predictions file holds one spectrum per test window of the "
+     "grid `haptex windows` writes, scored here exactly as the built-in models are. What it was told (the material, the "
+     "test press's image, the action) is its own; the file's source says how it was made."},
+    {"stitched-external-",
+     "The external model's own vibration signal of each test section (its predictions file's signals), scored exactly "
+     "like the baseline's rendering."},
     {"stitched-",
      "Above, predicted spectra are compared with the recording window by window. Here the model's spectra for a whole "
      "test section are first turned into one vibration signal (by phase reconstruction, or by shaping noise), and that signal is scored "
@@ -143,6 +150,9 @@ void inputs_section(std::ostringstream& s, const Evaluation& e) {
     << "| split | " << code(e.split.path) << " | " << code(e.split.sha256) << " |\n";
   for (std::size_t i = 0; i < e.models.size(); ++i)
     s << "| model " << i + 1 << " | " << code(e.models[i].path) << " | " << code(e.models[i].sha256) << " |\n";
+  for (const PredictionsFile& p : e.predictions)
+    s << "| predictions " << code(p.name) << (p.source.empty() ? "" : " (" + escaped(p.source) + ")") << " | " << code(p.path) << " | "
+      << code(p.sha256) << " |\n";
   s << "\nSettings: baseline " << code(e.baseline) << ", " << e.repeats << " baseline renderings per test section, "
     << "phase reconstruction " << code(e.reconstruct) << ". The evaluation took " << format_number(e.seconds) << " s.\n\n";
 }

@@ -164,10 +164,14 @@ nlohmann::json results_json(const Evaluation& e, const ReportLayout& layout, con
   const auto latent_json = [](const LatentPoint& p) {
     return nlohmann::json{{"id", p.id}, {"name", p.name}, {"kind", p.kind}, {"x", json_number(p.x)}, {"y", json_number(p.y)}};
   };
+  const auto predictions_json = [](const PredictionsFile& p) {
+    return nlohmann::json{{"name", p.name}, {"path", p.path}, {"sha256", p.sha256}, {"source", p.source}};
+  };
   return {{"format", "results/2"},
           {"haptex_version", kVersion},
           {"created_utc", created_utc},
-          {"inputs", {{"dataset", input_json(e.dataset)}, {"split", input_json(e.split)}, {"models", json_array(e.models, input_json)}}},
+          {"inputs", {{"dataset", input_json(e.dataset)}, {"split", input_json(e.split)}, {"models", json_array(e.models, input_json)},
+                      {"predictions", json_array(e.predictions, predictions_json)}}},
           {"settings", {{"baseline", e.baseline}, {"reconstruct", e.reconstruct}, {"repeats", e.repeats}}},
           {"significance", {{"test", "Welch's t-test, two-sided"}, {"level", kSignificanceLevel}}},
           {"seconds", json_number(e.seconds)},

@@ -55,6 +55,7 @@ struct MethodKey {
     per_material, unified_new_actions, unified_new_presses,  // `model`: which of the models
     stitched,                                                 // `reconstruction`; fgla: `iterations`
     mean_spectrum, expected_ar, floor, input_floor, floor_estimate, oracle_rendered,
+    external, external_signal,  // `model`: which of the predictions files (docs/benchmark.md)
   };
   Kind kind;
   std::size_t model = 0;
@@ -64,6 +65,7 @@ struct MethodKey {
   // Kind, then model: the order the speed chart lists the models' points in.
   auto operator<=>(const MethodKey&) const = default;
   bool is_model() const { return kind <= Kind::unified_new_presses; }  // the first three kinds
+  bool is_external() const { return kind == Kind::external || kind == Kind::external_signal; }
 };
 using Kind = MethodKey::Kind;
 
@@ -185,6 +187,22 @@ Scores stitched_scores(const std::vector<std::vector<double>>& spectra, const st
   return s;
 }
 
+// A predictions file's spectra of one section's windows (rows [row, row + grid size)) and, when it
+// has them, its signal of the section (grid section `k`), as the built-in models are scored.
+void score_external(MaterialRun& run, std::size_t i, const ExternalPredictions& p, std::size_t row, std::size_t k,
+                    const std::vector<std::size_t>& grid, const std::vector<std::vector<double>>& truth, const std::vector<double>& floor) {
+  const double rendered_seconds = double(grid.size()) * double(dataset::kGridStride) / dataset::kSampleRateHz;  // as the models'
+  const auto first = p.spectra.begin() + std::ptrdiff_t(row);
+  Scores spectra = score({first, first + std::ptrdiff_t(grid.size())}, truth, floor);
+  spectra.seconds = p.query_seconds * double(grid.size()), spectra.rendered_seconds = rendered_seconds;
+  run.methods[{Kind::external, i}].add(spectra);
+  if (p.signals.empty()) return;
+  Scores signal = signal_scores(grid_spectra(p.signals[k], grid), truth, floor);
+  signal.seconds = p.signal_seconds * double(grid.size()) / double(p.spectra.size());  // the file's total, shared by windows
+  signal.rendered_seconds = rendered_seconds;
+  run.methods[{Kind::external_signal, i}].add(signal);
+}
+
 std::vector<double> head(const std::vector<double>& v, std::size_t from) {
   const std::size_t end = std::min(v.size(), from + kExampleSamples);
   return from < end ? std::vector<double>(v.begin() + std::ptrdiff_t(from), v.begin() + std::ptrdiff_t(end)) : std::vector<double>{};
@@ -192,6 +210,8 @@ std::vector<double> head(const std::vector<double>& v, std::size_t from) {
 
 struct Context {
   const std::vector<ModelInput>& models;
+  const std::vector<ExternalPredictions>& external;
+  std::vector<std::size_t> first_row, first_section;  // per material: its first window and section in the grid
   const std::vector<std::vector<Codes>>& codes;  // [model][material]; empty for per-material models
   const EvaluationOptions& options;
   const std::optional<synth::Truth>& truth;  // --truth: the oracle where it knows a material
@@ -297,11 +317,14 @@ MaterialRun run_material(std::size_t m, const MaterialSignals& signals, const Co
   for (const ModelInput& input : c.models) predictors.emplace_back(input.model);
   std::vector<std::vector<std::vector<double>>> recorded;
   for (const SectionSignals& section : signals.test) recorded.push_back(grid_spectra(section.accel, section_grid(section.accel.size())));
+  std::size_t row = c.first_row[m], grid_section = c.first_section[m];
   for (std::size_t s = 0; s < signals.test.size(); ++s) {
     const SectionSignals& section = signals.test[s];
     const std::vector<std::size_t> grid = section_grid(section.accel.size());
     if (grid.empty()) continue;
     const auto& truth = recorded[s];
+    for (std::size_t i = 0; i < c.external.size(); ++i) score_external(run, i, c.external[i], row, grid_section, grid, truth, ref.noise);
+    row += grid.size(), ++grid_section;
     const Eigen::MatrixXf actions = grid_actions(section, grid);
     std::vector<double> first_render;
     std::vector<std::vector<double>> first_render_spectra;
@@ -451,6 +474,19 @@ std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& mode
                      {kind, i}, label, MethodKey{Kind::expected_ar}});
     }
   }
+  for (std::size_t i = 0; i < c.external.size(); ++i) {
+    const ExternalPredictions& p = c.external[i];
+    const std::string id = "external-" + p.name, label = p.name + " (" + p.path + ")";
+    const std::string what = "External model " + p.name + " (its predicted spectra)";
+    out.push_back({id, what + " on the test windows: a model trained outside haptex, scored by the paper's protocol", {Kind::external, i}, label, {}});
+    out.push_back({id + "-vs-mean-spectrum", what + " against each material's mean training spectrum, the best action-blind predictor",
+                   {Kind::external, i}, label, MethodKey{Kind::mean_spectrum}});
+    out.push_back({id + "-vs-expected-ar", what + " against the AR baseline's expected spectrum at each window's action: spectrum against spectrum",
+                   {Kind::external, i}, label, MethodKey{Kind::expected_ar}});
+    if (!p.signals.empty())
+      out.push_back({"stitched-" + id, "External model " + p.name + "'s own time signal of each test section, against the AR baseline rendered",
+                     {Kind::external_signal, i}, label, {}});
+  }
   if (c.stitched_model >= 0 && c.stitched_key) {
     const MethodKey& key = *c.stitched_key;
     out.push_back({"stitched-" + render::reconstruction_name(key.reconstruction),
@@ -461,7 +497,12 @@ std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& mode
   return out;
 }
 
-std::string method_setting(const MethodKey& key, const std::vector<ModelInput>& models) {
+std::string method_setting(const MethodKey& key, const Context& c) {
+  const std::vector<ModelInput>& models = c.models;
+  if (key.is_external()) {
+    const std::string& source = c.external[key.model].source;
+    return source.empty() ? c.external[key.model].path : source;
+  }
   if (key.kind == Kind::stitched) {
     if (key.reconstruction == render::Reconstruction::fgla) return std::to_string(key.iterations) + " iterations";
     if (key.reconstruction == render::Reconstruction::online) return "look-ahead 3 frames, scattered";
@@ -471,7 +512,8 @@ std::string method_setting(const MethodKey& key, const std::vector<ModelInput>& 
   return m.label + ", " + std::to_string(m.model.config.value("predictor_hidden", 0)) + " hidden";
 }
 
-std::string method_name(const MethodKey& key) {
+std::string method_name(const MethodKey& key, const Context& c) {
+  if (key.is_external()) return c.external[key.model].name + (key.kind == Kind::external_signal ? " (external, signal)" : " (external)");
   if (key.kind != Kind::stitched) return model_kind_name(key.kind);
   if (key.reconstruction == render::Reconstruction::fgla) return "unified + FGLA";
   if (key.reconstruction == render::Reconstruction::online) return "unified + online (RTISI-LA)";
@@ -514,9 +556,23 @@ SpeedPoint point(const std::string& method, const std::string& setting, const Sc
   return p;
 }
 
+// The predictions files' realism (signals) and speed points (where the file gives its compute time).
+void summarise_external(Evaluation& e, const std::vector<MaterialSignals>& signals, const std::vector<MaterialRun>& runs,
+                        std::map<MethodKey, Scores>& totals, const Context& c) {
+  for (std::size_t i = 0; i < c.external.size(); ++i) {
+    const ExternalPredictions& p = c.external[i];
+    const MethodKey spectra{Kind::external, i}, signal{Kind::external_signal, i};
+    if (std::isfinite(p.query_seconds)) e.speed.push_back(point(method_name(spectra, c), method_setting(spectra, c), totals[spectra], nullptr));
+    else e.notes.push_back(p.name + ": " + p.path + " gives no /@query_seconds, so its spectra have no point in the speed chart");
+    if (p.signals.empty()) continue;
+    e.realism.push_back(realism_of(signal, method_name(signal, c), method_setting(signal, c), signals, runs));
+    if (std::isfinite(p.signal_seconds)) e.speed.push_back(point(method_name(signal, c), method_setting(signal, c), totals[signal], &e.realism.back()));
+    else e.notes.push_back(p.name + ": " + p.path + " gives no /signals/@seconds, so its signals have no point in the speed chart");
+  }
+}
+
 // Floors, realism and the speed-vs-accuracy points over all materials.
-void summarise(Evaluation& e, const std::vector<MaterialSignals>& signals, const std::vector<MaterialRun>& runs,
-               const std::vector<ModelInput>& models, const Context& c) {
+void summarise(Evaluation& e, const std::vector<MaterialSignals>& signals, const std::vector<MaterialRun>& runs, const Context& c) {
   Scores base;
   std::map<MethodKey, Scores> totals;
   for (const MaterialRun& r : runs) {
@@ -531,14 +587,15 @@ void summarise(Evaluation& e, const std::vector<MaterialSignals>& signals, const
   e.speed.push_back(point(e.baseline, "order 14-20, 1 rendering", base, &e.realism.back()));
   e.speed.push_back(point(e.baseline + " expected spectrum", "closed form", totals[{Kind::expected_ar}], nullptr));
   for (const MethodKey& key : c.stitched_keys) {
-    e.realism.push_back(realism_of(key, method_name(key), method_setting(key, models), signals, runs));
-    e.speed.push_back(point(method_name(key), method_setting(key, models), totals[key], &e.realism.back()));
+    e.realism.push_back(realism_of(key, method_name(key, c), method_setting(key, c), signals, runs));
+    e.speed.push_back(point(method_name(key, c), method_setting(key, c), totals[key], &e.realism.back()));
   }
   const MethodKey oracle_rendered{Kind::oracle_rendered};
   if (totals.count(oracle_rendered))
     e.realism.push_back(realism_of(oracle_rendered, "generating model rendered", "the oracle's model, 10 renderings", signals, runs));
   for (const auto& [key, s] : totals)
-    if (key.is_model()) e.speed.push_back(point(method_name(key), method_setting(key, models), s, nullptr));
+    if (key.is_model()) e.speed.push_back(point(method_name(key, c), method_setting(key, c), s, nullptr));
+  summarise_external(e, signals, runs, totals, c);
   if (c.truth && !any_oracle)
     e.notes.push_back("--truth " + c.options.truth + " knows none of the materials' recordings: every floor is an estimate");
   if (any_oracle && std::any_of(e.floors.begin(), e.floors.end(), [](const MaterialFloor& f) { return f.kind != "oracle"; }))
@@ -550,7 +607,12 @@ void summarise(Evaluation& e, const std::vector<MaterialSignals>& signals, const
 Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<ModelInput>& models, const EvaluationOptions& o,
                           const Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
-  if (models.empty()) throw Error(Error::Kind::bad_input, "evaluate: give at least one model (--model)");
+  if (models.empty() && o.predictions.empty())
+    throw Error(Error::Kind::bad_input, "evaluate: give at least one model (--model) or predictions file (--predictions NAME=FILE)");
+  for (std::size_t i = 0; i < o.predictions.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (o.predictions[i].name == o.predictions[j].name)
+        throw Error(Error::Kind::bad_input, "evaluate: two --predictions are named '" + o.predictions[i].name + "': give each its own name");
   for (const ModelInput& input : models) check_model(input, split);
   Evaluation e;
   e.dataset = {split.dataset_path, split.dataset_sha256};
@@ -572,7 +634,22 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   if (truth && truth->sample_rate_hz != dataset::kSampleRateHz)  // the oracle's windows and action points count 10 kHz samples
     throw input_error(o.truth, "/@sample_rate_hz", "is " + std::to_string(truth->sample_rate_hz) + " Hz, not the evaluation's 10 kHz",
                       "Give the truth.h5 written with the recordings of this dataset");
-  Context c{models, codes, o, truth, {}, {}, stitched};
+  const std::vector<MaterialSignals> signals = read_section_signals(split);
+  const std::vector<GridSection> sections = grid_sections(signals);
+  std::vector<ExternalPredictions> external;
+  for (const PredictionsInput& input : o.predictions) {
+    external.push_back(read_external_predictions(input, split, sections));
+    const ExternalPredictions& p = external.back();
+    e.predictions.push_back({p.name, p.path, p.sha256, p.source});
+  }
+  Context c{models, external, {}, {}, codes, o, truth, {}, {}, stitched};
+  // Where each material's windows begin in the grid (evaluate/evaluation_grid.hpp's order).
+  std::size_t row = 0, section = 0;
+  for (const MaterialSignals& m : signals) {
+    c.first_row.push_back(row), c.first_section.push_back(section);
+    for (const SectionSignals& s : m.test)
+      if (const std::size_t n = section_grid(s.accel.size()).size(); n > 0) row += n, ++section;
+  }
   if (stitched >= 0 && o.reconstruct) {
     for (std::size_t n : o.fgla_iterations) c.stitched_keys.push_back(reconstruction_key(render::Reconstruction::fgla, n));
     c.stitched_keys.push_back(reconstruction_key(render::Reconstruction::online));
@@ -585,7 +662,6 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   if (stitched < 0) e.notes.push_back("no unified model: the new-press and stitched-signal experiments and the latent map are left out");
   if (!o.reconstruct) e.notes.push_back("--reconstruct none: no stitched-signal experiment");
 
-  const std::vector<MaterialSignals> signals = read_section_signals(split);
   // Figure 5's four materials, spread over the list.
   std::vector<bool> example(signals.size(), false);
   for (std::size_t k = 0; k < std::min<std::size_t>(4, signals.size()); ++k) example[k * signals.size() / std::min<std::size_t>(4, signals.size())] = true;
@@ -607,7 +683,7 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
     }
     e.experiments.push_back(std::move(x));
   }
-  summarise(e, signals, runs, models, c);
+  summarise(e, signals, runs, c);
   e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return e;
 }

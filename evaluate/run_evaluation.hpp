@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/progress.hpp"
+#include "evaluate/external_predictions.hpp"
 #include "evaluate/evaluation_results.hpp"
 #include "predict/model.hpp"
 #include "render/reconstruction.hpp"
@@ -27,6 +28,7 @@ struct EvaluationOptions {
   std::string truth;               // truth.h5 of haptex synth (hatt or materials): the oracle noise floor; empty: estimates
   std::uint64_t seed = 0;
   unsigned threads = 0;
+  std::vector<PredictionsInput> predictions;  // --predictions NAME=FILE: models trained elsewhere (docs/benchmark.md)
 };
 
 struct ModelInput {
@@ -34,8 +36,9 @@ struct ModelInput {
   predict::Model model;
 };
 
-// Throws haptex::Error (bad_input) when a model was trained on another dataset or split (hashes),
-// or does not know a material of the split; as synth::read_truth_file throws; and as the baselines throw (a material whose training
+// Throws haptex::Error (bad_input) when there is neither a model nor predictions; when a model was
+// trained on another dataset or split (hashes), or does not know a material of the split; as
+// read_external_predictions throws, or when two predictions share a name; as synth::read_truth_file throws; and as the baselines throw (a material whose training
 // sections are too short for the AR fit; no published model for a material).
 Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<ModelInput>& models,
                           const EvaluationOptions& options, const Progress& progress = {});

@@ -8,6 +8,7 @@ manifest is schemas/split.schema.json.
 """
 import hashlib
 import json
+import os
 from dataclasses import dataclass
 
 import h5py
@@ -149,6 +150,50 @@ def read_set_windows(dataset_path, split, sets=("train",)):
                 keep |= rows & np.isin(w.section, wanted)
     w.dataset_sha256, w.split_sha256 = split.dataset_sha256, split.sha256
     return w.rows(keep)
+
+
+PREDICTIONS_FORMAT = "predictions/1"  # schemas/hdf5-layout.md, "Predictions file"
+
+
+def grid_sections(grid):
+    """The grid's test sections in its order: per section (first row, rows, first sample, samples
+    covered), where a section's windows are rows [first row, first row + rows) and a signal of the
+    section starts at its first sample and covers at least `samples covered` samples."""
+    key = np.stack([grid.material, grid.recording, grid.section], axis=1)
+    change = np.flatnonzero(np.any(key[1:] != key[:-1], axis=1)) + 1
+    firsts = np.concatenate([[0], change]) if len(grid) else np.array([], dtype=np.int64)
+    ends = np.concatenate([change, [len(grid)]]) if len(grid) else np.array([], dtype=np.int64)
+    return [(int(a), int(b - a), int(grid.start[a]), int(grid.start[b - 1] - grid.start[a]) + WINDOW_SAMPLES)
+            for a, b in zip(firsts, ends)]
+
+
+def write_predictions(path, grid, spectra, source, query_seconds=None, signals=None, signal_seconds=None):
+    """A predictions file for `haptex evaluate --predictions NAME=path`: spectra (W, 100), row i for
+    window i of `grid`; optionally one signal per grid section (grid_sections) and the compute
+    times. Written to path.partial and renamed, so a failed run leaves no half file."""
+    spectra = np.asarray(spectra, dtype=np.float32)
+    if spectra.shape != (len(grid), TARGET_BINS):
+        raise HaptexFileError(f"{path}: {spectra.shape} spectra for a grid of {len(grid)} windows")
+    partial = path + ".partial"
+    try:
+        with h5py.File(partial, "w") as f:
+            f.attrs["predictions_format"] = PREDICTIONS_FORMAT
+            f.attrs["dataset_sha256"] = grid.dataset_sha256
+            f.attrs["split_sha256"] = grid.split_sha256
+            f.attrs["source"] = source
+            if query_seconds is not None:
+                f.attrs["query_seconds"] = float(query_seconds)
+            f.create_dataset("spectra", data=spectra)
+            if signals is not None:
+                g = f.create_group("signals")
+                for k, x in enumerate(signals):
+                    g.create_dataset(str(k), data=np.asarray(x, dtype=np.float32))
+                if signal_seconds is not None:
+                    g.attrs["seconds"] = float(signal_seconds)
+        os.replace(partial, path)
+    finally:
+        if os.path.exists(partial):
+            os.remove(partial)
 
 
 try:

@@ -7,15 +7,16 @@ standard deviation over the material's training windows so that newtons and mm/s
 
 Usage: knn_baseline.py DATASET.h5 SPLIT.json WINDOWS.h5 -o PREDS.h5 [-k 8]
 
-Writes PREDS.h5: `spectra`, (N, 100) float32, row i the prediction for window i of WINDOWS.h5, with the
-windows file's `dataset_sha256` and `split_sha256` as root attributes (what haptex checks predictions
-against). Written to PREDS.h5.partial and renamed, so a failed run leaves no half file.
+Writes PREDS.h5 (schemas/hdf5-layout.md, "Predictions file"; haptex_data.write_predictions): `spectra`,
+(N, 100) float32, row i the prediction for window i of WINDOWS.h5, with the windows file's hashes and
+the mean CPU time of one query (each window is predicted on its own, as a haptic loop would ask), for
+`haptex evaluate ... --predictions knn=PREDS.h5`.
 """
 import argparse
 import os
 import sys
+import time
 
-import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
@@ -35,42 +36,43 @@ def action_scales(actions):
     return np.where(sd > 0, sd, 1.0)
 
 
-def knn_spectra(train_actions, train_targets, queries, k):
-    """Mean target of the k nearest training windows of each query (ties: the earlier window)."""
-    scale = action_scales(train_actions)
-    a, q = standardised(train_actions, scale), standardised(queries, scale)
-    d2 = (q * q).sum(1)[:, None] - 2 * q @ a.T + (a * a).sum(1)[None, :]
-    k = min(k, len(a))
-    nearest = np.argsort(d2, axis=1, kind="stable")[:, :k]
-    return train_targets[nearest].mean(axis=1)
+class Knn:
+    """One material's training windows; query() predicts one window at a time, as a haptic loop asks."""
+
+    def __init__(self, actions, targets, k):
+        self.scale = action_scales(actions)
+        self.actions = standardised(actions, self.scale)
+        self.targets = targets
+        self.k = min(k, len(actions))
+
+    def query(self, action):
+        """Mean target of the k nearest training windows (ties: the earlier window)."""
+        q = standardised(action[None, :], self.scale)[0]
+        d2 = ((self.actions - q) ** 2).sum(axis=1)
+        kth = np.partition(d2, self.k - 1)[self.k - 1]
+        candidates = np.flatnonzero(d2 <= kth)
+        nearest = candidates[np.argsort(d2[candidates], kind="stable")[:self.k]]
+        return self.targets[nearest].mean(axis=0)
 
 
 def predict(train, grid, k):
+    """The spectra of every grid window and the mean CPU time of one query."""
     out = np.zeros((len(grid), haptex_data.TARGET_BINS), dtype=np.float32)
+    seconds = 0.0
+    actions = grid.action.astype(np.float64)
     for m, material_id in enumerate(grid.materials):
-        queries = grid.material == m
-        if not queries.any():
+        queries = np.flatnonzero(grid.material == m)
+        if len(queries) == 0:
             continue
         rows = train.material == train.materials.index(material_id)
         if not rows.any():
             raise haptex_data.HaptexFileError(f"material {material_id} has no training windows")
-        out[queries] = knn_spectra(train.action[rows].astype(np.float64), train.target[rows].astype(np.float64),
-                                   grid.action[queries].astype(np.float64), k)
-    return out
-
-
-def write_predictions(path, spectra, grid):
-    partial = path + ".partial"
-    try:
-        with h5py.File(partial, "w") as f:
-            f.create_dataset("spectra", data=spectra, dtype=np.float32)
-            f.attrs["dataset_sha256"] = grid.dataset_sha256
-            f.attrs["split_sha256"] = grid.split_sha256
-            f.attrs["source"] = "python/examples/knn_baseline.py " + " ".join(sys.argv[1:])
-        os.replace(partial, path)
-    finally:
-        if os.path.exists(partial):
-            os.remove(partial)
+        model = Knn(train.action[rows].astype(np.float64), train.target[rows].astype(np.float64), k)
+        start = time.process_time()
+        for i in queries:
+            out[i] = model.query(actions[i])
+        seconds += time.process_time() - start
+    return out, seconds / max(len(grid), 1)
 
 
 def main():
@@ -87,7 +89,9 @@ def main():
         if (grid.dataset_sha256, grid.split_sha256) != (split.dataset_sha256, split.sha256):
             raise haptex_data.HaptexFileError(f"{args.windows} was made from another dataset or split than {args.split}")
         train = haptex_data.read_set_windows(args.dataset, split, ("train",))
-        write_predictions(args.output, predict(train, grid, args.k), grid)
+        spectra, query_seconds = predict(train, grid, args.k)
+        haptex_data.write_predictions(args.output, grid, spectra, f"knn_baseline.py, k = {args.k}, numpy, one query at a time",
+                                      query_seconds)
     except (haptex_data.HaptexFileError, OSError, KeyError) as e:
         print(f"knn_baseline: {e}", file=sys.stderr)
         return 2
