@@ -113,6 +113,14 @@ struct Reader {
   }
 };
 
+// An argument as typed, cut to `most` bytes, with the bytes a terminal cannot show as '?'.
+std::string shown(const std::string& argument, std::size_t most) {
+  std::string out = argument.substr(0, most);
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e) c = '?';
+  return out;
+}
+
 bool name_character(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-'; }
 
 }  // namespace
@@ -120,8 +128,8 @@ bool name_character(char c) { return std::isalnum(static_cast<unsigned char>(c))
 void check_predictions_name(const std::string& name) {
   const bool fine = !name.empty() && name.size() <= kLongestName && std::isalnum(static_cast<unsigned char>(name[0])) &&
                     std::all_of(name.begin(), name.end(), name_character) && name.find("-vs-") == std::string::npos;
-  if (!fine)
-    throw Error(Error::Kind::bad_input, "evaluate: --predictions name '" + name.substr(0, 80) +
+  if (fine) return;
+  throw Error(Error::Kind::bad_input, "evaluate: --predictions name '" + shown(name, 80) +
                                             "' is not a report name: use 1 to 40 letters, digits, '_', '.' or '-', starting with a "
                                             "letter or digit and without \"-vs-\" (e.g. --predictions knn=preds.h5)");
 }
@@ -129,7 +137,7 @@ void check_predictions_name(const std::string& name) {
 PredictionsInput parse_predictions_argument(const std::string& argument) {
   const std::size_t equals = argument.find('=');
   if (equals == std::string::npos || equals == 0 || equals + 1 == argument.size())
-    throw Error(Error::Kind::bad_input, "evaluate: --predictions '" + argument.substr(0, 200) +
+    throw Error(Error::Kind::bad_input, "evaluate: --predictions '" + shown(argument, 200) +
                                             "' is not NAME=FILE: give the name the report shows and the predictions file, e.g. "
                                             "--predictions knn=preds.h5");
   PredictionsInput input{argument.substr(0, equals), argument.substr(equals + 1)};

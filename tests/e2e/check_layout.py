@@ -1,6 +1,7 @@
 """Checks a haptex HDF5 file against the tables of schemas/hdf5-layout.md, with h5py.
 
-Usage: check_layout.py LAYOUT.md FILE.h5 SECTION-KEYWORD
+Usage: check_layout.py LAYOUT.md FILE.h5 SECTION-KEYWORD [--own]
+--own: the section's table alone, without 'Every file' (for files haptex reads but never writes).
 Prints one line per violation and exits 1 when there is any; 0 and 'layout ok' otherwise.
 """
 import re
@@ -10,13 +11,13 @@ import h5py
 import numpy as np
 
 
-def table_rows(markdown, keyword):
-    """Rows of the 'Every file' table and of the table under the heading that contains keyword."""
+def table_rows(markdown, keyword, common=True):
+    """Rows of the 'Every file' table (when common) and of the table under the heading that contains keyword."""
     rows, section = [], None
     for line in markdown.splitlines():
         if line.startswith("## "):
             section = line
-        elif line.startswith("| `") and section and ("Every file" in section or keyword in section):
+        elif line.startswith("| `") and section and ((common and "Every file" in section) or keyword in section):
             cells = [c.strip() for c in line.strip().strip("|").split("|")]
             rows.append(dict(path=cells[0].strip("`"), dtype=cells[1], shape=cells[2], units=cells[3],
                              required=cells[4] == "always"))
@@ -90,7 +91,7 @@ def check(f, row, problems):
 
 def main():
     layout, h5_path, keyword = sys.argv[1:4]
-    rows = table_rows(open(layout, encoding="utf-8").read(), keyword)
+    rows = table_rows(open(layout, encoding="utf-8").read(), keyword, common="--own" not in sys.argv[4:])
     if not rows:
         print(f"no layout rows for {keyword!r}")
         return 1

@@ -2,10 +2,13 @@
 // both checked with h5py (tests/e2e/check_windows.py). Its refusals: tests/hostile/windows_refusals_test.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "core/sha256.hpp"
+#include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -36,6 +39,28 @@ TEST(WindowsCli, WritesTheEvaluationGridThatTheKnnExamplePredicts) {
   const CommandResult checked = run_python({kSource + "tests/e2e/check_windows.py", kSource + "python", p.dataset, p.split, windows, preds});
   EXPECT_EQ(checked.exit_code, 0) << checked.out << checked.err;
   EXPECT_NE(checked.out.find("windows ok"), std::string::npos) << checked.out;
+
+  // The predictions appear in haptex evaluate's report beside the built-in model (docs/benchmark.md).
+  const CommandResult e = run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", quick_model(false), "--predictions",
+                                      "knn=" + preds, "--repeats", "2", "--reconstruct", "none", "-o", dir.file("report"), "--json"});
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  const nlohmann::json results = nlohmann::json::parse(e.out);
+  std::set<std::string> ids;
+  for (const auto& x : results["experiments"]) {
+    ids.insert(x["id"]);
+    if (x["id"] == "external-knn") {
+      EXPECT_EQ(x["materials"].size(), 2u);
+    }
+  }
+  for (const char* id : {"unified-new-actions", "external-knn", "external-knn-vs-mean-spectrum", "external-knn-vs-expected-ar"})
+    EXPECT_TRUE(ids.count(id)) << id;
+  EXPECT_NE(results["inputs"]["predictions"][0]["source"].get<std::string>().find("knn_baseline.py"), std::string::npos);
+  const auto point = std::find_if(results["speed"].begin(), results["speed"].end(), [](const auto& x) { return x["method"] == "knn (external)"; });
+  ASSERT_NE(point, results["speed"].end()) << "the example times its queries";
+  EXPECT_GT((*point)["seconds_per_second"].get<double>(), 0.0);
+  const CommandResult preds_layout =
+      run_python({kSource + "tests/e2e/check_layout.py", kSource + "schemas/hdf5-layout.md", preds, "Predictions file", "--own"});
+  EXPECT_EQ(preds_layout.exit_code, 0) << preds_layout.out << preds_layout.err;
 }
 
 }  // namespace

@@ -49,7 +49,7 @@ void write_predictions(const std::string& path, const Predictions& p) {
   root.set_attr("split_sha256", p.split_sha256);
   root.set_attr("source", p.source);
   if (p.query_seconds) root.set_attr("query_seconds", *p.query_seconds);
-  root.write_array<float>("spectra", p.spectra, p.shape);
+  if (!p.shape.empty()) root.write_array<float>("spectra", p.spectra, p.shape);
   if (!p.signals.empty()) {
     h5::Group signals = root.create_group("signals");
     signals.set_attr("seconds", 0.01);

@@ -34,7 +34,7 @@ std::vector<GridSpan> grid_spans(const GridTable& grid);
 struct Predictions {
   std::string format = "predictions/1", dataset_sha256, split_sha256, source = "tests";
   std::vector<float> spectra;
-  h5::Shape shape;  // of spectra
+  h5::Shape shape;  // of spectra; empty: no /spectra
   std::optional<double> query_seconds;
   std::vector<std::vector<float>> signals;  // one per grid span; none: no /signals
 };
