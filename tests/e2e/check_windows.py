@@ -72,6 +72,24 @@ for i in sorted({0, len(grid) // 3, len(grid) // 2, len(grid) - 1}):
 check(np.mean(np.linalg.norm(spectra - grid.target, axis=1)) < np.mean(np.linalg.norm(spectra - grid.target[::-1], axis=1)),
       "predictions are nearer to the reversed windows than to their own")
 
+# The torch Dataset, where torch imports: one (material, action, target) per row, as the table holds them.
+if hasattr(haptex_data, "WindowDataset"):
+    data = haptex_data.WindowDataset(grid)
+    check(len(data) == len(grid), "WindowDataset: length")
+    for i in sorted({0, len(grid) - 1}):
+        material, action, target = data[i]
+        check(int(material) == int(grid.material[i]) and np.array_equal(action.numpy(), grid.action[i])
+              and np.array_equal(target.numpy(), grid.target[i]), f"WindowDataset: row {i}")
+    print("torch Dataset checked")
+
+# grid_sections: the grid's test sections, each its consecutive rows of one material, recording and section.
+sections = haptex_data.grid_sections(grid)
+check(sum(rows for _, rows, _, _ in sections) == len(grid), "grid_sections: rows")
+for first, rows, start, covered in sections:
+    key = {(int(grid.material[i]), int(grid.recording[i]), int(grid.section[i])) for i in range(first, first + rows)}
+    check(len(key) == 1 and start == grid.start[first] and covered == grid.start[first + rows - 1] - start + 1000,
+          f"grid_sections: section at row {first}")
+
 for line in failures:
     print(line)
 print("windows ok" if not failures else f"{len(failures)} failed")

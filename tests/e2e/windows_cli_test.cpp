@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -61,6 +62,29 @@ TEST(WindowsCli, WritesTheEvaluationGridThatTheKnnExamplePredicts) {
   const CommandResult preds_layout =
       run_python({kSource + "tests/e2e/check_layout.py", kSource + "schemas/hdf5-layout.md", preds, "Predictions file", "--own"});
   EXPECT_EQ(preds_layout.exit_code, 0) << preds_layout.out << preds_layout.err;
+}
+
+// The PyTorch example where python3-torch is installed (make bench installs it): it learns (its best
+// epoch's training loss is below its first's) and evaluate scores its predictions.
+TEST(WindowsCli, TheTorchExampleLearnsAndItsPredictionsAreScored) {
+  if (!python_has("h5py, numpy, torch")) GTEST_SKIP() << "python3-torch is not installed (make bench installs it)";
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  const std::string windows = dir.file("windows.h5"), preds = dir.file("mlp.h5");
+  ASSERT_EQ(run_haptex({"windows", p.dataset, "--split", p.split, "-o", windows}).exit_code, 0);
+  const CommandResult mlp = run_python({kSource + "python/examples/torch_mlp.py", p.dataset, p.split, windows, "-o", preds, "--epochs", "30"});
+  ASSERT_EQ(mlp.exit_code, 0) << mlp.out << mlp.err;
+  double first = 0, first_val = 0, best = 0, best_val = 0;
+  int epoch = 0;
+  ASSERT_EQ(std::sscanf(mlp.out.c_str(), "losses (training, validation): epoch 1 %lf %lf; best epoch %d %lf %lf", &first, &first_val, &epoch,
+                        &best, &best_val), 5) << mlp.out;
+  EXPECT_LT(best, first) << mlp.out;
+  const CommandResult e = run_haptex({"evaluate", p.dataset, "--split", p.split, "--predictions", "mlp=" + preds, "--repeats", "2",
+                                      "--reconstruct", "none", "-o", dir.file("report"), "--json"});
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  const nlohmann::json results = nlohmann::json::parse(e.out);
+  EXPECT_EQ(results["experiments"][0]["id"], "external-mlp");
+  EXPECT_EQ(results["experiments"][0]["materials"].size(), 2u);
 }
 
 }  // namespace
