@@ -152,6 +152,27 @@ def read_set_windows(dataset_path, split, sets=("train",)):
     return w.rows(keep)
 
 
+def read_split_and_grid(split_path, windows_path):
+    """The split manifest and the windows file made with it; refuses a windows file made from another
+    dataset or split."""
+    split = read_split(split_path)
+    grid = read_windows(windows_path)
+    if (grid.dataset_sha256, grid.split_sha256) != (split.dataset_sha256, split.sha256):
+        raise HaptexFileError(f"{windows_path} was made from another dataset or split than {split_path}")
+    return split, grid
+
+
+def example_arguments(description):
+    """An argparse parser with what every example takes: DATASET SPLIT WINDOWS -o PREDS."""
+    import argparse
+    p = argparse.ArgumentParser(description=description)
+    p.add_argument("dataset")
+    p.add_argument("split")
+    p.add_argument("windows")
+    p.add_argument("-o", "--output", required=True)
+    return p
+
+
 PREDICTIONS_FORMAT = "predictions/1"  # schemas/hdf5-layout.md, "Predictions file"
 
 

@@ -12,7 +12,6 @@ Writes PREDS.h5 (schemas/hdf5-layout.md, "Predictions file"; haptex_data.write_p
 the mean CPU time of one query (each window is predicted on its own, as a haptic loop would ask), for
 `haptex evaluate ... --predictions knn=PREDS.h5`.
 """
-import argparse
 import os
 import sys
 import time
@@ -76,18 +75,11 @@ def predict(train, grid, k):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("dataset")
-    p.add_argument("split")
-    p.add_argument("windows")
-    p.add_argument("-o", "--output", required=True)
+    p = haptex_data.example_arguments(__doc__.splitlines()[0])
     p.add_argument("-k", type=int, default=8)
     args = p.parse_args()
     try:
-        split = haptex_data.read_split(args.split)
-        grid = haptex_data.read_windows(args.windows)
-        if (grid.dataset_sha256, grid.split_sha256) != (split.dataset_sha256, split.sha256):
-            raise haptex_data.HaptexFileError(f"{args.windows} was made from another dataset or split than {args.split}")
+        split, grid = haptex_data.read_split_and_grid(args.split, args.windows)
         train = haptex_data.read_set_windows(args.dataset, split, ("train",))
         spectra, query_seconds = predict(train, grid, args.k)
         haptex_data.write_predictions(args.output, grid, spectra, f"knn_baseline.py, k = {args.k}, numpy, one query at a time",

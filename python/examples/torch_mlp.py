@@ -14,7 +14,6 @@ Writes PREDS.h5 (schemas/hdf5-layout.md, "Predictions file") for
 `haptex evaluate ... --predictions mlp=PREDS.h5`; prints the first and the best epoch's training and
 validation losses.
 """
-import argparse
 import os
 import sys
 import time
@@ -119,21 +118,14 @@ def predict(model, grid, train_materials):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("dataset")
-    p.add_argument("split")
-    p.add_argument("windows")
-    p.add_argument("-o", "--output", required=True)
+    p = haptex_data.example_arguments(__doc__.splitlines()[0])
     p.add_argument("--epochs", type=int, default=200)
     p.add_argument("--patience", type=int, default=20)
     p.add_argument("--seed", type=int, default=0)
     args = p.parse_args()
     torch.set_num_threads(1)
     try:
-        split = haptex_data.read_split(args.split)
-        grid = haptex_data.read_windows(args.windows)
-        if (grid.dataset_sha256, grid.split_sha256) != (split.dataset_sha256, split.sha256):
-            raise haptex_data.HaptexFileError(f"{args.windows} was made from another dataset or split than {args.split}")
+        split, grid = haptex_data.read_split_and_grid(args.split, args.windows)
         train_windows = haptex_data.read_set_windows(args.dataset, split, ("train",))
         val_windows = haptex_data.read_set_windows(args.dataset, split, ("val",))
         model, history = train(train_windows, val_windows, args.epochs, args.patience, args.seed)
