@@ -99,10 +99,17 @@ struct MaterialFloor {
 
 // Figure 5: one test window of a material: frequencies 10..1000 Hz with true, model and baseline
 // spectra; and the first samples of its test section: true, stitched model and baseline signals.
+struct NamedSeries {
+  std::string name;
+  std::vector<double> values;
+};
 struct Example {
   std::string id, name;
   std::vector<double> truth_spectrum, model_spectrum, baseline_spectrum;
   std::vector<double> truth_signal, model_signal, baseline_signal;  // 10 kHz
+  // The predictions files' (--predictions) spectrum of the same window and, where they have them,
+  // their signal of the same section; named by the files' names (CSV columns `external-NAME`).
+  std::vector<NamedSeries> external_spectra, external_signals;
 };
 
 // The texture map: 2-D PCA of the unified model's latents.

@@ -75,14 +75,20 @@ std::string examples_script(const Evaluation& e, const ReportLayout& layout, con
     << "set grid\n";
   const char* rows[2][5] = {{"-spectra.csv", ": spectra of one test window", "frequency (Hz)", "amplitude (m/s^2)", "1"},
                             {"-signals.csv", ": start of a test section", "time (ms)", "acceleration (m/s^2)", "($1*1000)"}};
-  for (const auto& row : rows) {
+  for (std::size_t r = 0; r < 2; ++r) {
+    const auto& row = rows[r];
     s << "set xlabel '" << row[2] << "'\nset ylabel '" << row[3] << "'\n";
     for (std::size_t k = 0; k < shown.size(); ++k) {
       const Example& x = e.examples[shown[k]];
       s << "set title " << gnuplot::text(label_of(x.name, x.id) + row[1]) << "\n" << (k == 0 ? "set key top right font ',8' opaque\n" : "unset key\n")
         << "plot " << gnuplot::file(layout.examples[shown[k]] + row[0]) << " using " << row[4] << ":'truth' with lines lc rgb 'black' title 'recorded', \\\n"
         << "     '' using " << row[4] << ":'model' with lines lc rgb '" << kPalette[0] << "' title 'model', \\\n"
-        << "     '' using " << row[4] << ":'baseline' with lines lc rgb '" << kPalette[1] << "' title 'baseline'\n";
+        << "     '' using " << row[4] << ":'baseline' with lines lc rgb '" << kPalette[1] << "' title 'baseline'";
+      const std::vector<NamedSeries>& external = r == 0 ? x.external_spectra : x.external_signals;
+      for (std::size_t i = 0; i < external.size(); ++i)
+        s << ", \\\n     '' using " << row[4] << ":" << gnuplot::text("external-" + external[i].name) << " with lines lc rgb '"
+          << kPalette[(2 + i) % std::size(kPalette)] << "' title " << gnuplot::text(external[i].name + " (external)");
+      s << "\n";
     }
   }
   s << "unset multiplot\n";

@@ -54,13 +54,20 @@ class CsvFile {
 
 std::string cell(const std::vector<double>& v, std::size_t i) { return i < v.size() ? csv_number(v[i]) : ""; }
 
-// One row per index up to the longest of the three series; x(i) gives the first column.
+// One row per index up to the longest series; x(i) gives the first column, then truth, model,
+// baseline and one column per predictions file, `external-NAME` (its experiment's id).
 template <typename X>
 std::string write_series(const std::string& path, std::string_view header, X x, const std::vector<double>& truth,
-                         const std::vector<double>& model, const std::vector<double>& baseline) {
-  CsvFile out(path, header);
-  const std::size_t n = std::max({truth.size(), model.size(), baseline.size()});
-  for (std::size_t i = 0; i < n; ++i) out.row(csv_number(x(i)), cell(truth, i), cell(model, i), cell(baseline, i));
+                         const std::vector<double>& model, const std::vector<double>& baseline, const std::vector<NamedSeries>& external) {
+  std::string columns(header);
+  std::size_t n = std::max({truth.size(), model.size(), baseline.size()});
+  for (const NamedSeries& s : external) columns += "," + csv_field("external-" + s.name), n = std::max(n, s.values.size());
+  CsvFile out(path, columns);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::string more;
+    for (const NamedSeries& s : external) more += "," + cell(s.values, i);
+    out.row(csv_number(x(i)), cell(truth, i), cell(model, i), cell(baseline, i) + more);
+  }
   return out.close();
 }
 
@@ -160,10 +167,10 @@ std::vector<std::string> write_report_csvs(const Evaluation& e, const ReportLayo
     const Example& x = e.examples[i];
     written.push_back(write_series(path(layout.examples[i] + "-spectra.csv"), kSpectraColumns,
                                    [](std::size_t k) { return double(k + 1) * kBinHz; }, x.truth_spectrum,
-                                   x.model_spectrum, x.baseline_spectrum));
+                                   x.model_spectrum, x.baseline_spectrum, x.external_spectra));
     written.push_back(write_series(path(layout.examples[i] + "-signals.csv"), kSignalColumns,
                                    [](std::size_t k) { return double(k) / kSampleRateHz; }, x.truth_signal,
-                                   x.model_signal, x.baseline_signal));
+                                   x.model_signal, x.baseline_signal, x.external_signals));
   }
   return written;
 }

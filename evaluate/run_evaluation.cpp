@@ -323,6 +323,7 @@ MaterialRun run_material(std::size_t m, const MaterialSignals& signals, const Co
     const std::vector<std::size_t> grid = section_grid(section.accel.size());
     if (grid.empty()) continue;
     const auto& truth = recorded[s];
+    const std::size_t section_row = row, section_index = grid_section;
     for (std::size_t i = 0; i < c.external.size(); ++i) score_external(run, i, c.external[i], row, grid_section, grid, truth, ref.noise);
     row += grid.size(), ++grid_section;
     const Eigen::MatrixXf actions = grid_actions(section, grid);
@@ -358,7 +359,11 @@ MaterialRun run_material(std::size_t m, const MaterialSignals& signals, const Co
       if (keep_example && s == 0 && c.stitched_key == key) {
         const std::size_t j = grid.size() / 2;
         run.example = {signals.id, signals.name, truth[j], stitched_spectra[j], first_render_spectra[j],
-                       head(section.accel, grid[0]), head(signal, 0), head(first_render, grid[0])};
+                       head(section.accel, grid[0]), head(signal, 0), head(first_render, grid[0]), {}, {}};
+        for (const ExternalPredictions& p : c.external) {
+          run.example.external_spectra.push_back({p.name, p.spectra[section_row + j]});
+          if (!p.signals.empty()) run.example.external_signals.push_back({p.name, head(p.signals[section_index], 0)});
+        }
       }
     }
   }

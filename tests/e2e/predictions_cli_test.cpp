@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "core/json/schema.hpp"
@@ -25,6 +28,19 @@ const nlohmann::json& experiment(const nlohmann::json& results, const std::strin
   static const nlohmann::json none;
   ADD_FAILURE() << id << " missing";
   return none;
+}
+
+// The cells of a CSV file without quoted fields, row by row.
+std::vector<std::vector<std::string>> read_csv(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
 }
 
 struct Evaluated {
@@ -82,6 +98,16 @@ TEST(PredictionsCli, TheRecordingItselfScoresZeroBesideTheBuiltInModels) {
   const auto realism = std::find_if(r["realism"].begin(), r["realism"].end(), [](const auto& x) { return x["method"] == "perfect (external, signal)"; });
   ASSERT_NE(realism, r["realism"].end());
   for (const auto& m : (*realism)["materials"]) EXPECT_NEAR(m["spread_ratio"].get<double>(), 1.0, 1e-4) << m["id"];
+  // Fig. 5's examples draw it beside the recording: the same window's spectrum, the same section's signal.
+  ASSERT_FALSE(r["examples"].empty());
+  for (const auto& x : r["examples"])
+    for (const char* csv : {"spectra_csv", "signals_csv"}) {
+      const auto rows = read_csv(dir.file("report/" + x[csv].get<std::string>()));
+      ASSERT_GT(rows.size(), 2u);
+      ASSERT_EQ(rows[0].back(), "external-perfect") << csv;
+      for (std::size_t i = 1; i < rows.size(); ++i)
+        EXPECT_NEAR(std::stod(rows[i].back()), std::stod(rows[i][1]), 1e-5 * (1 + std::abs(std::stod(rows[i][1])))) << csv << " row " << i;
+    }
 }
 
 // Off by one sample, or rows of another material: no longer zero. What makes the test above able to fail.

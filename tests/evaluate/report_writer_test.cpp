@@ -46,7 +46,7 @@ MaterialComparison measured(MaterialComparison m, double model_lsd_db, double ba
 }
 
 Example example(const std::string& id, const std::string& name, std::size_t model_samples) {
-  Example x{id, name, {}, {}, {}, {}, {}, {}};
+  Example x{id, name, {}, {}, {}, {}, {}, {}, {}, {}};
   for (int k = 0; k < 100; ++k) {
     x.truth_spectrum.push_back(0.1 / (1 + k));
     x.model_spectrum.push_back(0.11 / (1 + k));
