@@ -50,6 +50,36 @@ TEST_F(ClusterCli, TakesBecomeRecordingsThatScipyAgreesWith) {
   EXPECT_EQ(qa.exit_code, 0) << qa.out << qa.err;
 }
 
+// The whole path for Cluster data: its takes converted, aligned with GelSight presses of the same
+// surfaces (named through the names file) and split. The presses here are synth's, extracted as any.
+TEST(ClusterPipeline, ATreeConvertsAlignsWithPressesAndSplits) {
+  const TempDir dir;
+  std::vector<ClusterTakeSpec> takes;
+  for (int texture : {1, 2})
+    for (int velocity : {20, 40, 60})
+      for (int force : {500, 1000}) takes.push_back({texture, 45 * (velocity / 20), velocity, force, 0, 3.0, 150.0 + 50 * texture, 0.3});
+  write_cluster_tree(dir.file("db"), takes);
+  std::ofstream(dir.file("names.json")) << R"({"1": "Polished 1", "2": "Sandpaper 1"})";
+  const std::vector<std::vector<std::string>> steps{
+      {"convert", "cluster", dir.file("db"), "-o", dir.file("r.h5"), "--names", dir.file("names.json")},
+      {"synth", "materials", "-n", "2", "--size", "320x240", "--presses", "5", "--recordings", "1", "-o", dir.file("synth")},
+      {"capture", "extract", dir.file("synth/gelsight"), "-o", dir.file("g.h5"), "--no-sheets"},
+      {"align", "--recordings", dir.file("r.h5"), "--gelsight", dir.file("g.h5"), "-o", dir.file("d.h5")},
+      {"split", dir.file("d.h5"), "-o", dir.file("split.json"), "--no-plots"},
+      {"qa", dir.file("d.h5"), "--split", dir.file("split.json")}};
+  for (const auto& step : steps) {
+    const CommandResult r = run_haptex(step);
+    ASSERT_EQ(r.exit_code, 0) << step[0] << ": " << r.err << r.out;
+  }
+  std::ifstream in(dir.file("split.json"));
+  const nlohmann::json split = nlohmann::json::parse(in);
+  ASSERT_EQ(split["materials"].size(), 2u);
+  for (const auto& m : split["materials"]) {
+    EXPECT_EQ(m["recordings"], 6) << m.dump();
+    EXPECT_GT(m["windows"]["test"].get<int>(), 0) << m.dump();
+  }
+}
+
 TEST_F(ClusterCli, ADamagedTreeIsRefusedAndNothingWritten) {
   const auto refused = [&](const std::vector<std::string>& mentions) {
     const CommandResult r = run_haptex({"convert", "cluster", dir_.file("db"), "-o", out()});
