@@ -152,6 +152,33 @@ def read_set_windows(dataset_path, split, sets=("train",)):
     return w.rows(keep)
 
 
+@dataclass
+class Press:
+    """One GelSight press of a material (/materials/{id}/presses/{press} of a dataset file): the peak
+    frame and the no-contact reference, (H, W, 3) uint8 in RGB order."""
+    material: str
+    press: int
+    peak: np.ndarray
+    reference: np.ndarray
+
+
+def read_presses(dataset_path, split, material_id, sets=("train",)):
+    """The presses of one material that `sets` of the split hold, in the split's order. A press stored
+    in BGR order is turned to RGB; another order is refused."""
+    numbers = [p for name in sets for p in split.material_presses[material_id][name]]
+    out = []
+    with h5py.File(dataset_path, "r") as f:
+        _check_format(f, dataset_path, "dataset/2")
+        for j in numbers:
+            g = f[f"materials/{material_id}/presses/{j}"]
+            order = _text(g.attrs.get("channel_order", ""))
+            if order not in ("RGB", "BGR"):
+                raise HaptexFileError(f"{dataset_path}: {g.name}/@channel_order is '{order}', not RGB or BGR")
+            rgb = (lambda image: image) if order == "RGB" else (lambda image: image[..., ::-1])
+            out.append(Press(material_id, j, np.ascontiguousarray(rgb(g["peak"][()])), np.ascontiguousarray(rgb(g["reference"][()]))))
+    return out
+
+
 def read_split_and_grid(split_path, windows_path):
     """The split manifest and the windows file made with it; refuses a windows file made from another
     dataset or split."""

@@ -82,6 +82,14 @@ if hasattr(haptex_data, "WindowDataset"):
               and np.array_equal(target.numpy(), grid.target[i]), f"WindowDataset: row {i}")
     print("torch Dataset checked")
 
+# The presses a model would see: the split's training presses, RGB peaks as the dataset holds them.
+for mid in grid.materials:
+    presses = haptex_data.read_presses(dataset, split, mid, ("train",))
+    check([p.press for p in presses] == split.material_presses[mid]["train"], f"{mid}: read_presses numbers")
+    with h5py.File(dataset, "r") as f:
+        check(all(np.array_equal(p.peak, f[f"materials/{mid}/presses/{p.press}/peak"][()]) and p.peak.ndim == 3 for p in presses),
+              f"{mid}: read_presses peaks")
+
 # grid_sections: the grid's test sections, each its consecutive rows of one material, recording and section.
 sections = haptex_data.grid_sections(grid)
 check(sum(rows for _, rows, _, _ in sections) == len(grid), "grid_sections: rows")
