@@ -57,9 +57,6 @@ class TrainCommand : public Command {
     app.add_option("--patience", options_.patience, "Epochs without a better validation loss before stopping")->capture_default_str()->check(CLI::Range(1, 100000));
     app.add_option("--batch", options_.batch, "Mini-batch size (unified)")->capture_default_str()->check(CLI::Range(1, 1 << 20));
     app.add_option("--learning-rate", options_.learning_rate, "Adam's step size")->capture_default_str()->check(CLI::Range(1e-7, 1.0));
-    app.add_flag("--tune-latents,!--no-tune-latents", options_.tune_latents,
-                 "Unified: tune each material's latent in stage 2 and train on it instead of random image latents (docs/predict.md)")
-        ->capture_default_str();
     app.add_flag("--balance-materials,!--no-balance-materials", options_.balance_materials,
                  "Unified: weigh every material alike in the loss (default), or by its vibration level");
     app.add_option("--seed", options_.seed, "Random seed (same seed, same weights)")->capture_default_str();

@@ -11,7 +11,7 @@ void standardisation(const Eigen::MatrixXf& x, Eigen::VectorXf& mean, Eigen::Vec
   scale = ((x.colwise() - mean).cwiseAbs2().rowwise().mean().cwiseSqrt().array() + 1e-6f).matrix();
 }
 
-Eigen::MatrixXf recognition(const Model& model, const Eigen::MatrixXf& image_latents) {
+Eigen::MatrixXf recognised_latents(const Model& model, const Eigen::MatrixXf& image_latents) {
   MlpTrace trace;
   forward(model.classifier, image_latents, trace);
   Eigen::MatrixXf p = trace.out.back();
@@ -19,11 +19,7 @@ Eigen::MatrixXf recognition(const Model& model, const Eigen::MatrixXf& image_lat
     p.col(c) = (p.col(c).array() - p.col(c).maxCoeff()).exp().matrix();  // softmax, the largest logit first
     p.col(c) /= p.col(c).sum();
   }
-  return p;
-}
-
-Eigen::MatrixXf recognised_latents(const Model& model, const Eigen::MatrixXf& image_latents) {
-  return model.material_latents * recognition(model, image_latents);
+  return model.material_latents * p;
 }
 
 int Model::material_index(const std::string& id) const {

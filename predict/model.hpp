@@ -62,7 +62,5 @@ struct Model {
 // latents weighted by the classifier's probabilities, material_latents x softmax(classifier(x))
 // (docs/predict.md, "A new press"). Unified models only.
 Eigen::MatrixXf recognised_latents(const Model& model, const Eigen::MatrixXf& image_latents);
-// The classifier's probabilities (materials x columns) behind recognised_latents.
-Eigen::MatrixXf recognition(const Model& model, const Eigen::MatrixXf& image_latents);
 
 }  // namespace haptex::predict

@@ -15,13 +15,11 @@ const Eigen::MatrixXf& spectrum_forward(const SpectrumNet& net, const Eigen::Mat
   return trace.predictor.out.back();
 }
 
-void spectrum_backward(const SpectrumNet& net, const SpectrumTrace& trace, Eigen::MatrixXf d_output, SpectrumGradient& gradient,
-                       Eigen::MatrixXf* d_latents) {
+void spectrum_backward(const SpectrumNet& net, const SpectrumTrace& trace, Eigen::MatrixXf d_output, SpectrumGradient& gradient) {
   Eigen::MatrixXf d_input;
   backward(net.predictor, trace.predictor, std::move(d_output), gradient.predictor, &d_input);
-  // The latent rows reach no encoder (frozen after stage 1); only tuned material latents take them.
+  // The latent rows stop here: the texture encoder is frozen after stage 1.
   const Eigen::Index code_rows = net.action.outputs();
-  if (d_latents) *d_latents = d_input.topRows(d_input.rows() - code_rows);
   backward(net.action, trace.action, d_input.bottomRows(code_rows), gradient.action);
 }
 

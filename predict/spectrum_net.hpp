@@ -15,14 +15,11 @@ struct SpectrumTrace {
 
 struct SpectrumGradient {
   MlpGradient action, predictor;
-  Eigen::MatrixXf latents;  // tuned material latents (TrainOptions::tune_latents): latent x materials; else empty
-  explicit SpectrumGradient(const SpectrumNet& net, Eigen::Index latent_rows = 0, Eigen::Index materials = 0)
-      : action(net.action), predictor(net.predictor), latents(Eigen::MatrixXf::Zero(latent_rows, materials)) {}
-  void zero() { action.zero(), predictor.zero(), latents.setZero(); }
+  explicit SpectrumGradient(const SpectrumNet& net) : action(net.action), predictor(net.predictor) {}
+  void zero() { action.zero(), predictor.zero(); }
   SpectrumGradient& operator+=(const SpectrumGradient& other) {
     action += other.action;
     predictor += other.predictor;
-    latents += other.latents;
     return *this;
   }
 };
@@ -30,9 +27,8 @@ struct SpectrumGradient {
 // latents: latent x B (0 x B for the per-material variant); actions: normalised, kActionValues x B.
 const Eigen::MatrixXf& spectrum_forward(const SpectrumNet& net, const Eigen::MatrixXf& latents,
                                         const Eigen::MatrixXf& actions, SpectrumTrace& trace);
-// d_latents, when given, receives dLoss/d(latents) (latent x B).
 void spectrum_backward(const SpectrumNet& net, const SpectrumTrace& trace, Eigen::MatrixXf d_output,
-                       SpectrumGradient& gradient, Eigen::MatrixXf* d_latents = nullptr);
+                       SpectrumGradient& gradient);
 
 // Saturates the raw action values (10 force, 10 speed) into the training range, in place, and
 // replaces non-finite values by the training mean. True when anything had to change.

@@ -19,17 +19,7 @@ struct Batch {
   Eigen::VectorXf weights;
 };
 
-// One column's latent when the material latents are tuned: its material's, or for validation its
-// press's recognised latent with the latents as they are now.
-Eigen::VectorXf tuned_latent(const SpectrumProblem& p, const Eigen::MatrixXf& latents, std::size_t c, bool training) {
-  const auto m = std::size_t((*p.material)[c]);
-  if (training) return latents.col(Eigen::Index(m));
-  const Eigen::MatrixXf& presses = (*p.val_recognition)[m];
-  return latents * presses.col(Eigen::Index(c % std::size_t(presses.cols())));
-}
-
-Batch gather(const SpectrumProblem& p, const Eigen::MatrixXf* tuned, const std::size_t* columns, std::size_t n, bool training,
-             std::uint64_t draw_seed) {
+Batch gather(const SpectrumProblem& p, const std::size_t* columns, std::size_t n, bool training, std::uint64_t draw_seed) {
   Batch b;
   const int latent = p.latent_size();
   b.latents.resize(latent, Eigen::Index(n));
@@ -42,10 +32,6 @@ Batch gather(const SpectrumProblem& p, const Eigen::MatrixXf* tuned, const std::
     b.actions.col(Eigen::Index(i)) = p.actions->col(Eigen::Index(c));
     b.targets.col(Eigen::Index(i)) = p.targets->col(Eigen::Index(c));
     if (!latent) continue;
-    if (tuned) {
-      b.latents.col(Eigen::Index(i)) = tuned_latent(p, *tuned, c, training);
-      continue;
-    }
     const Eigen::MatrixXf& from = (training ? *p.train_latents : *p.val_latents)[std::size_t((*p.material)[c])];
     const std::uint64_t pick = training ? derive_seed(draw_seed, c) % std::uint64_t(from.cols()) : c % std::uint64_t(from.cols());
     b.latents.col(Eigen::Index(i)) = from.col(Eigen::Index(pick));
@@ -57,32 +43,25 @@ Batch gather(const SpectrumProblem& p, const Eigen::MatrixXf* tuned, const std::
 // materials' vibration level: sum over bins of ((s_k o_k - y_k) / sigma)^2.
 float loss_unit(const SpectrumProblem& p) { return std::max(1e-12f, p.target_scale.squaredNorm() / float(p.target_scale.size())); }
 
-// columns: the batch's columns, whose materials take the latents' gradient when they are tuned.
-double batch_gradient(const SpectrumNet& net, const SpectrumProblem& p, const Batch& b, float scale, SpectrumGradient& g,
-                      const std::size_t* columns) {
+double batch_gradient(const SpectrumNet& net, const SpectrumProblem& p, const Batch& b, float scale, SpectrumGradient& g) {
   SpectrumTrace trace;
   const Eigen::MatrixXf& out = spectrum_forward(net, b.latents, b.actions, trace);
   const Eigen::MatrixXf error = p.target_scale.asDiagonal() * out - b.targets;
   const float unit = loss_unit(p);
   Eigen::MatrixXf d = p.target_scale.asDiagonal() * error * b.weights.asDiagonal() * (2.0f * scale / unit);
-  const bool tuned = g.latents.size() > 0;
-  Eigen::MatrixXf d_latents;
-  spectrum_backward(net, trace, std::move(d), g, tuned ? &d_latents : nullptr);
-  if (tuned)
-    for (Eigen::Index i = 0; i < d_latents.cols(); ++i) g.latents.col((*p.material)[columns[i]]) += d_latents.col(i);
+  spectrum_backward(net, trace, std::move(d), g);
   return error.colwise().norm().sum();  // reported in the validation's unit, not the loss's
 }
 
 }  // namespace
 
 Distances mean_distance(const SpectrumNet& net, const SpectrumProblem& p, const std::vector<std::size_t>& columns, bool training,
-                        unsigned threads, const Eigen::MatrixXf* latents) {
-  if (!latents) latents = p.initial_latents;
+                        unsigned threads) {
   const std::size_t chunks = (columns.size() + kChunkColumns - 1) / kChunkColumns;
   std::vector<Distances> sums(chunks);
   parallel_for(chunks, [&](std::size_t c) {
     const std::size_t begin = c * kChunkColumns, n = std::min(columns.size(), begin + kChunkColumns) - begin;
-    const Batch b = gather(p, latents, columns.data() + begin, n, training, 0);
+    const Batch b = gather(p, columns.data() + begin, n, training, 0);
     SpectrumTrace trace;
     const Eigen::MatrixXf predicted = p.target_scale.asDiagonal() * spectrum_forward(net, b.latents, b.actions, trace);
     const Eigen::VectorXf distance = (predicted - b.targets).colwise().norm().transpose();
@@ -133,14 +112,7 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& 
   SpectrumNet& net = result.net;
   SpectrumNet best = net;
   Adam adam_action(net.action, {o.learning_rate}), adam_predictor(net.predictor, {o.learning_rate});
-  // Tuned material latents ride along as a bias-free layer, so Adam treats them as any weights.
-  Mlp latents;
-  if (p.initial_latents) latents.layers = {DenseLayer{*p.initial_latents, Eigen::VectorXf(0), Activation::linear}};
-  const Eigen::MatrixXf* tuned = p.initial_latents ? &latents.layers[0].weight : nullptr;
-  Adam adam_latents(latents, {o.learning_rate});
-  MlpGradient latents_gradient(latents);
-  Eigen::MatrixXf best_latents = tuned ? *tuned : Eigen::MatrixXf();
-  SpectrumGradient total(net, tuned ? tuned->rows() : 0, tuned ? tuned->cols() : 0);
+  SpectrumGradient total(net);
   std::vector<SpectrumGradient> slots;
   EarlyStopping stopping(s.patience);
   std::vector<std::size_t> order = p.train;
@@ -153,30 +125,24 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& 
     for (std::size_t first = 0; first < order.size(); first += std::size_t(s.batch)) {
       const std::size_t n = std::min(order.size() - first, std::size_t(s.batch));
       train_loss += chunked_gradient<SpectrumGradient>(n, slots, total, s.threads, [&](std::size_t begin, std::size_t end, SpectrumGradient& g) {
-        const std::size_t* columns = order.data() + first + begin;
-        return batch_gradient(net, p, gather(p, tuned, columns, end - begin, true, epoch_seed), 1.0f / float(n), g, columns);
+        return batch_gradient(net, p, gather(p, order.data() + first + begin, end - begin, true, epoch_seed), 1.0f / float(n), g);
       });
       adam_action.step(net.action, total.action);
       adam_predictor.step(net.predictor, total.predictor);
-      if (tuned) latents_gradient.weight[0] = total.latents, adam_latents.step(latents, latents_gradient);
     }
-    const Distances val = mean_distance(net, p, p.val, false, s.threads, tuned);
+    const Distances val = mean_distance(net, p, p.val, false, s.threads);
     EpochReport r{s.stage, epoch, s.max_epochs, train_loss / double(std::max<std::size_t>(1, order.size())), val.plain, -1, val.weighted,
                   stopping.improved(val.weighted), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
-    if (r.best) {
-      best = net, result.val_distance = val.plain;
-      if (tuned) best_latents = *tuned;
-    }
+    if (r.best) best = net, result.val_distance = val.plain;
     if (stopping.plateau())
-      for (Adam* adam : {&adam_action, &adam_predictor, &adam_latents}) adam->set_learning_rate(adam->learning_rate() / 2);
+      for (Adam* adam : {&adam_action, &adam_predictor}) adam->set_learning_rate(adam->learning_rate() / 2);
     result.epochs = epoch;
     if (progress) progress(r);
   }
   result.net = std::move(best);
   result.best_epoch = stopping.best_epoch();
   if (result.best_epoch == 0) result.val_distance = stopping.best();  // no epoch improved (a NaN loss)
-  result.latents = std::move(best_latents);
-  result.train_distance = mean_distance(result.net, p, p.train, true, s.threads, tuned ? &result.latents : nullptr).plain;
+  result.train_distance = mean_distance(result.net, p, p.train, true, s.threads).plain;
   return result;
 }
 

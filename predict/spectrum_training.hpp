@@ -24,18 +24,9 @@ struct SpectrumProblem {
   const std::vector<int>* material = nullptr;
   const std::vector<Eigen::MatrixXf>* train_latents = nullptr;
   const std::vector<Eigen::MatrixXf>* val_latents = nullptr;
-  // Tuned latents instead (TrainOptions::tune_latents): the materials' latents to start from (latent x
-  // materials), and per material the classifier's probabilities for its validation press images
-  // (materials x images). A training window sees its material's latent, a validation window the latent
-  // recognised from its press with the latents as they are; the tuned latents are trained with the
-  // nets and come back in SpectrumResult::latents.
-  const Eigen::MatrixXf* initial_latents = nullptr;
-  const std::vector<Eigen::MatrixXf>* val_recognition = nullptr;
   // Per column, how much its squared error counts (empty: 1 each); see material_balance_weights.
   std::vector<float> weight = {};
-  int latent_size() const {
-    return train_latents ? int(train_latents->front().rows()) : initial_latents ? int(initial_latents->rows()) : 0;
-  }
+  int latent_size() const { return train_latents ? int(train_latents->front().rows()) : 0; }
 };
 
 struct SpectrumSchedule {  // from TrainOptions (unified or per-material)
@@ -48,7 +39,6 @@ struct SpectrumResult {
   SpectrumNet net;
   int epochs = 0, best_epoch = 0;
   double train_distance = 0, val_distance = 0;  // mean Euclidean distance (m/s^2) at the best epoch
-  Eigen::MatrixXf latents;                      // the tuned material latents at the best epoch (tuned problems only)
 };
 
 SpectrumResult train_spectrum_net(const SpectrumProblem& problem, const TrainOptions& options,
@@ -60,9 +50,8 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& problem, const TrainOpt
 struct Distances {
   double plain = 0, weighted = 0;
 };
-// latents: the tuned material latents to use (tuned problems; their initial ones when null).
 Distances mean_distance(const SpectrumNet& net, const SpectrumProblem& problem, const std::vector<std::size_t>& columns,
-                        bool training, unsigned threads, const Eigen::MatrixXf* latents = nullptr);
+                        bool training, unsigned threads);
 
 // Weights that make every material count alike in the unified model's loss (TrainOptions::balance_materials):
 // a window's squared error is divided by its material's mean squared target norm over the training

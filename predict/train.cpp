@@ -54,26 +54,19 @@ void train_unified(const TrainingData& data, const TrainOptions& o, const Eigen:
                    const EpochCallback& progress) {
   train_texture_encoder(data, o, model, progress);
   std::vector<int> material(std::size_t(data.action.cols()), -1);
-  std::vector<Eigen::MatrixXf> train_latents, val_latents, val_recognition;
+  std::vector<Eigen::MatrixXf> train_latents, val_latents;
   for (std::size_t m = 0; m < data.materials.size(); ++m) {
     for (std::size_t set : {split::kTrain, split::kVal, split::kTest})
       for (std::size_t c : data.materials[m].rows[set]) material[c] = int(m);
-    const Eigen::MatrixXf val_images = texture_latents(model, data.materials[m].images[split::kVal]);
-    if (o.tune_latents) {
-      val_recognition.push_back(recognition(model, val_images));
-      continue;
-    }
     train_latents.push_back(texture_latents(model, data.materials[m].images[split::kTrain]));
     // Validation presses as prediction sees a new press: recognised (the classifier is frozen now).
-    val_latents.push_back(recognised_latents(model, val_images));
+    val_latents.push_back(recognised_latents(model, texture_latents(model, data.materials[m].images[split::kVal])));
   }
   SpectrumProblem p{&actions, &data.target, model.normalisation.target_scale, all_rows(data, split::kTrain),
                     all_rows(data, split::kVal), &material, &train_latents, &val_latents};
-  if (o.tune_latents) p.train_latents = p.val_latents = nullptr, p.initial_latents = &model.material_latents, p.val_recognition = &val_recognition;
   if (o.balance_materials) p.weight = material_balance_weights(data.target, material, p.train, data.materials.size());
   const SpectrumResult r = train_spectrum_net(p, o, {o.batch, o.max_epochs, o.patience, "spectrum", o.threads}, progress);
   model.nets = {r.net};
-  if (o.tune_latents) model.material_latents = r.latents;
   model.metrics["spectrum"] = result_json(r);
 }
 

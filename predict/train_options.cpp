@@ -21,7 +21,6 @@ nlohmann::json TrainOptions::to_json() const {
           {"texture_patience", texture_patience},
           {"learning_rate", learning_rate},
           {"balance_materials", balance_materials},
-          {"tune_latents", tune_latents},
           {"seed", seed}};
 }
 

@@ -25,10 +25,6 @@ struct TrainOptions {
   // Unified model: every material's windows weigh alike in the loss, whatever its vibration level
   // (material_balance_weights in predict/spectrum_training.hpp); off, loud materials rule it.
   bool balance_materials = true;
-  // Unified model: stage 2 also tunes each material's latent (Model::material_latents, the mean
-  // training latent after stage 1), and trains every window on its material's latent rather than on
-  // the latent of a random augmented training image (docs/predict.md, "Tuned material latents").
-  bool tune_latents = false;
   std::uint64_t seed = 0;
   unsigned threads = 0;  // 0: every core this process may use
 

@@ -4,7 +4,6 @@
 
 #include "dataset/window.hpp"
 #include "predict/predictor.hpp"
-#include "predict/spectrum_net.hpp"
 #include "predict/spectrum_training.hpp"
 #include "tests/predict/synthetic_problem.hpp"
 
@@ -142,65 +141,6 @@ TEST(Training, StageTwoStopsOnTheWeightedValidationDistance) {
   }
   EXPECT_TRUE(differ);
   EXPECT_DOUBLE_EQ(m.metrics["spectrum"]["val_distance"].get<double>(), best_plain);
-}
-
-// The latents' gradient (what tuning them follows) against finite differences of the loss
-// 0.5 |output|^2, through a predictor with a softplus output.
-TEST(Training, TheLatentsGradientMatchesFiniteDifferences) {
-  const int latent = 3, columns = 4;
-  const std::vector<int> action_sizes{int(kActionValues), 6}, predictor_sizes{latent + 6, 8, 5};
-  const SpectrumNet net{make_mlp(action_sizes, Activation::relu, Activation::relu, 11),
-                        make_mlp(predictor_sizes, Activation::relu, Activation::softplus, 12)};
-  const Eigen::MatrixXf actions = Eigen::MatrixXf::Random(Eigen::Index(kActionValues), columns);
-  Eigen::MatrixXf latents = Eigen::MatrixXf::Random(latent, columns);
-  const auto loss = [&](const Eigen::MatrixXf& z) {
-    SpectrumTrace trace;
-    return 0.5 * double(spectrum_forward(net, z, actions, trace).squaredNorm());
-  };
-  SpectrumTrace trace;
-  const Eigen::MatrixXf out = spectrum_forward(net, latents, actions, trace);
-  SpectrumGradient g(net);
-  Eigen::MatrixXf d_latents;
-  spectrum_backward(net, trace, out, g, &d_latents);
-  ASSERT_EQ(d_latents.rows(), latent);
-  ASSERT_EQ(d_latents.cols(), columns);
-  for (Eigen::Index r = 0; r < latent; ++r)
-    for (Eigen::Index c = 0; c < columns; ++c) {
-      Eigen::MatrixXf up = latents, down = latents;
-      up(r, c) += 1e-2f, down(r, c) -= 1e-2f;
-      const double numeric = (loss(up) - loss(down)) / 2e-2;
-      EXPECT_NEAR(d_latents(r, c), numeric, 2e-3 + 2e-2 * std::abs(numeric)) << r << "," << c;
-    }
-}
-
-// Tuned material latents (TrainOptions::tune_latents): the model learns as well, the latents move
-// from the stage-1 means they start at, and the weights still do not depend on the thread count.
-TEST(Training, TunedLatentsLearnAndStayDeterministic) {
-  const TrainingData data = test::synthetic_problem();
-  TrainOptions o = small_options(Variant::unified, 1);
-  o.tune_latents = true;
-  const Model tuned = train_model(data, o);
-  o.tune_latents = false;
-  o.max_epochs = 1;
-  const Model stage1 = train_model(data, o);  // the same stage 1: its material latents are the means
-  EXPECT_TRUE(same_weights(tuned.texture, stage1.texture));
-  EXPECT_GT((tuned.material_latents - stage1.material_latents).norm(), 1e-3 * stage1.material_latents.norm());
-  const double baseline = tuned.metrics["mean_spectrum_baseline"]["val_distance"];
-  EXPECT_LT(val_distance(tuned), 0.6 * baseline);
-  EXPECT_LT(test_error_against_truth(tuned, data), 0.25 * baseline);
-  EXPECT_TRUE(tuned.config.value("tune_latents", false));
-
-  test::SyntheticSpec spec;
-  spec.windows = 200;
-  const TrainingData small = test::synthetic_problem(spec);
-  o = small_options(Variant::unified, 1);
-  o.tune_latents = true;
-  o.max_epochs = o.texture_max_epochs = 5;
-  const Model one = train_model(small, o);
-  o.threads = 3;
-  const Model three = train_model(small, o);
-  EXPECT_EQ(one.material_latents, three.material_latents);
-  EXPECT_TRUE(same_weights(one.nets[0].predictor, three.nets[0].predictor));
 }
 
 TEST(Training, EarlyStoppingKeepsTheBestEpoch) {
