@@ -173,7 +173,9 @@ TEST_F(ColourOrder, APressFileStoredBlueFirstReplaysInItsTrueColours) {
     ASSERT_GT(red_blue_difference(reference), 20.0);
     const double blue_first = mean_difference(replay(twins.blue_first, "blue_first"), reference);
     const double ignored = mean_difference(replay(twins.ignored, "ignored"), reference);
-    if (format == "YUYV") EXPECT_EQ(blue_first, 0.0);
+    if (format == "YUYV") {
+      EXPECT_EQ(blue_first, 0.0);
+    }
     EXPECT_LT(blue_first, 1.0);
     EXPECT_GT(ignored, 10.0);
   }
