@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "apps/command.hpp"
+#include "core/h5/atomic_file.hpp"
 #include "core/output_is_input.hpp"
 #include "core/durable_file.hpp"
 #include "core/json/schema.hpp"
@@ -38,6 +39,7 @@ class SplitCommand : public Command {
     refuse_output_among_inputs(output_, {dataset_});
     refuse_output_among_inputs(plots_folder(), {dataset_});
     check_output_path(output_, force_);
+    if (force_) h5::refuse_replacing_hdf5(output_);
     const auto windows = split::read_dataset_windows(dataset_);
     const auto splits = split::search_split(windows, options_, dataset_);
     const nlohmann::json manifest = split::manifest_json(dataset_, options_, splits, global.command_line);

@@ -9,6 +9,7 @@
 
 #include "apps/command.hpp"
 #include "apps/terminal_progress.hpp"
+#include "core/h5/atomic_file.hpp"
 #include "core/output_is_input.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
@@ -72,6 +73,7 @@ class TrainCommand : public Command {
     refuse_output_among_inputs(log_, {dataset_, split_});
     check_output_path(output_, force_);
     check_output_path(log_, force_);
+    if (force_) h5::refuse_replacing_hdf5(log_);
     options_.variant = per_material_ ? predict::Variant::per_material : predict::Variant::unified;
     const auto start = std::chrono::steady_clock::now();
     const split::DatasetSplit split = split::read_dataset_split(dataset_, split_);

@@ -14,6 +14,9 @@ namespace {
 
 constexpr std::size_t kLongestName = 40;
 constexpr const char* kRemake = "Predict again on the grid of `haptex windows DATASET --split SPLIT` (docs/benchmark.md)";
+constexpr const char* kLayout = "Write the file as schemas/hdf5-layout.md (\"Predictions file\") lays it out; python/haptex_data.py's write_predictions does";
+// Beyond any texture vibration (100,000 g), and far enough below float overflow that the statistics stay finite.
+constexpr double kLargestAcceleration = 1e6;
 
 std::string number_text(double v) {
   std::ostringstream out;
@@ -28,9 +31,19 @@ struct Reader {
     return input_error(path, object, what, fix);
   }
 
+  // The HDF5 layer's own refusals name the object but suggest haptex wrote the file: these carry this file's fix.
+  template <typename Read>
+  auto attribute(const std::string& where, const char* expected, Read read) const {
+    try {
+      return read();
+    } catch (const Error&) {
+      throw error(where, "is not " + std::string(expected), kLayout);
+    }
+  }
+
   std::string text(const h5::Node& node, std::string_view name, const std::string& where) const {
     if (!node.has_attr(name)) throw error(where, "is missing");
-    return node.attr_string(name);
+    return attribute(where, "one UTF-8 string", [&] { return node.attr_string(name); });
   }
 
   void require_hash(const h5::Group& root, std::string_view name, const std::string& wanted, const std::string& of) const {
@@ -43,7 +56,7 @@ struct Reader {
   // An optional compute time: absent is NaN; present must be a positive number of seconds.
   double seconds(const h5::Node& node, std::string_view name, const std::string& where) const {
     if (!node.has_attr(name)) return kNotMeasured;
-    const double v = node.attr_double(name);
+    const double v = attribute(where, "one number", [&] { return node.attr_double(name); });
     if (!std::isfinite(v) || v <= 0)
       throw error(where, "is " + number_text(v) + ", expected a compute time in seconds above 0",
                   "Write the measured time, or leave the attribute out (the method then has no point in the speed chart)");
@@ -58,15 +71,24 @@ struct Reader {
   }
 
   // Values must be finite; amplitudes (spectra) must not be negative either.
+  // Values must be finite and at most kLargestAcceleration in size; amplitudes (spectra) must not be negative either.
   std::vector<double> values(const h5::Dataset& d, const std::string& where, bool amplitudes, std::size_t row_length) const {
-    std::vector<double> v = d.read<double>();
-    for (std::size_t i = 0; i < v.size(); ++i)
-      if (!std::isfinite(v[i]) || (amplitudes && v[i] < 0)) {
-        const std::string place = row_length ? "row " + std::to_string(i / row_length) + ", bin " + std::to_string(i % row_length)
-                                              : "sample " + std::to_string(i);
-        throw error(where, place + " is " + number_text(v[i]) + ", expected a finite " + (amplitudes ? "amplitude of 0 or more" : "number"),
-                    amplitudes ? "Amplitude spectra are never negative: clamp the model's output at 0 (e.g. a ReLU or softplus)" : kRemake);
-      }
+    std::vector<double> v;
+    try {
+      v = d.read<double>();
+    } catch (const Error&) {
+      throw error(where, "cannot be read: HDF5 could not decode it (a compression filter other than gzip, or a damaged file)",
+                  "Write it uncompressed or with gzip (h5py: compression=\"gzip\")");
+    }
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const bool negative = amplitudes && v[i] < 0;
+      if (std::isfinite(v[i]) && std::abs(v[i]) <= kLargestAcceleration && !negative) continue;
+      const std::string place = row_length ? "row " + std::to_string(i / row_length) + ", bin " + std::to_string(i % row_length)
+                                            : "sample " + std::to_string(i);
+      throw error(where, place + " is " + number_text(v[i]) + ", expected a finite " + (amplitudes ? "amplitude of 0" : "acceleration of -1e6") +
+                             " to 1e6 m/s^2",
+                  negative ? "Amplitude spectra are never negative: clamp the model's output at 0 (e.g. a ReLU or softplus)" : kRemake);
+    }
     return v;
   }
 
@@ -121,6 +143,13 @@ std::string shown(const std::string& argument, std::size_t most) {
   return out;
 }
 
+// Text shown in a report cell, a CSV field and a chart label: line breaks and other control characters become spaces.
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  return text;
+}
+
 bool name_character(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-'; }
 
 }  // namespace
@@ -155,10 +184,12 @@ std::vector<GridSection> grid_sections(const std::vector<MaterialSignals>& signa
   return out;
 }
 
+std::string ExternalPredictions::description() const { return one_line(source.empty() ? path : source); }
+
 ExternalPredictions read_external_predictions(const PredictionsInput& input, const split::DatasetSplit& split,
                                               const std::vector<GridSection>& grid) {
   const Reader r{input.path};
-  const h5::File file = h5::File::open(input.path);
+  const h5::File file = r.attribute("", "an HDF5 file haptex can read", [&] { return h5::File::open(input.path); });
   const h5::Group root = file.root();
   const std::string format = "/@" + std::string(kPredictionsFormatAttribute);
   if (const std::string found = r.text(root, kPredictionsFormatAttribute, format); found != kPredictionsFormat)
@@ -169,7 +200,7 @@ ExternalPredictions read_external_predictions(const PredictionsInput& input, con
   std::size_t windows = 0;
   for (const GridSection& s : grid) windows += s.windows;
   ExternalPredictions p{input.name, input.path, sha256_file(input.path), {}, {}, {}, kNotMeasured, kNotMeasured};
-  if (root.has_attr("source")) p.source = root.attr_string("source");
+  if (root.has_attr("source")) p.source = one_line(r.text(root, "source", "/@source"));
   p.query_seconds = r.seconds(root, "query_seconds", "/@query_seconds");
   p.spectra = r.spectra(root, windows);
   if (root.has("signals")) {

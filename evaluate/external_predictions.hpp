@@ -15,7 +15,7 @@
 namespace haptex::evaluate {
 
 // The file's /@predictions_format. Not haptex_format: haptex never writes a predictions file, so
-// `--force` of a haptex command never replaces one (docs/benchmark.md, "The predictions file").
+// `--force` of a haptex command never replaces one (docs/architecture.md, "Formats").
 inline constexpr std::string_view kPredictionsFormatAttribute = "predictions_format";
 inline constexpr std::string_view kPredictionsFormat = "predictions/1";
 
@@ -48,6 +48,8 @@ struct ExternalPredictions {
   std::vector<std::vector<double>> signals;  // none, or one per grid section (10 kHz, from the section's first sample)
   double query_seconds = kNotMeasured;       // compute time of one window's prediction, one query at a time
   double signal_seconds = kNotMeasured;      // compute time of all the signals
+  // How a chart or table describes it: the source, or without one the path, on one line.
+  std::string description() const;
 };
 
 // Reads and checks a predictions file against the split's hashes and the grid. Throws

@@ -62,6 +62,15 @@ std::string bars_script(const Experiment& x, const std::string& stem, const std:
   return s.str();
 }
 
+// A predictions file's colour in Fig. 5, the same in both rows: the palette without the recording's
+// black and the model's and baseline's colours, by the file's place among the predictions.
+const char* external_colour(const Evaluation& e, const std::string& name) {
+  const char* const kExternal[] = {kPalette[2], kPalette[3], kPalette[4], kPalette[5], kPalette[7]};
+  std::size_t i = 0;
+  while (i < e.predictions.size() && e.predictions[i].name != name) ++i;
+  return kExternal[i % std::size(kExternal)];
+}
+
 // Fig. 5: spectra above, signals below, one column per example (those with data, at most four).
 std::string examples_script(const Evaluation& e, const ReportLayout& layout, const std::string& terminal) {
   std::vector<std::size_t> shown;
@@ -84,10 +93,9 @@ std::string examples_script(const Evaluation& e, const ReportLayout& layout, con
         << "plot " << gnuplot::file(layout.examples[shown[k]] + row[0]) << " using " << row[4] << ":'truth' with lines lc rgb 'black' title 'recorded', \\\n"
         << "     '' using " << row[4] << ":'model' with lines lc rgb '" << kPalette[0] << "' title 'model', \\\n"
         << "     '' using " << row[4] << ":'baseline' with lines lc rgb '" << kPalette[1] << "' title 'baseline'";
-      const std::vector<NamedSeries>& external = r == 0 ? x.external_spectra : x.external_signals;
-      for (std::size_t i = 0; i < external.size(); ++i)
-        s << ", \\\n     '' using " << row[4] << ":" << gnuplot::text("external-" + external[i].name) << " with lines lc rgb '"
-          << kPalette[(2 + i) % std::size(kPalette)] << "' title " << gnuplot::text(external[i].name + " (external)");
+      for (const NamedSeries& series : r == 0 ? x.external_spectra : x.external_signals)
+        s << ", \\\n     '' using " << row[4] << ":" << gnuplot::text("external-" + series.name) << " with lines lc rgb '"
+          << external_colour(e, series.name) << "' title " << gnuplot::text(series.name + " (external)");
       s << "\n";
     }
   }

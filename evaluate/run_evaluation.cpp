@@ -504,10 +504,7 @@ std::vector<ExperimentSpec> experiment_specs(const std::vector<ModelInput>& mode
 
 std::string method_setting(const MethodKey& key, const Context& c) {
   const std::vector<ModelInput>& models = c.models;
-  if (key.is_external()) {
-    const std::string& source = c.external[key.model].source;
-    return source.empty() ? c.external[key.model].path : source;
-  }
+  if (key.is_external()) return c.external[key.model].description();
   if (key.kind == Kind::stitched) {
     if (key.reconstruction == render::Reconstruction::fgla) return std::to_string(key.iterations) + " iterations";
     if (key.reconstruction == render::Reconstruction::online) return "look-ahead 3 frames, scattered";
@@ -614,10 +611,16 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   const auto start = std::chrono::steady_clock::now();
   if (models.empty() && o.predictions.empty())
     throw Error(Error::Kind::bad_input, "evaluate: give at least one model (--model) or predictions file (--predictions NAME=FILE)");
+  // Names become file names, which differ only in case on no file system a report may be copied to.
+  const auto lower = [](std::string s) {
+    for (char& ch : s) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    return s;
+  };
   for (std::size_t i = 0; i < o.predictions.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
-      if (o.predictions[i].name == o.predictions[j].name)
-        throw Error(Error::Kind::bad_input, "evaluate: two --predictions are named '" + o.predictions[i].name + "': give each its own name");
+      if (lower(o.predictions[i].name) == lower(o.predictions[j].name))
+        throw Error(Error::Kind::bad_input, "evaluate: two --predictions are named '" + o.predictions[j].name + "' and '" + o.predictions[i].name +
+                                                "' (alike but for case): give each its own name");
   for (const ModelInput& input : models) check_model(input, split);
   Evaluation e;
   e.dataset = {split.dataset_path, split.dataset_sha256};

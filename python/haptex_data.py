@@ -110,11 +110,18 @@ class Split:
 def read_split(path):
     with open(path, "rb") as f:
         raw = f.read()
-    doc = json.loads(raw)
-    if doc.get("format") != "split/1":
-        raise HaptexFileError(f"{path}: format is '{doc.get('format')}', not split/1 (haptex split writes it)")
-    return Split(path, hashlib.sha256(raw).hexdigest(), doc["dataset"]["sha256"], int(doc["parameters"]["sections"]),
-                 {m["id"]: m["sections"] for m in doc["materials"]}, {m["id"]: m["presses"] for m in doc["materials"]})
+    try:
+        doc = json.loads(raw.decode("utf-8"))
+    except (UnicodeDecodeError, json.JSONDecodeError) as e:
+        raise HaptexFileError(f"{path}: not a JSON split manifest ({e}); give the file haptex split wrote") from None
+    if not isinstance(doc, dict) or doc.get("format") != "split/1":
+        found = doc.get("format") if isinstance(doc, dict) else type(doc).__name__
+        raise HaptexFileError(f"{path}: format is '{found}', not split/1 (haptex split writes it)")
+    try:
+        return Split(path, hashlib.sha256(raw).hexdigest(), doc["dataset"]["sha256"], int(doc["parameters"]["sections"]),
+                     {m["id"]: m["sections"] for m in doc["materials"]}, {m["id"]: m["presses"] for m in doc["materials"]})
+    except (KeyError, TypeError, ValueError) as e:
+        raise HaptexFileError(f"{path}: not a split manifest as haptex split writes it (at {e!r}); schemas/split.schema.json") from None
 
 
 def _section_begin(s, samples, sections):
@@ -165,6 +172,8 @@ class Press:
 def read_presses(dataset_path, split, material_id, sets=("train",)):
     """The presses of one material that `sets` of the split hold, in the split's order. A press stored
     in BGR order is turned to RGB; another order is refused."""
+    if sha256_file(dataset_path) != split.dataset_sha256:
+        raise HaptexFileError(f"{split.path}: was made from another dataset than {dataset_path} (dataset.sha256)")
     numbers = [p for name in sets for p in split.material_presses[material_id][name]]
     out = []
     with h5py.File(dataset_path, "r") as f:
@@ -222,6 +231,16 @@ def write_predictions(path, grid, spectra, source, query_seconds=None, signals=N
     spectra = np.asarray(spectra, dtype=np.float32)
     if spectra.shape != (len(grid), TARGET_BINS):
         raise HaptexFileError(f"{path}: {spectra.shape} spectra for a grid of {len(grid)} windows")
+    # What haptex evaluate would refuse, refused here before anything is written.
+    if not np.all(np.isfinite(spectra)) or spectra.min(initial=0) < 0 or spectra.max(initial=0) > 1e6:
+        raise HaptexFileError(f"{path}: spectra must be finite amplitudes of 0 to 1e6 m/s^2 (clamp the model's output at 0)")
+    for name, seconds in (("query_seconds", query_seconds), ("signal_seconds", signal_seconds)):
+        if seconds is not None and not (np.isfinite(seconds) and seconds > 0):
+            raise HaptexFileError(f"{path}: {name} is {seconds}, expected a compute time in seconds above 0")
+    if signals is not None:
+        sections = grid_sections(grid)
+        if len(signals) != len(sections) or any(len(x) < covered for x, (_, _, _, covered) in zip(signals, sections)):
+            raise HaptexFileError(f"{path}: give one signal per grid section ({len(sections)}), each covering its windows (grid_sections)")
     partial = path + ".partial"
     try:
         with h5py.File(partial, "w") as f:

@@ -226,10 +226,20 @@ Group Group::require_group(std::string_view name) {
   return has_group(name) ? open_group(name) : create_group(name);
 }
 
+// haptex reads only what a file stores itself: a soft or external link may point anywhere (another
+// file, which the file's SHA-256 does not cover), so opening one is refused.
+static void require_hard_link(hid_t group, std::string_view name, const std::string& file, const std::string& path) {
+  H5L_info_t info;
+  if (H5Lget_info(group, std::string(name).c_str(), &info, H5P_DEFAULT) >= 0 && info.type != H5L_TYPE_HARD)
+    throw input_error(file, path, "is a soft or external link; haptex reads only data stored in the file itself",
+                      "Store the data in the file instead of linking to it");
+}
+
 Group Group::open_group(std::string_view name) const {
   const std::string path = child_path(name);
   if (!has_group(name))
     throw input_error(file_, path, "group is missing", "Check the file's layout with 'haptex info' or 'haptex qa'");
+  require_hard_link(id(), name, file_, path);
   return Group(Handle(check_input(H5Gopen2(id(), std::string(name).c_str(), H5P_DEFAULT), "open group", file_ + ":" + path)),
                file_, path);
 }
@@ -238,6 +248,7 @@ Dataset Group::open_dataset(std::string_view name) const {
   const std::string path = child_path(name);
   if (!has_dataset(name))
     throw input_error(file_, path, "dataset is missing", "Check the file's layout with 'haptex info' or 'haptex qa'");
+  require_hard_link(id(), name, file_, path);
   return Dataset(
       Handle(check_input(H5Dopen2(id(), std::string(name).c_str(), H5P_DEFAULT), "open dataset", file_ + ":" + path)),
       file_, path);

@@ -141,6 +141,27 @@ TEST(Force, NoCommandReplacesAFileHaptexDidNotWrite) {
   }
 }
 
+// The commands whose output is text (JSON, CSV) or sound never replace an HDF5 file, with --force or
+// without: none of those outputs was ever HDF5 (a dataset, a model, a predictions file of your own).
+TEST(Force, NoTextOutputReplacesAnHdf5File) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string hdf5 = copy_into(d, p.recordings, "mine.h5");
+  const std::string before = sha256_file(hdf5);
+  std::ofstream(d.file("traj.csv")) << "time_s,force_n,speed_mm_s\n0,1,50\n0.01,1,50\n0.02,1,50\n";
+  const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
+      {"split", {"split", p.dataset, "-o", hdf5, "--no-plots", "--force"}},
+      {"train --log", {"train", p.dataset, "--split", p.split, "-o", d.file("m.h5"), "--log", hdf5, "--force"}},
+      {"render", {"render", quick_model(), "--material", small_material(), "--trajectory", d.file("traj.csv"), "-o", hdf5, "--force"}},
+  };
+  for (const auto& [name, command] : commands) {
+    SCOPED_TRACE(name);
+    expect_refusal(run_haptex(command), {hdf5, "HDF5"});
+    EXPECT_EQ(sha256_file(hdf5), before);
+  }
+  EXPECT_FALSE(fs::exists(d.file("m.h5")));
+}
+
 TEST(Force, TrainRefusesALogThatIsTheModel) {
   const TempDir dir;
   std::vector<std::string> args = quick_train_args(small_pipeline().dataset, small_pipeline().split, dir.file("m.h5"));

@@ -9,6 +9,8 @@
 #include <functional>
 #include <limits>
 
+#include <hdf5.h>
+
 #include "core/h5/file.hpp"
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/predictions_files.hpp"
@@ -59,12 +61,14 @@ std::vector<Case> cases() {
       {"NaN", [](Predictions& p) { p.spectra[250] = kNaN; }, {"/spectra", "row 2, bin 50", "nan"}},
       {"infinity", [](Predictions& p) { p.spectra[3] = std::numeric_limits<float>::infinity(); }, {"/spectra", "row 0, bin 3", "inf"}},
       {"a negative amplitude", [](Predictions& p) { p.spectra[101] = -0.5f; }, {"/spectra", "row 1, bin 1", "clamp"}},
+      {"an amplitude beyond any vibration", [](Predictions& p) { p.spectra[7] = 3e37f; }, {"/spectra", "row 0, bin 7", "1e6"}},
       {"a NaN compute time", [](Predictions& p) { p.query_seconds = std::nan(""); }, {"/@query_seconds", "above 0"}},
       {"a negative compute time", [](Predictions& p) { p.query_seconds = -1; }, {"/@query_seconds", "above 0"}},
       {"a signal too few", [](Predictions& p) { p.signals.pop_back(); }, {"/signals", "one per grid section"}},
       {"a signal too short", [](Predictions& p) { p.signals[0].resize(p.signals[0].size() - 1); }, {"/signals/0", "samples"}},
       {"a signal far too long", [](Predictions& p) { p.signals[1].resize(50'000'000); }, {"/signals/1", "samples"}},
       {"a NaN sample", [](Predictions& p) { p.signals[0][7] = kNaN; }, {"/signals/0", "sample 7"}},
+      {"a sample beyond any vibration", [](Predictions& p) { p.signals[1][3] = -2e6f; }, {"/signals/1", "sample 3"}},
   };
 }
 
@@ -90,13 +94,50 @@ TEST(PredictionsRefusals, EachBrokenFileIsRefusedNamingTheFileAndTheObject) {
 }
 
 // The untouched file (under the same hostile name) is scored: the refusals above are each one change.
+// A source of several lines stays one CSV row, or gnuplot would read the speed chart's rows wrong.
 TEST(PredictionsRefusals, TheGoodFileUnderAHostileNameIsScored) {
   const TempDir dir;
   const std::string file = dir.file("p'r \"`x`\".h5");
-  write_predictions(file, good());
+  Predictions p = good();
+  p.source = "made\nby `me`\r\n\"twice\"";
+  write_predictions(file, p);
   const CommandResult r = evaluate(dir, {"mine=" + file});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir.file("report/experiment-stitched-external-mine.csv")));
+  const std::string speed = file_bytes(dir.file("report/speed.csv"));
+  EXPECT_NE(speed.find("made by `me`"), std::string::npos) << speed;
+  EXPECT_EQ(speed.find('\r'), std::string::npos) << speed;
+}
+
+// Links are refused: an external link would score data the file's SHA-256 in the report does not cover.
+TEST(PredictionsRefusals, LinksInPlaceOfDataAreRefused) {
+  const TempDir dir;
+  write_predictions(dir.file("target.h5"), good());
+  Predictions p = good();
+  p.shape.clear();
+  const std::string file = dir.file("linked.h5");
+  write_predictions(file, p);
+  {
+    h5::File f = h5::File::open(file, true);
+    ASSERT_GE(H5Lcreate_external(dir.file("target.h5").c_str(), "/spectra", f.root().id(), "spectra", H5P_DEFAULT, H5P_DEFAULT), 0);
+    f.close();
+  }
+  expect_refusal(evaluate(dir, {"x=" + file}), {file, "/spectra", "link"});
+  EXPECT_FALSE(fs::exists(dir.file("report")));
+}
+
+TEST(PredictionsRefusals, AttributesOfAnotherTypeAreRefusedWithThisFilesFix) {
+  const TempDir dir;
+  const std::string file = dir.file("p.h5");
+  Predictions p = good();
+  p.query_seconds.reset();
+  write_predictions(file, p);
+  {
+    h5::File f = h5::File::open(file, true);
+    f.root().set_attr("query_seconds", "fast");
+    f.close();
+  }
+  expect_refusal(evaluate(dir, {"x=" + file}), {file, "/@query_seconds", "one number", "hdf5-layout.md"});
 }
 
 TEST(PredictionsRefusals, FilesThatAreNoPredictionsAreRefused) {
@@ -153,6 +194,7 @@ TEST(PredictionsRefusals, NamesTheReportCannotUseAreRefused) {
   const CommandResult binary = evaluate(dir, {"caf\xff=" + file});
   EXPECT_EQ(binary.err.find('\xff'), std::string::npos) << "the message echoes a byte that is not UTF-8";
   expect_refusal(evaluate(dir, {"same=" + file, "same=" + file}), {"named 'same'"});
+  expect_refusal(evaluate(dir, {"knn=" + file, "KNN=" + file}), {"alike but for case"});
   // The report folder may not be one of the inputs.
   const SmallPipeline& p = small_pipeline();
   expect_refusal(run_haptex({"evaluate", p.dataset, "--split", p.split, "--predictions", "x=" + file, "-o", file, "--force"}), {file});
