@@ -11,11 +11,13 @@
 namespace haptex::evaluate {
 namespace {
 
-// Welch-Satterthwaite; 1 where both variances are zero (0/0), as scipy substitutes.
+// Welch-Satterthwaite; 1 where both variances are zero (0/0), as scipy substitutes. Written in the
+// variances' shares of their sum, which no size of distance overflows.
 double welch_df(double va_n, double vb_n, std::size_t n_a, std::size_t n_b) {
-  const double denominator = va_n * va_n / static_cast<double>(n_a - 1) + vb_n * vb_n / static_cast<double>(n_b - 1);
-  if (denominator == 0.0) return 1.0;
-  return (va_n + vb_n) * (va_n + vb_n) / denominator;
+  const double sum = va_n + vb_n;
+  if (sum == 0.0) return 1.0;
+  const double a = va_n / sum, b = vb_n / sum;
+  return 1.0 / (a * a / static_cast<double>(n_a - 1) + b * b / static_cast<double>(n_b - 1));
 }
 
 double two_sided_p(double t, double df) {

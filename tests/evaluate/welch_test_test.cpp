@@ -85,6 +85,19 @@ TEST(EvaluateWelch, SwappingSamplesNegatesT) {
   EXPECT_EQ(ab.df, ba.df);
 }
 
+// Distances of any size: the test is scale-free, and squaring variances of 1e160 must not overflow
+// the degrees of freedom into NaN (a model file with amplitudes of 1e80 did that once).
+TEST(EvaluateWelch, HugeDistancesGiveTheScaledTest) {
+  const auto c = load_case("docs_unequal");
+  std::vector<double> a = c.a, b = c.b;
+  for (double& x : a) x *= 1e150;
+  for (double& x : b) x *= 1e150;
+  const auto small = welch_t_test(c.a, c.b), huge = welch_t_test(a, b);
+  EXPECT_NEAR(huge.df, small.df, 1e-9 * small.df);
+  EXPECT_NEAR(huge.t, small.t, 1e-9 * std::abs(small.t));
+  EXPECT_NEAR(huge.p, small.p, 1e-9);
+}
+
 TEST(EvaluateWelch, RejectsTooSmallOrNonFiniteSamples) {
   const std::vector<double> one{1.0}, two{1.0, 2.0}, none;
   EXPECT_THROW(welch_t_test(one, two), Error);
