@@ -7,7 +7,6 @@
 #include "apps/command.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "core/output_is_input.hpp"
-#include "core/durable_file.hpp"
 #include "core/json/schema.hpp"
 #include "split/split_manifest.hpp"
 #include "split/split_plots.hpp"
@@ -38,8 +37,7 @@ class SplitCommand : public Command {
   int run(const GlobalOptions& global) override {
     refuse_output_among_inputs(output_, {dataset_});
     refuse_output_among_inputs(plots_folder(), {dataset_});
-    check_output_path(output_, force_);
-    if (force_) h5::refuse_replacing_hdf5(output_);
+    h5::check_text_output_path(output_, force_);
     const auto windows = split::read_dataset_windows(dataset_);
     const auto splits = split::search_split(windows, options_, dataset_);
     const nlohmann::json manifest = split::manifest_json(dataset_, options_, splits, global.command_line);

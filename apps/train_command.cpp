@@ -72,8 +72,7 @@ class TrainCommand : public Command {
     refuse_output_among_inputs(output_, {dataset_, split_});
     refuse_output_among_inputs(log_, {dataset_, split_});
     check_output_path(output_, force_);
-    check_output_path(log_, force_);
-    if (force_) h5::refuse_replacing_hdf5(log_);
+    h5::check_text_output_path(log_, force_);
     options_.variant = per_material_ ? predict::Variant::per_material : predict::Variant::unified;
     const auto start = std::chrono::steady_clock::now();
     const split::DatasetSplit split = split::read_dataset_split(dataset_, split_);

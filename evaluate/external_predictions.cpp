@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/sha256.hpp"
+#include "core/text/format.hpp"
 #include "dataset/window.hpp"
 
 namespace haptex::evaluate {
@@ -17,12 +17,6 @@ constexpr const char* kRemake = "Predict again on the grid of `haptex windows DA
 constexpr const char* kLayout = "Write the file as schemas/hdf5-layout.md (\"Predictions file\") lays it out; python/haptex_data.py's write_predictions does";
 // Beyond any texture vibration (100,000 g), and far enough below float overflow that the statistics stay finite.
 constexpr double kLargestAcceleration = 1e6;
-
-std::string number_text(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
 
 struct Reader {
   const std::string& path;
@@ -58,7 +52,7 @@ struct Reader {
     if (!node.has_attr(name)) return kNotMeasured;
     const double v = attribute(where, "one number", [&] { return node.attr_double(name); });
     if (!std::isfinite(v) || v <= 0)
-      throw error(where, "is " + number_text(v) + ", expected a compute time in seconds above 0",
+      throw error(where, "is " + text::format("%g", v) + ", expected a compute time in seconds above 0",
                   "Write the measured time, or leave the attribute out (the method then has no point in the speed chart)");
     return v;
   }
@@ -85,7 +79,7 @@ struct Reader {
       if (std::isfinite(v[i]) && std::abs(v[i]) <= kLargestAcceleration && !negative) continue;
       const std::string place = row_length ? "row " + std::to_string(i / row_length) + ", bin " + std::to_string(i % row_length)
                                             : "sample " + std::to_string(i);
-      throw error(where, place + " is " + number_text(v[i]) + ", expected a finite " + (amplitudes ? "amplitude of 0" : "acceleration of -1e6") +
+      throw error(where, place + " is " + text::format("%g", v[i]) + ", expected a finite " + (amplitudes ? "amplitude of 0" : "acceleration of -1e6") +
                              " to 1e6 m/s^2",
                   negative ? "Amplitude spectra are never negative: clamp the model's output at 0 (e.g. a ReLU or softplus)" : kRemake);
     }
@@ -176,10 +170,10 @@ PredictionsInput parse_predictions_argument(const std::string& argument) {
 
 std::vector<GridSection> grid_sections(const std::vector<MaterialSignals>& signals) {
   std::vector<GridSection> out;
-  for (const MaterialSignals& m : signals)
-    for (const SectionSignals& s : m.test) {
+  for (std::size_t m = 0; m < signals.size(); ++m)
+    for (const SectionSignals& s : signals[m].test) {
       const std::vector<std::size_t> offsets = section_grid(s.accel.size());
-      if (!offsets.empty()) out.push_back({offsets.size(), offsets.back() + dataset::kWindowSamples, s.accel.size()});
+      if (!offsets.empty()) out.push_back({m, offsets.size(), offsets.back() + dataset::kWindowSamples, s.accel.size()});
     }
   return out;
 }

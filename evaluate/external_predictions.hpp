@@ -35,7 +35,8 @@ void check_predictions_name(const std::string& name);
 
 // One test section of the grid, in the grid's order (sections without a window are not in it).
 struct GridSection {
-  std::size_t windows = 0;  // grid windows in the section
+  std::size_t material = 0;  // index into the signals (the split's materials)
+  std::size_t windows = 0;   // grid windows in the section
   std::size_t covered = 0;  // samples from the section's first through its last window's end
   std::size_t samples = 0;  // the section's length
 };

@@ -324,7 +324,8 @@ MaterialRun run_material(std::size_t m, const MaterialSignals& signals, const Co
     if (grid.empty()) continue;
     const auto& truth = recorded[s];
     const std::size_t section_row = row, section_index = grid_section;
-    for (std::size_t i = 0; i < c.external.size(); ++i) score_external(run, i, c.external[i], row, grid_section, grid, truth, ref.noise);
+    for (std::size_t i = 0; i < c.external.size(); ++i)
+      score_external(run, i, c.external[i], section_row, section_index, grid, truth, ref.noise);
     row += grid.size(), ++grid_section;
     const Eigen::MatrixXf actions = grid_actions(section, grid);
     std::vector<double> first_render;
@@ -652,11 +653,10 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
   }
   Context c{models, external, {}, {}, codes, o, truth, {}, {}, stitched};
   // Where each material's windows begin in the grid (evaluate/evaluation_grid.hpp's order).
-  std::size_t row = 0, section = 0;
-  for (const MaterialSignals& m : signals) {
-    c.first_row.push_back(row), c.first_section.push_back(section);
-    for (const SectionSignals& s : m.test)
-      if (const std::size_t n = section_grid(s.accel.size()).size(); n > 0) row += n, ++section;
+  std::size_t row = 0, k = 0;
+  for (std::size_t m = 0; m < signals.size(); ++m) {
+    c.first_row.push_back(row), c.first_section.push_back(k);
+    for (; k < sections.size() && sections[k].material == m; ++k) row += sections[k].windows;
   }
   if (stitched >= 0 && o.reconstruct) {
     for (std::size_t n : o.fgla_iterations) c.stitched_keys.push_back(reconstruction_key(render::Reconstruction::fgla, n));

@@ -21,7 +21,9 @@ void require_replaceable(const std::string& path) {
                     "Choose another output name, or move the file away yourself");
 }
 
-void refuse_replacing_hdf5(const std::string& path) {
+void check_text_output_path(const std::string& path, bool overwrite) {
+  check_output_path(path, overwrite);
+  if (!overwrite) return;
   std::ifstream in(path, std::ios::binary);
   char signature[8] = {};
   if (!in.read(signature, sizeof signature) || std::string_view(signature, sizeof signature) != std::string_view("\x89HDF\r\n\x1a\n", 8)) return;
