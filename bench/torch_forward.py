@@ -17,6 +17,10 @@ Two forms are timed:
 - "concatenated": the textbook form, predictor(cat(latent, code)) with the whole first layer.
 Each is the best of 5 rounds of the mean CPU time over REPS queries (one thread: the time on one core
 whatever else the machine runs, as bench/run_bench.sh reports haptex's).
+
+Batched (batch_1000_seconds): the precomputed form on a (1000, 20) tensor of actions spread over the
+training range, as bench_predict's BM_PredictBatch/1000 times predict_batch; best of 5 rounds of the
+mean CPU time over BATCH_REPS batches.
 """
 import json
 import sys
@@ -31,6 +35,7 @@ except ImportError as error:  # run_bench.sh prints the note and carries on
 import numpy as np
 
 REPS, ROUNDS, MATERIAL = 20000, 5, 7
+BATCH, BATCH_REPS = 1000, 50
 ACTIVATIONS = {"linear": None, "relu": torch.nn.ReLU, "softplus": torch.nn.Softplus}
 
 
@@ -115,15 +120,15 @@ def build(norm, action_layers, predictor_layers, latent):
     return precomputed, concatenated
 
 
-def best_mean_seconds(forward, action):
-    for _ in range(1000):  # warm-up
+def best_mean_seconds(forward, action, reps=REPS):
+    for _ in range(max(10, reps // 20)):  # warm-up
         forward(action)
     best = float("inf")
     for _ in range(ROUNDS):
         start = time.process_time()
-        for _ in range(REPS):
+        for _ in range(reps):
             forward(action)
-        best = min(best, (time.process_time() - start) / REPS)
+        best = min(best, (time.process_time() - start) / reps)
     return best
 
 
@@ -132,6 +137,9 @@ def main():
     norm, action_layers, predictor_layers, latent = from_file(sys.argv[1]) if len(sys.argv) > 1 else random_model()
     precomputed, concatenated = build(norm, action_layers, predictor_layers, latent)
     action = torch.tensor([[1.2 + 0.001 * i for i in range(10)] + [150.0 + 0.1 * i for i in range(10)]], dtype=torch.float32)
+    forces = torch.linspace(norm["force_min"], norm["force_max"], BATCH).reshape(-1, 1).repeat(1, 10)
+    speeds = torch.linspace(norm["speed_min"], norm["speed_max"], BATCH).flip(0).reshape(-1, 1).repeat(1, 10)
+    batch = torch.cat((forces, speeds), dim=1).contiguous()
     with torch.inference_mode():
         a, b = precomputed(action), concatenated(action)
         if not torch.allclose(a, b, rtol=1e-4, atol=1e-6 * float(b.abs().max())):
@@ -143,6 +151,8 @@ def main():
             "single_query_seconds": best_mean_seconds(precomputed, action),
             "latent_part": "precomputed once per texture, as haptex does",
             "single_query_seconds_concatenated": best_mean_seconds(concatenated, action),
+            "batch_size": BATCH,
+            "batch_seconds": best_mean_seconds(precomputed, batch, BATCH_REPS),
             "repetitions": f"best of {ROUNDS} rounds of the mean CPU time over {REPS} queries",
         }))
 
