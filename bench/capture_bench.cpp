@@ -1,5 +1,6 @@
 // Peak extraction speed on one core: the per-frame work of `haptex capture extract` (score a frame
-// against the no-contact reference) at 960 x 720 and 3280 x 2464, from decoded frames and from MJPG
+// against the no-contact reference, whose drift fit is made once per press file) at 960 x 720 and
+// 3280 x 2464, from decoded frames and from MJPG
 // bytes (reduced-size decoding), and the whole extraction of a recorded press file.
 // bench/run_bench.sh times bench/opencv_peak_loop.py (absdiff, threshold, sum) on the same JPEGs,
 // which `bench_capture --export-frames DIR` writes, and the recorder's 60 s keep-up runs.
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -29,6 +31,7 @@ struct SizedFrames {
   std::vector<cv::Mat> decoded;                  // BGR
   std::vector<std::vector<std::uint8_t>> jpeg;   // what the sensor sends
   cv::Mat reference;                             // scoring image of the no-contact frame
+  std::shared_ptr<const DriftFit> fit;           // its drift fit, made once as extraction makes it
 };
 
 // Frames of the fake camera's scene: a gel with markers, pressed to depths 0..1.
@@ -44,23 +47,43 @@ const SizedFrames& frames(int width, int height) {
     cv::imencode(".jpg", f.decoded.back(), f.jpeg.back(), {cv::IMWRITE_JPEG_QUALITY, 90});
   }
   f.reference = scoring_image(scene.image(0, 0));
+  f.fit = std::make_shared<const DriftFit>(f.reference);
   return cache.emplace(width, std::move(f)).first->second;
 }
 
 void BM_ScoreDecodedFrame(benchmark::State& state) {
   const SizedFrames& f = frames(int(state.range(0)), int(state.range(1)));
   std::size_t i = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(contact_score(scoring_image(f.decoded[i++ % kFrames]), f.reference, 6));
+  for (auto _ : state) benchmark::DoNotOptimize(f.fit->score(scoring_image(f.decoded[i++ % kFrames]), f.reference, 6));
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_ScoreDecodedFrame)->Args({960, 720})->Args({3280, 2464})->Unit(benchmark::kMillisecond);
+
+// The two halves of BM_ScoreDecodedFrame: the scoring image (grey, block means, float) and the score.
+void BM_ScoringImage(benchmark::State& state) {
+  const SizedFrames& f = frames(int(state.range(0)), int(state.range(1)));
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(scoring_image(f.decoded[i++ % kFrames]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ScoringImage)->Args({960, 720})->Args({3280, 2464})->Unit(benchmark::kMillisecond);
+
+void BM_ScoreOnly(benchmark::State& state) {
+  const SizedFrames& f = frames(int(state.range(0)), int(state.range(1)));
+  std::vector<cv::Mat> images;
+  for (const cv::Mat& frame : f.decoded) images.push_back(scoring_image(frame));
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(f.fit->score(images[i++ % kFrames], f.reference, 6));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_ScoreOnly)->Args({960, 720})->Args({3280, 2464})->Unit(benchmark::kMillisecond);
 
 void BM_ScoreMjpgFrame(benchmark::State& state) {
   const int w = int(state.range(0)), h = int(state.range(1));
   const SizedFrames& f = frames(w, h);
   std::size_t i = 0;
   for (auto _ : state)
-    benchmark::DoNotOptimize(contact_score(scoring_image_from_jpeg(f.jpeg[i++ % kFrames], {w, h}), f.reference, 6));
+    benchmark::DoNotOptimize(f.fit->score(scoring_image_from_jpeg(f.jpeg[i++ % kFrames], {w, h}), f.reference, 6));
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_ScoreMjpgFrame)->Args({960, 720})->Args({3280, 2464})->Unit(benchmark::kMillisecond);

@@ -1,5 +1,6 @@
 // XML -> HDF5 conversion of one 10 s HaTT-format recording on one core: parsing alone, and the
 // whole `haptex convert hatt` path (parse, DFT321, low-pass filters, compressed HDF5, fsync, rename).
+// `bench_convert --export-xml FILE` writes the recording for bench/elementtree_parse.py, the peer.
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
@@ -58,6 +59,18 @@ void BM_ConvertXmlToHdf5_10s(benchmark::State& state) {
 // Wall-clock: the output's fsync is part of what a user waits for.
 BENCHMARK(BM_ConvertXmlToHdf5_10s)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// Copies the recording for bench/elementtree_parse.py.
+int export_xml(const std::string& path) {
+  std::filesystem::copy_file(fixture().xml, path, std::filesystem::copy_options::overwrite_existing);
+  return 0;
+}
+
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  if (argc == 3 && std::string(argv[1]) == "--export-xml") return export_xml(argv[2]);
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

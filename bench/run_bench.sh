@@ -2,7 +2,8 @@
 # Runs every benchmark on one core and prints the figures the issues ask for.
 # Usage: bench/run_bench.sh BUILD_DIR   (make bench calls it)
 set -euo pipefail
-build=${1:-build}
+build=$(realpath "${1:-build}")
+repo=$(realpath "$(dirname "$0")/..")
 out=$build/bench-results
 mkdir -p "$out"
 one_core="taskset -c 0"
@@ -11,6 +12,9 @@ command -v taskset >/dev/null || one_core=""
 $one_core "$build/bench/bench_signal" --benchmark_format=json --benchmark_out="$out/signal.json" --benchmark_out_format=json >/dev/null
 $one_core "$build/bench/bench_convert" --benchmark_format=json --benchmark_out="$out/convert.json" --benchmark_out_format=json >/dev/null
 $one_core /usr/bin/python3 "$(dirname "$0")/scipy_sosfiltfilt.py" > "$out/scipy.json"
+"$build/bench/bench_convert" --export-xml "$out/recording_10s.xml"
+$one_core /usr/bin/python3 "$(dirname "$0")/elementtree_parse.py" "$out/recording_10s.xml" > "$out/elementtree.json"
+rm -f "$out/recording_10s.xml"
 
 /usr/bin/python3 - "$out" <<'PY'
 import json, sys
@@ -28,6 +32,8 @@ print(f"SHA-256 of the 10 s XML: {seconds('BM_Sha256_10sXml')*1e3:.1f} ms ({benc
 for name in ("BM_ParseHattXml_10s", "BM_ConvertXmlToHdf5_10s"):
     b = bench[name]
     print(f"{name}: {seconds(name)*1e3:.1f} ms per 10 s recording, {b['bytes_per_second']/1e6:.1f} MB/s of XML, {b['items_per_second']/1e6:.2f} M samples/s (x 9 channels)")
+etree = json.load(open(f"{out}/elementtree.json"))
+print(f"the same XML through Python {etree['python']} ElementTree + numpy: {etree['seconds']*1e3:.0f} ms, {etree['megabytes_per_second']:.1f} MB/s")
 print(f"DFT321 of 10 s: {seconds('BM_Dft321_10s')*1e3:.2f} ms;  amplitude spectrum of one window: {seconds('BM_AmplitudeSpectrum_1000')*1e6:.2f} us")
 PY
 
@@ -150,4 +156,36 @@ if "single_query_seconds" in torch:
           f"torch/haptex = {theirs / single:.1f}x")
 else:
     print(f"one query: haptex {single:.0f} ns   ({torch.get('note', 'no PyTorch figures')})")
+if "batch_seconds" in torch:
+    theirs = torch["batch_seconds"] * 1e9
+    print(f"a batch of 1000 queries: haptex {ns['BM_PredictBatch/1000'] / 1e6:.2f} ms   PyTorch batched {theirs / 1e6:.2f} ms "
+          f"(one thread, same weights)   torch/haptex = {theirs / ns['BM_PredictBatch/1000']:.1f}x")
 PY
+
+# Whole commands: `make demo` after the build (its build step finds nothing to do), timed and measured
+# on disk; then a fresh configure and build of this tree with make build's settings, its warnings counted.
+demo_dir=$(mktemp -d)
+make -C "$repo" --no-print-directory build BUILD="$build" >/dev/null
+start=$(date +%s.%N)
+make -C "$repo" --no-print-directory demo BUILD="$build" DEMO="$demo_dir/demo" > "$out/demo.log" 2>&1
+end=$(date +%s.%N)
+bytes=$(du -sb "$demo_dir/demo" | cut -f1)
+du -sb "$demo_dir"/demo/* | sort -rn | head -5 | sed "s|$demo_dir/demo/||" > "$out/demo_sizes.txt"
+rm -rf "$demo_dir"
+seconds=$(/usr/bin/python3 -c "print(round($end - $start, 1))")
+echo "{\"seconds\": $seconds, \"bytes\": $bytes}" > "$out/demo.json"
+echo "make demo after the build: $seconds s, $((bytes / 1000000)) MB on disk; largest:"
+sed 's/^/  /' "$out/demo_sizes.txt"
+
+fresh=$(mktemp -d)
+jobs=$(nproc)
+start=$(date +%s.%N)
+{ cmake -S "$repo" -B "$fresh" -DCMAKE_BUILD_TYPE=Release && cmake --build "$fresh" -j "$jobs"; } > "$out/build.log" 2>&1
+end=$(date +%s.%N)
+rm -rf "$fresh"
+warnings=$(grep -c "warning:" "$out/build.log" || true)
+seconds=$(/usr/bin/python3 -c "print(round($end - $start, 1))")
+echo "{\"seconds\": $seconds, \"jobs\": $jobs, \"warnings\": $warnings}" > "$out/build.json"
+echo "fresh build of this tree ($jobs jobs): $seconds s, $warnings warnings (log: $out/build.log)"
+
+/usr/bin/python3 "$(dirname "$0")/summary.py" "$out"

@@ -1,12 +1,17 @@
 #include "predict/dense_kernel.hpp"
 
-#include <immintrin.h>
-
 #include <algorithm>
 #include <cmath>
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#define HAPTEX_X86_KERNELS 1
+#endif
+
 namespace haptex::predict {
 namespace {
+
+#ifdef HAPTEX_X86_KERNELS
 
 // The four columns' share of eight rows of y: y + c0 x0 + c1 x1 + c2 x2 + c3 x3, in two chains.
 struct FourColumns {
@@ -87,6 +92,12 @@ bool has_avx2_fma() {
   __builtin_cpu_init();
   return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 }
+#else
+// Other processors run Eigen's path; these are never called.
+bool has_avx2_fma() { return false; }
+void gemv_avx2(const float*, long, long, long, const float*, const float*, float*) {}
+void softplus_avx2(float*, long) {}
+#endif
 
 }  // namespace
 

@@ -27,19 +27,6 @@ float temporal_noise(const std::vector<cv::Mat>& frames, const cv::Mat& mean) {
   return float(1.4826 * *middle * std::sqrt(n / (n - 1)));
 }
 
-// The median of |value(i)| over at most about 32 000 evenly spread of n pixels: as good an estimate of
-// a spread as all 126 000 of a 410 x 308 image, in a quarter of the time.
-template <typename Value>
-double median_abs(std::size_t n, const Value& value) {
-  const std::size_t stride = std::max<std::size_t>(1, n / 32768);
-  std::vector<double> v;
-  v.reserve(n / stride + 1);
-  for (std::size_t i = 0; i < n; i += stride) v.push_back(std::abs(value(i)));
-  auto middle = v.begin() + std::ptrdiff_t(v.size() / 2);
-  std::nth_element(v.begin(), middle, v.end());
-  return *middle;
-}
-
 // The median of the leave-one-out scores and their robust spread (1.4826 x the median absolute
 // deviation).
 struct Spread {
@@ -86,6 +73,22 @@ float footage_trigger(float level, const ScoreSettings& settings) {
 
 }  // namespace
 
+// Sums of the columns [1, g, x, y]: their Gram matrix and their moments with d = frame - reference.
+struct DriftFit::Sums {
+  cv::Matx44d gram = cv::Matx44d::zeros();
+  cv::Vec4d moments = cv::Vec4d::all(0);
+};
+
+namespace {
+
+// The residual of one pixel under the fit c, with the row's share of it (c0 + c3 y) taken out once.
+struct Fit {
+  float row, gain, tilt;  // c0 + c3 y_j, c1, c2
+  float residual(float d, float g, float x) const { return d - row - gain * g - tilt * x; }
+};
+
+}  // namespace
+
 DriftFit::DriftFit(const cv::Mat& reference, bool gain) {
   CV_Assert(reference.type() == CV_32F && reference.isContinuous());
   centred_ = gain ? centred(reference.clone()) : cv::Mat::zeros(reference.size(), CV_32F);
@@ -96,43 +99,94 @@ DriftFit::DriftFit(const cv::Mat& reference, bool gain) {
   y_.resize(std::size_t(h));
   for (int i = 0; i < w; ++i) x_[std::size_t(i)] = float((i + 0.5) / w - 0.5);
   for (int j = 0; j < h; ++j) y_[std::size_t(j)] = float((j + 0.5) / h - 0.5);
-  cv::Matx44d gram = cv::Matx44d::zeros();
-  const float* g = centred_.ptr<float>();
-  for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) {
-      const cv::Vec4d b(1.0, g[std::size_t(j) * std::size_t(w) + std::size_t(i)], x_[std::size_t(i)], y_[std::size_t(j)]);
-      gram += b * b.t();
+  // Every pixel's residual is above a negative cut.
+  gram_ = outliers(reference, reference, cv::Vec4d::all(0), -1).gram;
+  cv::invert(gram_, inverse_, cv::DECOMP_SVD);
+}
+
+// The sums over the pixels whose residual under c is beyond cut, in double: the Gram matrix is
+// singular when the reference is itself a ramp (its centred image a mix of the x and y columns), and
+// only double sums keep that singular enough for the SVD to drop it. The kept pixels' sums are the
+// whole image's less these, so the loop over every pixel only tests; a press's pixels add.
+DriftFit::Sums DriftFit::outliers(const cv::Mat& image, const cv::Mat& reference, const cv::Vec4d& c, double cut) const {
+  Sums out;
+  const float limit = float(cut);
+  for (int j = 0; j < image.rows; ++j) {
+    const float *f = image.ptr<float>(j), *ref = reference.ptr<float>(j), *g = centred_.ptr<float>(j);
+    const Fit fit{float(c[0] + c[3] * y_[std::size_t(j)]), float(c[1]), float(c[2])};
+    for (int i = 0; i < image.cols; ++i) {
+      const float d = f[i] - ref[i];
+      if (std::abs(fit.residual(d, g[i], x_[std::size_t(i)])) <= limit) continue;
+      const cv::Vec4d b(1.0, g[i], x_[std::size_t(i)], y_[std::size_t(j)]);
+      out.gram += b * b.t();
+      out.moments += b * double(d);
     }
-  cv::invert(gram, inverse_, cv::DECOMP_SVD);
+  }
+  return out;
+}
+
+// The moments over every pixel (the Gram matrix of every pixel is the reference's): the first fit. The
+// pixel loops are written for the compiler to vectorise (#pragma omp simd, -fopenmp-simd: no OpenMP
+// runtime); a frame is scored every 1/30 s or faster (docs/capture.md, "Speed").
+cv::Vec4d DriftFit::moments(const cv::Mat& image, const cv::Mat& reference) const {
+  const float* x = x_.data();
+  cv::Vec4d total = cv::Vec4d::all(0);
+  for (int j = 0; j < image.rows; ++j) {
+    const float *f = image.ptr<float>(j), *ref = reference.ptr<float>(j), *g = centred_.ptr<float>(j);
+    float sd = 0, sgd = 0, sxd = 0;
+#pragma omp simd reduction(+ : sd, sgd, sxd)
+    for (int i = 0; i < image.cols; ++i) {
+      const float d = f[i] - ref[i];
+      sd += d, sgd += g[i] * d, sxd += x[i] * d;
+    }
+    total += cv::Vec4d(sd, sgd, sxd, double(y_[std::size_t(j)]) * sd);
+  }
+  return total;
+}
+
+// The median of |residual| over about 8000 pixels spread over the image (a stride that does not divide
+// the width, so the samples do not line up in columns): as good an estimate of the spread as all of
+// them, in a fraction of the time.
+double DriftFit::median_abs_residual(const cv::Mat& image, const cv::Mat& reference, const cv::Vec4d& c) const {
+  const std::size_t n = image.total(), w = std::size_t(image.cols);
+  std::size_t stride = std::max<std::size_t>(1, n / 8192);
+  if (stride > 1 && w % stride == 0) ++stride;
+  const float *f = image.ptr<float>(), *ref = reference.ptr<float>(), *g = centred_.ptr<float>();
+  thread_local std::vector<float> v;  // kept: scoring a stream of frames does not allocate
+  v.clear();
+  for (std::size_t k = 0; k < n; k += stride) {
+    const std::size_t i = k % w, j = k / w;
+    const Fit fit{float(c[0] + c[3] * y_[j]), float(c[1]), float(c[2])};
+    v.push_back(std::abs(fit.residual(f[k] - ref[k], g[k], x_[i])));
+  }
+  auto middle = v.begin() + std::ptrdiff_t(v.size() / 2);
+  std::nth_element(v.begin(), middle, v.end());
+  return *middle;
 }
 
 float DriftFit::score(const cv::Mat& image, const cv::Mat& reference, float pixel_threshold) const {
-  CV_Assert(image.type() == CV_32F && reference.type() == CV_32F && image.size() == reference.size() && image.isContinuous());
-  const int w = image.cols;
-  const std::size_t n = image.total();
-  const float *f = image.ptr<float>(), *ref = reference.ptr<float>(), *g = centred_.ptr<float>();
-  const auto basis = [&](std::size_t i) { return cv::Vec4d(1.0, g[i], x_[i % std::size_t(w)], y_[i / std::size_t(w)]); };
-  const auto residual = [&](std::size_t i, const cv::Vec4d& c) { return double(f[i] - ref[i]) - c.dot(basis(i)); };
-  // Least squares over every pixel, then again over the pixels that fit (|r| within 3 robust
-  // standard deviations): a press pulls the first fit, not the second.
-  cv::Vec4d moments = cv::Vec4d::all(0);
-  for (std::size_t i = 0; i < n; ++i) moments += basis(i) * double(f[i] - ref[i]);
-  cv::Vec4d c = inverse_ * moments;
-  const double cut = 3 * 1.4826 * median_abs(n, [&](std::size_t i) { return residual(i, c); });
+  CV_Assert(image.type() == CV_32F && reference.type() == CV_32F && image.size() == reference.size() && image.isContinuous() &&
+            reference.isContinuous() && image.size() == centred_.size());
+  // Least squares over every pixel (the Gram matrix's inverse is the reference's), then again over the
+  // pixels that fit (|r| within 3 robust standard deviations): a press pulls the first fit, not the second.
+  const cv::Vec4d all = moments(image, reference);
+  cv::Vec4d c = inverse_ * all;
+  const double cut = 3 * 1.4826 * median_abs_residual(image, reference, c);
   if (cut > 0) {
-    cv::Matx44d gram = cv::Matx44d::zeros();
-    moments = cv::Vec4d::all(0);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (std::abs(residual(i, c)) > cut) continue;
-      const cv::Vec4d b = basis(i);
-      gram += b * b.t();
-      moments += b * double(f[i] - ref[i]);
-    }
-    cv::solve(gram, moments, c, cv::DECOMP_SVD);
+    const Sums out = outliers(image, reference, c, cut);
+    cv::solve(gram_ - out.gram, all - out.moments, c, cv::DECOMP_SVD);
   }
-  double sum = 0;
-  for (std::size_t i = 0; i < n; ++i) sum += std::max(0.0, std::abs(residual(i, c)) - double(pixel_threshold));
-  return float(sum / double(n));
+  const float t = pixel_threshold, *x = x_.data();
+  double total = 0;
+  for (int j = 0; j < image.rows; ++j) {
+    const float *f = image.ptr<float>(j), *ref = reference.ptr<float>(j), *g = centred_.ptr<float>(j);
+    const Fit fit{float(c[0] + c[3] * y_[std::size_t(j)]), float(c[1]), float(c[2])};
+    float row = 0;
+#pragma omp simd reduction(+ : row)
+    for (int i = 0; i < image.cols; ++i) row += std::max(0.0f, std::abs(fit.residual(f[i] - ref[i], g[i], x[i])) - t);
+    total += row;
+  }
+  return float(total / double(image.total()));
 }
 
 float contact_score(const cv::Mat& image, const cv::Mat& reference, float pixel_threshold) {

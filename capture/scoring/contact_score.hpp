@@ -70,9 +70,14 @@ class DriftFit {
   float score(const cv::Mat& scoring_image, const cv::Mat& reference, float pixel_threshold) const;
 
  private:
+  struct Sums;
+  Sums outliers(const cv::Mat& image, const cv::Mat& reference, const cv::Vec4d& fit, double cut) const;
+  cv::Vec4d moments(const cv::Mat& image, const cv::Mat& reference) const;
+  double median_abs_residual(const cv::Mat& image, const cv::Mat& reference, const cv::Vec4d& fit) const;
+
   cv::Mat centred_;            // the gain column: the reference, centred (zeros without gain)
   std::vector<float> x_, y_;   // the tilt columns, per image column and row
-  cv::Matx44d inverse_;        // of the Gram matrix of [1, centred_, x, y]
+  cv::Matx44d gram_, inverse_; // the Gram matrix of [1, centred_, x, y] over every pixel, and its inverse
 };
 
 class ContactReference {
