@@ -33,7 +33,8 @@ __attribute__((target("avx2,fma"))) void gemv_avx2(const float* w, long ld, long
   static constexpr int kLanes[16] = {-1, -1, -1, -1, -1, -1, -1, -1, 0, 0, 0, 0, 0, 0, 0, 0};
   const __m256i tail = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(kLanes + 8 - (m - full)));
   for (long i = 0; i < full; i += 8) _mm256_storeu_ps(y + i, _mm256_loadu_ps(b + i));
-  if (full < m) _mm256_maskstore_ps(y + full, tail, _mm256_maskload_ps(b + full, tail));
+  // The rows past the last whole eight stay in a register until the end: masked stores are slow.
+  __m256 rest = _mm256_maskload_ps(b + full, tail);
   long j = 0;
   for (; j + 4 <= n; j += 4) {
     const float *c0 = w + j * ld, *c1 = c0 + ld, *c2 = c1 + ld, *c3 = c2 + ld;
@@ -42,11 +43,10 @@ __attribute__((target("avx2,fma"))) void gemv_avx2(const float* w, long ld, long
       _mm256_storeu_ps(y + i, f.add_to(_mm256_loadu_ps(y + i), _mm256_loadu_ps(c0 + i), _mm256_loadu_ps(c1 + i),
                                        _mm256_loadu_ps(c2 + i), _mm256_loadu_ps(c3 + i)));
     if (full < m)
-      _mm256_maskstore_ps(y + full, tail,
-                          f.add_to(_mm256_maskload_ps(y + full, tail), _mm256_maskload_ps(c0 + full, tail),
-                                   _mm256_maskload_ps(c1 + full, tail), _mm256_maskload_ps(c2 + full, tail),
-                                   _mm256_maskload_ps(c3 + full, tail)));
+      rest = f.add_to(rest, _mm256_maskload_ps(c0 + full, tail), _mm256_maskload_ps(c1 + full, tail),
+                      _mm256_maskload_ps(c2 + full, tail), _mm256_maskload_ps(c3 + full, tail));
   }
+  if (full < m) _mm256_maskstore_ps(y + full, tail, rest);
   for (; j < n; ++j)
     for (long i = 0; i < m; ++i) y[i] += w[j * ld + i] * x[j];
 }

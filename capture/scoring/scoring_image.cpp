@@ -34,11 +34,13 @@ cv::Mat block_means(const cv::Mat& grey, int r) {
       for (int i = 0; i < grey.cols; ++i) c[i] = std::uint16_t(c[i] + p[i]);
     }
     float* o = out.ptr<float>(j);
-    for (int i = 0; i < out.cols; ++i) {
-      unsigned sum = 0;
-      for (int x = 0; x < r; ++x) sum += c[r * i + x];
-      o[i] = float(sum) * scale;
+    for (int x = 0; x < r; ++x) {  // one column of each block a pass: a vectorised loop with stride r
+      const std::uint16_t* column = c + x;
+#pragma omp simd
+      for (int i = 0; i < out.cols; ++i) o[i] = (x == 0 ? 0.0f : o[i]) + float(column[r * i]);
     }
+#pragma omp simd
+    for (int i = 0; i < out.cols; ++i) o[i] *= scale;
   }
   return out;
 }
