@@ -18,12 +18,17 @@
 namespace haptex::render {
 
 enum class InitialPhase { random, zero };
+// The arithmetic of the iterations. float32 reaches the same spectral convergence as float64 to within
+// 0.1 dB (tests/render/griffin_lim_test.cpp) in less time (docs/evaluate.md, "Offline: fast
+// Griffin-Lim"); float64 is what the golden values of tests/golden/render pin.
+enum class Precision { float32, float64 };
 
 struct GriffinLimOptions {
   std::size_t iterations = 100;
   double momentum = 0.99;  // alpha in [0, 1); 0 is plain Griffin-Lim
   InitialPhase initial_phase = InitialPhase::random;
   std::uint64_t seed = 0;  // of the random initial phase (uniform in [0, 2 pi))
+  Precision precision = Precision::float32;
 };
 
 // The signal of `length` samples whose STFT magnitudes approach s (frames x 501, non-negative).

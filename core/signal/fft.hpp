@@ -26,8 +26,10 @@ class RealFft {
 
  private:
   std::size_t n_;
-  void* forward_plan_;
-  void* inverse_plan_;
+  void* forward_plan_ = nullptr;  // FFTW_UNALIGNED: any arrays
+  void* inverse_plan_ = nullptr;
+  void* aligned_forward_plan_ = nullptr;  // SIMD: arrays on FFTW's alignment (fft.cpp)
+  void* aligned_inverse_plan_ = nullptr;
 };
 
 // The shared transform for size N (created on first use, kept for the process' life).
