@@ -1,8 +1,12 @@
 #include "capture/extraction/extract_presses.hpp"
 
+#include <algorithm>
+#include <exception>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <limits>
+#include <thread>
 #include <opencv2/imgcodecs.hpp>
 
 #include "capture/extraction/capture_inputs.hpp"
@@ -12,6 +16,7 @@
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"
+#include "core/parallel.hpp"
 #include "core/partial_directory.hpp"
 #include "core/sha256.hpp"
 #include "core/text/format.hpp"
@@ -67,23 +72,47 @@ class Extraction {
                                                    FolderOptions{options.overwrite, "contact sheet folder", "--sheets", "haptex capture extract"});
   }
 
-  void add(const CaptureInput& input) {
-    const auto source = input.kind == CaptureInput::Kind::press_file       ? open_press_file(input.path)
-                        : input.kind == CaptureInput::Kind::image_sequence ? open_image_sequence(input.path)
-                                                                           : open_video(input.path);
-    const std::string material = input.material.empty() ? source->material() : input.material;
-    text::require_utf8(material, input.path, "the material name (--material, the folder's name or the press file's)");
-    const SourceScores scores = score_source(*source, settings_);
-    result_.frames_scored += std::int64_t(scores.scores.size());
-    result_.frames_unreadable += scores.unreadable_frames + source->frames_missing();
-    const SegmenterSettings segmenter = scores.contact->segmenter(settings_.segmenter);
-    const auto plans = plan_presses(scores.scores, segmenter, settings_.frames_per_press, settings_.margin_frames);
-    if (plans.empty()) result_.sources_without_press.push_back(input.path);
-    result_.detections.push_back(detection_of(input.path, scores, int(plans.size())));
-    const std::string sha = plans.empty() ? "" : source->sha256();
-    read_press_frames(*source, plans, [&](const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak) {
-      write_press(material, *source, scores, sha, plan, std::move(frames), peak);
+  // One source read, scored and its presses' frames decoded: what write() stores. Touches nothing
+  // of the Extraction but its settings, so sources can be analysed on several threads.
+  struct Analysed {
+    const CaptureInput* input = nullptr;
+    std::unique_ptr<FrameSource> source;
+    std::string material, sha;
+    SourceScores scores;
+    std::vector<PressPlan> plans;
+    struct Kept {
+      std::size_t plan;  // in plans
+      std::vector<cv::Mat> frames;
+      cv::Mat peak;
+    };
+    std::vector<Kept> kept;
+  };
+
+  Analysed analyse(const CaptureInput& input) const {
+    Analysed a;
+    a.input = &input;
+    a.source = input.kind == CaptureInput::Kind::press_file       ? open_press_file(input.path)
+               : input.kind == CaptureInput::Kind::image_sequence ? open_image_sequence(input.path)
+                                                                  : open_video(input.path);
+    a.material = input.material.empty() ? a.source->material() : input.material;
+    text::require_utf8(a.material, input.path, "the material name (--material, the folder's name or the press file's)");
+    a.scores = score_source(*a.source, settings_);
+    a.plans = plan_presses(a.scores.scores, a.scores.contact->segmenter(settings_.segmenter), settings_.frames_per_press,
+                           settings_.margin_frames);
+    a.sha = a.plans.empty() ? "" : a.source->sha256();
+    read_press_frames(*a.source, a.plans, [&](const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak) {
+      a.kept.push_back({std::size_t(&plan - a.plans.data()), std::move(frames), peak});
     });
+    return a;
+  }
+
+  void write(Analysed& a) {
+    result_.frames_scored += std::int64_t(a.scores.scores.size());
+    result_.frames_unreadable += a.scores.unreadable_frames + a.source->frames_missing();
+    if (a.plans.empty()) result_.sources_without_press.push_back(a.input->path);
+    result_.detections.push_back(detection_of(a.input->path, a.scores, int(a.plans.size())));
+    for (Analysed::Kept& k : a.kept) write_press(a.material, *a.source, a.scores, a.sha, a.plans[k.plan], std::move(k.frames), k.peak);
+    ++result_.sources;
   }
 
   ExtractResult finish() {
@@ -96,7 +125,6 @@ class Extraction {
     return result_;
   }
 
-  void count_source() { ++result_.sources; }
 
  private:
   std::string no_press_message() const {
@@ -212,10 +240,42 @@ ExtractResult extract_presses(const std::vector<std::string>& inputs, const std:
   check_output_path(output, options.overwrite);
   const std::vector<CaptureInput> expanded = expand_capture_inputs(inputs, options.material);
   Extraction extraction(output, options);
-  for (std::size_t i = 0; i < expanded.size(); ++i) {
-    if (progress) progress(i, expanded.size(), expanded[i].path);
-    extraction.add(expanded[i]);
-    extraction.count_source();
+  // Sources are analysed a few at a time on as many threads, the next few while the last are written,
+  // and written in their order, so the output is the same whatever the cores. Press files are read
+  // through HDF5, as the output is written, and Debian's HDF5 is not thread-safe: those go one at a
+  // time. At most two chunks' decoded frames are held at once (a video of up to 512 MiB is decoded
+  // whole: docs/capture.md).
+  constexpr unsigned kThreads = 4;
+  const bool hdf5 = std::any_of(expanded.begin(), expanded.end(),
+                                [](const CaptureInput& c) { return c.kind == CaptureInput::Kind::press_file; });
+  const unsigned threads = options.threads ? options.threads : std::min(kThreads, std::thread::hardware_concurrency());
+  const std::size_t chunk = hdf5 ? 1 : std::max(1u, threads);
+  struct Chunk {
+    std::vector<Extraction::Analysed> analysed;
+    std::vector<std::exception_ptr> failed;  // rethrown in the sources' order, as one at a time would
+  };
+  const auto analyse = [&](std::size_t first) {
+    const std::size_t count = std::min(chunk, expanded.size() - first);
+    Chunk c{std::vector<Extraction::Analysed>(count), std::vector<std::exception_ptr>(count)};
+    parallel_for(count, [&](std::size_t k) {
+      try {
+        c.analysed[k] = extraction.analyse(expanded[first + k]);
+      } catch (...) {
+        c.failed[k] = std::current_exception();
+      }
+    }, unsigned(count));
+    return c;
+  };
+  const auto launch = hdf5 || options.threads == 1 ? std::launch::deferred : std::launch::async;
+  std::future<Chunk> next = std::async(launch, analyse, std::size_t{0});
+  for (std::size_t first = 0; first < expanded.size(); first += chunk) {
+    Chunk current = next.get();
+    if (first + chunk < expanded.size()) next = std::async(launch, analyse, first + chunk);
+    for (std::size_t k = 0; k < current.analysed.size(); ++k) {
+      if (progress) progress(first + k, expanded.size(), expanded[first + k].path);
+      if (current.failed[k]) std::rethrow_exception(current.failed[k]);
+      extraction.write(current.analysed[k]);
+    }
   }
   if (progress) progress(expanded.size(), expanded.size(), "");
   return extraction.finish();

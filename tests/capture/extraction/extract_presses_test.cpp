@@ -63,6 +63,34 @@ TEST_F(Extract, AFolderOfMaterialFoldersGivesStablePressNumbers) {
   for (const auto& p : r.presses) EXPECT_TRUE(fs::exists(dir_.path() / p.contact_sheet)) << p.contact_sheet;
 }
 
+// Sources are analysed several at a time (and the next ones while the last are written), but written
+// in their order: one thread or three, the same presses, numbers and frames.
+TEST_F(Extract, SourcesOnSeveralThreadsGiveTheSameFileAsOneAtATime) {
+  for (int i = 0; i < 5; ++i) video(i % 2 ? "Cork" : "Felt", "press_" + std::to_string(i) + ".mkv", 1 + i % 2, 60 + 5 * i);
+  ExtractOptions one, three;
+  one.threads = 1;
+  three.threads = 3;
+  three.sheets = one.sheets = false;
+  const ExtractResult a = extract_presses({dir_.file("videos")}, out("one.h5"), one);
+  const ExtractResult b = extract_presses({dir_.file("videos")}, out("three.h5"), three);
+  ASSERT_EQ(a.presses.size(), 7u);
+  ASSERT_EQ(b.presses.size(), a.presses.size());
+  EXPECT_EQ(b.frames_scored, a.frames_scored);
+  const h5::File fa = h5::File::open(out("one.h5")), fb = h5::File::open(out("three.h5"));
+  for (std::size_t i = 0; i < a.presses.size(); ++i) {
+    const auto &pa = a.presses[i], &pb = b.presses[i];
+    EXPECT_EQ(pb.source, pa.source);
+    EXPECT_EQ(pb.press, pa.press);
+    EXPECT_EQ(pb.peak_index, pa.peak_index);
+    const auto group = [&](const h5::File& f, const ExtractedPressSummary& p) {
+      return f.root().open_group("materials").open_group(p.material_id).open_group("presses").open_group(std::to_string(p.press));
+    };
+    for (const char* name : {"frames", "peak", "reference"})
+      EXPECT_EQ(group(fb, pb).open_dataset(name).read<std::uint8_t>(), group(fa, pa).open_dataset(name).read<std::uint8_t>())
+          << pa.source << " " << name;
+  }
+}
+
 // Issue 11 point 5: a video cut off in the middle of a press (MJPG: its last frame's JPEG is cut
 // short and would decode, concealed, into a half-grey frame that scores as the strongest contact).
 // No frame that did not decode whole is a peak or kept, and the result counts the lost frames.
