@@ -1,4 +1,4 @@
-"""The table of docs/benchmark.md's "make bench" section: every figure with its peer from the same run,
+"""The table that ends `make bench` (bench/README.md): every figure with its peer from the same run,
 the ratio, and the goal. Reads the JSON files bench/run_bench.sh leaves in its output directory.
 
 Usage: /usr/bin/python3 bench/summary.py OUT_DIR
