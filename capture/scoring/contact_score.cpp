@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -91,6 +93,22 @@ struct Fit {
   float row, gain, tilt;  // c0 + c3 y_j, c1, c2
   float residual(float d, float g, float x) const { return d - row - gain * g - tilt * x; }
 };
+
+// The element v.size() / 2 of v sorted, for values >= 0 (NaN-free): their bit patterns sort as the
+// values do, so a count of the top 12 bits finds the bucket that holds it, and only that bucket is
+// sorted. A quarter of std::nth_element's time on a frame's 4000 samples, the same value.
+float middle_of_nonnegative(std::vector<float>& v) {
+  constexpr int kShift = 20;  // 2^12 buckets: sign (always 0), exponent and 3 bits of mantissa
+  thread_local std::vector<std::uint32_t> count(std::size_t(1) << (32 - kShift));
+  std::fill(count.begin(), count.end(), 0u);
+  const auto bucket = [](float x) { return std::bit_cast<std::uint32_t>(x) >> kShift; };
+  for (float x : v) ++count[bucket(x)];
+  std::size_t rank = v.size() / 2, b = 0;
+  while (rank >= count[b]) rank -= count[b++];
+  const auto end = std::partition(v.begin(), v.end(), [&](float x) { return bucket(x) == b; });
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(rank), end);
+  return v[rank];
+}
 
 // One row's sums over its pixels whose residual is beyond limit: count, g, x, gg, gx, xx, d, gd, xd
 // (d = frame - reference). Four pixels at a time in SSE2, which every x86-64 has: GCC's vectoriser
@@ -222,9 +240,7 @@ double DriftFit::median_abs_residual(const cv::Mat& image, const cv::Mat& refere
     const Fit fit{float(c[0] + c[3] * y_[j]), float(c[1]), float(c[2])};
     v.push_back(std::abs(fit.residual(f[k] - ref[k], g[k], x_[i])));
   }
-  auto middle = v.begin() + std::ptrdiff_t(v.size() / 2);
-  std::nth_element(v.begin(), middle, v.end());
-  return *middle;
+  return middle_of_nonnegative(v);
 }
 
 float DriftFit::score(const cv::Mat& image, const cv::Mat& reference, float pixel_threshold) const {
