@@ -18,7 +18,7 @@ Two forms are timed:
 Each is the best of 5 rounds of the mean CPU time over REPS queries (one thread: the time on one core
 whatever else the machine runs, as bench/run_bench.sh reports haptex's).
 
-Batched (batch_1000_seconds): the precomputed form on a (1000, 20) tensor of actions spread over the
+Batched (batch_seconds, for batch_size queries): the precomputed form on a (1000, 20) tensor of actions spread over the
 training range, as bench_predict's BM_PredictBatch/1000 times predict_batch; best of 5 rounds of the
 mean CPU time over BATCH_REPS batches.
 """
@@ -153,7 +153,7 @@ def main():
             "single_query_seconds_concatenated": best_mean_seconds(concatenated, action),
             "batch_size": BATCH,
             "batch_seconds": best_mean_seconds(precomputed, batch, BATCH_REPS),
-            "repetitions": f"best of {ROUNDS} rounds of the mean CPU time over {REPS} queries",
+            "repetitions": f"best of {ROUNDS} rounds of the mean CPU time over {REPS} queries ({BATCH_REPS} batches)",
         }))
 
 

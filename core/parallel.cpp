@@ -11,14 +11,16 @@
 
 namespace haptex {
 
+unsigned available_cores() {
+  // The cores this process may run on (taskset, container limits), not all the machine has.
+  cpu_set_t allowed;
+  const unsigned cores = sched_getaffinity(0, sizeof allowed, &allowed) == 0 ? unsigned(CPU_COUNT(&allowed))
+                                                                            : std::thread::hardware_concurrency();
+  return std::max(1u, cores);
+}
+
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& work, unsigned threads) {
-  if (threads == 0) {
-    // The cores this process may run on (taskset, container limits), not all the machine has.
-    cpu_set_t allowed;
-    threads = sched_getaffinity(0, sizeof allowed, &allowed) == 0 ? unsigned(CPU_COUNT(&allowed))
-                                                                  : std::thread::hardware_concurrency();
-    threads = std::max(1u, threads);
-  }
+  if (threads == 0) threads = available_cores();
   threads = unsigned(std::min<std::size_t>(threads, count));
   std::atomic<std::size_t> next{0};
   std::exception_ptr first_error;

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "core/error.hpp"
 
 #if defined(__x86_64__)
 #include <immintrin.h>
@@ -55,7 +58,7 @@ __attribute__((target("avx2,fma"))) void gemv_avx2(const float* w, long ld, long
 // (error under 1e-8 relative), 2^k through the exponent bits. Below -87 the result stays at e^-87 (about
 // 1.6e-38) instead of leaving float's normal range: softplus there is below any vibration anyway.
 __attribute__((target("avx2,fma"), always_inline)) inline __m256 exp_of_nonpositive(__m256 a) {
-  a = _mm256_max_ps(a, _mm256_set1_ps(-87.0f));
+  a = _mm256_max_ps(_mm256_set1_ps(-87.0f), a);  // max returns its second operand for NaN: NaN stays
   const __m256 k = _mm256_round_ps(_mm256_mul_ps(a, _mm256_set1_ps(1.44269504088896341f)),
                                    _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
   __m256 r = _mm256_fnmadd_ps(k, _mm256_set1_ps(0.693359375f), a);  // ln 2 in two parts: k ln2_hi is exact
@@ -83,7 +86,7 @@ __attribute__((target("avx2,fma"))) void softplus_avx2(float* v, long n) {
   for (; i + 8 <= n; i += 8) {
     const __m256 z = _mm256_loadu_ps(v + i);
     const __m256 t = exp_of_nonpositive(_mm256_or_ps(z, sign));  // -|z|
-    _mm256_storeu_ps(v + i, _mm256_add_ps(_mm256_max_ps(z, _mm256_setzero_ps()), log1p_of_unit(t)));
+    _mm256_storeu_ps(v + i, _mm256_add_ps(_mm256_max_ps(_mm256_setzero_ps(), z), log1p_of_unit(t)));
   }
   for (; i < n; ++i) v[i] = std::max(v[i], 0.0f) + std::log1p(std::exp(-std::abs(v[i])));
 }
@@ -108,6 +111,10 @@ bool dense_kernel_uses_avx2() {
 
 void dense_column(const Eigen::Ref<const Eigen::MatrixXf>& weight, const Eigen::VectorXf& in, const Eigen::VectorXf& bias,
                   Activation activation, Eigen::VectorXf& out) {
+  if (in.size() != weight.cols() || bias.size() != weight.rows())
+    throw failure("dense layer: " + std::to_string(weight.rows()) + " x " + std::to_string(weight.cols()) + " weights, " +
+                  std::to_string(in.size()) + " inputs, " + std::to_string(bias.size()) + " biases");
+  out.resize(weight.rows());  // nothing to do, and no allocation, when it has the size already
   if (!dense_kernel_uses_avx2()) {
     out.noalias() = weight * in;
     out += bias;

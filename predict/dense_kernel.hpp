@@ -10,12 +10,14 @@
 namespace haptex::predict {
 
 // out = activation(weight x in + bias); `weight` may be a block of a layer's weight matrix (its
-// columns contiguous). Allocation-free; out is sized by the caller.
+// columns contiguous). Allocation-free when out has weight.rows() values already (it is resized
+// otherwise). Throws haptex::Error when in or bias do not fit the weights.
 void dense_column(const Eigen::Ref<const Eigen::MatrixXf>& weight, const Eigen::VectorXf& in, const Eigen::VectorXf& bias,
                   Activation activation, Eigen::VectorXf& out);
 
-// activate(Activation::softplus, values), with an AVX2 kernel where there is one (within 3e-7 relative
-// of the scalar formula; tests/predict/dense_kernel_test.cpp).
+// activate(Activation::softplus, values), with an AVX2 kernel where there is one: within 3e-7 relative
+// of max(z, 0) + log1p(e^-|z|) in double (tests/predict/dense_kernel_test.cpp), so a prediction
+// differs between CPUs with and without AVX2 by a few units in the last place.
 void softplus(Eigen::Ref<Eigen::MatrixXf> values);
 
 // Whether dense_column uses the AVX2 and FMA kernel on this CPU.

@@ -18,7 +18,8 @@ Predictor::Predictor(const Model& model) : model_(model), action_(kActionValues)
   std::size_t widest = 0;
   for (const SpectrumNet& net : model.nets) widest = std::max(widest, net.action.layers.size() + net.predictor.layers.size());
   layer_.resize(widest);
-  // Sized for the first net; every net of a model has the same sizes.
+  // Sized for the first net: the nets of a model have the same sizes, which keeps predict() from
+  // allocating (a net of other sizes would be resized in dense_column, not overrun).
   const SpectrumNet& net = model.nets.at(0);
   std::size_t k = 0;
   for (const auto* mlp : {&net.action, &net.predictor})

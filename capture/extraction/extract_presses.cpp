@@ -6,7 +6,6 @@
 #include <fstream>
 #include <future>
 #include <limits>
-#include <thread>
 #include <opencv2/imgcodecs.hpp>
 
 #include "capture/extraction/capture_inputs.hpp"
@@ -72,20 +71,15 @@ class Extraction {
                                                    FolderOptions{options.overwrite, "contact sheet folder", "--sheets", "haptex capture extract"});
   }
 
-  // One source read, scored and its presses' frames decoded: what write() stores. Touches nothing
-  // of the Extraction but its settings, so sources can be analysed on several threads.
+  // One source opened, its frames scored and its presses planned: what write() reads the kept frames
+  // of and stores. Touches nothing of the Extraction but its settings, so image sequences can be
+  // analysed on several threads.
   struct Analysed {
     const CaptureInput* input = nullptr;
     std::unique_ptr<FrameSource> source;
     std::string material, sha;
     SourceScores scores;
     std::vector<PressPlan> plans;
-    struct Kept {
-      std::size_t plan;  // in plans
-      std::vector<cv::Mat> frames;
-      cv::Mat peak;
-    };
-    std::vector<Kept> kept;
   };
 
   Analysed analyse(const CaptureInput& input) const {
@@ -100,18 +94,19 @@ class Extraction {
     a.plans = plan_presses(a.scores.scores, a.scores.contact->segmenter(settings_.segmenter), settings_.frames_per_press,
                            settings_.margin_frames);
     a.sha = a.plans.empty() ? "" : a.source->sha256();
-    read_press_frames(*a.source, a.plans, [&](const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak) {
-      a.kept.push_back({std::size_t(&plan - a.plans.data()), std::move(frames), peak});
-    });
     return a;
   }
 
+  // The kept frames are read and stored a press at a time, so memory holds about one press.
   void write(Analysed& a) {
     result_.frames_scored += std::int64_t(a.scores.scores.size());
     result_.frames_unreadable += a.scores.unreadable_frames + a.source->frames_missing();
     if (a.plans.empty()) result_.sources_without_press.push_back(a.input->path);
     result_.detections.push_back(detection_of(a.input->path, a.scores, int(a.plans.size())));
-    for (Analysed::Kept& k : a.kept) write_press(a.material, *a.source, a.scores, a.sha, a.plans[k.plan], std::move(k.frames), k.peak);
+    read_press_frames(*a.source, a.plans, [&](const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak) {
+      write_press(a.material, *a.source, a.scores, a.sha, plan, std::move(frames), peak);
+    });
+    a.source.reset();
     ++result_.sources;
   }
 
@@ -240,16 +235,15 @@ ExtractResult extract_presses(const std::vector<std::string>& inputs, const std:
   check_output_path(output, options.overwrite);
   const std::vector<CaptureInput> expanded = expand_capture_inputs(inputs, options.material);
   Extraction extraction(output, options);
-  // Sources are analysed a few at a time on as many threads, the next few while the last are written,
-  // and written in their order, so the output is the same whatever the cores. Press files are read
-  // through HDF5, as the output is written, and Debian's HDF5 is not thread-safe: those go one at a
-  // time. At most two chunks' decoded frames are held at once (a video of up to 512 MiB is decoded
-  // whole: docs/capture.md).
+  // Image sequences (each frame a file, read when needed) are analysed a few at a time on as many
+  // threads, the next few while the last are written, and written in their order, so the output is the
+  // same whatever the cores. Other sources go one at a time: press files are read through HDF5, whose
+  // Debian build is not thread-safe, and a video keeps up to 512 MiB of decoded frames (docs/capture.md).
   constexpr unsigned kThreads = 4;
-  const bool hdf5 = std::any_of(expanded.begin(), expanded.end(),
-                                [](const CaptureInput& c) { return c.kind == CaptureInput::Kind::press_file; });
-  const unsigned threads = options.threads ? options.threads : std::min(kThreads, std::thread::hardware_concurrency());
-  const std::size_t chunk = hdf5 ? 1 : std::max(1u, threads);
+  const bool sequences = std::all_of(expanded.begin(), expanded.end(),
+                                     [](const CaptureInput& c) { return c.kind == CaptureInput::Kind::image_sequence; });
+  const unsigned threads = options.threads ? options.threads : std::min(kThreads, available_cores());
+  const std::size_t chunk = sequences ? threads : 1;
   struct Chunk {
     std::vector<Extraction::Analysed> analysed;
     std::vector<std::exception_ptr> failed;  // rethrown in the sources' order, as one at a time would
@@ -266,11 +260,12 @@ ExtractResult extract_presses(const std::vector<std::string>& inputs, const std:
     }, unsigned(count));
     return c;
   };
-  const auto launch = hdf5 || options.threads == 1 ? std::launch::deferred : std::launch::async;
+  const auto launch = chunk > 1 ? std::launch::async : std::launch::deferred;
   std::future<Chunk> next = std::async(launch, analyse, std::size_t{0});
   for (std::size_t first = 0; first < expanded.size(); first += chunk) {
     Chunk current = next.get();
-    if (first + chunk < expanded.size()) next = std::async(launch, analyse, first + chunk);
+    const bool failed = std::any_of(current.failed.begin(), current.failed.end(), [](const auto& e) { return bool(e); });
+    if (!failed && first + chunk < expanded.size()) next = std::async(launch, analyse, first + chunk);
     for (std::size_t k = 0; k < current.analysed.size(); ++k) {
       if (progress) progress(first + k, expanded.size(), expanded[first + k].path);
       if (current.failed[k]) std::rethrow_exception(current.failed[k]);

@@ -22,7 +22,7 @@ struct ExtractOptions {
   bool sheets = true;
   std::string sheets_dir;  // default: <output without extension>_sheets beside the output
   std::string provenance;
-  // Sources analysed at once (0: one per core, at most 4); the output is the same for any count.
+  // Image sequences analysed at once (0: one per core, at most 4); the output is the same for any count.
   unsigned threads = 0;
 };
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <numeric>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -175,7 +176,7 @@ DriftFit::DriftFit(const cv::Mat& reference, bool gain) {
     for (int j = 0; j < h; ++j)
       for (int i = 0; i < w; ++i) {
         float& g = centred_.at<float>(j, i);
-        g = float(g - gx / xx * x_[std::size_t(i)] - gy / yy * y_[std::size_t(j)]);
+        g = float(g - (xx > 0 ? gx / xx : 0.0) * x_[std::size_t(i)] - (yy > 0 ? gy / yy : 0.0) * y_[std::size_t(j)]);
         left += double(g) * g;
       }
     if (!(left > 1e-6 * gg)) centred_ = cv::Mat::zeros(reference.size(), CV_32F);
@@ -225,13 +226,13 @@ cv::Vec4d DriftFit::moments(const cv::Mat& image, const cv::Mat& reference) cons
   return total;
 }
 
-// The median of |residual| over about 4000 pixels spread over the image (a stride that does not divide
-// the width, so the samples do not line up in columns): as good an estimate of the spread as all of
-// them, in a fraction of the time.
+// The median of |residual| over about 4000 pixels spread over the image (a stride with no factor in
+// common with the width, so the samples cover every column): as good an estimate of the spread as all
+// of them, in a fraction of the time.
 double DriftFit::median_abs_residual(const cv::Mat& image, const cv::Mat& reference, const cv::Vec4d& c) const {
   const std::size_t n = image.total(), w = std::size_t(image.cols);
   std::size_t stride = std::max<std::size_t>(1, n / 4096);
-  if (stride > 1 && w % stride == 0) ++stride;
+  while (stride > 1 && std::gcd(stride, w) != 1) ++stride;
   const float *f = image.ptr<float>(), *ref = reference.ptr<float>(), *g = centred_.ptr<float>();
   thread_local std::vector<float> v;  // kept: scoring a stream of frames does not allocate
   v.clear();

@@ -75,7 +75,7 @@ class DriftFit {
   cv::Vec4d moments(const cv::Mat& image, const cv::Mat& reference) const;
   double median_abs_residual(const cv::Mat& image, const cv::Mat& reference, const cv::Vec4d& fit) const;
 
-  cv::Mat centred_;            // the gain column: the reference, centred (zeros without gain)
+  cv::Mat centred_;            // the gain column: the reference less its mean and ramps (zeros without gain)
   std::vector<float> x_, y_;   // the tilt columns, per image column and row
   cv::Matx44d gram_, inverse_; // the Gram matrix of [1, centred_, x, y] over every pixel, and its inverse
 };

@@ -60,7 +60,7 @@ void block_sums(const std::uint16_t* c, int r, float scale, float* out, int n) {
 // the same means rounded to whole grey levels, in twice the time (bench_capture's BM_ScoringImage).
 cv::Mat block_means(const cv::Mat& grey, int r) {
   cv::Mat out(grey.rows / r, grey.cols / r, CV_32F);
-  thread_local std::vector<std::uint16_t> columns;  // r x r x 255 <= 16320 fits
+  thread_local std::vector<std::uint16_t> columns;  // a sum of r rows: at most 8 x 255
   columns.resize(std::size_t(grey.cols));
   std::uint16_t* c = columns.data();
   const float scale = 1.0f / float(r * r);

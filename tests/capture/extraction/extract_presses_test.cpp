@@ -63,34 +63,6 @@ TEST_F(Extract, AFolderOfMaterialFoldersGivesStablePressNumbers) {
   for (const auto& p : r.presses) EXPECT_TRUE(fs::exists(dir_.path() / p.contact_sheet)) << p.contact_sheet;
 }
 
-// Sources are analysed several at a time (and the next ones while the last are written), but written
-// in their order: one thread or three, the same presses, numbers and frames.
-TEST_F(Extract, SourcesOnSeveralThreadsGiveTheSameFileAsOneAtATime) {
-  for (int i = 0; i < 5; ++i) video(i % 2 ? "Cork" : "Felt", "press_" + std::to_string(i) + ".mkv", 1 + i % 2, 60 + 5 * i);
-  ExtractOptions one, three;
-  one.threads = 1;
-  three.threads = 3;
-  three.sheets = one.sheets = false;
-  const ExtractResult a = extract_presses({dir_.file("videos")}, out("one.h5"), one);
-  const ExtractResult b = extract_presses({dir_.file("videos")}, out("three.h5"), three);
-  ASSERT_EQ(a.presses.size(), 7u);
-  ASSERT_EQ(b.presses.size(), a.presses.size());
-  EXPECT_EQ(b.frames_scored, a.frames_scored);
-  const h5::File fa = h5::File::open(out("one.h5")), fb = h5::File::open(out("three.h5"));
-  for (std::size_t i = 0; i < a.presses.size(); ++i) {
-    const auto &pa = a.presses[i], &pb = b.presses[i];
-    EXPECT_EQ(pb.source, pa.source);
-    EXPECT_EQ(pb.press, pa.press);
-    EXPECT_EQ(pb.peak_index, pa.peak_index);
-    const auto group = [&](const h5::File& f, const ExtractedPressSummary& p) {
-      return f.root().open_group("materials").open_group(p.material_id).open_group("presses").open_group(std::to_string(p.press));
-    };
-    for (const char* name : {"frames", "peak", "reference"})
-      EXPECT_EQ(group(fb, pb).open_dataset(name).read<std::uint8_t>(), group(fa, pa).open_dataset(name).read<std::uint8_t>())
-          << pa.source << " " << name;
-  }
-}
-
 // Issue 11 point 5: a video cut off in the middle of a press (MJPG: its last frame's JPEG is cut
 // short and would decode, concealed, into a half-grey frame that scores as the strongest contact).
 // No frame that did not decode whole is a peak or kept, and the result counts the lost frames.
@@ -232,6 +204,46 @@ void write_png_sequence(const fs::path& folder, int presses, int frames, const s
     const int level = int(std::lround(scene.depth(std::uint64_t(i)) * FakeScene::kDepthLevels));
     const cv::Mat frame = scene.black(std::uint64_t(i)) ? cv::Mat::zeros(120, 160, CV_8UC3) : scene.image(level, i % 2);
     cv::imwrite((folder / ("frame_" + std::to_string(1000 + i).substr(1) + ext)).string(), frame);
+  }
+}
+
+// Image sequences are analysed several at a time (the next ones while the last are written), but
+// written in their order: one thread or three, the same presses, numbers and frames. A source that
+// fails is reported as one at a time would report it: the first in order.
+TEST_F(Extract, SequencesOnSeveralThreadsGiveTheSameFileAsOneAtATime) {
+  for (int i = 0; i < 5; ++i)
+    write_png_sequence(dir_.path() / "gelsight" / (i % 2 ? "Cork" : "Felt") / ("press_" + std::to_string(i)), 1 + i % 2, 60 + 10 * i);
+  ExtractOptions one, three;
+  one.threads = 1;
+  three.threads = 3;
+  three.sheets = one.sheets = false;
+  const ExtractResult a = extract_presses({dir_.file("gelsight")}, out("one.h5"), one);
+  const ExtractResult b = extract_presses({dir_.file("gelsight")}, out("three.h5"), three);
+  ASSERT_EQ(a.presses.size(), 7u);
+  ASSERT_EQ(b.presses.size(), a.presses.size());
+  EXPECT_EQ(b.frames_scored, a.frames_scored);
+  const h5::File fa = h5::File::open(out("one.h5")), fb = h5::File::open(out("three.h5"));
+  for (std::size_t i = 0; i < a.presses.size(); ++i) {
+    const auto &pa = a.presses[i], &pb = b.presses[i];
+    EXPECT_EQ(pb.source, pa.source);
+    EXPECT_EQ(pb.press, pa.press);
+    EXPECT_EQ(pb.peak_index, pa.peak_index);
+    const auto group = [&](const h5::File& f, const ExtractedPressSummary& p) {
+      return f.root().open_group("materials").open_group(p.material_id).open_group("presses").open_group(std::to_string(p.press));
+    };
+    for (const char* name : {"frames", "peak", "reference"})
+      EXPECT_EQ(group(fb, pb).open_dataset(name).read<std::uint8_t>(), group(fa, pa).open_dataset(name).read<std::uint8_t>())
+          << pa.source << " " << name;
+  }
+  // Two unreadable frames in two sequences of one chunk: the error names the first in order.
+  std::ofstream(dir_.file("gelsight/Cork/press_1/frame_010.png")) << "not an image";
+  std::ofstream(dir_.file("gelsight/Cork/press_3/frame_010.png")) << "not an image";
+  three.overwrite = true;
+  try {
+    extract_presses({dir_.file("gelsight")}, out("three.h5"), three);
+    FAIL() << "unreadable frames were accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("press_1/frame_010.png"), std::string::npos) << e.what();
   }
 }
 

@@ -26,7 +26,7 @@ TEST(ScoringImage, AveragesTwoFourOrEightPixelBlocksLeavingAtLeast160Columns) {
 // Every block, for blocks of 2, 4 and 8 and widths whose block count is no multiple of 4 (the SIMD
 // path's tail): exactly the mean of OpenCV's grey image over the block.
 TEST(ScoringImage, IsTheBlockMeanOfTheGreyImage) {
-  for (const cv::Size size : {cv::Size(320, 240), cv::Size(968, 720), cv::Size(1288, 968), cv::Size(3280, 2464)}) {
+  for (const cv::Size size : {cv::Size(320, 240), cv::Size(332, 240), cv::Size(968, 720), cv::Size(1288, 968), cv::Size(3280, 2464)}) {
     cv::Mat frame(size, CV_8UC3);
     cv::randu(frame, 0, 256);
     const cv::Mat small = scoring_image(frame);
