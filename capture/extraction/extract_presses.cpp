@@ -120,7 +120,6 @@ class Extraction {
     return result_;
   }
 
-
  private:
   std::string no_press_message() const {
     std::string m = "no press found in " + std::to_string(result_.sources) + " input(s); nothing was written.";

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
-#include <cmath>
 #include <opencv2/imgproc.hpp>
 
 #ifdef __SSE2__
