@@ -170,7 +170,7 @@ PY
 # on disk; then a fresh configure and build of this tree with make build's settings, its warnings counted.
 demo_dir=$(mktemp -d)
 fresh=$(mktemp -d)
-trap 'rm -rf "$demo_dir" "$fresh"' EXIT
+trap 'rm -rf "$demo_dir" "$fresh"' EXIT  # on success too
 make -C "$repo" --no-print-directory build BUILD="$build" >/dev/null
 start=$(date +%s.%N)
 make -C "$repo" --no-print-directory demo BUILD="$build" DEMO="$demo_dir/demo" > "$out/demo.log" 2>&1 \
@@ -178,7 +178,6 @@ make -C "$repo" --no-print-directory demo BUILD="$build" DEMO="$demo_dir/demo" >
 end=$(date +%s.%N)
 bytes=$(du -sb "$demo_dir/demo" | cut -f1)
 du -sb "$demo_dir"/demo/* | sort -rn | head -5 | sed "s|$demo_dir/demo/||" > "$out/demo_sizes.txt"
-rm -rf "$demo_dir"
 seconds=$(/usr/bin/python3 -c "print(round($end - $start, 1))")
 echo "{\"seconds\": $seconds, \"bytes\": $bytes}" > "$out/demo.json"
 echo "make demo after the build: $seconds s, $((bytes / 1000000)) MB on disk; largest:"
@@ -189,7 +188,6 @@ start=$(date +%s.%N)
 { cmake -S "$repo" -B "$fresh" -DCMAKE_BUILD_TYPE=Release && cmake --build "$fresh" -j "$jobs"; } > "$out/build.log" 2>&1 \
   || { echo "the fresh build failed: see $out/build.log" >&2; exit 1; }
 end=$(date +%s.%N)
-rm -rf "$fresh"
 warnings=$(grep -c "warning:" "$out/build.log" || true)
 seconds=$(/usr/bin/python3 -c "print(round($end - $start, 1))")
 echo "{\"seconds\": $seconds, \"jobs\": $jobs, \"warnings\": $warnings}" > "$out/build.json"

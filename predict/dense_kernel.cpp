@@ -115,19 +115,18 @@ void dense_column(const Eigen::Ref<const Eigen::MatrixXf>& weight, const Eigen::
     throw failure("dense layer: " + std::to_string(weight.rows()) + " x " + std::to_string(weight.cols()) + " weights, " +
                   std::to_string(in.size()) + " inputs, " + std::to_string(bias.size()) + " biases");
   out.resize(weight.rows());  // nothing to do, and no allocation, when it has the size already
-  if (!dense_kernel_uses_avx2()) {
+  if (dense_kernel_uses_avx2()) {
+    gemv_avx2(weight.data(), weight.outerStride(), weight.rows(), weight.cols(), in.data(), bias.data(), out.data());
+  } else {
     out.noalias() = weight * in;
     out += bias;
-    activate(activation, out);
-    return;
   }
-  gemv_avx2(weight.data(), weight.outerStride(), weight.rows(), weight.cols(), in.data(), bias.data(), out.data());
-  if (activation == Activation::softplus) softplus(out);
-  else activate(activation, out);
+  activate_fast(activation, out);
 }
 
-void softplus(Eigen::Ref<Eigen::MatrixXf> values) {
-  if (!dense_kernel_uses_avx2() || values.outerStride() != values.rows()) return activate(Activation::softplus, values);
+void activate_fast(Activation activation, Eigen::Ref<Eigen::MatrixXf> values) {
+  if (activation != Activation::softplus || !dense_kernel_uses_avx2() || values.outerStride() != values.rows())
+    return activate(activation, values);
   softplus_avx2(values.data(), long(values.size()));
 }
 

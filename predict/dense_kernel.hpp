@@ -15,10 +15,10 @@ namespace haptex::predict {
 void dense_column(const Eigen::Ref<const Eigen::MatrixXf>& weight, const Eigen::VectorXf& in, const Eigen::VectorXf& bias,
                   Activation activation, Eigen::VectorXf& out);
 
-// activate(Activation::softplus, values), with an AVX2 kernel where there is one: within 3e-7 relative
+// activate(activation, values), softplus with an AVX2 kernel where there is one: within 3e-7 relative
 // of max(z, 0) + log1p(e^-|z|) in double (tests/predict/dense_kernel_test.cpp), so a prediction
 // differs between CPUs with and without AVX2 by a few units in the last place.
-void softplus(Eigen::Ref<Eigen::MatrixXf> values);
+void activate_fast(Activation activation, Eigen::Ref<Eigen::MatrixXf> values);
 
 // Whether dense_column uses the AVX2 and FMA kernel on this CPU.
 bool dense_kernel_uses_avx2();

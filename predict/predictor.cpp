@@ -13,7 +13,6 @@ void apply(const DenseLayer& l, const Eigen::VectorXf& in, Eigen::VectorXf& out)
 }
 
 }  // namespace
-
 Predictor::Predictor(const Model& model) : model_(model), action_(kActionValues) {
   std::size_t widest = 0;
   for (const SpectrumNet& net : model.nets) widest = std::max(widest, net.action.layers.size() + net.predictor.layers.size());
@@ -114,8 +113,7 @@ Eigen::MatrixXf Predictor::predict_batch(const TextureCode& code, const Eigen::M
   const Activation output = tail.layers.back().activation;
   tail.layers.back().activation = Activation::linear;
   forward(tail, action.out.back(), spectrum);
-  if (output == Activation::softplus) softplus(spectrum.out.back());
-  else activate(output, spectrum.out.back());
+  activate_fast(output, spectrum.out.back());
   return model_.normalisation.target_scale.asDiagonal() * spectrum.out.back();
 }
 

@@ -91,6 +91,7 @@ namespace {
 
 // The residual of one pixel under the fit c, with the row's share of it (c0 + c3 y) taken out once.
 struct Fit {
+  Fit(const cv::Vec4d& c, float y) : row(float(c[0] + c[3] * y)), gain(float(c[1])), tilt(float(c[2])) {}
   float row, gain, tilt;  // c0 + c3 y_j, c1, c2
   float residual(float d, float g, float x) const { return d - row - gain * g - tilt * x; }
 };
@@ -194,7 +195,7 @@ DriftFit::Sums DriftFit::outliers(const cv::Mat& image, const cv::Mat& reference
   const float *x = x_.data(), limit = float(cut);
   for (int j = 0; j < image.rows; ++j) {
     const float *f = image.ptr<float>(j), *ref = reference.ptr<float>(j), *g = centred_.ptr<float>(j);
-    const Fit fit{float(c[0] + c[3] * y_[std::size_t(j)]), float(c[1]), float(c[2])};
+    const Fit fit(c, y_[std::size_t(j)]);
     const auto [n, sg, sx, sgg, sgx, sxx, sd, sgd, sxd] = outlier_row_sums(f, ref, g, x, image.cols, fit, limit);
     const double y = y_[std::size_t(j)];
     const double row[4][4] = {{n, sg, sx, y * n}, {0, sgg, sgx, y * sg}, {0, 0, sxx, y * sx}, {0, 0, 0, y * y * n}};
@@ -238,7 +239,7 @@ double DriftFit::median_abs_residual(const cv::Mat& image, const cv::Mat& refere
   v.clear();
   for (std::size_t k = 0; k < n; k += stride) {
     const std::size_t i = k % w, j = k / w;
-    const Fit fit{float(c[0] + c[3] * y_[j]), float(c[1]), float(c[2])};
+    const Fit fit(c, y_[j]);
     v.push_back(std::abs(fit.residual(f[k] - ref[k], g[k], x_[i])));
   }
   return middle_of_nonnegative(v);
@@ -260,7 +261,7 @@ float DriftFit::score(const cv::Mat& image, const cv::Mat& reference, float pixe
   double total = 0;
   for (int j = 0; j < image.rows; ++j) {
     const float *f = image.ptr<float>(j), *ref = reference.ptr<float>(j), *g = centred_.ptr<float>(j);
-    const Fit fit{float(c[0] + c[3] * y_[std::size_t(j)]), float(c[1]), float(c[2])};
+    const Fit fit(c, y_[std::size_t(j)]);
     float row = 0;
 #pragma omp simd reduction(+ : row)
     for (int i = 0; i < image.cols; ++i) row += std::max(0.0f, std::abs(fit.residual(f[i] - ref[i], g[i], x[i])) - t);
