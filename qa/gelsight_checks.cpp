@@ -155,8 +155,10 @@ CheckResult check_gelsight_blur(const std::vector<Press>& presses, const NoConta
   double worst = INFINITY;
   for_each_image(presses, tally, [&](const Press::Image& image) {
     const auto baseline = baselines.sharpness.find(key_of(image.size));
-    if (baseline == baselines.sharpness.end() || baseline->second <= 0)
-      return tally.skip(image.where + ": no textured reference of its size");
+    if (baseline == baselines.sharpness.end()) return tally.skip(image.where + ": no reference of its size");
+    if (baseline->second < kBlurMinReferenceSharpness)
+      return tally.skip(image.where + ": the references of its size are too smooth to judge focus against (Laplacian variance " +
+                        number(baseline->second) + ", under " + number(kBlurMinReferenceSharpness) + ")");
     worst = std::min(worst, image.sharpness / baseline->second);
     if (image.sharpness < kBlurMinRatio * baseline->second)
       tally.fail(image.where, "variance of the Laplacian " + number(image.sharpness) + ", under " + number(kBlurMinRatio) +

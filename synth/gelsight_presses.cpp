@@ -33,7 +33,7 @@ PressPlan plan_press(std::uint64_t material_seed, int press, double period_mm, c
 PressSidecar write_press(const GelSightRenderer& renderer, const PressPlan& plan, const std::string& directory,
                          const std::string& material, const std::string& source) {
   const PressTimeline& timeline = plan.timeline;
-  PressVideoWriter writer(directory, plan.press);
+  PressVideoWriter writer(directory, plan.press, timeline.fps);
   const cv::Mat surface = renderer.surface_under(plan.pose);
   cv::Mat shaded;
   double shaded_depth = -1;

@@ -99,7 +99,7 @@ std::vector<PressSidecar> write_photo_presses(const std::string& image_path, con
     crop = with_relief_contrast(in_gel_range(crop));
     const PressTimeline timeline = make_press_timeline(derive_seed(seed, 0x9407, std::uint64_t(j)), options.timeline);
     const std::uint64_t noise_seed = derive_seed(seed, 0x4015e, std::uint64_t(j));
-    PressVideoWriter writer(out_directory, j);
+    PressVideoWriter writer(out_directory, j, timeline.fps);
     for (int f = 0; f < timeline.frames(); ++f) {
       const double weight = timeline.depth_mm[std::size_t(f)] / timeline.peak_depth_mm();
       writer.add(camera.expose(blend(flat, crop, weight), timeline.exposure_gain[std::size_t(f)],

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <utility>
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
@@ -23,19 +23,9 @@ namespace {
 
 constexpr const char* kSchema = "press-sidecar.schema.json";
 
-std::string frame_name(int index) {
-  return text::format("frame_%04d.png", index);
-}
-
-// OpenCV's default PNG settings are its fast path (SUB filter, zlib level 1); Huffman-only coding
-// is faster still and smaller on sensor noise, which LZ77 matching cannot exploit. Setting
-// IMWRITE_PNG_COMPRESSION instead would switch libpng to trying every filter: twice as slow.
-std::vector<unsigned char> encode_png(const cv::Mat& frame) {
-  std::vector<unsigned char> png;
-  if (!cv::imencode(".png", frame, png, {cv::IMWRITE_PNG_STRATEGY, cv::IMWRITE_PNG_STRATEGY_HUFFMAN_ONLY}))
-    throw failure("cannot encode a press frame as PNG");
-  return png;
-}
+// The press as an MJPG AVI, OpenCV's own muxer (no timestamps or random IDs: a seed gives the same
+// bytes), JPEG quality 95: a tenth of a PNG sequence's size, and what a real sensor sends.
+constexpr int kJpegQuality = 95;
 
 void write_file(const std::string& path, const void* data, std::size_t size) {
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
@@ -87,16 +77,19 @@ void validate(const PressSidecar& s, const std::string& path) {
 
 std::string press_name(int press) { return "press_" + std::to_string(press); }
 
-std::string press_frame_pattern(const std::string& directory, int press) {
-  return (fs::path(directory) / press_name(press) / "frame_%04d.png").string();
+std::string press_video_path(const std::string& directory, int press) {
+  return (fs::path(directory) / (press_name(press) + ".avi")).string();
 }
 
 std::string press_sidecar_path(const std::string& directory, int press) {
   return (fs::path(directory) / (press_name(press) + ".json")).string();
 }
 
-PressVideoWriter::PressVideoWriter(const std::string& directory, int press)
-    : directory_(directory), press_(press), partial_dir_((fs::path(directory) / (press_name(press) + ".partial")).string()) {
+PressVideoWriter::PressVideoWriter(const std::string& directory, int press, double fps)
+    : directory_(directory),
+      press_(press),
+      fps_(fps),
+      partial_video_((fs::path(directory) / (press_name(press) + ".partial.avi")).string()) {
   if (press < 0) throw failure("PressVideoWriter: the press index must be >= 0");
   std::error_code ec;
   fs::create_directories(directory, ec);
@@ -104,30 +97,36 @@ PressVideoWriter::PressVideoWriter(const std::string& directory, int press)
   const std::string sidecar = press_sidecar_path(directory, press);
   check_output_path(sidecar, true);
   sidecar_ = std::make_unique<PartialFile>(sidecar);  // locked from here on
-  fs::remove_all(partial_dir_, ec);                   // the leftovers of a killed run
-  if (!fs::create_directory(partial_dir_, ec))
-    throw input_error(partial_dir_, "", "cannot create the frame directory: " + ec.message(), "Choose another -o");
+  fs::remove(partial_video_, ec);                     // the leftover of a killed run
 }
 
 PressVideoWriter::~PressVideoWriter() {
   if (finished_) return;
+  video_.reset();
   std::error_code ignored;
-  fs::remove_all(partial_dir_, ignored);
+  fs::remove(partial_video_, ignored);
 }
 
 void PressVideoWriter::add(const cv::Mat& frame) {
   if (finished_) throw failure("PressVideoWriter::add: the press is already finished");
   if (frame.type() != CV_8UC3 || frame.empty()) throw failure("PressVideoWriter::add: frames must be CV_8UC3");
-  if (frames_ == 0) size_ = frame.size();
+  if (frames_ == 0) {
+    size_ = frame.size();
+    video_ = std::make_unique<cv::VideoWriter>(partial_video_, cv::CAP_OPENCV_MJPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
+                                               fps_, size_);
+    if (!video_->isOpened()) throw failure(partial_video_ + ": OpenCV cannot write an MJPG video here");
+    video_->set(cv::VIDEOWRITER_PROP_QUALITY, kJpegQuality);
+  }
   if (frame.size() != size_) throw failure("PressVideoWriter::add: every frame of a press must have the same size");
-  const std::vector<unsigned char> png = encode_png(frame);
-  write_file((fs::path(partial_dir_) / frame_name(frames_)).string(), png.data(), png.size());
+  video_->write(frame);
   ++frames_;
 }
 
 PressSidecar PressVideoWriter::finish(PressSidecar sidecar) {
   if (finished_) throw failure("PressVideoWriter::finish: the press is already finished");
   if (sidecar.press != press_) throw failure("PressVideoWriter::finish: the sidecar is for another press");
+  if (sidecar.fps != fps_) throw failure("PressVideoWriter::finish: the sidecar's fps is not the video's");
+  if (frames_ == 0) throw failure("PressVideoWriter::finish: a press needs at least one frame");
   sidecar.frames = frames_;
   sidecar.width = size_.width;
   sidecar.height = size_.height;
@@ -137,27 +136,29 @@ PressSidecar PressVideoWriter::finish(PressSidecar sidecar) {
   const std::string text = to_json(sidecar).dump(2) + "\n";
   write_file(sidecar_->path(), text.data(), text.size());
 
-  // Frames on disk before the directory gets its final name; an older press goes, sidecar first.
-  for (int i = 0; i < frames_; ++i) fsync_path((fs::path(partial_dir_) / frame_name(i)).string(), O_RDONLY);
-  fsync_path(partial_dir_, O_RDONLY | O_DIRECTORY);
-  const std::string final_dir = (fs::path(directory_) / press_name(press_)).string();
+  // The video on disk before it gets its final name; an older press goes, sidecar first (a folder of
+  // PNG frames, as haptex wrote presses until this round, too).
+  video_->release();
+  fsync_path(partial_video_, O_RDONLY);
+  const std::string final_video = press_video_path(directory_, press_);
   std::error_code ec;
   fs::remove(sidecar_path, ec);
-  fs::remove_all(final_dir, ec);
-  fs::rename(partial_dir_, final_dir, ec);
-  if (ec) throw failure(partial_dir_ + ": cannot rename to " + final_dir + ": " + ec.message());
+  fs::remove_all(fs::path(directory_) / press_name(press_), ec);
+  fs::rename(partial_video_, final_video, ec);
+  if (ec) throw failure(partial_video_ + ": cannot rename to " + final_video + ": " + ec.message());
+  fsync_path(directory_, O_RDONLY | O_DIRECTORY);
   finished_ = true;
   try {
     sidecar_->commit();
-  } catch (...) {  // frames without their sidecar would be a press of unknown truth
-    fs::remove_all(final_dir, ec);
+  } catch (...) {  // a video without its sidecar would be a press of unknown truth
+    fs::remove(final_video, ec);
     throw;
   }
   return sidecar;
 }
 
 PressSidecar write_press_video(const std::string& directory, const std::vector<cv::Mat>& frames, PressSidecar sidecar) {
-  PressVideoWriter writer(directory, sidecar.press);
+  PressVideoWriter writer(directory, sidecar.press, sidecar.fps);
   for (const cv::Mat& frame : frames) writer.add(frame);
   return writer.finish(std::move(sidecar));
 }

@@ -1,10 +1,10 @@
 #pragma once
-// One press video on disk, in a form OpenCV's cv::VideoCapture opens: a lossless PNG sequence
-// DIR/press_<j>/frame_0000.png, frame_0001.png, ... (pattern DIR/press_<j>/frame_%04d.png) plus the
-// sidecar DIR/press_<j>.json (schemas/press-sidecar.schema.json) with the press's ground truth.
-// PNG rather than FFV1 in Matroska: the Matroska muxer writes random UIDs and a date, and a seed must
-// give byte-identical files. Writes are atomic: frames go to press_<j>.partial/, which is renamed when
-// complete; the sidecar comes last, so its presence means the video is whole.
+// One press video on disk, as a GelSight sensor sends it: DIR/press_<j>.avi, MJPG in an AVI written by
+// OpenCV's own muxer (JPEG quality 95), plus the sidecar DIR/press_<j>.json
+// (schemas/press-sidecar.schema.json) with the press's ground truth. OpenCV's muxer writes no date or
+// random ID (Matroska's does), so a seed gives byte-identical files. Writes are atomic: the video goes
+// to press_<j>.partial.avi, renamed when complete; the sidecar comes last, so its presence means the
+// video is whole.
 #include <array>
 #include <memory>
 #include <optional>
@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <opencv2/core.hpp>
+#include <opencv2/videoio.hpp>
 
 namespace haptex {
 class PartialFile;
@@ -33,30 +34,33 @@ struct PressSidecar {
 };
 
 std::string press_name(int press);                                       // "press_3"
-std::string press_frame_pattern(const std::string& directory, int press);  // for cv::VideoCapture
+std::string press_video_path(const std::string& directory, int press);  // DIR/press_<j>.avi
 std::string press_sidecar_path(const std::string& directory, int press);
 
 class PressVideoWriter {
  public:
-  // Starts press_<j> in `directory` (created if missing). Throws haptex::Error (bad_input) when the
-  // directory cannot be written or another haptex run is writing this press.
-  PressVideoWriter(const std::string& directory, int press);
+  // Starts press_<j> in `directory` (created if missing) at `fps` frames a second. Throws
+  // haptex::Error (bad_input) when the directory cannot be written or another haptex run is writing
+  // this press.
+  PressVideoWriter(const std::string& directory, int press, double fps);
   ~PressVideoWriter();  // an unfinished press leaves nothing behind
   PressVideoWriter(const PressVideoWriter&) = delete;
   PressVideoWriter& operator=(const PressVideoWriter&) = delete;
 
   // Appends a frame: CV_8UC3 (OpenCV's BGR order), every frame the same size.
   void add(const cv::Mat& frame);
-  // Completes the press: sidecar.press must be this press; frames, width and height are filled in.
-  // The sidecar is checked (schema, and contact_first <= peak_frame <= contact_last < frames), the
-  // frame directory replaces any older press_<j>/, then the sidecar is written. Returns what was written.
+  // Completes the press: sidecar.press and sidecar.fps must be this press's; frames, width and height
+  // are filled in. The sidecar is checked (schema, and contact_first <= peak_frame <= contact_last <
+  // frames), the video replaces any older press_<j>, then the sidecar is written. Returns what was written.
   PressSidecar finish(PressSidecar sidecar);
 
  private:
   std::string directory_;
   int press_;
+  double fps_;
   std::unique_ptr<PartialFile> sidecar_;  // press_<j>.json.partial: also the lock against a second run
-  std::string partial_dir_;               // press_<j>.partial/
+  std::string partial_video_;             // press_<j>.partial.avi
+  std::unique_ptr<cv::VideoWriter> video_;
   int frames_ = 0;
   cv::Size size_;
   bool finished_ = false;

@@ -115,7 +115,7 @@ TEST_F(ExtractCli, FindsThePeaksOfSynthPressVideos) {
   ASSERT_EQ(doc["presses"].size(), 2u) << r.out;
   for (const auto& p : doc["presses"]) {
     const fs::path press = fs::path(p["source"].get<std::string>());
-    const nlohmann::json truth = nlohmann::json::parse(std::ifstream(press.string() + ".json"));
+    const nlohmann::json truth = nlohmann::json::parse(std::ifstream(fs::path(press).replace_extension(".json")));
     EXPECT_EQ(p["press_in_source"], 0);
     EXPECT_EQ(p["material"], truth["material"]);
     // Within 4 frames: the faint presses of a polished surface, as broad as the gel, share part of

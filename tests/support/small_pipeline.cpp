@@ -20,6 +20,7 @@
 #include "core/sha256.hpp"
 #include "tests/support/mutations.hpp"
 #include "tests/support/run_haptex.hpp"
+#include "tests/synth/press_frames.hpp"
 
 namespace haptex::test {
 namespace fs = std::filesystem;
@@ -34,23 +35,19 @@ void run_or_fail(const std::vector<std::string>& args) {
   }
 }
 
-// What capture extract does with one press video (capture/extraction/peak_frames.hpp), for synth's PNG sequence
-// press_<j>/frame_%04d.png: reference = mean of the 10 leading no-contact frames, contact score of
+// What capture extract does with one press video (capture/extraction/peak_frames.hpp), for synth's MJPG
+// press_<j>.avi: reference = mean of the 10 leading no-contact frames, contact score of
 // every frame, the peak and the 12 highest-scoring consecutive frames around it. The pixel threshold
 // is 4 x the frames' noise without capture's 6-grey-level floor, which is meant for full-size frames:
 // 160 x 120 frames are not averaged down before scoring.
-capture::GelsightPress press_from_frames(const fs::path& folder) {
-  std::vector<fs::path> files;
-  for (const auto& f : fs::directory_iterator(folder))
-    if (f.path().extension() == ".png") files.push_back(f.path());
-  std::sort(files.begin(), files.end());
+capture::GelsightPress press_from_video(const fs::path& video) {
   std::vector<cv::Mat> frames, scoring;
-  for (const auto& f : files) {
-    frames.push_back(cv::imread(f.string(), cv::IMREAD_COLOR));
-    scoring.push_back(capture::scoring_image(frames.back()));
+  for (cv::Mat& frame : read_press_frames(video.string())) {
+    frames.push_back(frame);
+    scoring.push_back(capture::scoring_image(frame));
   }
   constexpr int kReferenceFrames = 10, kKept = 12;
-  if (frames.size() < std::size_t(kReferenceFrames + kKept)) throw std::runtime_error(folder.string() + ": too few frames");
+  if (frames.size() < std::size_t(kReferenceFrames + kKept)) throw std::runtime_error(video.string() + ": too few frames");
   capture::ScoreSettings settings;
   settings.pixel_threshold = 0.0f;
   const auto contact = capture::ContactReference::from_frames(
@@ -63,8 +60,8 @@ capture::GelsightPress press_from_frames(const fs::path& folder) {
   const auto peak = std::size_t(std::max_element(p.contrast.begin(), p.contrast.end()) - p.contrast.begin());
   const std::size_t first = std::min(frames.size() - kKept, peak > kKept / 2 ? peak - kKept / 2 : 0);
   for (std::size_t i = first; i < first + kKept; ++i) p.frames.push_back(frames[i]), p.frame_indices.push_back(std::int64_t(i));
-  p.source_file = folder.string();
-  p.source_sha256 = sha256_file(files.front().string());
+  p.source_file = video.string();
+  p.source_sha256 = sha256_file(video.string());
   p.frame_start = 0;
   p.frame_end = std::int64_t(frames.size()) - 1;
   p.peak_index = std::int64_t(peak);
@@ -83,7 +80,7 @@ capture::GelsightPress press_from_frames(const fs::path& folder) {
   return p;
 }
 
-// Every material folder's press folders, in press order, into a gelsight file.
+// Every material folder's press videos, in press order, into a gelsight file.
 void write_gelsight(const fs::path& synth_gelsight, const std::string& output) {
   capture::GelsightWriter writer(output, false, "test fixture: synth press frames scored as capture extract does");
   std::vector<fs::path> materials;
@@ -91,8 +88,8 @@ void write_gelsight(const fs::path& synth_gelsight, const std::string& output) {
     if (m.is_directory()) materials.push_back(m.path());
   std::sort(materials.begin(), materials.end());
   for (const auto& material : materials)
-    for (int j = 0; fs::is_directory(material / ("press_" + std::to_string(j))); ++j)
-      writer.add_press(material.filename().string(), press_from_frames(material / ("press_" + std::to_string(j))));
+    for (int j = 0; fs::exists(material / ("press_" + std::to_string(j) + ".avi")); ++j)
+      writer.add_press(material.filename().string(), press_from_video(material / ("press_" + std::to_string(j) + ".avi")));
   writer.commit();
 }
 

@@ -13,8 +13,8 @@
 namespace haptex::test {
 
 // All frames of a press video, as many as OpenCV counts in it (empty when it cannot open it).
-inline std::vector<cv::Mat> read_press_frames(const std::string& pattern) {
-  cv::VideoCapture capture(pattern, cv::CAP_IMAGES);
+inline std::vector<cv::Mat> read_press_frames(const std::string& path) {
+  cv::VideoCapture capture(path);
   std::vector<cv::Mat> frames;
   if (!capture.isOpened()) return frames;
   const int count = int(capture.get(cv::CAP_PROP_FRAME_COUNT));

@@ -57,7 +57,7 @@ TEST(PhotoPress, FiveCropsAtSeparatePlacesBecomePressVideos) {
     EXPECT_EQ(h, 480);
     corners.insert({x, y});
 
-    const auto frames = test::read_press_frames(press_frame_pattern(out, s.press));
+    const auto frames = test::read_press_frames(press_video_path(out, s.press));
     ASSERT_EQ(int(frames.size()), s.frames);
     EXPECT_EQ(frames[0].size(), cv::Size(640, 480));
     EXPECT_EQ(s.width, 640);
@@ -87,7 +87,7 @@ TEST(PhotoPress, DeterministicForASeed) {
   write_photo_presses(photo_path, dir.file("a"), "Test Weave", 4, "haptex synth hatt", small);
   write_photo_presses(photo_path, dir.file("b"), "Test Weave", 4, "haptex synth hatt", small);
   const auto a = test::tree_contents(dir.file("a"));
-  ASSERT_GT(a.size(), 60u);
+  ASSERT_EQ(a.size(), 4u);  // two press videos and their sidecars
   EXPECT_TRUE(a == test::tree_contents(dir.file("b")));
 }
 
@@ -128,7 +128,7 @@ TEST(PhotoPress, RealHattPhotograph) {
   PhotoPressOptions one;
   one.presses = 1;
   const PressSidecar s = write_photo_presses(photo_path, dir.path().string(), "Book", 1, "test", one)[0];
-  const auto frames = test::read_press_frames(press_frame_pattern(dir.path().string(), 0));
+  const auto frames = test::read_press_frames(press_video_path(dir.path().string(), 0));
   ASSERT_EQ(int(frames.size()), s.frames);
   EXPECT_EQ(frames[0].size(), cv::Size(640, 480));
   EXPECT_EQ(test::frame_most_unlike_first(frames), s.peak_frame);
