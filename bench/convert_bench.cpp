@@ -1,4 +1,5 @@
-// XML -> HDF5 conversion of one 10 s HaTT-format recording on one core: parsing alone, and the
+// XML -> HDF5 conversion of one 10 s HaTT-format recording on one core: parsing alone (plain and
+// gzip-compressed), and the
 // whole `haptex convert hatt` path (parse, DFT321, low-pass filters, compressed HDF5, fsync, rename).
 // `bench_convert --export-xml FILE` writes the recording for bench/elementtree_parse.py, the peer.
 #include <benchmark/benchmark.h>
@@ -15,12 +16,13 @@ namespace {
 
 struct Fixture {
   haptex::test::TempDir dir;
-  std::string xml = dir.file("recording.xml");
+  std::string xml = dir.file("recording.xml"), gz = dir.file("recording.xml.gz");
   std::uintmax_t bytes = 0;
   Fixture() {
     haptex::test::SampleRecordingSpec spec;
     spec.seconds = 10;
     haptex::test::write_text_file(xml, haptex::test::sample_recording_xml(spec));
+    haptex::test::write_recording_text(gz, haptex::test::sample_recording_xml(spec));
     bytes = std::filesystem::file_size(xml);
   }
 };
@@ -40,6 +42,17 @@ void BM_ParseHattXml_10s(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kSamples);
 }
 BENCHMARK(BM_ParseHattXml_10s)->Unit(benchmark::kMillisecond);
+
+// The same recording gzip-compressed, as haptex synth writes it: decompression on top of parsing
+// (bytes counted as the plain XML's, so the rates compare).
+void BM_ParseHattXmlGz_10s(benchmark::State& state) {
+  const auto map = haptex::convert::default_field_map();
+  const std::string gz = fixture().gz;
+  for (auto _ : state) benchmark::DoNotOptimize(haptex::convert::read_hatt_recording_xml(gz, map));
+  state.SetBytesProcessed(state.iterations() * std::int64_t(fixture().bytes));
+  state.SetItemsProcessed(state.iterations() * kSamples);
+}
+BENCHMARK(BM_ParseHattXmlGz_10s)->Unit(benchmark::kMillisecond);
 
 void BM_Sha256_10sXml(benchmark::State& state) {
   const std::string xml = fixture().xml;

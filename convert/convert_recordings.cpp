@@ -28,10 +28,13 @@ std::string lower_extension(const fs::path& path) {
   return ext;
 }
 
-bool is_recording_file(const fs::path& path) {
+// .xml, .xml.gz (read_input_file decompresses it) or .csv.
+bool is_xml_file(const fs::path& path) {
   const std::string ext = lower_extension(path);
-  return ext == ".xml" || ext == ".csv";
+  return ext == ".xml" || (ext == ".gz" && lower_extension(path.stem()) == ".xml");
 }
+
+bool is_recording_file(const fs::path& path) { return is_xml_file(path) || lower_extension(path) == ".csv"; }
 
 }  // namespace
 
@@ -54,7 +57,7 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
       }
       if (ec) throw input_error(listing.string(), "", "cannot list the folder (" + ec.message() + ")", "Check its permissions");
       if (found.empty())
-        throw input_error(input, "", "the directory holds no .xml or .csv recordings", "Point at the recordings' folder");
+        throw input_error(input, "", "the directory holds no .xml, .xml.gz or .csv recordings", "Point at the recordings' folder");
       std::sort(found.begin(), found.end());
       for (const auto& file : found) add(file);
     } else if (fs::is_regular_file(input, ec)) {

@@ -4,6 +4,7 @@
 
 #include "convert/input_limits.hpp"
 #include "convert/xml_file.hpp"
+#include "core/sha256.hpp"
 
 namespace haptex::convert {
 namespace {
@@ -115,11 +116,12 @@ ar::ModelSet read_model_set(const XmlFile& r) {
 }  // namespace
 
 ar::ModelSet parse_hatt_model(std::string_view xml, const std::string& source) {
-  return read_model_set(XmlFile(source, std::vector<char>(xml.begin(), xml.end())));
+  return read_model_set(XmlFile(source, std::vector<char>(xml.begin(), xml.end()), sha256_hex(xml)));
 }
 
 ar::ModelSet read_hatt_model(const std::filesystem::path& file) {
-  return read_model_set(XmlFile(file.string(), read_whole_file(file.string(), kDefaultMaxBytes)));
+  InputFile in = read_input_file(file.string(), kDefaultMaxBytes);
+  return read_model_set(XmlFile(file.string(), std::move(in.contents), std::move(in.sha256)));
 }
 
 ar::PiecewiseArModel load_hatt_model(const std::filesystem::path& file) {

@@ -1,6 +1,7 @@
 #include "convert/hatt_recording_reader.hpp"
 
 #include "core/text/parse_number.hpp"
+#include "convert/input_limits.hpp"
 #include "convert/recording_checks.hpp"
 #include "convert/resampling.hpp"
 #include "convert/xml_file.hpp"
@@ -29,7 +30,8 @@ void read_identity(const XmlFile& xml, const pugi::xml_node& root, const FieldMa
 }  // namespace
 
 Recording read_hatt_recording_xml(const std::string& path, const FieldMap& map, std::uintmax_t max_bytes) {
-  const XmlFile xml(path, read_whole_file(path, max_bytes));
+  InputFile file = read_input_file(path, max_bytes);
+  const XmlFile xml(path, std::move(file.contents), std::move(file.sha256));
   const pugi::xml_node root = xml.root();
   if (map.root != root.name())
     throw xml.error(root, "the document element is <" + std::string(root.name()) + ">, not <" + map.root + ">",

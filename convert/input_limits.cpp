@@ -4,6 +4,8 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "core/gzip.hpp"
+#include "core/sha256.hpp"
 
 namespace haptex::convert {
 
@@ -20,6 +22,13 @@ std::vector<char> read_whole_file(const std::string& path, std::uintmax_t max_by
   if (!in.read(buffer.data(), static_cast<std::streamsize>(size)))
     throw input_error(path, "", "the file could not be read completely", "Check the disk and permissions");
   return buffer;
+}
+
+InputFile read_input_file(const std::string& path, std::uintmax_t max_bytes) {
+  std::vector<char> bytes = read_whole_file(path, max_bytes);
+  std::string sha = sha256_hex(bytes);
+  if (!gzip::is_gzip(bytes)) return {std::move(bytes), std::move(sha)};
+  return {gzip::decompress(bytes, max_bytes, path), std::move(sha)};
 }
 
 }  // namespace haptex::convert

@@ -12,4 +12,13 @@ inline constexpr std::uintmax_t kDefaultMaxBytes = std::uintmax_t(1) << 30;  // 
 // a file over max_bytes, naming the limit and --max-bytes.
 std::vector<char> read_whole_file(const std::string& path, std::uintmax_t max_bytes);
 
+// A file that may be gzip-compressed (known by its magic number, whatever its name): its contents,
+// decompressed when compressed (no more than max_bytes of them either), and the SHA-256 of the file
+// as it is on disk, which is what provenance names.
+struct InputFile {
+  std::vector<char> contents;
+  std::string sha256;
+};
+InputFile read_input_file(const std::string& path, std::uintmax_t max_bytes);
+
 }  // namespace haptex::convert

@@ -7,14 +7,13 @@
 
 #include "core/text/parse_number.hpp"
 #include "convert/recording_checks.hpp"
-#include "core/sha256.hpp"
 
 namespace haptex::convert {
 
 using text::describe_bad_number, text::parse_number, text::trim;
 
-XmlFile::XmlFile(std::string source, std::vector<char> bytes) : source_(std::move(source)), bytes_(std::move(bytes)) {
-  sha256_ = sha256_hex(bytes_);
+XmlFile::XmlFile(std::string source, std::vector<char> bytes, std::string sha256)
+    : source_(std::move(source)), bytes_(std::move(bytes)), sha256_(std::move(sha256)) {
   line_starts_.push_back(0);
   for (const char* at = bytes_.data(), *end = at + bytes_.size();
        (at = static_cast<const char*>(std::memchr(at, '\n', std::size_t(end - at)))) != nullptr; ++at)

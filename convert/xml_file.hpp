@@ -13,9 +13,9 @@ namespace haptex::convert {
 
 class XmlFile {
  public:
-  // `bytes` is the whole file (see read_whole_file); `source` names it in messages. Hashes the
-  // original bytes (SHA-256, for provenance), then parses them in place.
-  XmlFile(std::string source, std::vector<char> bytes);
+  // `bytes` is the whole document; `source` names it in messages; `sha256` is the file's (for
+  // provenance: read_input_file gives both). Parses the bytes in place.
+  XmlFile(std::string source, std::vector<char> bytes, std::string sha256);
   XmlFile(const XmlFile&) = delete;
   XmlFile& operator=(const XmlFile&) = delete;
 

@@ -9,7 +9,7 @@ namespace haptex::synth {
 
 // The document's text; values with 6 decimals, as the HaTT files have them.
 std::string recorded_data_xml(const convert::Recording& recording);
-// Atomic: written to PATH.partial, synced, renamed.
+// The document gzip-compressed (PATH is <name>.xml.gz); atomic: written to PATH.partial, synced, renamed.
 void write_recorded_data_xml(const std::string& path, const convert::Recording& recording);
 
 }  // namespace haptex::synth

@@ -17,7 +17,7 @@ OutputFolder::OutputFolder(const std::string& out, bool overwrite) : partial_(ou
 }
 
 std::string recording_path(const std::string& out, const std::string& material, int index) {
-  return (fs::path(out) / "recordings" / (material_id(material) + "_" + std::to_string(index) + ".xml")).string();
+  return (fs::path(out) / "recordings" / (material_id(material) + "_" + std::to_string(index) + ".xml.gz")).string();
 }
 
 std::string gelsight_directory(const std::string& out, const std::string& material) {

@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "convert/csv_recording_reader.hpp"
 #include "core/error.hpp"
+#include "core/gzip.hpp"
+#include "core/sha256.hpp"
 #include "tests/support/bad_input.hpp"
 #include "tests/support/sample_recording.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -205,6 +208,50 @@ TEST(CsvRecordingReader, RefusesRaggedRowsBadValuesAndGaps) {
   test::write_text_file(dir.file("notime.csv"), replace_all(csv, "time_s", "t"));
   EXPECT_NE(bad_input_message([&] { read_csv_recording(dir.file("notime.csv"), default_field_map()); }).find("no 'time_s' column"),
             std::string::npos);
+}
+
+}  // namespace
+}  // namespace haptex::convert
+
+namespace haptex::convert {
+namespace {
+
+// A gzip-compressed recording reads as the plain one; provenance names the file as it is on disk.
+TEST(HattRecordingReader, ReadsGzipCompressedFiles) {
+  test::TempDir dir;
+  test::SampleRecordingSpec spec;
+  spec.seconds = 0.3;
+  const std::string xml = test::sample_recording_xml(spec);
+  test::write_text_file(dir.file("a.xml"), xml);
+  test::write_recording_text(dir.file("a.xml.gz"), xml);
+  const Recording plain = read_hatt_recording_xml(dir.file("a.xml"), default_field_map());
+  const Recording packed = read_hatt_recording_xml(dir.file("a.xml.gz"), default_field_map());
+  EXPECT_EQ(packed.channels, plain.channels);
+  EXPECT_EQ(packed.material, plain.material);
+  EXPECT_EQ(packed.source_sha256, sha256_file(dir.file("a.xml.gz")));
+  EXPECT_NE(packed.source_sha256, plain.source_sha256);
+  // Known by its content, not its name.
+  std::filesystem::rename(dir.file("a.xml.gz"), dir.file("b.xml"));
+  EXPECT_EQ(read_hatt_recording_xml(dir.file("b.xml"), default_field_map()).channels, plain.channels);
+}
+
+TEST(HattRecordingReader, DamagedOrHugeGzipIsRefusedNamingTheFile) {
+  test::TempDir dir;
+  test::SampleRecordingSpec spec;
+  spec.seconds = 0.3;
+  const std::string gz = gzip::compress(test::sample_recording_xml(spec), 1);
+  test::write_text_file(dir.file("cut.xml.gz"), gz.substr(0, gz.size() / 2));
+  std::string m = test::bad_input_message([&] { read_hatt_recording_xml(dir.file("cut.xml.gz"), default_field_map()); });
+  EXPECT_NE(m.find(dir.file("cut.xml.gz")), std::string::npos) << m;
+  EXPECT_NE(m.find("cut short"), std::string::npos) << m;
+  // The limit applies to what the file expands to, not only to its size on disk.
+  test::write_text_file(dir.file("big.xml.gz"), gz);
+  m = test::bad_input_message([&] { read_hatt_recording_xml(dir.file("big.xml.gz"), default_field_map(), gz.size() * 2); });
+  EXPECT_NE(m.find("decompresses to more than the limit"), std::string::npos) << m;
+  // What the gzip holds is checked like any XML.
+  test::write_recording_text(dir.file("bad.xml.gz"), "<recordedData><material>Caf\xe9</material>");
+  m = test::bad_input_message([&] { read_hatt_recording_xml(dir.file("bad.xml.gz"), default_field_map()); });
+  EXPECT_NE(m.find("malformed XML"), std::string::npos) << m;
 }
 
 }  // namespace

@@ -51,9 +51,9 @@ TEST(ScaleOut, FourShardsRunAtOnceMergeIntoTheDatasetOfOneRun) {
   for (const auto& folder : fs::directory_iterator(synth + "/gelsight")) {
     const std::string material = folder.path().filename().string(), out = dir.file("shard" + std::to_string(n++));
     fs::create_directories(out);
-    std::string xml = material;  // synth writes material "Brushed 1"'s recording as brushed_1_0.xml
+    std::string xml = material;  // synth writes material "Brushed 1"'s recording as brushed_1_0.xml.gz
     for (char& c : xml) c = c == ' ' ? '_' : char(std::tolower(static_cast<unsigned char>(c)));
-    xml = synth + "/recordings/" + xml + "_0.xml";
+    xml = synth + "/recordings/" + xml + "_0.xml.gz";
     ASSERT_TRUE(fs::exists(xml)) << xml;
     datasets.push_back(out + "/dataset.h5");
     shards.push_back(std::async(std::launch::async, run_shard,

@@ -64,8 +64,8 @@ TEST(SynthCli, MaterialsAreByteIdenticalForASeed) {
     ++files;
   }
   EXPECT_EQ(files, 13u);  // 2 recordings, 4 press videos and their sidecars, truth, materials, manifest
-  EXPECT_NE(slurp(fs::path(dir.file("a")) / "recordings/polished_1_0.xml"),
-            slurp(fs::path(dir.file("c")) / "recordings/polished_1_0.xml"));
+  EXPECT_NE(slurp(fs::path(dir.file("a")) / "recordings/polished_1_0.xml.gz"),
+            slurp(fs::path(dir.file("c")) / "recordings/polished_1_0.xml.gz"));
 }
 
 TEST(SynthCli, MaterialsReadBackThroughConvertOpenCvAndH5py) {
@@ -132,9 +132,9 @@ TEST(SynthCli, ForceReplacesTheWholeFolder) {
   const CommandResult again = run_haptex({"synth", "materials", "-n", "1", "-o", dir.file("out"), "--force", "--size", "160x120",
                                           "--presses", "1", "--recordings", "1", "--seconds", "0.5"});
   ASSERT_EQ(again.exit_code, 0) << again.err;
-  EXPECT_FALSE(fs::exists(dir.file("out/recordings/sandpaper_1_0.xml"))) << "a material of the earlier run survived";
+  EXPECT_FALSE(fs::exists(dir.file("out/recordings/sandpaper_1_0.xml.gz"))) << "a material of the earlier run survived";
   EXPECT_FALSE(fs::exists(dir.file("out/gelsight/Sandpaper 1")));
-  EXPECT_TRUE(fs::exists(dir.file("out/recordings/polished_1_0.xml")));
+  EXPECT_TRUE(fs::exists(dir.file("out/recordings/polished_1_0.xml.gz")));
   EXPECT_FALSE(fs::exists(dir.file("out.partial")));
 }
 
@@ -175,7 +175,7 @@ TEST(SynthCli, HattModelsAndPhotographsBecomeRecordingsAndPresses) {
   const nlohmann::json summary = nlohmann::json::parse(made.out);
   EXPECT_EQ(summary["recordings"], 4);
   EXPECT_EQ(summary["presses"], 10);
-  EXPECT_TRUE(fs::exists(out + "/recordings/book_1.xml"));
+  EXPECT_TRUE(fs::exists(out + "/recordings/book_1.xml.gz"));
   EXPECT_TRUE(fs::exists(out + "/gelsight/Cork/press_4.json"));
   EXPECT_TRUE(fs::exists(out + "/truth.h5"));
   const CommandResult converted = run_haptex({"convert", "hatt", out + "/recordings", "-o", dir.file("r.h5")});
@@ -190,7 +190,7 @@ TEST(SynthCli, HattModelsAndPhotographsBecomeRecordingsAndPresses) {
     EXPECT_EQ(m.model_xml, slurp(dir.file("models/Models_" + m.name + ".xml"))) << m.name;
     EXPECT_FALSE(m.grid.has_value());
     ASSERT_EQ(m.recordings.size(), 2u);
-    EXPECT_EQ(m.recordings[1].source_sha256, sha256_file(out + "/recordings/" + material_id(m.name) + "_1.xml"));
+    EXPECT_EQ(m.recordings[1].source_sha256, sha256_file(out + "/recordings/" + material_id(m.name) + "_1.xml.gz"));
   }
   expect_truth_of_each_recording(truth, dir.file("r.h5"), 10000);
   if (!python_has("h5py")) GTEST_SKIP() << "python3-h5py is not installed";

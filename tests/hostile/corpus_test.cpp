@@ -9,6 +9,7 @@
 #include <iostream>
 #include <set>
 
+#include "core/gzip.hpp"
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/cluster_tree.hpp"
 #include "tests/support/mutations.hpp"
@@ -69,6 +70,27 @@ std::vector<HostileCase> xml_cases() {
         return x.erase(open, close - open);
       }, "material"),
       xml("material not UTF-8", [] { return replace_once(good_xml(), "<material>", "<material>\xc3\x28"); }, "UTF-8"),
+  };
+}
+
+std::vector<HostileCase> gzip_cases() {
+  auto gz = [](std::string name, std::function<std::string()> bytes, std::string says) {
+    return HostileCase{"gzip-compressed HaTT XML", name, [=](const TempDir& d) { return write(d, "rec `x` 'y'.xml.gz", bytes()); },
+                       convert_it, says};
+  };
+  const std::string good = gzip::compress(good_xml(), 1);
+  return {
+      gz("cut short", [=] { return good.substr(0, good.size() / 2); }, "cut short"),
+      gz("header only", [=] { return good.substr(0, 10); }, "cut short"),
+      gz("damaged CRC", [=] { std::string b = good; b[b.size() - 8] = char(b[b.size() - 8] ^ 1); return b; }, "damaged"),
+      gz("garbage after the data", [=] { return good + "PK\x03\x04"; }, "not gzip data"),
+      {"gzip-compressed HaTT XML", "expands past --max-bytes",
+       [](const TempDir& d) { return write(d, "bomb.xml.gz", gzip::compress(std::string(std::size_t(64) << 20, ' '), 9)); },
+       [](const TempDir& d, const std::string& file) {
+         return std::vector<std::string>{"convert", "hatt", file, "-o", d.file("out.h5"), "--max-bytes", "1000000"};
+       },
+       "--max-bytes"},
+      gz("NaN inside", [] { return gzip::compress(replace_once(good_xml(), "<value>", "<value>NaN</value><value>"), 1); }, "NaN"),
   };
 }
 
@@ -276,7 +298,7 @@ std::set<std::string> names_in(const TempDir& dir) {
 
 std::vector<HostileCase> corpus() {
   std::vector<HostileCase> all;
-  for (auto part : {xml_cases(), csv_cases(), cluster_cases(), manifest_cases(), trajectory_cases(), hdf5_cases(), image_cases(), video_cases()})
+  for (auto part : {xml_cases(), gzip_cases(), csv_cases(), cluster_cases(), manifest_cases(), trajectory_cases(), hdf5_cases(), image_cases(), video_cases()})
     all.insert(all.end(), part.begin(), part.end());
   return all;
 }

@@ -11,6 +11,7 @@
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/mutations.hpp"
 #include "tests/support/quick_models.hpp"
+#include "tests/support/sample_recording.hpp"
 #include "tests/support/small_pipeline.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -76,10 +77,10 @@ TEST(Messages, ANameThatIsNotUtf8IsRefusedAtTheDoor) {
   ASSERT_EQ(run_haptex({"synth", "materials", "-n", "1", "--presses", "1", "--recordings", "1", "--seconds", "0.5", "--size", "64x48",
                         "-o", dir.file("s")}).exit_code, 0);
   const fs::path xml = *fs::directory_iterator(dir.file("s/recordings"));
-  std::string text = file_bytes(xml.string());
+  std::string text = read_recording_text(xml.string());
   const auto open = text.find("<material>") + 10;
   text.replace(open, text.find("</material>") - open, "Caf\xe9");
-  std::ofstream(xml, std::ios::binary) << text;
+  write_recording_text(xml.string(), text);
   expect_refusal(run_haptex({"convert", "hatt", xml.string(), "-o", dir.file("r.h5")}), {xml.string(), "<material>", "not valid UTF-8", "byte 3", "Caf\\xe9"});
   EXPECT_FALSE(fs::exists(dir.file("r.h5")));
 

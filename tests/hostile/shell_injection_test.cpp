@@ -10,6 +10,7 @@
 #include "core/process/run_program.hpp"
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/quick_models.hpp"
+#include "tests/support/sample_recording.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::test {
@@ -34,9 +35,9 @@ std::string read(const fs::path& path) { return file_bytes(path.string()); }
 void rename_material(const fs::path& synth, const std::string& name, const std::string& id) {
   for (const auto& entry : fs::directory_iterator(synth / "recordings")) {
     if (entry.path().filename().string().rfind(id + "_", 0) != 0) continue;
-    std::string xml = read(entry.path());
+    std::string xml = read_recording_text(entry.path().string());
     xml = std::regex_replace(xml, std::regex("<material>" + name + "</material>"), "<material>" + kEvilName + "</material>");
-    std::ofstream(entry.path(), std::ios::binary) << xml;
+    write_recording_text(entry.path().string(), xml);
   }
   fs::rename(synth / "gelsight" / name, synth / "gelsight" / kEvilName);
 }

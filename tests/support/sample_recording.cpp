@@ -1,9 +1,11 @@
 #include "tests/support/sample_recording.hpp"
 
+#include "core/gzip.hpp"
 #include "synth/recorded_data_xml.hpp"
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <numbers>
 #include <random>
 #include <sstream>
@@ -85,6 +87,19 @@ void write_text_file(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
   if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+std::string read_recording_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (!gzip::is_gzip(bytes)) return bytes;
+  const std::vector<char> text = gzip::decompress(bytes, std::uintmax_t(1) << 32, path);
+  return {text.begin(), text.end()};
+}
+
+void write_recording_text(const std::string& path, const std::string& text) {
+  const bool gz = path.size() > 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
+  write_text_file(path, gz ? gzip::compress(text, 1) : text);
 }
 
 }  // namespace haptex::test

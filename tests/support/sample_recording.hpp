@@ -28,5 +28,9 @@ SampleChannels make_sample_channels(const SampleRecordingSpec& spec);
 std::string sample_recording_xml(const SampleRecordingSpec& spec);
 std::string sample_recording_csv(const SampleRecordingSpec& spec);
 void write_text_file(const std::string& path, const std::string& text);
+// A recording's XML text as synth writes it (PATH.xml.gz) or any plain file, and back: compressed
+// again when PATH ends in .gz.
+std::string read_recording_text(const std::string& path);
+void write_recording_text(const std::string& path, const std::string& text);
 
 }  // namespace haptex::test

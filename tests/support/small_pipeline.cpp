@@ -126,11 +126,11 @@ void build(const fs::path& root) {
   run_or_fail({"synth", "materials", "-n", "5", "--size", "160x120", "--presses", "5", "--recordings", "1", "--seconds", "3",
                "-o", synth});
   for (const char* dropped : {"polished_1", "brushed_1", "grooved_1"})
-    fs::remove(root / "synth" / "recordings" / (std::string(dropped) + "_0.xml"));
+    fs::remove(root / "synth" / "recordings" / (std::string(dropped) + "_0.xml.gz"));
   for (const char* dropped : {"Polished 1", "Brushed 1", "Grooved 1"}) fs::remove_all(root / "synth" / "gelsight" / dropped);
   run_or_fail({"convert", "hatt", synth + "/recordings", "-o", files.recordings});
-  // capture extract does not read synth's PNG sequences yet (and finds no press in 160 x 120 frames
-  // with its full-size thresholds): the press frames are scored here the way it scores them.
+  // capture extract finds no press in 160 x 120 frames with its full-size thresholds: the press
+  // frames are scored here the way it scores them.
   write_gelsight(root / "synth" / "gelsight", files.gelsight);
   run_or_fail({"align", "--recordings", files.recordings, "--gelsight", files.gelsight, "-o", files.dataset});
   run_or_fail({"split", files.dataset, "-o", files.split, "--no-plots"});

@@ -34,8 +34,8 @@ TEST(SynthRecordings, XmlReadsBackThroughConvert) {
   std::vector<double> accel(strokes.speed.size());
   for (std::size_t i = 0; i < accel.size(); ++i) accel[i] = std::sin(0.3 * double(i));
   const convert::Recording written = assemble_recording({"Cork & Felt", 12, 0.4}, strokes, accel, 5);
-  write_recorded_data_xml(dir.file("cork.xml"), written);
-  const convert::Recording read = convert::read_hatt_recording_xml(dir.file("cork.xml"), convert::default_field_map());
+  write_recorded_data_xml(dir.file("cork.xml.gz"), written);
+  const convert::Recording read = convert::read_hatt_recording_xml(dir.file("cork.xml.gz"), convert::default_field_map());
   EXPECT_EQ(read.material, "Cork & Felt");
   EXPECT_EQ(read.texture, 12);
   ASSERT_EQ(read.samples(), written.samples());
