@@ -38,11 +38,12 @@ WindowSource read_source(const h5::Group& recording, int material, int index) {
 h5::Shape check_press_sizes(const h5::Group& presses) {
   h5::Shape shape;
   for (const std::string& j : presses.children()) {
-    dataset::read_channel_order(presses.open_group(j), kPeak);
-    const h5::Dataset peak = presses.open_group(j).open_dataset(kPeak);
-    if (shape.empty()) shape = peak.shape();
-    else if (peak.shape() != shape)
-      throw input_error(peak.file(), peak.object_path(), "image size differs from the material's other presses",
+    const h5::Group press = presses.open_group(j);
+    dataset::read_channel_order(press, kPeak);
+    const h5::Shape size = {hsize_t(press.attr_int("height")), hsize_t(press.attr_int("width")), 3};
+    if (shape.empty()) shape = size;
+    else if (size != shape)
+      throw input_error(press.file(), press.object_path(), "image size differs from the material's other presses",
                         "Capture all presses of a material with one sensor and frame size");
   }
   return shape;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,15 +48,24 @@ std::optional<ImageSize> jpeg_size(std::istream& in) {
   return std::nullopt;
 }
 
+std::optional<ImageSize> header_size(std::istream& in) {
+  if (auto size = png_size(in)) return size;
+  in.clear();
+  in.seekg(0);
+  return jpeg_size(in);
+}
+
 }  // namespace
 
 std::optional<ImageSize> image_header_size(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
-  if (auto size = png_size(in)) return size;
-  in.clear();
-  in.seekg(0);
-  return jpeg_size(in);
+  return header_size(in);
+}
+
+std::optional<ImageSize> image_header_size(std::span<const std::uint8_t> bytes) {
+  std::istringstream in(std::string(bytes.begin(), bytes.end()), std::ios::binary);
+  return header_size(in);
 }
 
 }  // namespace haptex

@@ -3,6 +3,7 @@
 // refuse an absurdly large image before OpenCV allocates gigabytes for it.
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 
 namespace haptex {
@@ -13,5 +14,7 @@ struct ImageSize {
 
 // nullopt when the file is neither PNG nor JPEG or its header is damaged (let the decoder judge it).
 std::optional<ImageSize> image_header_size(const std::string& path);
+// The same for an image in memory.
+std::optional<ImageSize> image_header_size(std::span<const std::uint8_t> bytes);
 
 }  // namespace haptex

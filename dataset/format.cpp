@@ -10,8 +10,11 @@ namespace {
 
 constexpr std::array kFormats{
     Format{Kind::recordings, "recordings", 1, "haptex convert", ""},
-    Format{Kind::gelsight, "gelsight", 1, "haptex capture extract", ""},
-    Format{Kind::dataset, "dataset", 2, "haptex align", "its windows' action lies before the window (dataset/2 takes it at the window's middle)"},
+    Format{Kind::gelsight, "gelsight", 2, "haptex capture extract",
+           "it stores its images as pixels (gelsight/2 keeps them encoded, the sensor's JPEG bytes as they came)"},
+    Format{Kind::dataset, "dataset", 3, "haptex align",
+           "dataset/1 took the windows' action before the window, and dataset/2 stored the press images as pixels "
+           "(dataset/3 takes the action at the window's middle and keeps the images encoded)"},
     Format{Kind::model, "model", 2, "haptex train", "it was trained on the action before its window (model/2 takes it at the window's middle)"},
     Format{Kind::truth, "truth", 2, "haptex synth", "it does not record what generated each recording"},
     Format{Kind::press, "press", 1, "haptex capture record", ""},

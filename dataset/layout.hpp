@@ -47,6 +47,7 @@ inline constexpr const char* kPeakIndex = "peak_index";
 inline constexpr const char* kFrames = "frames";              // the 12 frames around the peak
 inline constexpr const char* kFrameIndices = "frame_indices";
 inline constexpr const char* kContrast = "contrast";          // per-frame contact score
+inline constexpr const char* kEncoding = "encoding";            // attribute of encoded images: "jpeg" or "png"
 inline constexpr const char* kChannelOrder = "channel_order"; // attribute of a press and its images (dataset/channel_order.hpp)
 // Attribute of press files and gelsight presses: the contact score of a no-contact frame, which the
 // trigger is a multiple of (docs/capture.md, "Finding presses"); absent in files from before it.

@@ -1,11 +1,12 @@
 #include "predict/training_data.hpp"
 
 #include <mutex>
+#include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/parallel.hpp"
-#include "dataset/channel_order.hpp"
+#include "dataset/press_images.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/window_table.hpp"
@@ -16,25 +17,15 @@ namespace {
 
 using namespace dataset::layout;
 
-// The images of `name` in `press`, one (H, W, 3) or a stack (N, H, W, 3), as RGB, the order
-// texture_descriptor takes, whatever order the press states (dataset/channel_order.hpp).
-std::vector<cv::Mat> rgb_images(const h5::Group& press, const char* name, bool stack) {
-  const dataset::ChannelOrder order = dataset::read_channel_order(press, name);
-  const h5::Dataset d = press.open_dataset(name);
-  const h5::Shape shape = d.shape();
-  if (shape.size() != (stack ? 4u : 3u) || shape.back() != 3 || d.dtype() != "uint8")
-    throw input_error(d.file(), d.object_path(), std::string("expected uint8 ") + (stack ? "(frames, H, W, 3)" : "(H, W, 3)"),
-                      "Rebuild the dataset with haptex align from a gelsight file of haptex capture extract");
-  std::vector<std::uint8_t> all = d.read<std::uint8_t>();
-  dataset::reorder_channels(all, order, dataset::ChannelOrder::rgb);
-  const int h = int(shape[stack ? 1 : 0]), w = int(shape[stack ? 2 : 1]);
-  const std::size_t one = std::size_t(h) * std::size_t(w) * 3, count = stack ? shape[0] : 1;
-  std::vector<cv::Mat> out;
-  for (std::size_t i = 0; i < count; ++i) out.push_back(cv::Mat(h, w, CV_8UC3, all.data() + i * one).clone());
-  return out;
+// The images of `name` in `press` as RGB, the order texture_descriptor takes, whatever order the
+// press states (dataset/channel_order.hpp).
+std::vector<cv::Mat> rgb_images(const h5::Group& press, const char* name) {
+  std::vector<cv::Mat> images = dataset::read_press_images(press, name);
+  for (cv::Mat& image : images) cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
+  return images;
 }
 
-cv::Mat rgb_image(const h5::Group& press, const char* name) { return rgb_images(press, name, false).front(); }
+cv::Mat rgb_image(const h5::Group& press, const char* name) { return rgb_images(press, name).front(); }
 
 // Row-major (windows x width) in the file is column-major (width x windows) here: one window per column.
 Eigen::MatrixXf columns(const std::vector<float>& values, std::size_t width) {
@@ -66,7 +57,7 @@ Descriptors press_descriptors(const std::string& dataset_path, const std::string
     return out;
   }
   const std::vector<cv::Mat> augmented_references = all_augmentations(reference);
-  for (const cv::Mat& frame : rgb_images(g, kFrames, true)) {
+  for (const cv::Mat& frame : rgb_images(g, kFrames)) {
     const std::vector<cv::Mat> augmented = all_augmentations(frame);
     for (std::size_t v = 0; v < augmented.size(); ++v)
       out.push_back(texture_descriptor(augmented[v], augmented_references[v], spec));

@@ -7,6 +7,7 @@ imports. The file layouts are schemas/hdf5-layout.md ("Dataset file", "Windows f
 manifest is schemas/split.schema.json.
 """
 import hashlib
+import io
 import json
 import os
 from dataclasses import dataclass
@@ -145,7 +146,7 @@ def read_set_windows(dataset_path, split, sets=("train",)):
     if sha256_file(dataset_path) != split.dataset_sha256:
         raise HaptexFileError(f"{split.path}: was made from another dataset than {dataset_path} (dataset.sha256)")
     with h5py.File(dataset_path, "r") as f:
-        _check_format(f, dataset_path, "dataset/2")
+        _check_format(f, dataset_path, "dataset/3")
         w = _read_table(f["windows"], dataset_path)
         keep = np.zeros(len(w), dtype=bool)
         for m, material_id in enumerate(w.materials):
@@ -169,6 +170,14 @@ class Press:
     reference: np.ndarray
 
 
+def decode_image(encoded, order="RGB"):
+    """One encoded image of a dataset (a JPEG or PNG, as a uint8 array) as (H, W, 3) uint8 RGB; `order`
+    is the press's channel_order (BGR: the stored pixels hold blue first)."""
+    from PIL import Image  # python3-pil; only readers of images need it
+    rgb = np.asarray(Image.open(io.BytesIO(np.asarray(encoded, dtype=np.uint8).tobytes())).convert("RGB"))
+    return np.ascontiguousarray(rgb if order == "RGB" else rgb[..., ::-1])
+
+
 def read_presses(dataset_path, split, material_id, sets=("train",)):
     """The presses of one material that `sets` of the split hold, in the split's order. A press stored
     in BGR order is turned to RGB; another order is refused."""
@@ -177,14 +186,13 @@ def read_presses(dataset_path, split, material_id, sets=("train",)):
     numbers = [p for name in sets for p in split.material_presses[material_id][name]]
     out = []
     with h5py.File(dataset_path, "r") as f:
-        _check_format(f, dataset_path, "dataset/2")
+        _check_format(f, dataset_path, "dataset/3")
         for j in numbers:
             g = f[f"materials/{material_id}/presses/{j}"]
             order = _text(g.attrs.get("channel_order", ""))
             if order not in ("RGB", "BGR"):
                 raise HaptexFileError(f"{dataset_path}: {g.name}/@channel_order is '{order}', not RGB or BGR")
-            rgb = (lambda image: image) if order == "RGB" else (lambda image: image[..., ::-1])
-            out.append(Press(material_id, j, np.ascontiguousarray(rgb(g["peak"][()])), np.ascontiguousarray(rgb(g["reference"][()]))))
+            out.append(Press(material_id, j, decode_image(g["peak"][0], order), decode_image(g["reference"][0], order)))
     return out
 
 

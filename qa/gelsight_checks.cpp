@@ -63,7 +63,7 @@ void judge_resolution(const std::vector<Press>& presses, const std::string& id, 
     }
     if (p.sizes_agree) ++by_size[size_text(press_size(p))];
   }
-  if (!mixed_inside.empty()) return tally.fail(mixed_inside, "reference, peak and frames differ in size");
+  if (!mixed_inside.empty()) return tally.fail(mixed_inside, "reference, peak, frames and the press's width and height differ in size");
   if (by_size.empty()) return tally.skip("/materials/" + id + ": no readable press images");
   if (by_size.size() == 1) return tally.pass();
   std::string sizes;

@@ -7,11 +7,11 @@
 
 #include "capture/scoring/contact_score.hpp"
 #include "capture/scoring/scoring_image.hpp"
-#include "capture/storage/image_datasets.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "dataset/channel_order.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/press_images.hpp"
 #include "qa/thresholds.hpp"
 
 namespace haptex::qa {
@@ -35,31 +35,21 @@ double saturated_share(const cv::Mat& bgr) {
   return double(cv::countNonZero(brightest >= kSaturatedLevel)) / double(bgr.total());
 }
 
-// N x H x W x 3 uint8 in the press's channel order -> N BGR images; empty when the dataset has another form.
-std::vector<cv::Mat> read_stack(const h5::Group& press, const std::string& name, dataset::ChannelOrder order) {
+// The images of dataset `name` as BGR; none when it is missing or does not read (the layout checks
+// report its form; a damaged image is reported by the press's other checks as missing).
+std::vector<cv::Mat> read_images(const h5::Group& press, const std::string& name) {
   if (!press.has_dataset(name)) return {};
-  const h5::Dataset d = press.open_dataset(name);
-  const h5::Shape shape = d.shape();
-  if (shape.size() != 4 || shape[3] != 3 || d.dtype() != "uint8" || shape[0] == 0) return {};
-  const std::vector<std::uint8_t> pixels = d.read<std::uint8_t>();
-  const std::size_t frame_bytes = shape[1] * shape[2] * 3;
-  std::vector<cv::Mat> frames;
-  for (std::size_t i = 0; i < shape[0]; ++i) {
-    cv::Mat image(static_cast<int>(shape[1]), static_cast<int>(shape[2]), CV_8UC3);
-    std::memcpy(image.data, pixels.data() + i * frame_bytes, frame_bytes);
-    frames.push_back(capture::to_bgr(image, order));
+  try {
+    return dataset::read_press_images(press, name);
+  } catch (const Error&) {
+    return {};
   }
-  return frames;
 }
 
-// A misshapen image is left out (the layout checks report it).
 std::optional<cv::Mat> read_single(const h5::Group& press, const std::string& name) {
-  if (!press.has_dataset(name)) return std::nullopt;
-  try {
-    return capture::read_image(press, name);
-  } catch (const Error&) {
-    return std::nullopt;
-  }
+  std::vector<cv::Mat> images = read_images(press, name);
+  if (images.size() != 1) return std::nullopt;
+  return images.front();
 }
 
 std::optional<double> number_attr(const h5::Group& g, const char* name) {
@@ -91,16 +81,15 @@ Press summarize_press(const h5::Group& g, std::string path, std::string material
   p.trigger = number_attr(g, "trigger");
   p.pixel_threshold = number_attr(g, "pixel_threshold");
   // Images in an order qa cannot read are not judged: gelsight.channel_order reports the press.
-  dataset::ChannelOrder order = dataset::kWrittenChannelOrder;
   try {
-    for (const char* image : {layout::kReference, layout::kPeak, layout::kFrames}) order = dataset::read_channel_order(g, image);
+    for (const char* image : {layout::kReference, layout::kPeak, layout::kFrames}) dataset::read_channel_order(g, image);
   } catch (const Error& e) {
     p.channel_order_problem = e.what();
     read_source_frames_unreadable(g, p);
     return p;
   }
   const std::optional<cv::Mat> reference = read_single(g, layout::kReference), peak = read_single(g, layout::kPeak);
-  const std::vector<cv::Mat> frames = read_stack(g, layout::kFrames, order);
+  const std::vector<cv::Mat> frames = read_images(g, layout::kFrames);
   std::vector<cv::Size> sizes;
   if (reference) {
     p.has_reference = true;
@@ -127,6 +116,9 @@ Press summarize_press(const h5::Group& g, std::string path, std::string material
     images.push_back(&frames[i]);
     p.images.push_back({p.path + "/frames[" + std::to_string(i) + "]", frames[i].size(), 0, 0});
   }
+  // Encoded images carry their size inside; the press's attributes state it for the layout.
+  const std::optional<double> width = number_attr(g, "width"), height = number_attr(g, "height");
+  if (!sizes.empty() && width && height) sizes.push_back(cv::Size(int(*width), int(*height)));
   p.sizes_agree = !sizes.empty() && std::all_of(sizes.begin(), sizes.end(), [&](cv::Size s) { return s == sizes.front(); });
   parallel_for(images.size(), [&](std::size_t i) {
     p.images[i].sharpness = laplacian_variance(*images[i]);

@@ -103,8 +103,8 @@ class Extraction {
     result_.frames_unreadable += a.scores.unreadable_frames + a.source->frames_missing();
     if (a.plans.empty()) result_.sources_without_press.push_back(a.input->path);
     result_.detections.push_back(detection_of(a.input->path, a.scores, int(a.plans.size())));
-    read_press_frames(*a.source, a.plans, [&](const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak) {
-      write_press(a.material, *a.source, a.scores, a.sha, plan, std::move(frames), peak);
+    read_press_frames(*a.source, a.plans, [&](const PressPlan& plan, PressFrames frames) {
+      write_press(a.material, *a.source, a.scores, a.sha, plan, std::move(frames));
     });
     a.source.reset();
     ++result_.sources;
@@ -132,7 +132,7 @@ class Extraction {
   }
 
   void write_press(const std::string& material, const FrameSource& source, const SourceScores& scores,
-                   const std::string& sha, const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak) {
+                   const std::string& sha, const PressPlan& plan, PressFrames frames) {
     const ContactReference& contact = *scores.contact;
     GelsightPress p;
     p.source_file = source.path();
@@ -145,8 +145,11 @@ class Extraction {
     p.peak_index = plan.contact.peak;
     p.peak_score = plan.contact.peak_score;
     p.frame_indices = plan.frame_indices;
-    p.frames = std::move(frames);
-    p.peak = peak;
+    p.frames = std::move(frames.frames);
+    p.peak = frames.peak;
+    p.frames_encoded = std::move(frames.frames_encoded);
+    p.peak_encoded = std::move(frames.peak_encoded);
+    const cv::Mat& peak = p.peak;
     p.reference = scores.reference;
     p.contrast.assign(scores.scores.begin() + plan.range_first, scores.scores.begin() + plan.range_last + 1);
     p.fps = source.fps();
@@ -234,15 +237,15 @@ ExtractResult extract_presses(const std::vector<std::string>& inputs, const std:
   check_output_path(output, options.overwrite);
   const std::vector<CaptureInput> expanded = expand_capture_inputs(inputs, options.material);
   Extraction extraction(output, options);
-  // Image sequences (each frame a file, read when needed) are analysed a few at a time on as many
-  // threads, the next few while the last are written, and written in their order, so the output is the
-  // same whatever the cores. Other sources go one at a time: press files are read through HDF5, whose
-  // Debian build is not thread-safe, and a video keeps up to 512 MiB of decoded frames (docs/capture.md).
+  // Videos and image sequences are analysed a few at a time on as many threads, the next few while
+  // the last are written, and written in their order, so the output is the same whatever the cores.
+  // Press files go one at a time: they are read through HDF5, whose Debian build is not thread-safe.
+  // (A video keeps up to 256 MiB of frames, docs/capture.md: 1 GiB at most on 4 threads.)
   constexpr unsigned kThreads = 4;
-  const bool sequences = std::all_of(expanded.begin(), expanded.end(),
-                                     [](const CaptureInput& c) { return c.kind == CaptureInput::Kind::image_sequence; });
+  const bool no_press_file = std::none_of(expanded.begin(), expanded.end(),
+                                          [](const CaptureInput& c) { return c.kind == CaptureInput::Kind::press_file; });
   const unsigned threads = options.threads ? options.threads : std::min(kThreads, available_cores());
-  const std::size_t chunk = sequences ? threads : 1;
+  const std::size_t chunk = no_press_file ? threads : 1;
   struct Chunk {
     std::vector<Extraction::Analysed> analysed;
     std::vector<std::exception_ptr> failed;  // rethrown in the sources' order, as one at a time would

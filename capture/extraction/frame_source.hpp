@@ -12,6 +12,7 @@
 #include <opencv2/core.hpp>
 
 #include "capture/scoring/contact_score.hpp"
+#include "dataset/press_images.hpp"
 
 namespace haptex::capture {
 
@@ -37,9 +38,11 @@ class FrameSource {
   // always decoded.
   using Visitor = std::function<void(std::int64_t index, const cv::Mat& scoring, const cv::Mat& full)>;
   virtual void scan(const Visitor& visit, const std::function<bool(std::int64_t)>& need_full) = 0;
-  // Full BGR frames at the given indices (ascending), delivered in order.
-  virtual void read(const std::vector<std::int64_t>& indices,
-                    const std::function<void(std::int64_t index, const cv::Mat& bgr)>& deliver) = 0;
+  // Full BGR frames at the given indices (ascending), delivered in order, each with the source's own
+  // JPEG or PNG bytes of it when it has them in true colours (MJPG videos, image files, press files
+  // stored RGB), which the gelsight file then stores as they are; else the bytes are empty.
+  using Delivery = std::function<void(std::int64_t index, const cv::Mat& bgr, const dataset::EncodedImage& encoded)>;
+  virtual void read(const std::vector<std::int64_t>& indices, const Delivery& deliver) = 0;
 
   // A source that carries its own no-contact reference and thresholds (press files).
   struct StoredReference {

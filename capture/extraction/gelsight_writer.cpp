@@ -1,6 +1,5 @@
 #include "capture/extraction/gelsight_writer.hpp"
 
-#include "capture/storage/image_datasets.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"
 #include "dataset/channel_order.hpp"
@@ -39,6 +38,17 @@ void set_press_attributes(h5::Group& g, const GelsightPress& p) {
   g.set_attr("source_frames_unreadable", p.source_frames_unreadable);
 }
 
+// The source's bytes when it gave them for every frame, else every frame as PNG (one encoding a dataset).
+std::vector<dataset::EncodedImage> stored_frames(const GelsightPress& p) {
+  if (!p.frames_encoded.empty()) {
+    if (p.frames_encoded.size() != p.frames.size()) throw failure("GelsightWriter: frames and their bytes differ in number");
+    return p.frames_encoded;
+  }
+  std::vector<dataset::EncodedImage> png;
+  for (const cv::Mat& frame : p.frames) png.push_back(dataset::encode_png(frame));
+  return png;
+}
+
 void set_description(h5::Dataset d, const std::string& units, const std::string& description) {
   if (!units.empty()) d.set_attr("units", units);
   d.set_attr("description", description);
@@ -65,13 +75,15 @@ int GelsightWriter::add_press(const std::string& material_name, const GelsightPr
   const int j = int(presses.children().size());
   h5::Group g = presses.create_group(std::to_string(j));
   set_press_attributes(g, p);
-  write_image(g, layout::kReference, p.reference, "no-contact reference (" + p.reference_note + ")");
-  write_image(g, layout::kPeak, p.peak, "the press's highest-scoring frame");
+  dataset::write_press_images(g, layout::kReference, {dataset::encode_png(p.reference)},
+                              "no-contact reference (" + p.reference_note + ")");
+  dataset::write_press_images(g, layout::kPeak, {p.peak_encoded.empty() ? dataset::encode_png(p.peak) : p.peak_encoded},
+                              "the press's highest-scoring frame");
   // A scalar dataset: one number, as h5py users expect (f[...][layout::kPeakIndex][()]).
   set_description(g.write_array<std::int64_t>(layout::kPeakIndex, std::span<const std::int64_t>(&p.peak_index, 1), {},
                                               h5::DatasetOptions{.compress = false, .gzip_level = 0, .chunk = {}}),
                   "", "frame number of the peak in the source file");
-  write_image_stack(g, layout::kFrames, p.frames, "the peak and its neighbours: consecutive frames of the source");
+  dataset::write_press_images(g, layout::kFrames, stored_frames(p), "the peak and its neighbours: consecutive frames of the source");
   set_description(g.write(layout::kFrameIndices, p.frame_indices), "", "frame numbers of `frames` in the source file");
   set_description(g.write(layout::kContrast, p.contrast), "grey levels",
                   "contact score of each frame from frame_start to frame_end (docs/capture.md)");

@@ -1,6 +1,6 @@
 #pragma once
 // The gelsight file (schemas/hdf5-layout.md "GelSight file"): per material and press, the no-contact
-// reference, the peak frame and its index, the 12 frames around the peak, and the contact score of
+// reference, the peak frame (encoded images, dataset/press_images.hpp) and its index, the 12 frames around the peak, and the contact score of
 // every frame in the press's range, with the source file and frame range as attributes. `haptex align`
 // and the dataset builder read it.
 #include <cstdint>
@@ -11,6 +11,7 @@
 #include <opencv2/core.hpp>
 
 #include "core/h5/atomic_file.hpp"
+#include "dataset/press_images.hpp"
 
 namespace haptex::capture {
 
@@ -24,6 +25,10 @@ struct GelsightPress {
   std::vector<std::int64_t> frame_indices;          // frame numbers of `frames`
   std::vector<cv::Mat> frames;                      // BGR
   cv::Mat peak, reference;                          // BGR
+  // The source's own JPEG or PNG bytes of `frames` and `peak` (true colours once decoded), stored as
+  // they are; empty when the source has none, and then the decoded frames are stored as PNG.
+  std::vector<dataset::EncodedImage> frames_encoded;
+  dataset::EncodedImage peak_encoded;
   std::vector<float> contrast;                      // scores of frame_start..frame_end
   double fps = 0;                                   // 0: unknown
   std::string reference_note;

@@ -1,5 +1,5 @@
-// A folder of frame images read as a video: how `haptex synth` writes press videos (press_<j>/frame_0000.png ...),
-// and how many tactile datasets are published.
+// A folder of frame images read as a video: how `haptex synth` wrote press videos (press_<j>/frame_0000.png ...)
+// until it wrote MJPG AVIs, and how many tactile datasets are published.
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -60,14 +60,26 @@ class ImageSequenceSource : public FrameSource {
     }
   }
 
-  void read(const std::vector<std::int64_t>& indices,
-            const std::function<void(std::int64_t, const cv::Mat&)>& deliver) override {
-    for (std::int64_t i : indices) deliver(i, load(std::size_t(i)));
+  // A PNG or JPEG frame file is stored as it is.
+  void read(const std::vector<std::int64_t>& indices, const Delivery& deliver) override {
+    for (std::int64_t i : indices) {
+      dataset::EncodedImage bytes = file_bytes(std::size_t(i));
+      const cv::Mat frame = load(std::size_t(i), bytes);
+      if (dataset::image_encoding(bytes).empty()) bytes.clear();
+      deliver(i, frame, bytes);
+    }
   }
 
  private:
-  cv::Mat load(std::size_t i) const {
-    const cv::Mat image = cv::imread(files_[i], cv::IMREAD_COLOR);
+  dataset::EncodedImage file_bytes(std::size_t i) const {
+    std::ifstream in(files_[i], std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
+
+  cv::Mat load(std::size_t i) const { return load(i, file_bytes(i)); }
+
+  cv::Mat load(std::size_t i, const dataset::EncodedImage& bytes) const {
+    const cv::Mat image = bytes.empty() ? cv::Mat() : cv::imdecode(bytes, cv::IMREAD_COLOR);
     if (image.empty())
       throw input_error(files_[i], "frame " + std::to_string(i), "cannot read the image", "Replace the damaged frame file");
     if (!size_.empty() && image.size() != size_)

@@ -221,15 +221,23 @@ void read_press_frames(FrameSource& source, const std::vector<PressPlan>& plans,
   std::sort(wanted.begin(), wanted.end());
   wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
 
-  std::map<std::int64_t, cv::Mat> held;
+  std::map<std::int64_t, std::pair<cv::Mat, dataset::EncodedImage>> held;
   std::size_t next_press = 0;
-  source.read(wanted, [&](std::int64_t index, const cv::Mat& frame) {
-    held[index] = frame.clone();
+  source.read(wanted, [&](std::int64_t index, const cv::Mat& frame, const dataset::EncodedImage& encoded) {
+    held[index] = {frame.clone(), encoded};
     while (next_press < plans.size() && plans[next_press].frame_indices.back() <= index) {
       const PressPlan& plan = plans[next_press++];
-      std::vector<cv::Mat> frames;
-      for (std::int64_t i : plan.frame_indices) frames.push_back(held.at(i));
-      handle(plan, std::move(frames), held.at(plan.contact.peak));
+      PressFrames press;
+      bool all_encoded = true;
+      for (std::int64_t i : plan.frame_indices) {
+        press.frames.push_back(held.at(i).first);
+        press.frames_encoded.push_back(held.at(i).second);
+        all_encoded = all_encoded && !held.at(i).second.empty();
+      }
+      press.peak = held.at(plan.contact.peak).first;
+      if (all_encoded) press.peak_encoded = held.at(plan.contact.peak).second;
+      else press.frames_encoded.clear();
+      handle(plan, std::move(press));
       // Frames no later press needs are released at once: memory holds about one press.
       const std::int64_t keep_from = next_press < plans.size() ? plans[next_press].frame_indices.front() : index + 1;
       held.erase(held.begin(), held.lower_bound(keep_from));

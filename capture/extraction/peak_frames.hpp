@@ -57,9 +57,18 @@ struct PressPlan {
 std::vector<PressPlan> plan_presses(const std::vector<float>& scores, const SegmenterSettings& segmenter,
                                     int frames_per_press, int margin_frames);
 
+// A press's kept frames (frame_indices order) and its peak, decoded (BGR), and the source's own bytes
+// of each when it gave them for all (else the byte lists are empty).
+struct PressFrames {
+  std::vector<cv::Mat> frames;
+  cv::Mat peak;
+  std::vector<dataset::EncodedImage> frames_encoded;
+  dataset::EncodedImage peak_encoded;
+};
+
 // Second pass: reads every planned frame once, in order, and hands each press over as soon as its
-// frames are in (frames in frame_indices order, plus the peak frame).
-using PressFramesHandler = std::function<void(const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak)>;
+// frames are in.
+using PressFramesHandler = std::function<void(const PressPlan& plan, PressFrames frames)>;
 void read_press_frames(FrameSource& source, const std::vector<PressPlan>& plans, const PressFramesHandler& handle);
 
 }  // namespace haptex::capture

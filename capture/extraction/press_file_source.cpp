@@ -56,14 +56,16 @@ class PressFileSource : public FrameSource {
     }
   }
 
-  void read(const std::vector<std::int64_t>& indices,
-            const std::function<void(std::int64_t, const cv::Mat&)>& deliver) override {
+  // The frames' bytes are stored as the sensor sent them, unless they decode to swapped colours.
+  void read(const std::vector<std::int64_t>& indices, const Delivery& deliver) override {
     for (std::int64_t i : indices) {
-      const cv::Mat full = decode(frames_.bytes(std::size_t(i)));
+      std::vector<std::uint8_t> bytes = frames_.bytes(std::size_t(i));
+      const cv::Mat full = decode(bytes);
       if (full.empty())
         throw input_error(frames_.path(), "/frames[" + std::to_string(i) + "]", "the frame does not decode",
                           "The sensor sent a corrupt frame here; record the press again");
-      deliver(i, full);
+      if (order_ != dataset::ChannelOrder::rgb) bytes.clear();
+      deliver(i, full, bytes);
     }
   }
 

@@ -1,6 +1,8 @@
 // Video files through OpenCV's FFmpeg backend (MJPG/MPEG-4 AVI, FFV1 Matroska, H.264 MP4 ...).
 #include <vector>
 
+#include <opencv2/imgcodecs.hpp>
+
 #include "capture/extraction/frame_source.hpp"
 #include "capture/scoring/scoring_image.hpp"
 #include "capture/storage/video_file.hpp"
@@ -22,58 +24,106 @@ class VideoSource : public FrameSource {
   double fps() const override { return probe_.fps; }
 
   void scan(const Visitor& visit, const std::function<bool(std::int64_t)>&) override {
-    cv::VideoCapture video = open_video_file(path_);
-    cv::Mat frame;
+    cv::VideoCapture video = open(path_);
     cache_.clear();
     cached_ = true;
-    std::int64_t decoded = 0;
-    for (; video.read(frame); ++decoded) {
-      check_size(frame, decoded);
-      visit(decoded, scoring_image(frame), frame);
-      keep(frame);
+    cached_bytes_ = 0;
+    std::int64_t read = 0;
+    for (Frame f; next(video, f, read); ++read) {
+      visit(read, f.bgr.empty() ? cv::Mat() : scoring_image(f.bgr), f.bgr);
+      keep(std::move(f));
     }
     // The container's count is exact for AVI and MP4 indices and an estimate (duration x fps) for
     // Matroska: one frame of slack, so only a real shortfall counts.
     const auto announced = std::int64_t(video.get(cv::CAP_PROP_FRAME_COUNT));
-    frames_missing_ = announced > decoded + 1 ? announced - decoded : 0;
+    frames_missing_ = announced > read + 1 ? announced - read : 0;
   }
 
   std::int64_t frames_missing() const override { return frames_missing_; }
 
-  void read(const std::vector<std::int64_t>& indices,
-            const std::function<void(std::int64_t, const cv::Mat&)>& deliver) override {
+  void read(const std::vector<std::int64_t>& indices, const Delivery& deliver) override {
     if (cached_) {
-      for (std::int64_t i : indices) deliver(i, cache_.at(std::size_t(i)));
+      for (std::int64_t i : indices) deliver_frame(cache_.at(std::size_t(i)), i, deliver);
       return;
     }
-    cv::VideoCapture video = open_video_file(path_);
-    std::size_t next = 0;
-    cv::Mat frame;
+    cv::VideoCapture video = open(path_);
+    std::size_t next_wanted = 0;
     // Seeking is unreliable in inter-coded videos; reading on, and converting only the frames we
     // keep (grab without retrieve), is exact.
-    for (std::int64_t i = 0; next < indices.size(); ++i) {
+    for (std::int64_t i = 0; next_wanted < indices.size(); ++i) {
       if (!video.grab())
-        throw input_error(path_, "frame " + std::to_string(indices[next]),
+        throw input_error(path_, "frame " + std::to_string(indices[next_wanted]),
                           "the video ended before this frame on the second reading", "The file may be damaged; re-export it");
-      if (i != indices[next]) continue;
-      video.retrieve(frame);
-      check_size(frame, i);
-      deliver(i, frame);
-      ++next;
+      if (i != indices[next_wanted]) continue;
+      Frame f;
+      retrieve(video, f, i);
+      deliver_frame(f, i, deliver);
+      ++next_wanted;
     }
   }
 
  private:
-  // Decoding lossless video (FFV1) costs more than anything else extraction does, so a video that
-  // fits in kCacheBytes is decoded once and its frames kept; a longer one is read a second time.
-  void keep(const cv::Mat& frame) {
+  // A frame as read: decoded (empty when it does not decode) and, from an MJPG video, its JPEG.
+  struct Frame {
+    cv::Mat bgr;
+    dataset::EncodedImage jpeg;
+  };
+
+  // An MJPG video is read raw, each frame's JPEG as the file holds it: kept as it is, it costs a
+  // tenth of the decoded frame, and it is decoded here exactly as it will be read back.
+  cv::VideoCapture open(const std::string& path) const {
+    cv::VideoCapture video = open_video_file(path);
+    if (probe_.mjpeg && !video.set(cv::CAP_PROP_FORMAT, -1))
+      throw failure(path + ": OpenCV's FFmpeg backend cannot read this MJPG video's frames raw");
+    return video;
+  }
+
+  bool next(cv::VideoCapture& video, Frame& f, std::int64_t index) const {
+    if (!probe_.mjpeg) {  // a frame that does not decode ends the reading (frames_missing counts the rest)
+      if (!video.read(f.bgr)) return false;
+      check_size(f.bgr, index);
+      return true;
+    }
+    if (!video.grab()) return false;
+    retrieve(video, f, index);
+    return true;
+  }
+
+  void retrieve(cv::VideoCapture& video, Frame& f, std::int64_t index) const {
+    cv::Mat raw;
+    video.retrieve(raw);
+    if (!probe_.mjpeg) {
+      f.bgr = raw;
+      check_size(f.bgr, index);
+      return;
+    }
+    f.jpeg.assign(raw.data, raw.data + raw.total() * raw.elemSize());
+    f.bgr = is_complete_jpeg(f.jpeg) ? cv::imdecode(f.jpeg, cv::IMREAD_COLOR) : cv::Mat();
+    if (!f.bgr.empty()) check_size(f.bgr, index);
+  }
+
+  void deliver_frame(const Frame& f, std::int64_t index, const Delivery& deliver) const {
+    cv::Mat bgr = f.bgr;
+    if (bgr.empty() && is_complete_jpeg(f.jpeg)) bgr = cv::imdecode(f.jpeg, cv::IMREAD_COLOR);
+    if (bgr.empty())
+      throw input_error(path_, "frame " + std::to_string(index), "the frame does not decode", "The file may be damaged; re-export it");
+    deliver(index, bgr, f.jpeg);
+  }
+
+  // Decoding lossless video (FFV1) costs more than anything else extraction does, so a video whose
+  // frames fit in kCacheBytes (decoded, or an MJPG video's JPEGs) is read once and its frames kept;
+  // a longer one is read a second time.
+  void keep(Frame&& f) {
     if (!cached_) return;
-    if ((cache_.size() + 1) * frame.total() * frame.elemSize() > kCacheBytes) {
+    cached_bytes_ += probe_.mjpeg ? f.jpeg.size() : f.bgr.total() * f.bgr.elemSize();
+    if (cached_bytes_ > kCacheBytes) {
       cache_.clear();
       cached_ = false;
       return;
     }
-    cache_.push_back(frame.clone());
+    if (probe_.mjpeg) f.bgr.release();  // decoded again when kept: a tenth of the memory
+    else f.bgr = f.bgr.clone();
+    cache_.push_back(std::move(f));
   }
 
   void check_size(const cv::Mat& frame, std::int64_t index) const {
@@ -82,11 +132,12 @@ class VideoSource : public FrameSource {
                         "frame size or type changes within the video", "Re-export the video with one frame size");
   }
 
-  static constexpr std::size_t kCacheBytes = std::size_t(512) << 20;
+  static constexpr std::size_t kCacheBytes = std::size_t(256) << 20;
   std::string path_;
   VideoProbe probe_;
-  std::vector<cv::Mat> cache_;
+  std::vector<Frame> cache_;
   bool cached_ = false;
+  std::size_t cached_bytes_ = 0;
   std::int64_t frames_missing_ = 0;
 };
 

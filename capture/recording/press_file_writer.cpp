@@ -28,7 +28,7 @@ void describe(h5::Dataset dataset, const std::string& units, const std::string& 
 PressFileWriter::PressFileWriter(const std::string& path, const PressFileInfo& info, const cv::Mat& reference)
     : info_(info), file_(std::make_unique<h5::AtomicFile>(path, false)), drops_(1e9 / info.fps) {
   h5::Group root = file_->root();
-  frames_ = std::make_unique<VlenBytesWriter>(root, layout::kFrames);
+  frames_ = std::make_unique<dataset::VlenBytesWriter>(root, layout::kFrames);
   describe(frames_->dataset(), "",
            info.fourcc == V4L2_PIX_FMT_MJPEG ? "one JPEG per frame, the bytes the sensor sent (MJPG), not re-encoded"
                                              : "one lossless PNG per frame, converted from the sensor's " + fourcc_text(info.fourcc));

@@ -13,7 +13,7 @@
 
 #include "capture/device/drop_counter.hpp"
 #include "capture/device/frame.hpp"
-#include "capture/storage/vlen_bytes.hpp"
+#include "dataset/vlen_bytes.hpp"
 #include "core/h5/atomic_file.hpp"
 
 namespace haptex::capture {
@@ -53,7 +53,7 @@ class PressFileWriter {
   std::vector<std::uint8_t> encode(const Frame& frame) const;
   PressFileInfo info_;
   std::unique_ptr<h5::AtomicFile> file_;
-  std::unique_ptr<VlenBytesWriter> frames_;
+  std::unique_ptr<dataset::VlenBytesWriter> frames_;
   std::vector<std::int64_t> timestamps_;
   std::vector<std::uint32_t> sequences_, flags_;
   std::vector<float> scores_;

@@ -42,23 +42,6 @@ h5::Dataset write_image(h5::Group& group, const std::string& name, const cv::Mat
   return d;
 }
 
-h5::Dataset write_image_stack(h5::Group& group, const std::string& name, const std::vector<cv::Mat>& bgr,
-                              const std::string& description) {
-  CV_Assert(!bgr.empty());
-  std::vector<std::uint8_t> rgb;
-  rgb.reserve(bgr.size() * bgr.front().total() * 3);
-  for (const auto& image : bgr) {
-    CV_Assert(image.type() == CV_8UC3 && image.size() == bgr.front().size());
-    append_rgb(image, rgb);
-  }
-  const cv::Mat& first = bgr.front();
-  h5::Dataset d = group.write_array<std::uint8_t>(
-      name, rgb, {hsize_t(bgr.size()), hsize_t(first.rows), hsize_t(first.cols), 3}, per_image_chunks(first, 1));
-  d.set_attr("description", description);
-  state_order(d);
-  return d;
-}
-
 cv::Mat to_bgr(const cv::Mat& image, dataset::ChannelOrder order) {
   if (order == dataset::ChannelOrder::bgr) return image;
   cv::Mat bgr;

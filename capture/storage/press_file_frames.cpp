@@ -4,7 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include "capture/storage/vlen_bytes.hpp"
+#include "dataset/vlen_bytes.hpp"
 #include "core/error.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
@@ -21,7 +21,7 @@ PressFileFrames::PressFileFrames(std::string path)
     : path_(std::move(path)), file_(dataset::open_checked(path_, dataset::Kind::press)) {
   const h5::Group root = file_.root();
   frames_ = root.open_dataset(dataset::layout::kFrames);
-  if (!is_vlen_bytes(frames_))
+  if (!dataset::is_vlen_bytes(frames_))
     throw input_error(path_, "/frames", "expected variable-length uint8 frames", "Record the press again");
   encoding_ = root.attr_string("encoding");
   if (encoding_ != "jpeg" && encoding_ != "png")
@@ -36,6 +36,6 @@ PressFileFrames::PressFileFrames(std::string path)
   count_ = frames_.shape().at(0);
 }
 
-std::vector<std::uint8_t> PressFileFrames::bytes(std::size_t index) const { return read_vlen_bytes(frames_, index); }
+std::vector<std::uint8_t> PressFileFrames::bytes(std::size_t index) const { return dataset::read_vlen_bytes(frames_, index); }
 
 }  // namespace haptex::capture

@@ -44,7 +44,8 @@ VideoProbe probe_video_file(const std::string& path) {
     if (fourcc == std::uint32_t(cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]))) probe.lossless = true;
   probe.inter_frame = !probe.lossless;
   for (const char* codec : {"MJPG", "mjpg", "AVRn", "dmb1", "jpeg"})
-    if (fourcc == std::uint32_t(cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]))) probe.inter_frame = false;
+    if (fourcc == std::uint32_t(cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]))) probe.mjpeg = true;
+  if (probe.mjpeg) probe.inter_frame = false;
   return probe;
 }
 

@@ -21,6 +21,7 @@ struct VideoProbe {
   // Lossy with prediction between frames (MPEG-4, H.264 ...): its no-contact frames copy each other's
   // compression noise, unlike MJPG's, whose frames are each compressed alone.
   bool inter_frame = false;
+  bool mjpeg = false;  // each frame a JPEG (MJPG): read raw, the frames' bytes can be kept as they are
 };
 // Opens the video and reads its first frame. Throws haptex::Error (bad_input) naming the file when
 // it does not open or has no readable frame.

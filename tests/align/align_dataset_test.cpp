@@ -50,7 +50,7 @@ TEST(AlignDataset, JoinsMaterialsByNormalisedNameAndListsTheRest) {
   EXPECT_EQ(r.windows, 123u);
 
   const h5::Group root = h5::File::open(in.dataset).root();
-  EXPECT_EQ(root.attr_string("haptex_format"), "dataset/2");
+  EXPECT_EQ(root.attr_string("haptex_format"), "dataset/3");
   EXPECT_EQ(root.open_group("windows").attr_int("action_end"), 500);
   EXPECT_EQ(root.attr_string("recordings_sha256").size(), 64u);
   const h5::Group book = root.open_group("materials").open_group("book");
@@ -119,7 +119,7 @@ TEST(AlignDataset, RefusesPressesOfDifferentSizesWithinAMaterial) {
   Inputs in;
   make_inputs(in, 40);
   const std::string message = bad_input_message([&] { align_dataset(options_for(in)); });
-  EXPECT_NE(message.find("/materials/book/presses/4/peak"), std::string::npos) << message;
+  EXPECT_NE(message.find("/materials/book/presses/4: image size differs"), std::string::npos) << message;
   EXPECT_FALSE(std::filesystem::exists(in.dataset));
 }
 

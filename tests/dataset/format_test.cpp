@@ -33,7 +33,7 @@ std::string refusal(const std::string& path, Kind kind) {
 }
 
 TEST(Format, NamesAndKindsAgree) {
-  EXPECT_EQ(format_name(Kind::dataset), "dataset/2");
+  EXPECT_EQ(format_name(Kind::dataset), "dataset/3");
   EXPECT_EQ(format_name(Kind::recordings), "recordings/1");
   EXPECT_EQ(format_name(Kind::model), "model/2");
   EXPECT_EQ(format_name(Kind::windows), "windows/1");
@@ -46,7 +46,7 @@ TEST(Format, NamesAndKindsAgree) {
 TEST(Format, OpensTheRightKindAndRefusesEveryOtherWithTheFix) {
   const test::TempDir dir;
   const std::string name = "it's \"a\" `file`.h5";  // quotes and back-quotes reach no shell
-  EXPECT_NO_THROW(open_checked(file_with_format(dir, name, "dataset/2"), Kind::dataset));
+  EXPECT_NO_THROW(open_checked(file_with_format(dir, name, "dataset/3"), Kind::dataset));
 
   const std::string older = refusal(file_with_format(dir, "old.h5", "dataset/1"), Kind::dataset);
   EXPECT_NE(older.find("old.h5"), std::string::npos) << older;
@@ -54,8 +54,15 @@ TEST(Format, OpensTheRightKindAndRefusesEveryOtherWithTheFix) {
   EXPECT_NE(older.find("older haptex"), std::string::npos) << older;
   EXPECT_NE(older.find("haptex align again"), std::string::npos) << older;
 
+  // gelsight/1 and dataset/2 stored the press images as pixels.
+  const std::string pixels = refusal(file_with_format(dir, "g1.h5", "gelsight/1"), Kind::gelsight);
+  EXPECT_NE(pixels.find("as pixels"), std::string::npos) << pixels;
+  EXPECT_NE(pixels.find("Run haptex capture extract again to write gelsight/2"), std::string::npos) << pixels;
+  const std::string dataset2 = refusal(file_with_format(dir, "d2.h5", "dataset/2"), Kind::dataset);
+  EXPECT_NE(dataset2.find("dataset/2 stored the press images as pixels"), std::string::npos) << dataset2;
+
   const std::string other = refusal(file_with_format(dir, "rec.h5", "recordings/1"), Kind::dataset);
-  EXPECT_NE(other.find("'recordings/1', not dataset/2"), std::string::npos) << other;
+  EXPECT_NE(other.find("'recordings/1', not dataset/3"), std::string::npos) << other;
   EXPECT_NE(other.find("haptex align wrote"), std::string::npos) << other;
 
   const std::string plain = refusal(file_with_format(dir, "plain.h5", ""), Kind::model);

@@ -60,7 +60,7 @@ TEST_F(ExtractCli, AFolderOfMaterialsBecomesTheGelsightFile) {
   EXPECT_TRUE(fs::exists(dir_.file("gelsight_sheets/brick_2_press_1.png")));
   const CommandResult info = run_haptex({"info", out()});
   ASSERT_EQ(info.exit_code, 0) << info.err;
-  EXPECT_NE(info.out.find("gelsight/1"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("gelsight/2"), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("brick_2 (Brick 2)"), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("presses: 2"), std::string::npos) << info.out;
 }

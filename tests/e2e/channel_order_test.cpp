@@ -11,8 +11,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/device/fake_scene.hpp"
-#include "capture/storage/image_datasets.hpp"
-#include "capture/storage/vlen_bytes.hpp"
+#include "dataset/press_images.hpp"
+#include "dataset/vlen_bytes.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "predict/model_file.hpp"
@@ -42,18 +42,41 @@ double red_blue_difference(const std::vector<std::uint8_t>& pixels) {
   return sum / double(pixels.size() / 3);
 }
 
+// The pixels a dataset stores, interleaved in their stored order: an array's as they are, encoded
+// images' as their format decodes them (R first), one after the other.
 std::vector<std::uint8_t> stored(const std::string& file, const std::string& path) {
-  return h5::File::open(file).root().open_dataset(path).read<std::uint8_t>();
+  const h5::Dataset d = h5::File::open(file).root().open_dataset(path);
+  if (!dataset::is_vlen_bytes(d)) return d.read<std::uint8_t>();
+  std::vector<std::uint8_t> pixels;
+  for (std::size_t i = 0; i < d.shape()[0]; ++i) {
+    cv::Mat rgb;
+    cv::cvtColor(cv::imdecode(dataset::read_vlen_bytes(d, i), cv::IMREAD_COLOR), rgb, cv::COLOR_BGR2RGB);
+    pixels.insert(pixels.end(), rgb.data, rgb.data + rgb.total() * 3);
+  }
+  return pixels;
 }
 
 // The stored pixels of `images` (datasets of the group `press`) swapped, and `order` stated on the
-// group and on each image.
+// group and on each image; encoded images are stored again as PNG, lossless.
 void swap_images(const std::string& file, const std::string& press, const std::vector<std::string>& images,
                  const std::string& order) {
   Edit e(file);
   const std::string prefix = press.empty() ? "" : press + "/";
   for (const auto& name : images) {
-    e.change_bytes(prefix + name, swap_red_blue);
+    const h5::Dataset d = e.dataset(prefix + name);
+    if (!dataset::is_vlen_bytes(d)) {
+      e.change_bytes(prefix + name, swap_red_blue);
+    } else {
+      std::vector<dataset::EncodedImage> swapped;
+      for (std::size_t i = 0; i < d.shape()[0]; ++i) {
+        cv::Mat image = cv::imdecode(dataset::read_vlen_bytes(d, i), cv::IMREAD_COLOR);
+        cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
+        swapped.push_back(dataset::encode_png(image));
+      }
+      e.remove(prefix + name);
+      h5::Group g = press.empty() ? e.root() : e.group(press);
+      dataset::write_press_images(g, name, swapped, "swapped by a test");
+    }
     e.dataset(prefix + name).set_attr("channel_order", order);
   }
   (press.empty() ? e.root() : e.group(press)).set_attr("channel_order", order);
@@ -68,7 +91,7 @@ void swap_press_file(const std::string& file, const std::string& order) {
   std::vector<std::vector<std::uint8_t>> encoded;
   const h5::Dataset frames = e.dataset("frames");
   for (std::size_t i = 0; i < frames.shape()[0]; ++i) {
-    cv::Mat image = cv::imdecode(capture::read_vlen_bytes(frames, i), cv::IMREAD_COLOR);
+    cv::Mat image = cv::imdecode(dataset::read_vlen_bytes(frames, i), cv::IMREAD_COLOR);
     cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
     std::vector<std::uint8_t> bytes;
     ASSERT_TRUE(cv::imencode(jpeg ? ".jpg" : ".png", image, bytes, {cv::IMWRITE_JPEG_QUALITY, 100}));
@@ -76,7 +99,7 @@ void swap_press_file(const std::string& file, const std::string& order) {
   }
   e.remove("frames");
   h5::Group root = e.root();
-  capture::VlenBytesWriter writer(root, "frames");
+  dataset::VlenBytesWriter writer(root, "frames");
   for (const auto& bytes : encoded) writer.append(bytes);
 }
 
@@ -87,12 +110,12 @@ void extract(const std::string& input, const std::string& output, std::vector<st
   ASSERT_EQ(r.exit_code, 0) << r.err;
 }
 
-// The texture descriptor of a gelsight press, its images read by haptex (capture::read_image honours
-// the stated order) and handed over as RGB, the order texture_descriptor takes.
+// The texture descriptor of a gelsight press, its images read by haptex (dataset::read_press_image
+// honours the stated order) and handed over as RGB, the order texture_descriptor takes.
 std::vector<float> descriptor_of(const std::string& gelsight, const std::string& press) {
   const h5::File f = h5::File::open(gelsight);
   const h5::Group g = f.root().open_group(press);
-  cv::Mat peak = capture::read_image(g, "peak"), reference = capture::read_image(g, "reference");
+  cv::Mat peak = dataset::read_press_image(g, "peak"), reference = dataset::read_press_image(g, "reference");
   cv::cvtColor(peak, peak, cv::COLOR_BGR2RGB);
   cv::cvtColor(reference, reference, cv::COLOR_BGR2RGB);
   return predict::texture_descriptor(peak, reference);
@@ -194,8 +217,9 @@ TEST_F(ColourOrder, AVideoIsStoredInItsTrueColoursAndReadBackInTheStatedOrder) {
   const capture::FakeScene scene(V4L2_PIX_FMT_MJPEG, 160, 120, schedule);
   cv::Mat frame = scene.image(int(std::lround(depth[std::size_t(at)] * capture::FakeScene::kDepthLevels)), int(at % 2)), rgb;
   cv::cvtColor(frame, rgb, cv::COLOR_BGR2RGB);
-  const std::vector<std::uint8_t> peak = press.open_dataset("peak").read<std::uint8_t>();
+  const std::vector<std::uint8_t> peak = stored(dir_.file("g.h5"), kGelsightPress + "/peak");
   ASSERT_EQ(peak, std::vector<std::uint8_t>(rgb.data, rgb.data + rgb.total() * 3));
+  EXPECT_EQ(press.open_dataset("peak").attr_string("encoding"), "png") << "FFV1 frames are stored losslessly";
   ASSERT_GT(red_blue_difference(peak), 20.0);
 
   const std::string blue_first = copy_into(dir_, dir_.file("g.h5"), "blue_first.h5"),

@@ -87,8 +87,14 @@ for mid in grid.materials:
     presses = haptex_data.read_presses(dataset, split, mid, ("train",))
     check([p.press for p in presses] == split.material_presses[mid]["train"], f"{mid}: read_presses numbers")
     with h5py.File(dataset, "r") as f:
-        check(all(np.array_equal(p.peak, f[f"materials/{mid}/presses/{p.press}/peak"][()]) and p.peak.ndim == 3 for p in presses),
+        check(all(np.array_equal(p.peak, haptex_data.decode_image(f[f"materials/{mid}/presses/{p.press}/peak"][0]))
+                  and p.peak.shape == (f[f"materials/{mid}/presses/{p.press}"].attrs["height"],
+                                       f[f"materials/{mid}/presses/{p.press}"].attrs["width"], 3) for p in presses),
               f"{mid}: read_presses peaks")
+        for p in presses:  # the peak is the frame of its index among the stored frames
+            g = f[f"materials/{mid}/presses/{p.press}"]
+            k = list(g["frame_indices"][()]).index(g["peak_index"][()])
+            check(np.array_equal(p.peak, haptex_data.decode_image(g["frames"][k])), f"{mid}: press {p.press}'s peak among its frames")
 
 # grid_sections: the grid's test sections, each its consecutive rows of one material, recording and section.
 sections = haptex_data.grid_sections(grid)

@@ -12,6 +12,7 @@
 
 #include "core/h5/file.hpp"
 #include "predict/model_file.hpp"
+#include "dataset/press_images.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -23,17 +24,11 @@ const std::string kScript = std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/mode
 
 bool have_numpy() { return python_has("h5py, numpy"); }
 
-// A dataset image (H x W x 3 uint8, RGB) as a PNG a user would pass to haptex predict.
+// A dataset image (`reference` or `peak` of a press) as a PNG a user would pass to haptex predict.
 void write_press_png(const std::string& dataset, const std::string& object, const std::string& png) {
-  const h5::Dataset d = h5::File::open(dataset).root().open_dataset(object);
-  const h5::Shape shape = d.shape();
-  ASSERT_EQ(shape.size(), 3u) << object;
-  ASSERT_EQ(shape[2], 3u) << object;
-  std::vector<std::uint8_t> rgb = d.read<std::uint8_t>();
-  const cv::Mat image{int(shape[0]), int(shape[1]), CV_8UC3, rgb.data()};
-  cv::Mat bgr;
-  cv::cvtColor(image, bgr, cv::COLOR_RGB2BGR);
-  ASSERT_TRUE(cv::imwrite(png, bgr)) << png;
+  const auto slash = object.rfind('/');
+  const h5::Group press = h5::File::open(dataset).root().open_group(object.substr(0, slash));
+  ASSERT_TRUE(cv::imwrite(png, dataset::read_press_image(press, object.substr(slash + 1)))) << png;
 }
 
 CommandResult check(const std::string& model, const std::string& json_file) {

@@ -48,7 +48,7 @@ std::vector<BadShard> bad_shards() {
       {"truncated, quoted name", [=](const TempDir& d) { return truncated(d, kQuoted); }, {"copy it again"}},
       {"another format", [&](const TempDir&) { return p.truth; }, {"/@haptex_format", "is 'truth/2'", "haptex merge joins"}},
       {"another shard's format", [&](const TempDir& d) { return second_material_of(d, p.gelsight, "g.h5"); },
-       {"is gelsight/1, but", "good.h5 is recordings/1", "Merge files of one format"}},
+       {"is gelsight/2, but", "good.h5 is recordings/1", "Merge files of one format"}},
       {"no material", [&](const TempDir& d) { return copy_with_materials(d, p.recordings, "empty.h5", {}); },
        {"/materials: holds no material", "Leave the file out"}},
       {"a root object merge cannot join", [&](const TempDir& d) {

@@ -85,7 +85,7 @@ TEST(MergeFiles, CopiesEveryMaterialAndRecordsEachShard) {
   EXPECT_EQ(r.kind, Kind::gelsight);
   const h5::File merged = h5::File::open(dir.file("m.h5"));
   const h5::Group root = merged.root();
-  EXPECT_EQ(root.attr_string("haptex_format"), "gelsight/1");
+  EXPECT_EQ(root.attr_string("haptex_format"), "gelsight/2");
   EXPECT_EQ(root.attr_string("source"), "haptex merge (test)");
   const h5::Group materials = root.open_group("materials");
   EXPECT_EQ(materials.children(), (std::vector<std::string>{"brick", "cork", "wood"}));
@@ -98,7 +98,7 @@ TEST(MergeFiles, CopiesEveryMaterialAndRecordsEachShard) {
   EXPECT_EQ(first.attr_string("materials"), "cork wood");
   EXPECT_EQ(first.attr_string("left_out"), "");
   EXPECT_EQ(first.attr_string("source"), "haptex test a.h5");
-  EXPECT_EQ(first.attr_string("haptex_format"), "gelsight/1");
+  EXPECT_EQ(first.attr_string("haptex_format"), "gelsight/2");
   EXPECT_EQ(root.open_group("shards").open_group("1").attr_string("materials"), "brick");
 }
 
@@ -153,13 +153,13 @@ TEST(MergeFiles, RefusesShardsThatCannotBeJoinedNamingTheFile) {
   const std::string out = dir.file("m.h5");
   const std::string r = shard(dir, "r.h5", Kind::recordings, {{"cork"}}), g = shard(dir, "g.h5", Kind::gelsight, {{"felt"}});
   const std::string mixed = refusal(options({r, g}, out));
-  EXPECT_NE(mixed.find(g + ": /@haptex_format: is gelsight/1, but " + r + " is recordings/1"), std::string::npos) << mixed;
+  EXPECT_NE(mixed.find(g + ": /@haptex_format: is gelsight/2, but " + r + " is recordings/1"), std::string::npos) << mixed;
 
   const std::string empty = refusal(options({r, shard(dir, "e.h5", Kind::recordings, {})}, out));
   EXPECT_NE(empty.find("e.h5: /materials: holds no material"), std::string::npos) << empty;
 
   const std::string model = refusal(options({r, shard(dir, "model.h5", Kind::model, {{"cork"}})}, out));
-  EXPECT_NE(model.find("is 'model/2': haptex merge joins recordings/1, gelsight/1 or dataset/2"), std::string::npos) << model;
+  EXPECT_NE(model.find("is 'model/2': haptex merge joins recordings/1, gelsight/2 or dataset/3"), std::string::npos) << model;
 
   fs::create_symlink(r, dir.file("link.h5"));
   const std::string twice = refusal(options({r, dir.file("link.h5")}, out));

@@ -126,7 +126,7 @@ TEST(GelsightResolution, FailsOnAPressWhoseImagesDifferInSizeAndPassesWhenTheyAg
   file.presses[1] = press("m", 1, full, half);
   const qa::CheckResult differ = qa::check_gelsight_resolution(file);
   EXPECT_EQ(differ.status, qa::Status::fail);
-  EXPECT_EQ(differ.message, "/materials/m/presses/1: reference, peak and frames differ in size");
+  EXPECT_EQ(differ.message, "/materials/m/presses/1: reference, peak, frames and the press's width and height differ in size");
 }
 
 TEST(GelsightResolution, SkipsAMaterialWithoutPresses) {

@@ -3,7 +3,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "capture/storage/image_datasets.hpp"
+#include "dataset/press_images.hpp"
 #include "qa/run_qa.hpp"
 #include "tests/qa/qa_fixture.hpp"
 #include "tests/support/mutations.hpp"
@@ -20,30 +20,30 @@ class GelsightMutation : public ::testing::Test {
   std::string file_ = copy_into(dir_, small_pipeline().gelsight, "gelsight.h5");
 };
 
-// Every frame of an N x H x W x 3 stack through `change` (RGB in, RGB out).
-// Every image of `path`: a stack N x H x W x 3 or a single H x W x 3 image.
-void change_frames(Edit& e, const std::string& path, const std::function<void(cv::Mat&)>& change) {
-  h5::Shape shape = e.dataset(path).shape();
-  if (shape.size() == 3) shape.insert(shape.begin(), 1);
-  e.change_bytes(path, [&](std::vector<std::uint8_t>& bytes) {
-    const std::size_t frame = shape[1] * shape[2] * 3;
-    for (std::size_t i = 0; i < shape[0]; ++i) {
-      cv::Mat image(static_cast<int>(shape[1]), static_cast<int>(shape[2]), CV_8UC3, bytes.data() + i * frame);
-      change(image);
-    }
-  });
-}
-
-void replace_image(Edit& e, const std::string& path, const cv::Mat& bgr) {
+// Replaces the encoded images of `path` by `bgr`, stored as PNG.
+void replace_images(Edit& e, const std::string& path, const std::vector<cv::Mat>& bgr) {
   const auto slash = path.rfind('/');
   h5::Group g = e.group(path.substr(0, slash));
   e.remove(path);
-  capture::write_image(g, path.substr(slash + 1), bgr, "replaced by a qa test");
+  std::vector<dataset::EncodedImage> png;
+  for (const cv::Mat& image : bgr) png.push_back(dataset::encode_png(image));
+  dataset::write_press_images(g, path.substr(slash + 1), png, "replaced by a qa test");
 }
 
-cv::Mat image_at(const Edit& e, const std::string& path) {
+std::vector<cv::Mat> images_at(const Edit& e, const std::string& path) {
   const auto slash = path.rfind('/');
-  return capture::read_image(e.group(path.substr(0, slash)), path.substr(slash + 1));
+  return dataset::read_press_images(e.group(path.substr(0, slash)), path.substr(slash + 1));
+}
+
+// Every image of `path` through `change` (RGB in, RGB out), stored again as PNG.
+void change_frames(Edit& e, const std::string& path, const std::function<void(cv::Mat&)>& change) {
+  std::vector<cv::Mat> images = images_at(e, path);
+  for (cv::Mat& image : images) {
+    cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
+    change(image);
+    cv::cvtColor(image, image, cv::COLOR_RGB2BGR);
+  }
+  replace_images(e, path, images);
 }
 
 TEST_F(GelsightMutation, MissingContrastIsLayoutRequired) {
@@ -51,11 +51,25 @@ TEST_F(GelsightMutation, MissingContrastIsLayoutRequired) {
   expect_only(qa(), "layout.required");
 }
 
-TEST_F(GelsightMutation, FramesOfAnotherSizeThanTheAttributesIsLayoutShape) {
+// The images carry their size inside; the press's attributes must state the same.
+TEST_F(GelsightMutation, ImagesOfAnotherSizeThanTheAttributesIsGelsightResolution) {
   Edit(file_).group(kPress).set_attr("width", std::int64_t(320));
   const qa::Report r = qa();
-  expect_only(r, "layout.shape");
-  EXPECT_NE(r.find("layout.shape")->message.find("= (H, W, 3)"), std::string::npos) << r.find("layout.shape")->message;
+  expect_only(r, "gelsight.resolution");
+  EXPECT_NE(r.find("gelsight.resolution")->message.find("width and height differ"), std::string::npos)
+      << r.find("gelsight.resolution")->message;
+}
+
+// Images stored as pixels (gelsight/1) or as bytes that are no image are reported, not crashed on.
+TEST_F(GelsightMutation, FramesThatAreNoEncodedImagesAreLayoutDtype) {
+  {
+    Edit e(file_);
+    e.remove(kPress + "/frames");
+    e.group(kPress).write_array<std::uint8_t>("frames", std::vector<std::uint8_t>(12 * 120 * 160 * 3, 128), {12, 120, 160, 3});
+  }
+  const qa::Report r = qa();
+  ASSERT_NE(r.find("layout.dtype"), nullptr);
+  EXPECT_EQ(r.find("layout.dtype")->status, qa::Status::fail) << r.find("layout.dtype")->message;
 }
 
 // Issue 11 point 5: capture extract counts the frames of a press's source that did not decode.
@@ -88,9 +102,7 @@ TEST_F(GelsightMutation, APressStoredBlueFirstPassesLikeTheOriginal) {
   {
     Edit e(file_);
     for (const std::string name : {"reference", "peak", "frames"}) {
-      e.change_bytes(kPress + "/" + name, [](std::vector<std::uint8_t>& pixels) {
-        for (std::size_t i = 0; i + 2 < pixels.size(); i += 3) std::swap(pixels[i], pixels[i + 2]);
-      });
+      change_frames(e, kPress + "/" + name, [](cv::Mat& rgb) { cv::cvtColor(rgb, rgb, cv::COLOR_RGB2BGR); });
       e.dataset(kPress + "/" + name).set_attr("channel_order", "BGR");
     }
     e.group(kPress).set_attr("channel_order", "BGR");
@@ -102,7 +114,7 @@ TEST_F(GelsightMutation, ReferenceTakenDuringContactIsGelsightReference) {
   {
     Edit e(file_);
     // Another press's peak frame as this press's "no-contact" reference.
-    replace_image(e, kPress + "/reference", image_at(e, "materials/sandpaper_1/presses/1/peak"));
+    replace_images(e, kPress + "/reference", images_at(e, "materials/sandpaper_1/presses/1/peak"));
   }
   const qa::Report r = qa();
   expect_only(r, "gelsight.reference");
@@ -112,7 +124,7 @@ TEST_F(GelsightMutation, ReferenceTakenDuringContactIsGelsightReference) {
 TEST_F(GelsightMutation, PeakWithoutContactIsGelsightPeakScore) {
   {
     Edit e(file_);
-    replace_image(e, kPress + "/peak", image_at(e, kPress + "/reference"));
+    replace_images(e, kPress + "/peak", images_at(e, kPress + "/reference"));
   }
   const qa::Report r = qa();
   expect_only(r, "gelsight.peak_score");
@@ -172,22 +184,10 @@ TEST_F(GelsightMutation, OnePressAtHalfSizeIsGelsightResolution) {
       cv::resize(m, out, {m.cols / 2, m.rows / 2}, 0, 0, cv::INTER_AREA);
       return out;
     };
-    const cv::Mat reference = half(image_at(e, press + "/reference")), peak = half(image_at(e, press + "/peak"));
-    const h5::Shape shape = e.dataset(press + "/frames").shape();
-    std::vector<cv::Mat> frames;
-    change_frames(e, press + "/frames", [&](cv::Mat& rgb) {
-      cv::Mat bgr;
-      cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-      frames.push_back(half(bgr));
-    });
-    replace_image(e, press + "/reference", reference);
-    replace_image(e, press + "/peak", peak);
-    e.remove(press + "/frames");
+    for (const char* image : {"reference", "peak", "frames"}) change_frames(e, press + "/" + image, [&](cv::Mat& rgb) { rgb = half(rgb); });
     h5::Group g = e.group(press);
-    capture::write_image_stack(g, "frames", frames, "resized by a qa test");
-    g.set_attr("width", std::int64_t(reference.cols));
-    g.set_attr("height", std::int64_t(reference.rows));
-    ASSERT_EQ(shape[0], frames.size());
+    g.set_attr("width", std::int64_t(80));
+    g.set_attr("height", std::int64_t(60));
   }
   const qa::Report r = qa();
   expect_only(r, "gelsight.resolution");

@@ -12,6 +12,8 @@
 #include "capture/recording/press_recorder.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
+#include "dataset/press_images.hpp"
+#include "dataset/vlen_bytes.hpp"
 #include "tests/capture/fake_setup.hpp"
 #include "tests/capture/press_videos.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -40,6 +42,13 @@ class Extract : public ::testing::Test {
   haptex::test::TempDir dir_;
 };
 
+// Every element of a dataset of encoded images.
+std::vector<dataset::EncodedImage> encoded(const h5::Dataset& d) {
+  std::vector<dataset::EncodedImage> images;
+  for (std::size_t i = 0; i < d.shape()[0]; ++i) images.push_back(dataset::read_vlen_bytes(d, i));
+  return images;
+}
+
 TEST_F(Extract, AFolderOfMaterialFoldersGivesStablePressNumbers) {
   video("Cork", "press_10.mkv", 1);
   video("Cork", "press_2.mkv", 2, 75);
@@ -56,7 +65,7 @@ TEST_F(Extract, AFolderOfMaterialFoldersGivesStablePressNumbers) {
   EXPECT_NE(r.presses[3].source.find("press_10.mkv"), std::string::npos);
   EXPECT_EQ(r.presses[3].press, 2);
   h5::File f = h5::File::open(out());
-  EXPECT_EQ(f.root().attr_string("haptex_format"), "gelsight/1");
+  EXPECT_EQ(f.root().attr_string("haptex_format"), "gelsight/2");
   const h5::Group cork = f.root().open_group("materials").open_group("cork");
   EXPECT_EQ(cork.attr_string("name"), "Cork");
   EXPECT_EQ(cork.open_group("presses").children(), (std::vector<std::string>{"0", "1", "2"}));
@@ -70,9 +79,10 @@ TEST_F(Extract, AVideoCutShortKeepsNoDamagedFrame) {
   fs::create_directories(dir_.path() / "videos");
   const std::string full = dir_.file("videos/full.avi"), cut = dir_.file("videos/cut.avi");
   fixtures::write_press_video(full, quick_presses(1), 45, 160, 120, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'));
-  std::vector<cv::Mat> frames;
+  std::vector<dataset::EncodedImage> frames;  // each frame's JPEG, as the file holds it
   cv::VideoCapture reader(full, cv::CAP_FFMPEG);
-  for (cv::Mat f; reader.read(f);) frames.push_back(f.clone());
+  ASSERT_TRUE(reader.set(cv::CAP_PROP_FORMAT, -1));
+  for (cv::Mat f; reader.read(f);) frames.emplace_back(f.data, f.data + f.total());
   ASSERT_EQ(frames.size(), 45u);
   fs::copy_file(full, cut);
   fs::resize_file(cut, fs::file_size(full) * 81 / 100);  // inside frame 36's JPEG, during the press's hold
@@ -82,14 +92,12 @@ TEST_F(Extract, AVideoCutShortKeepsNoDamagedFrame) {
   EXPECT_GT(r.frames_unreadable, 0) << "the frames the container announced but that never decoded";
   const h5::Group press = h5::File::open(out()).root().open_group("materials/videos/presses/0");
   const auto indices = press.open_dataset("frame_indices").read<std::int64_t>();
-  const std::vector<std::uint8_t> kept = press.open_dataset("frames").read<std::uint8_t>();
-  const std::size_t one = 160 * 120 * 3;
-  ASSERT_EQ(kept.size(), indices.size() * one);
+  const std::vector<dataset::EncodedImage> kept = encoded(press.open_dataset("frames"));
+  ASSERT_EQ(kept.size(), indices.size());
+  EXPECT_EQ(press.open_dataset("frames").attr_string("encoding"), "jpeg");
   for (std::size_t k = 0; k < indices.size(); ++k) {
-    cv::Mat rgb(120, 160, CV_8UC3, const_cast<std::uint8_t*>(kept.data() + k * one)), bgr;
-    cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
     ASSERT_LT(std::size_t(indices[k]), frames.size());
-    EXPECT_EQ(cv::norm(bgr, frames[std::size_t(indices[k])], cv::NORM_INF), 0.0) << "kept frame " << indices[k] << " is damaged";
+    EXPECT_EQ(kept[k], frames[std::size_t(indices[k])]) << "kept frame " << indices[k] << " is not the whole JPEG the file held";
   }
   const std::int64_t peak = press.open_dataset("peak_index").read<std::int64_t>().at(0);
   EXPECT_EQ(press.attr_int("source_frames_unreadable"), r.frames_unreadable) << "the gelsight file records them for qa";
@@ -114,18 +122,19 @@ TEST_F(Extract, EachPressHoldsReferencePeakTwelveFramesAndScores) {
   EXPECT_GE(peak, g.attr_int("contact_first"));
   EXPECT_LE(peak, g.attr_int("contact_last"));
   EXPECT_FLOAT_EQ(contrast[std::size_t(peak - start)], float(g.attr_double("peak_score")));
-  EXPECT_EQ(g.open_dataset("frames").shape(), (h5::Shape{12, 120, 160, 3}));
-  EXPECT_EQ(g.open_dataset("peak").shape(), (h5::Shape{120, 160, 3}));
-  EXPECT_EQ(g.open_dataset("reference").shape(), (h5::Shape{120, 160, 3}));
+  EXPECT_EQ(g.open_dataset("frames").shape(), (h5::Shape{12}));
+  EXPECT_EQ(g.open_dataset("peak").shape(), (h5::Shape{1}));
+  EXPECT_EQ(g.open_dataset("reference").shape(), (h5::Shape{1}));
   EXPECT_EQ(g.open_dataset("peak").attr_string("channel_order"), "RGB");
-  // The peak is one of the 12 frames, bit for bit.
+  for (const char* name : {"frames", "peak", "reference"}) {
+    EXPECT_EQ(g.open_dataset(name).attr_string("encoding"), "png") << name << ": FFV1 frames and the reference are lossless";
+    for (const cv::Mat& image : dataset::read_press_images(g, name)) EXPECT_EQ(image.size(), cv::Size(160, 120)) << name;
+  }
+  // The peak is one of the 12 frames, byte for byte.
   const auto indices = g.open_dataset("frame_indices").read<std::int64_t>();
-  const auto frames = g.open_dataset("frames").read<std::uint8_t>();
-  const auto peak_rgb = g.open_dataset("peak").read<std::uint8_t>();
   const auto at = std::find(indices.begin(), indices.end(), peak) - indices.begin();
   ASSERT_LT(at, 12);
-  const std::size_t image = 120 * 160 * 3;
-  EXPECT_TRUE(std::equal(peak_rgb.begin(), peak_rgb.end(), frames.begin() + std::ptrdiff_t(std::size_t(at) * image)));
+  EXPECT_EQ(encoded(g.open_dataset("peak")).at(0), encoded(g.open_dataset("frames")).at(std::size_t(at)));
 }
 
 TEST_F(Extract, PressFilesFromTheRecorderNameTheirMaterial) {
@@ -232,7 +241,7 @@ TEST_F(Extract, SequencesOnSeveralThreadsGiveTheSameFileAsOneAtATime) {
       return f.root().open_group("materials").open_group(p.material_id).open_group("presses").open_group(std::to_string(p.press));
     };
     for (const char* name : {"frames", "peak", "reference"})
-      EXPECT_EQ(group(fb, pb).open_dataset(name).read<std::uint8_t>(), group(fa, pa).open_dataset(name).read<std::uint8_t>())
+      EXPECT_EQ(encoded(group(fb, pb).open_dataset(name)), encoded(group(fa, pa).open_dataset(name)))
           << pa.source << " " << name;
   }
   // Two unreadable frames in two sequences of one chunk: the error names the first in order.

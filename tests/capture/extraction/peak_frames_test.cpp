@@ -75,7 +75,8 @@ TEST(PlanPresses, AvoidsFramesThatDidNotDecodeAndNeverSharesFrames) {
   EXPECT_LT(plans[0].frame_indices.back(), plans[1].frame_indices.front());
 }
 
-// An in-memory source: frames are solid images whose grey level is their index.
+// An in-memory source: frames are solid images whose grey level is their index; frames from 40 on
+// come with their bytes (as an MJPG video's do), the earlier ones without.
 class MemorySource : public FrameSource {
  public:
   explicit MemorySource(int frames) : frames_(frames) {}
@@ -85,10 +86,12 @@ class MemorySource : public FrameSource {
   std::string sha256() const override { return {}; }
   bool lossless() const override { return true; }
   void scan(const Visitor&, const std::function<bool(std::int64_t)>&) override {}
-  void read(const std::vector<std::int64_t>& indices,
-            const std::function<void(std::int64_t, const cv::Mat&)>& deliver) override {
+  void read(const std::vector<std::int64_t>& indices, const Delivery& deliver) override {
     requested = indices;
-    for (auto i : indices) deliver(i, cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(double(i))));
+    for (auto i : indices) {
+      const cv::Mat frame(24, 32, CV_8UC3, cv::Scalar::all(double(i)));
+      deliver(i, frame, i >= 40 ? dataset::encode_png(frame) : dataset::EncodedImage{});
+    }
   }
   std::vector<std::int64_t> requested;
 
@@ -105,12 +108,19 @@ TEST(ReadPressFrames, ReadsEachFrameOnceAndHandsOverEveryPressInOrder) {
   b.contact = {40, 50, 44, 1};
   b.frame_indices = {42, 43, 44, 45};
   std::vector<std::int64_t> seen_peaks;
-  read_press_frames(source, {a, b}, [&](const PressPlan& plan, std::vector<cv::Mat> frames, const cv::Mat& peak) {
-    ASSERT_EQ(frames.size(), plan.frame_indices.size());
-    for (std::size_t i = 0; i < frames.size(); ++i) EXPECT_EQ(frames[i].at<cv::Vec3b>(0, 0)[0], plan.frame_indices[i]);
-    seen_peaks.push_back(peak.at<cv::Vec3b>(0, 0)[0]);
+  std::vector<std::size_t> encoded;
+  read_press_frames(source, {a, b}, [&](const PressPlan& plan, PressFrames p) {
+    ASSERT_EQ(p.frames.size(), plan.frame_indices.size());
+    for (std::size_t i = 0; i < p.frames.size(); ++i) EXPECT_EQ(p.frames[i].at<cv::Vec3b>(0, 0)[0], plan.frame_indices[i]);
+    seen_peaks.push_back(p.peak.at<cv::Vec3b>(0, 0)[0]);
+    encoded.push_back(p.frames_encoded.size());
+    for (std::size_t i = 0; i < p.frames_encoded.size(); ++i)
+      EXPECT_EQ(cv::imdecode(p.frames_encoded[i], cv::IMREAD_COLOR).at<cv::Vec3b>(0, 0)[0], plan.frame_indices[i]);
+    if (!p.frames_encoded.empty()) EXPECT_EQ(cv::imdecode(p.peak_encoded, cv::IMREAD_COLOR).at<cv::Vec3b>(0, 0)[0], 44);
+    else EXPECT_TRUE(p.peak_encoded.empty());
   });
   EXPECT_EQ(seen_peaks, (std::vector<std::int64_t>{15, 44}));
+  EXPECT_EQ(encoded, (std::vector<std::size_t>{0, 4})) << "bytes for all of a press's frames, or for none";
   EXPECT_EQ(source.requested, (std::vector<std::int64_t>{12, 13, 14, 15, 16, 42, 43, 44, 45}));
 }
 

@@ -12,7 +12,7 @@
 
 #include "capture/extraction/extract_presses.hpp"
 #include "capture/recording/press_recorder.hpp"
-#include "capture/storage/vlen_bytes.hpp"
+#include "dataset/vlen_bytes.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
@@ -109,7 +109,7 @@ TEST_F(Recorder, PressFilesHoldTheSensorsBytesUnchangedAndTheirMetadata) {
   const h5::Dataset frames = root.open_dataset("frames");
   for (std::size_t i = 0; i < p.frames; ++i) {
     EXPECT_EQ(sequence[i], std::uint32_t(p.take_first_frame) + i);
-    EXPECT_EQ(read_vlen_bytes(frames, i), camera_->scene()->payload(sequence[i])) << "frame " << i << " re-encoded";
+    EXPECT_EQ(dataset::read_vlen_bytes(frames, i), camera_->scene()->payload(sequence[i])) << "frame " << i << " re-encoded";
   }
   EXPECT_EQ(root.open_dataset("reference").shape(), (h5::Shape{240, 320, 3}));
   EXPECT_EQ(root.open_dataset("contrast").dtype(), "float32");
@@ -120,7 +120,7 @@ TEST_F(Recorder, YuyvFramesAreStoredAsLosslessPng) {
   ASSERT_EQ(r.presses.size(), 1u);
   h5::File f = h5::File::open(file("press_0.h5"));
   EXPECT_EQ(f.root().attr_string("encoding"), "png");
-  const auto png = read_vlen_bytes(f.root().open_dataset("frames"), 3);
+  const auto png = dataset::read_vlen_bytes(f.root().open_dataset("frames"), 3);
   const cv::Mat image = cv::imdecode(png, cv::IMREAD_COLOR);
   ASSERT_EQ(image.size(), cv::Size(320, 240));
   const std::uint32_t sequence = f.root().open_dataset("sequence").read<std::uint32_t>()[3];

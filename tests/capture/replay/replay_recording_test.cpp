@@ -12,7 +12,7 @@
 #include "capture/extraction/extract_presses.hpp"
 #include "capture/recording/press_recorder.hpp"
 #include "capture/replay/replay_device.hpp"
-#include "capture/storage/vlen_bytes.hpp"
+#include "dataset/vlen_bytes.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
 #include "tests/capture/fake_setup.hpp"
@@ -193,7 +193,7 @@ TEST_F(ReplayRecording, APressFileIsPlayedBackByteForByte) {
   const auto sequence = after.open_dataset("sequence").read<std::uint32_t>();
   ASSERT_EQ(sequence.size(), p.frames);
   for (std::size_t i = 0; i < sequence.size(); ++i)
-    EXPECT_EQ(read_vlen_bytes(replayed, i), read_vlen_bytes(stored, sequence[i])) << "frame " << i << " re-encoded";
+    EXPECT_EQ(dataset::read_vlen_bytes(replayed, i), dataset::read_vlen_bytes(stored, sequence[i])) << "frame " << i << " re-encoded";
 }
 
 TEST_F(ReplayRecording, ARawPressFileIsPlayedBackAsYuyv) {
@@ -214,8 +214,8 @@ TEST_F(ReplayRecording, ARawPressFileIsPlayedBackAsYuyv) {
   const h5::Group before = h5::File::open(original_file).root(), after = h5::File::open(file("session", r.presses[0].file)).root();
   const auto sequence = after.open_dataset("sequence").read<std::uint32_t>();
   for (std::size_t i = 0; i < sequence.size(); ++i) {
-    const cv::Mat a = cv::imdecode(read_vlen_bytes(before.open_dataset("frames"), sequence[i]), cv::IMREAD_COLOR);
-    const cv::Mat b = cv::imdecode(read_vlen_bytes(after.open_dataset("frames"), i), cv::IMREAD_COLOR);
+    const cv::Mat a = cv::imdecode(dataset::read_vlen_bytes(before.open_dataset("frames"), sequence[i]), cv::IMREAD_COLOR);
+    const cv::Mat b = cv::imdecode(dataset::read_vlen_bytes(after.open_dataset("frames"), i), cv::IMREAD_COLOR);
     ASSERT_EQ(a.size(), b.size()) << "frame " << i;
     // PNG -> YUYV -> PNG: the same image but for rounding in the colour conversion.
     EXPECT_LE(cv::norm(a, b, cv::NORM_INF), 3.0) << "frame " << i;

@@ -1,6 +1,7 @@
 #pragma once
 // A growing 1-D HDF5 dataset whose elements are byte strings of any length (variable-length uint8):
-// how press files keep MJPG frames exactly as the sensor sent them. h5py reads each element as a
+// how press files keep MJPG frames exactly as the sensor sent them, and gelsight and dataset files
+// their images (dataset/press_images.hpp). h5py reads each element as a
 // numpy uint8 array; cv2.imdecode turns it into the image.
 #include <cstdint>
 #include <span>
@@ -9,7 +10,7 @@
 
 #include "core/h5/node.hpp"
 
-namespace haptex::capture {
+namespace haptex::dataset {
 
 class VlenBytesWriter {
  public:
@@ -29,4 +30,4 @@ class VlenBytesWriter {
 std::vector<std::uint8_t> read_vlen_bytes(const h5::Dataset& dataset, std::size_t index);
 bool is_vlen_bytes(const h5::Dataset& dataset);
 
-}  // namespace haptex::capture
+}  // namespace haptex::dataset

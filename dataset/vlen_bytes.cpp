@@ -1,8 +1,8 @@
-#include "capture/storage/vlen_bytes.hpp"
+#include "dataset/vlen_bytes.hpp"
 
 #include "core/error.hpp"
 
-namespace haptex::capture {
+namespace haptex::dataset {
 namespace {
 
 h5::Handle byte_string_type() { return h5::Handle(H5Tvlen_create(H5T_NATIVE_UINT8)); }
@@ -45,11 +45,11 @@ bool is_vlen_bytes(const h5::Dataset& dataset) {
 
 std::vector<std::uint8_t> read_vlen_bytes(const h5::Dataset& dataset, std::size_t index) {
   if (!is_vlen_bytes(dataset))
-    throw input_error(dataset.file(), dataset.object_path(), "expected variable-length uint8 frames",
-                      "Was the file written by 'haptex capture record'?");
+    throw input_error(dataset.file(), dataset.object_path(), "expected variable-length uint8 (one encoded image or frame per element)",
+                      "Was the file written by haptex? Write it again with the haptex command that makes it");
   if (dataset.shape().size() != 1 || index >= dataset.shape()[0])
-    throw input_error(dataset.file(), dataset.object_path(), "frame " + std::to_string(index) + " does not exist",
-                      "The file is damaged; record the press again");
+    throw input_error(dataset.file(), dataset.object_path(), "element " + std::to_string(index) + " does not exist",
+                      "The file is damaged; write it again with the haptex command that makes it");
   const hsize_t start[1] = {index}, one[1] = {1};
   h5::Handle file_space(H5Dget_space(dataset.id()));
   H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, one, nullptr);
@@ -64,4 +64,4 @@ std::vector<std::uint8_t> read_vlen_bytes(const h5::Dataset& dataset, std::size_
   return bytes;
 }
 
-}  // namespace haptex::capture
+}  // namespace haptex::dataset

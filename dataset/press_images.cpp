@@ -1,0 +1,86 @@
+#include "dataset/press_images.hpp"
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "core/error.hpp"
+#include "core/image_header.hpp"
+#include "dataset/channel_order.hpp"
+#include "dataset/layout.hpp"
+#include "dataset/vlen_bytes.hpp"
+
+namespace haptex::dataset {
+namespace {
+
+// What a decoder may allocate for one image: the same bound `predict --image` sets (docs/predict.md).
+constexpr std::uint64_t kMaxPixels = std::uint64_t(64) << 20;
+
+Error bad_image(const h5::Dataset& d, std::size_t i, const std::string& what) {
+  return input_error(d.file(), d.object_path() + "[" + std::to_string(i) + "]", what,
+                     "Write the file again with haptex capture extract (and align)");
+}
+
+cv::Mat decode(const h5::Dataset& d, std::size_t i, const EncodedImage& bytes) {
+  if (image_encoding(bytes).empty()) throw bad_image(d, i, "is neither a JPEG nor a PNG image");
+  const std::optional<ImageSize> size = image_header_size(bytes);
+  if (size && std::uint64_t(size->width) * size->height > kMaxPixels)
+    throw bad_image(d, i, "its header states " + std::to_string(size->width) + " x " + std::to_string(size->height) +
+                              " pixels, over 64 megapixels");
+  cv::Mat image = cv::imdecode(bytes, cv::IMREAD_COLOR);
+  if (image.empty()) throw bad_image(d, i, "does not decode (a damaged image)");
+  return image;
+}
+
+}  // namespace
+
+std::string image_encoding(const EncodedImage& b) {
+  if (b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) return "jpeg";
+  static constexpr std::uint8_t kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (b.size() >= 8 && std::equal(kPng, kPng + 8, b.begin())) return "png";
+  return "";
+}
+
+EncodedImage encode_png(const cv::Mat& bgr) {
+  CV_Assert(bgr.type() == CV_8UC3);
+  EncodedImage png;
+  // OpenCV's default settings are its fast path (SUB filter, zlib level 1); setting a compression level
+  // would make libpng try every filter, twice as slow for nothing on sensor noise.
+  if (!cv::imencode(".png", bgr, png)) throw failure("cannot encode an image as PNG");
+  return png;
+}
+
+h5::Dataset write_press_images(h5::Group& press, const std::string& name, const std::vector<EncodedImage>& images,
+                               const std::string& description) {
+  CV_Assert(!images.empty());
+  const std::string encoding = image_encoding(images.front());
+  VlenBytesWriter writer(press, name);
+  for (const EncodedImage& image : images) {
+    if (image_encoding(image) != encoding || encoding.empty())
+      throw failure(writer.dataset().where() + ": images must all be JPEG or all PNG");
+    writer.append(image);
+  }
+  h5::Dataset& d = writer.dataset();
+  d.set_attr("description", description);
+  d.set_attr(layout::kEncoding, encoding);
+  d.set_attr(layout::kChannelOrder, channel_order_name(kWrittenChannelOrder));
+  return d;
+}
+
+std::vector<cv::Mat> read_press_images(const h5::Group& press, const std::string& name) {
+  const ChannelOrder order = read_channel_order(press, name);
+  const h5::Dataset d = press.open_dataset(name);
+  if (!is_vlen_bytes(d) || d.shape().size() != 1 || d.shape()[0] == 0)
+    throw input_error(d.file(), d.object_path(), "expected a 1-D dataset of encoded images (variable-length uint8)",
+                      "Files from before gelsight/2 stored pixels; run haptex capture extract (and align) again");
+  std::vector<cv::Mat> images;
+  for (std::size_t i = 0; i < d.shape()[0]; ++i) {
+    cv::Mat image = decode(d, i, read_vlen_bytes(d, i));
+    if (order == ChannelOrder::bgr) cv::cvtColor(image, image, cv::COLOR_RGB2BGR);  // the stored pixels were blue first
+    images.push_back(image);
+  }
+  return images;
+}
+
+cv::Mat read_press_image(const h5::Group& press, const std::string& name) { return read_press_images(press, name).front(); }
+
+}  // namespace haptex::dataset
