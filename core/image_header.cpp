@@ -1,5 +1,7 @@
 #include "core/image_header.hpp"
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <array>
 #include <fstream>
@@ -66,6 +68,29 @@ std::optional<ImageSize> image_header_size(const std::string& path) {
 std::optional<ImageSize> image_header_size(std::span<const std::uint8_t> bytes) {
   std::istringstream in(std::string(bytes.begin(), bytes.end()), std::ios::binary);
   return header_size(in);
+}
+
+bool is_complete_jpeg(std::span<const std::uint8_t> jpeg) {
+  if (jpeg.size() < 4 || jpeg[0] != 0xFF || jpeg[1] != 0xD8) return false;
+  const std::size_t tail = std::min<std::size_t>(jpeg.size(), 4096);
+  for (std::size_t i = jpeg.size() - 1; i + tail > jpeg.size() && i > 0; --i)
+    if (jpeg[i - 1] == 0xFF && jpeg[i] == 0xD9) return true;
+  return false;
+}
+
+bool is_complete_png(std::span<const std::uint8_t> png) {
+  static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (png.size() < 8 || !std::equal(kSignature, kSignature + 8, png.begin())) return false;
+  for (std::size_t at = 8; png.size() - at >= 12;) {
+    const std::uint32_t length = big_endian(&png[at], 4);
+    if (length > png.size() - at - 12) return false;
+    const std::uint32_t stored = big_endian(&png[at + 8 + length], 4);
+    if (crc32(0, &png[at + 4], uInt(length + 4)) != stored) return false;
+    const bool end = std::equal(&png[at + 4], &png[at + 8], "IEND");
+    at += 12 + std::size_t(length);
+    if (end) return at == png.size();
+  }
+  return false;
 }
 
 }  // namespace haptex

@@ -21,11 +21,14 @@ Error bad_image(const h5::Dataset& d, std::size_t i, const std::string& what) {
 }
 
 cv::Mat decode(const h5::Dataset& d, std::size_t i, const EncodedImage& bytes) {
-  if (image_encoding(bytes).empty()) throw bad_image(d, i, "is neither a JPEG nor a PNG image");
+  const std::string encoding = image_encoding(bytes);
+  if (encoding.empty()) throw bad_image(d, i, "is neither a JPEG nor a PNG image");
   const std::optional<ImageSize> size = image_header_size(bytes);
   if (size && std::uint64_t(size->width) * size->height > kMaxPixels)
     throw bad_image(d, i, "its header states " + std::to_string(size->width) + " x " + std::to_string(size->height) +
                               " pixels, over 64 megapixels");
+  if (!(encoding == "jpeg" ? is_complete_jpeg(bytes) : is_complete_png(bytes)))
+    throw bad_image(d, i, "does not decode (a damaged or cut-off " + encoding + ")");
   cv::Mat image = cv::imdecode(bytes, cv::IMREAD_COLOR);
   if (image.empty()) throw bad_image(d, i, "does not decode (a damaged image)");
   return image;

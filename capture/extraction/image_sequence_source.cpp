@@ -11,6 +11,7 @@
 #include "capture/extraction/frame_source.hpp"
 #include "capture/scoring/scoring_image.hpp"
 #include "core/error.hpp"
+#include "core/image_header.hpp"
 #include "core/sha256.hpp"
 
 namespace haptex::capture {
@@ -79,7 +80,10 @@ class ImageSequenceSource : public FrameSource {
   cv::Mat load(std::size_t i) const { return load(i, file_bytes(i)); }
 
   cv::Mat load(std::size_t i, const dataset::EncodedImage& bytes) const {
-    const cv::Mat image = bytes.empty() ? cv::Mat() : cv::imdecode(bytes, cv::IMREAD_COLOR);
+    // A cut-off JPEG or PNG is refused before libjpeg conceals it or libpng prints its complaint.
+    const std::string encoding = dataset::image_encoding(bytes);
+    const bool whole = encoding == "jpeg" ? is_complete_jpeg(bytes) : encoding == "png" ? is_complete_png(bytes) : !bytes.empty();
+    const cv::Mat image = whole ? cv::imdecode(bytes, cv::IMREAD_COLOR) : cv::Mat();
     if (image.empty())
       throw input_error(files_[i], "frame " + std::to_string(i), "cannot read the image", "Replace the damaged frame file");
     if (!size_.empty() && image.size() != size_)

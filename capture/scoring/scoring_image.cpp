@@ -1,5 +1,7 @@
 #include "capture/scoring/scoring_image.hpp"
 
+#include "core/image_header.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -99,14 +101,6 @@ cv::Mat scoring_image(const cv::Mat& frame) {
   cv::Mat reduced;  // sides that are no multiple of r: the last blocks are partial
   cv::resize(grey, reduced, size, 0, 0, cv::INTER_AREA);
   return to_float(reduced);
-}
-
-bool is_complete_jpeg(std::span<const std::uint8_t> jpeg) {
-  if (jpeg.size() < 4 || jpeg[0] != 0xFF || jpeg[1] != 0xD8) return false;
-  const std::size_t tail = std::min<std::size_t>(jpeg.size(), 4096);
-  for (std::size_t i = jpeg.size() - 1; i + tail > jpeg.size() && i > 0; --i)
-    if (jpeg[i - 1] == 0xFF && jpeg[i] == 0xD9) return true;
-  return false;
 }
 
 cv::Mat scoring_image_from_jpeg(std::span<const std::uint8_t> jpeg, cv::Size frame) {

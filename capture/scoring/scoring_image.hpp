@@ -13,6 +13,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "core/image_header.hpp"
+
 namespace haptex::capture {
 
 cv::Size scoring_size(cv::Size frame);
@@ -21,10 +23,7 @@ cv::Mat scoring_image(const cv::Mat& frame);
 // From MJPG bytes of a frame of size `frame`. Returns an empty Mat when the bytes do not decode
 // to an image of that size (a corrupt or truncated payload).
 cv::Mat scoring_image_from_jpeg(std::span<const std::uint8_t> jpeg, cv::Size frame);
-// A whole JPEG starts with SOI (FF D8) and ends with EOI (FF D9), perhaps followed by padding some
-// cameras add. A cut-off frame lacks EOI; libjpeg would still "decode" it, the missing part grey,
-// and that would score as contact.
-bool is_complete_jpeg(std::span<const std::uint8_t> jpeg);
+// is_complete_jpeg: core/image_header.hpp.
 // From packed YUYV (4:2:2) bytes: the Y samples (BT.601 video range) are the grey image. Empty Mat on
 // a size mismatch.
 cv::Mat scoring_image_from_yuyv(std::span<const std::uint8_t> yuyv, cv::Size frame);

@@ -2,6 +2,7 @@
 // trajectories, HDF5 files with wrong dtypes and shapes, images, videos). Each case asserts what the
 // README promises: exit code 2, one message naming the file, no crash, and no output or NAME.partial left.
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,8 @@
 #include <set>
 
 #include "core/gzip.hpp"
+#include "dataset/press_images.hpp"
+#include "dataset/vlen_bytes.hpp"
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/cluster_tree.hpp"
 #include "tests/support/mutations.hpp"
@@ -190,6 +193,54 @@ std::vector<HostileCase> trajectory_cases() {
 }
 
 // HDF5 files haptex wrote, each with one object of the wrong kind, type or shape.
+// A dataset whose press images `damage` spoils (in every press, so training meets one), with a split
+// made for it; `haptex train` decodes them.
+std::vector<HostileCase> press_image_cases() {
+  auto images = [](std::string name, std::function<void(Edit&, const std::string& press)> damage, std::string says) {
+    return HostileCase{"dataset press images", name,
+                       [=](const TempDir& d) {
+                         const std::string file = copy_into(d, small_pipeline().dataset, "d.h5");
+                         {
+                           Edit e(file);
+                           for (const std::string& m : e.group("materials").children())
+                             for (const std::string& j : e.group("materials/" + m + "/presses").children())
+                               damage(e, "materials/" + m + "/presses/" + j);
+                         }
+                         if (run_haptex({"split", file, "-o", d.file("s.json"), "--no-plots"}).exit_code != 0) return std::string();
+                         return file;
+                       },
+                       [](const TempDir& d, const std::string& file) { return quick_train_args(file, d.file("s.json"), d.file("m.h5")); },
+                       says};
+  };
+  // Frames replaced by `bytes` (every element), kept a dataset of encoded images.
+  auto frames_of = [](std::vector<std::uint8_t> bytes) {
+    return [=](Edit& e, const std::string& press) {
+      const std::size_t n = e.dataset(press + "/frames").shape()[0];
+      e.remove(press + "/frames");
+      h5::Group g = e.group(press);
+      dataset::VlenBytesWriter w(g, "frames");
+      for (std::size_t i = 0; i < n; ++i) w.append(bytes);
+      w.dataset().set_attr("channel_order", "RGB");
+      w.dataset().set_attr("encoding", "png");
+    };
+  };
+  const std::vector<std::uint8_t> png = dataset::encode_png(cv::Mat(60, 80, CV_8UC3, cv::Scalar(10, 20, 30)));
+  std::vector<std::uint8_t> huge = png;  // the IHDR's width and height at 100000 x 100000, its CRC made to fit
+  for (int k : {16, 20}) huge[std::size_t(k)] = 0x00, huge[std::size_t(k) + 1] = 0x01, huge[std::size_t(k) + 2] = 0x86, huge[std::size_t(k) + 3] = 0xA0;
+  const uLong crc = crc32(0, &huge[12], 17);
+  for (int k = 0; k < 4; ++k) huge[std::size_t(29 + k)] = std::uint8_t(crc >> (24 - 8 * k));
+  return {
+      images("frames that are no image", frames_of({'G', 'I', 'F', '8', '9', 'a', 0, 0}), "neither a JPEG nor a PNG"),
+      images("a frame whose header claims 100000 x 100000", frames_of(huge), "over 64 megapixels"),
+      images("a PNG cut short", frames_of(std::vector<std::uint8_t>(png.begin(), png.begin() + std::ptrdiff_t(png.size() / 2))),
+             "does not decode"),
+      images("frames stored as pixels (gelsight/1)", [](Edit& e, const std::string& press) {
+        e.remove(press + "/frames");
+        e.group(press).write_array<std::uint8_t>("frames", std::vector<std::uint8_t>(2 * 60 * 80 * 3, 7), {2, 60, 80, 3});
+      }, "encoded images"),
+  };
+}
+
 std::vector<HostileCase> hdf5_cases() {
   auto dataset_edit = [](std::string name, std::function<void(Edit&)> change, std::string says) {
     return HostileCase{"dataset HDF5", name,
@@ -298,7 +349,8 @@ std::set<std::string> names_in(const TempDir& dir) {
 
 std::vector<HostileCase> corpus() {
   std::vector<HostileCase> all;
-  for (auto part : {xml_cases(), gzip_cases(), csv_cases(), cluster_cases(), manifest_cases(), trajectory_cases(), hdf5_cases(), image_cases(), video_cases()})
+  for (auto part : {xml_cases(), gzip_cases(), csv_cases(), cluster_cases(), manifest_cases(), trajectory_cases(), hdf5_cases(),
+                    press_image_cases(), image_cases(), video_cases()})
     all.insert(all.end(), part.begin(), part.end());
   return all;
 }
