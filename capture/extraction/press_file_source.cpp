@@ -7,6 +7,7 @@
 #include "capture/storage/image_datasets.hpp"
 #include "capture/storage/press_file_frames.hpp"
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 #include "core/sha256.hpp"
 #include "dataset/channel_order.hpp"
 #include "dataset/layout.hpp"
@@ -40,18 +41,25 @@ class PressFileSource : public FrameSource {
   std::optional<StoredReference> stored_reference() const override { return reference_; }
   std::string material() const override { return material_; }
 
+  // Frames are read a block at a time (HDF5, one thread), their scoring images made on every core,
+  // then visited in order. A frame the visitor needs whole (the reference's) is decoded in full and
+  // scored from that, as one at a time would: need_full depends on the frames visited before it.
   void scan(const Visitor& visit, const std::function<bool(std::int64_t)>& need_full) override {
-    for (std::size_t i = 0; i < frames_.count(); ++i) {
-      const std::vector<std::uint8_t> bytes = frames_.bytes(i);
-      const std::int64_t index = std::int64_t(i);
-      if (need_full && need_full(index)) {
-        const cv::Mat full = decode(bytes);
-        visit(index, full.empty() ? cv::Mat() : scoring_image(full), full);
-      } else if (frames_.encoding() == "jpeg") {
-        visit(index, scoring_image_from_jpeg(bytes, frames_.size()), cv::Mat());  // reduced-size decoding: the fast path
-      } else {
-        const cv::Mat full = decode(bytes);
-        visit(index, full.empty() ? cv::Mat() : scoring_image(full), cv::Mat());
+    constexpr std::size_t kBlock = 64;
+    std::vector<std::vector<std::uint8_t>> bytes(kBlock);
+    std::vector<cv::Mat> scoring(kBlock);
+    for (std::size_t first = 0; first < frames_.count(); first += kBlock) {
+      const std::size_t n = std::min(kBlock, frames_.count() - first);
+      for (std::size_t k = 0; k < n; ++k) bytes[k] = frames_.bytes(first + k);
+      parallel_for(n, [&](std::size_t k) { scoring[k] = scoring_of(bytes[k]); });
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::int64_t index = std::int64_t(first + k);
+        if (need_full && need_full(index)) {
+          const cv::Mat full = decode(bytes[k]);
+          visit(index, full.empty() ? cv::Mat() : scoring_image(full), full);
+        } else {
+          visit(index, scoring[k], cv::Mat());
+        }
       }
     }
   }
@@ -70,6 +78,12 @@ class PressFileSource : public FrameSource {
   }
 
  private:
+  cv::Mat scoring_of(const std::vector<std::uint8_t>& bytes) const {
+    if (frames_.encoding() == "jpeg") return scoring_image_from_jpeg(bytes, frames_.size());  // reduced-size decoding
+    const cv::Mat full = decode(bytes);
+    return full.empty() ? cv::Mat() : scoring_image(full);
+  }
+
   cv::Mat decode(const std::vector<std::uint8_t>& bytes) const {
     if (bytes.empty() || (frames_.encoding() == "jpeg" && !is_complete_jpeg(bytes))) return {};
     cv::Mat image;
