@@ -21,7 +21,7 @@ class ConvertCommand : public Command {
   void declare(CLI::App& app) override {
     app.require_subcommand(1);
     hatt_ = app.add_subcommand("hatt", "HaTT recorded-data XML and CSV recordings -> recordings.h5");
-    hatt_->add_option("inputs", inputs_, "Recording files, or directories searched for *.xml and *.csv")->required();
+    hatt_->add_option("inputs", inputs_, "Recording files, or directories searched for *.xml, *.xml.gz and *.csv")->required();
     hatt_->add_option("--map", map_, "Field map JSON naming your files' elements (default: schemas/hatt-recording-map.json)");
     add_output_options(*hatt_);
 
@@ -54,7 +54,7 @@ class ConvertCommand : public Command {
   // What every reader shares: the output, the input size limit and --force.
   void add_output_options(CLI::App& sub) {
     sub.add_option("-o,--output", output_, "Recordings file to write (HDF5)")->required();
-    sub.add_option("--max-bytes", options_.max_bytes, "Refuse input files larger than this")
+    sub.add_option("--max-bytes", options_.max_bytes, "Refuse input files larger than this, or gzip files that expand to more")
         ->capture_default_str()
         ->check(positive_number());
     sub.add_flag("--force", options_.overwrite, "Replace the output file if it exists");

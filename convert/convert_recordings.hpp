@@ -29,7 +29,7 @@ struct ConvertResult {
   std::uintmax_t input_bytes = 0;
 };
 
-// Files as given; directories searched recursively for *.xml and *.csv; sorted by path so the
+// Files as given; directories searched recursively for *.xml, *.xml.gz and *.csv; sorted by path so the
 // recording numbers are stable. Refuses missing paths and an input list with no recordings.
 std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs);
 

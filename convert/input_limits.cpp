@@ -26,9 +26,9 @@ std::vector<char> read_whole_file(const std::string& path, std::uintmax_t max_by
 
 InputFile read_input_file(const std::string& path, std::uintmax_t max_bytes) {
   std::vector<char> bytes = read_whole_file(path, max_bytes);
+  if (gzip::is_gzip(bytes)) bytes = gzip::decompress(bytes, max_bytes, path);
   std::string sha = sha256_hex(bytes);
-  if (!gzip::is_gzip(bytes)) return {std::move(bytes), std::move(sha)};
-  return {gzip::decompress(bytes, max_bytes, path), std::move(sha)};
+  return {std::move(bytes), std::move(sha)};
 }
 
 }  // namespace haptex::convert

@@ -13,8 +13,8 @@ inline constexpr std::uintmax_t kDefaultMaxBytes = std::uintmax_t(1) << 30;  // 
 std::vector<char> read_whole_file(const std::string& path, std::uintmax_t max_bytes);
 
 // A file that may be gzip-compressed (known by its magic number, whatever its name): its contents,
-// decompressed when compressed (no more than max_bytes of them either), and the SHA-256 of the file
-// as it is on disk, which is what provenance names.
+// decompressed when compressed (no more than max_bytes of them either), and their SHA-256, which is
+// what provenance names: a recording keeps its hash through gzip and gunzip.
 struct InputFile {
   std::vector<char> contents;
   std::string sha256;

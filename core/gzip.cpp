@@ -53,7 +53,8 @@ std::vector<char> decompress(std::span<const char> compressed, std::uintmax_t ma
   if (inflateInit2(&z, kGzipWindow) != Z_OK) throw failure("gzip: zlib cannot start decompressing");
   std::vector<char> out;
   std::size_t used = 0;  // bytes of `compressed` taken by the members already finished
-  const std::uintmax_t room = max_bytes + 1;  // one byte over the limit tells a file that exceeds it
+  // One byte over the limit tells a file that exceeds it.
+  const std::uintmax_t room = max_bytes == std::numeric_limits<std::uintmax_t>::max() ? max_bytes : max_bytes + 1;
   const auto fail = [&](const std::string& where, const std::string& what, const std::string& fix) {
     inflateEnd(&z);
     return input_error(source, where, what, fix);

@@ -35,10 +35,12 @@ std::optional<ImageSize> jpeg_size(std::istream& in) {
   unsigned char soi[2] = {};
   if (!in.read(reinterpret_cast<char*>(soi), 2) || soi[0] != 0xFF || soi[1] != 0xD8) return std::nullopt;
   for (int segments = 0; segments < 1000; ++segments) {
-    unsigned char marker[4] = {};
-    if (!in.read(reinterpret_cast<char*>(marker), 4) || marker[0] != 0xFF) return std::nullopt;
-    const unsigned char type = marker[1];
-    const std::uint32_t length = big_endian(&marker[2], 2);
+    if (in.get() != 0xFF) return std::nullopt;
+    int type = in.get();
+    while (type == 0xFF) type = in.get();  // fill bytes before a marker, which libjpeg accepts
+    unsigned char size[2] = {};
+    if (type == std::char_traits<char>::eof() || !in.read(reinterpret_cast<char*>(size), 2)) return std::nullopt;
+    const std::uint32_t length = big_endian(size, 2);
     if (length < 2) return std::nullopt;
     if (type >= 0xC0 && type <= 0xCF && type != 0xC4 && type != 0xC8 && type != 0xCC) {
       unsigned char frame[5] = {};

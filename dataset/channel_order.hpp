@@ -1,11 +1,12 @@
 #pragma once
-// The order of the colour channels of the images a haptex file stores: the uint8 H x W x 3 arrays
-// (`reference`, `peak`, `frames`) and a press file's encoded frames once decoded. The press that holds
-// them states it in its `channel_order` attribute (a gelsight or dataset press group, a press file's
-// root; schemas/hdf5-layout.md), and each image dataset haptex writes repeats it. haptex writes RGB,
-// what h5py, PIL and matplotlib users expect; readers take RGB or BGR and convert to what their
-// consumer expects. An order taken for the other does not fail anywhere: it silently changes the grey
-// image and every colour-derived feature, so an order a reader does not know is refused.
+// The order of the colour channels of the images a haptex file stores: a press file's uint8 H x W x 3
+// reference, and encoded images once decoded (a press file's frames; a gelsight or dataset press's
+// `reference`, `peak`, `frames`). The press that holds them states it in its `channel_order`
+// attribute (a gelsight or dataset press group, a press file's root; schemas/hdf5-layout.md), and each
+// image dataset haptex writes repeats it. haptex writes RGB, what h5py, PIL and matplotlib users
+// expect; readers take RGB or BGR and convert to what their consumer expects. An order taken for the
+// other does not fail anywhere: it silently changes the grey image and every colour-derived feature,
+// so an order a reader does not know is refused.
 #include <cstdint>
 #include <span>
 #include <string_view>

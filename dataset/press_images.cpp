@@ -1,5 +1,7 @@
 #include "dataset/press_images.hpp"
 
+#include <optional>
+
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -20,18 +22,38 @@ Error bad_image(const h5::Dataset& d, std::size_t i, const std::string& what) {
                      "Write the file again with haptex capture extract (and align)");
 }
 
-cv::Mat decode(const h5::Dataset& d, std::size_t i, const EncodedImage& bytes) {
+// Decoded only once its header has been read and states the press's size (so no hostile header
+// makes OpenCV allocate more), and only when whole (so libjpeg conceals nothing and libpng prints no
+// complaint). Orientation tags are ignored, as any other reader of the bytes would.
+cv::Mat decode(const h5::Dataset& d, std::size_t i, const EncodedImage& bytes, std::optional<cv::Size> expected) {
   const std::string encoding = image_encoding(bytes);
   if (encoding.empty()) throw bad_image(d, i, "is neither a JPEG nor a PNG image");
   const std::optional<ImageSize> size = image_header_size(bytes);
-  if (size && std::uint64_t(size->width) * size->height > kMaxPixels)
-    throw bad_image(d, i, "its header states " + std::to_string(size->width) + " x " + std::to_string(size->height) +
-                              " pixels, over 64 megapixels");
+  if (!size) throw bad_image(d, i, "has a damaged " + encoding + " header");
+  const std::string stated = std::to_string(size->width) + " x " + std::to_string(size->height);
+  if (std::uint64_t(size->width) * size->height > kMaxPixels) throw bad_image(d, i, "its header states " + stated + " pixels, over 64 megapixels");
+  if (expected && cv::Size(int(size->width), int(size->height)) != *expected)
+    throw bad_image(d, i, "its header states " + stated + " pixels, the press's width and height " + std::to_string(expected->width) +
+                              " x " + std::to_string(expected->height));
   if (!(encoding == "jpeg" ? is_complete_jpeg(bytes) : is_complete_png(bytes)))
     throw bad_image(d, i, "does not decode (a damaged or cut-off " + encoding + ")");
-  cv::Mat image = cv::imdecode(bytes, cv::IMREAD_COLOR);
+  cv::Mat image;
+  try {
+    image = cv::imdecode(bytes, cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);
+  } catch (const cv::Exception&) {
+  }
   if (image.empty()) throw bad_image(d, i, "does not decode (a damaged image)");
   return image;
+}
+
+// The press's stated image size, when it states one.
+std::optional<cv::Size> size_stated_by(const h5::Group& press) {
+  try {
+    if (press.has_attr("width") && press.has_attr("height"))
+      return cv::Size(int(press.attr_int("width")), int(press.attr_int("height")));
+  } catch (const Error&) {
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -69,15 +91,16 @@ h5::Dataset write_press_images(h5::Group& press, const std::string& name, const 
   return d;
 }
 
-std::vector<cv::Mat> read_press_images(const h5::Group& press, const std::string& name) {
+std::vector<cv::Mat> read_press_images(const h5::Group& press, const std::string& name, bool stated_size) {
   const ChannelOrder order = read_channel_order(press, name);
   const h5::Dataset d = press.open_dataset(name);
   if (!is_vlen_bytes(d) || d.shape().size() != 1 || d.shape()[0] == 0)
     throw input_error(d.file(), d.object_path(), "expected a 1-D dataset of encoded images (variable-length uint8)",
                       "Files from before gelsight/2 stored pixels; run haptex capture extract (and align) again");
+  const std::optional<cv::Size> expected = stated_size ? size_stated_by(press) : std::nullopt;
   std::vector<cv::Mat> images;
   for (std::size_t i = 0; i < d.shape()[0]; ++i) {
-    cv::Mat image = decode(d, i, read_vlen_bytes(d, i));
+    cv::Mat image = decode(d, i, read_vlen_bytes(d, i), expected);
     if (order == ChannelOrder::bgr) cv::cvtColor(image, image, cv::COLOR_RGB2BGR);  // the stored pixels were blue first
     images.push_back(image);
   }

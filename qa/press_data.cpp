@@ -40,7 +40,7 @@ double saturated_share(const cv::Mat& bgr) {
 std::vector<cv::Mat> read_images(const h5::Group& press, const std::string& name) {
   if (!press.has_dataset(name)) return {};
   try {
-    return dataset::read_press_images(press, name);
+    return dataset::read_press_images(press, name, false);  // the sizes are compared below, with the attributes
   } catch (const Error&) {
     return {};
   }
@@ -118,7 +118,8 @@ Press summarize_press(const h5::Group& g, std::string path, std::string material
   }
   // Encoded images carry their size inside; the press's attributes state it for the layout.
   const std::optional<double> width = number_attr(g, "width"), height = number_attr(g, "height");
-  if (!sizes.empty() && width && height) sizes.push_back(cv::Size(int(*width), int(*height)));
+  const auto pixels = [](double v) { return v >= 0 && v < 1e6 ? int(v) : -1; };  // NaN or absurd: no size
+  if (!sizes.empty() && width && height) sizes.push_back(cv::Size(pixels(*width), pixels(*height)));
   p.sizes_agree = !sizes.empty() && std::all_of(sizes.begin(), sizes.end(), [&](cv::Size s) { return s == sizes.front(); });
   parallel_for(images.size(), [&](std::size_t i) {
     p.images[i].sharpness = laplacian_variance(*images[i]);

@@ -86,9 +86,10 @@ inline constexpr double kSaturatedMaxShare = 0.02;
 // press frame never falls that low; motion blur or a lost focus does.
 inline constexpr double kBlurMinRatio = 0.5;
 // ... provided the references have detail to compare with: a smooth reference (a flat, marker-less gel
-// seen through MJPG) has a Laplacian variance of about 1.4, under the 20/12 that 8-bit rounding alone
-// gives, and a blurred frame cannot fall below that. Real backgrounds in ../shared/data have 10 (GelSight
-// Mini) and 165 (GelSlim); under 3 the check says it cannot judge instead of passing.
+// seen through MJPG) has a Laplacian variance of about 1.4, what 8-bit rounding of a smooth image
+// leaves, and a frame blurred to the same smoothness cannot fall far below that. Real backgrounds in
+// ../shared/data have 10 (GelSight Mini) and 165 (GelSlim); under 3 the check says it cannot judge
+// instead of passing.
 inline constexpr double kBlurMinReferenceSharpness = 3.0;
 // Presses per material: 3 train, 1 val, 1 test (docs/split.md).
 inline constexpr std::size_t kPressesPerMaterial = 5;

@@ -91,6 +91,8 @@ PressVideoWriter::PressVideoWriter(const std::string& directory, int press, doub
       fps_(fps),
       partial_video_((fs::path(directory) / (press_name(press) + ".partial.avi")).string()) {
   if (press < 0) throw failure("PressVideoWriter: the press index must be >= 0");
+  // The AVI header holds a whole frame rate (OpenCV rounds it), and the sidecar states the same one.
+  if (!(fps >= 1) || fps != std::round(fps)) throw failure("PressVideoWriter: the frame rate must be a whole number of frames a second");
   std::error_code ec;
   fs::create_directories(directory, ec);
   if (ec) throw input_error(directory, "", "cannot create the output directory: " + ec.message(), "Choose another -o");
@@ -139,6 +141,10 @@ PressSidecar PressVideoWriter::finish(PressSidecar sidecar) {
   // The video on disk before it gets its final name; an older press goes, sidecar first (a folder of
   // PNG frames, as haptex wrote presses until this round, too).
   video_->release();
+  // cv::VideoWriter reports no write error: the video read back must hold every frame (a full disk).
+  if (const int read_back = int(cv::VideoCapture(partial_video_).get(cv::CAP_PROP_FRAME_COUNT)); read_back != frames_)
+    throw input_error(partial_video_, "", "the video holds " + std::to_string(read_back) + " of its " + std::to_string(frames_) + " frames",
+                      "Check the free space where -o points");
   fsync_path(partial_video_, O_RDONLY);
   const std::string final_video = press_video_path(directory_, press_);
   std::error_code ec;

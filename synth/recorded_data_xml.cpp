@@ -7,6 +7,7 @@
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/gzip.hpp"
+#include "core/sha256.hpp"
 
 namespace haptex::synth {
 namespace {
@@ -58,9 +59,11 @@ std::string recorded_data_xml(const convert::Recording& r) {
   return xml;
 }
 
-void write_recorded_data_xml(const std::string& path, const convert::Recording& r) {
+std::string write_recorded_data_xml(const std::string& path, const convert::Recording& r) {
   check_output_path(path, true);
-  write_file_durably(path, gzip::compress(recorded_data_xml(r), kGzipLevel));
+  const std::string xml = recorded_data_xml(r);
+  write_file_durably(path, gzip::compress(xml, kGzipLevel));
+  return sha256_hex(xml);
 }
 
 }  // namespace haptex::synth

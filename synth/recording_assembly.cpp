@@ -6,7 +6,6 @@
 #include <random>
 
 #include "core/error.hpp"
-#include "core/sha256.hpp"
 #include "dataset/layout.hpp"
 #include "synth/recorded_data_xml.hpp"
 
@@ -55,8 +54,8 @@ convert::Recording assemble_recording(const RecordingIdentity& identity, const S
 }
 
 TruthRecording write_recording(const std::string& path, int index, const convert::Recording& recording, Strokes&& strokes) {
-  write_recorded_data_xml(path, recording);
-  return {index, sha256_file(path), std::move(strokes.speed), std::move(strokes.force)};
+  const std::string sha = write_recorded_data_xml(path, recording);
+  return {index, sha, std::move(strokes.speed), std::move(strokes.force)};
 }
 
 }  // namespace haptex::synth

@@ -1,6 +1,6 @@
 #pragma once
 // What `capture extract` was given, as a list of (material, source). A source is a press file, a
-// video file, or a folder of frame images (a PNG sequence, as `haptex synth` writes press videos). A
+// video file (`haptex synth` writes MJPG AVIs), or a folder of frame images (a PNG sequence). A
 // folder holding sources is one material, named by the folder; a folder of such folders is several.
 // Sources are taken in name order, numbers compared by value (press_2 before press_10), so press
 // numbers are stable however the file system lists them.

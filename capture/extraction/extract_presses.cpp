@@ -12,6 +12,7 @@
 #include "capture/extraction/contact_sheet.hpp"
 #include "capture/extraction/gelsight_writer.hpp"
 #include "capture/scoring/contact_score.hpp"
+#include "capture/storage/video_file.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"
@@ -72,8 +73,8 @@ class Extraction {
   }
 
   // One source opened, its frames scored and its presses planned: what write() reads the kept frames
-  // of and stores. Touches nothing of the Extraction but its settings, so image sequences can be
-  // analysed on several threads.
+  // of and stores. Touches nothing of the Extraction but its settings, so videos and image sequences
+  // can be analysed on several threads.
   struct Analysed {
     const CaptureInput* input = nullptr;
     std::unique_ptr<FrameSource> source;
@@ -239,9 +240,11 @@ ExtractResult extract_presses(const std::vector<std::string>& inputs, const std:
   Extraction extraction(output, options);
   // Videos and image sequences are analysed a few at a time on as many threads, the next few while
   // the last are written, and written in their order, so the output is the same whatever the cores.
-  // Press files go one at a time: they are read through HDF5, whose Debian build is not thread-safe.
-  // (A video keeps up to 256 MiB of frames, docs/capture.md: 1 GiB at most on 4 threads.)
+  // Press files go one at a time (HDF5 runs one call at a time even in its thread-safe build; their
+  // frames are scored on every core instead). A video keeps up to 128 MiB of frames until written, and
+  // two chunks may be alive: 1 GiB at most on 4 threads (docs/capture.md).
   constexpr unsigned kThreads = 4;
+  prepare_video_environment();
   const bool no_press_file = std::none_of(expanded.begin(), expanded.end(),
                                           [](const CaptureInput& c) { return c.kind == CaptureInput::Kind::press_file; });
   const unsigned threads = options.threads ? options.threads : std::min(kThreads, available_cores());

@@ -19,6 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+constexpr std::uint64_t kMaxPixels = std::uint64_t(64) << 20;  // as predict --image (docs/predict.md)
+
 class ImageSequenceSource : public FrameSource {
  public:
   explicit ImageSequenceSource(std::string folder) : path_(std::move(folder)) {
@@ -61,12 +63,15 @@ class ImageSequenceSource : public FrameSource {
     }
   }
 
-  // A PNG or JPEG frame file is stored as it is.
+  // An 8-bit PNG frame file is stored as it is: any reader decodes it to these pixels. A JPEG file
+  // may carry an orientation tag, which OpenCV applies and others need not, and a 16-bit PNG
+  // decodes differently in OpenCV and PIL: those are stored as the PNG of the decoded frame.
   void read(const std::vector<std::int64_t>& indices, const Delivery& deliver) override {
     for (std::int64_t i : indices) {
       dataset::EncodedImage bytes = file_bytes(std::size_t(i));
       const cv::Mat frame = load(std::size_t(i), bytes);
-      if (dataset::image_encoding(bytes).empty()) bytes.clear();
+      const bool plain_png = dataset::image_encoding(bytes) == "png" && bytes.size() > 24 && bytes[24] == 8;  // IHDR bit depth
+      if (!plain_png) bytes.clear();
       deliver(i, frame, bytes);
     }
   }
@@ -83,7 +88,16 @@ class ImageSequenceSource : public FrameSource {
     // A cut-off JPEG or PNG is refused before libjpeg conceals it or libpng prints its complaint.
     const std::string encoding = dataset::image_encoding(bytes);
     const bool whole = encoding == "jpeg" ? is_complete_jpeg(bytes) : encoding == "png" ? is_complete_png(bytes) : !bytes.empty();
-    const cv::Mat image = whole ? cv::imdecode(bytes, cv::IMREAD_COLOR) : cv::Mat();
+    const std::optional<ImageSize> stated = image_header_size(bytes);
+    if (stated && std::uint64_t(stated->width) * stated->height > kMaxPixels)
+      throw input_error(files_[i], "frame " + std::to_string(i), "its header states " + std::to_string(stated->width) + " x " +
+                                                                     std::to_string(stated->height) + " pixels, over 64 megapixels",
+                        "Give the sensor's frames");
+    cv::Mat image;
+    try {
+      if (whole) image = cv::imdecode(bytes, cv::IMREAD_COLOR);
+    } catch (const cv::Exception&) {
+    }
     if (image.empty())
       throw input_error(files_[i], "frame " + std::to_string(i), "cannot read the image", "Replace the damaged frame file");
     if (!size_.empty() && image.size() != size_)

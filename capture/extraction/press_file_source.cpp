@@ -85,7 +85,7 @@ class PressFileSource : public FrameSource {
   }
 
   cv::Mat decode(const std::vector<std::uint8_t>& bytes) const {
-    if (bytes.empty() || (frames_.encoding() == "jpeg" && !is_complete_jpeg(bytes))) return {};
+    if (bytes.empty() || !(frames_.encoding() == "jpeg" ? is_complete_jpeg(bytes) : is_complete_png(bytes))) return {};
     cv::Mat image;
     try {
       image = cv::imdecode(bytes, cv::IMREAD_COLOR);

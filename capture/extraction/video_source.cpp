@@ -7,6 +7,7 @@
 #include "capture/scoring/scoring_image.hpp"
 #include "capture/storage/video_file.hpp"
 #include "core/error.hpp"
+#include "core/image_header.hpp"
 #include "core/sha256.hpp"
 
 namespace haptex::capture {
@@ -98,13 +99,23 @@ class VideoSource : public FrameSource {
       return;
     }
     f.jpeg.assign(raw.data, raw.data + raw.total() * raw.elemSize());
-    f.bgr = is_complete_jpeg(f.jpeg) ? cv::imdecode(f.jpeg, cv::IMREAD_COLOR) : cv::Mat();
-    if (!f.bgr.empty()) check_size(f.bgr, index);
+    f.bgr = decode(f.jpeg);
+  }
+
+  // A frame's JPEG, decoded when whole and of the video's size by its header (so a damaged packet
+  // neither decodes concealed nor makes OpenCV allocate more); empty otherwise.
+  cv::Mat decode(const dataset::EncodedImage& jpeg) const {
+    const std::optional<ImageSize> size = image_header_size(jpeg);
+    if (!size || cv::Size(int(size->width), int(size->height)) != probe_.size || !is_complete_jpeg(jpeg)) return {};
+    try {
+      return cv::imdecode(jpeg, cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);
+    } catch (const cv::Exception&) {
+      return {};
+    }
   }
 
   void deliver_frame(const Frame& f, std::int64_t index, const Delivery& deliver) const {
-    cv::Mat bgr = f.bgr;
-    if (bgr.empty() && is_complete_jpeg(f.jpeg)) bgr = cv::imdecode(f.jpeg, cv::IMREAD_COLOR);
+    const cv::Mat bgr = f.bgr.empty() && !f.jpeg.empty() ? decode(f.jpeg) : f.bgr;
     if (bgr.empty())
       throw input_error(path_, "frame " + std::to_string(index), "the frame does not decode", "The file may be damaged; re-export it");
     deliver(index, bgr, f.jpeg);
@@ -112,7 +123,8 @@ class VideoSource : public FrameSource {
 
   // Decoding lossless video (FFV1) costs more than anything else extraction does, so a video whose
   // frames fit in kCacheBytes (decoded, or an MJPG video's JPEGs) is read once and its frames kept;
-  // a longer one is read a second time.
+  // a longer one is read a second time. (A frame read owns its pixels: read() copies them out of the
+  // decoder, so keeping it needs no copy.)
   void keep(Frame&& f) {
     if (!cached_) return;
     cached_bytes_ += probe_.mjpeg ? f.jpeg.size() : f.bgr.total() * f.bgr.elemSize();
@@ -122,7 +134,6 @@ class VideoSource : public FrameSource {
       return;
     }
     if (probe_.mjpeg) f.bgr.release();  // decoded again when kept: a tenth of the memory
-    else f.bgr = f.bgr.clone();
     cache_.push_back(std::move(f));
   }
 
@@ -132,7 +143,7 @@ class VideoSource : public FrameSource {
                         "frame size or type changes within the video", "Re-export the video with one frame size");
   }
 
-  static constexpr std::size_t kCacheBytes = std::size_t(256) << 20;
+  static constexpr std::size_t kCacheBytes = std::size_t(128) << 20;
   std::string path_;
   VideoProbe probe_;
   std::vector<Frame> cache_;

@@ -10,35 +10,25 @@
 namespace haptex::capture {
 namespace {
 
-h5::DatasetOptions per_image_chunks(const cv::Mat& image, std::size_t leading) {
+// One chunk: the image.
+h5::DatasetOptions one_chunk(const cv::Mat& image) {
   h5::DatasetOptions options;
   options.gzip_level = 1;
   options.chunk = {hsize_t(image.rows), hsize_t(image.cols), 3};
-  if (leading) options.chunk.insert(options.chunk.begin(), 1);
   return options;
-}
-
-void state_order(h5::Dataset& d) {
-  d.set_attr(dataset::layout::kChannelOrder, dataset::channel_order_name(dataset::kWrittenChannelOrder));
-}
-
-void append_rgb(const cv::Mat& bgr, std::vector<std::uint8_t>& out) {
-  cv::Mat rgb;
-  cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-  if (!rgb.isContinuous()) rgb = rgb.clone();
-  out.insert(out.end(), rgb.data, rgb.data + rgb.total() * 3);
 }
 
 }  // namespace
 
 h5::Dataset write_image(h5::Group& group, const std::string& name, const cv::Mat& bgr, const std::string& description) {
   CV_Assert(bgr.type() == CV_8UC3);
-  std::vector<std::uint8_t> rgb;
-  append_rgb(bgr, rgb);
-  h5::Dataset d = group.write_array<std::uint8_t>(name, rgb, {hsize_t(bgr.rows), hsize_t(bgr.cols), 3},
-                                                  per_image_chunks(bgr, 0));
+  cv::Mat rgb;
+  cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+  if (!rgb.isContinuous()) rgb = rgb.clone();
+  h5::Dataset d = group.write_array<std::uint8_t>(name, std::span<const std::uint8_t>(rgb.data, rgb.total() * 3),
+                                                  {hsize_t(bgr.rows), hsize_t(bgr.cols), 3}, one_chunk(bgr));
   d.set_attr("description", description);
-  state_order(d);
+  d.set_attr(dataset::layout::kChannelOrder, dataset::channel_order_name(dataset::kWrittenChannelOrder));
   return d;
 }
 

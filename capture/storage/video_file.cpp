@@ -1,20 +1,28 @@
 #include "capture/storage/video_file.hpp"
 
 #include <cstdlib>
+#include <mutex>
 
 #include "core/error.hpp"
 
 namespace haptex::capture {
 
+void prepare_video_environment() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    // FFmpeg logs decoding problems of damaged videos straight to stderr; libraries here never print
+    // (damage shows as frames that do not decode). OpenCV reads this once, when FFmpeg is first used;
+    // a user's own setting wins.
+    setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);  // AV_LOG_QUIET
+    // A packet cut short (a truncated file) would decode, concealed, into a frame whose missing part
+    // differs from the reference and so scores as the strongest contact: FFmpeg's demuxer drops such
+    // packets instead (read per open).
+    setenv("OPENCV_FFMPEG_CAPTURE_OPTIONS", "fflags;discardcorrupt", 0);
+  });
+}
+
 cv::VideoCapture open_video_file(const std::string& path) {
-  // FFmpeg logs decoding problems of damaged videos straight to stderr; libraries here never print
-  // (damage shows as frames that do not decode). OpenCV reads this once, when FFmpeg is first used;
-  // a user's own setting wins.
-  setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);  // AV_LOG_QUIET
-  // A packet cut short (a truncated file) would decode, concealed, into a frame whose missing part
-  // differs from the reference and so scores as the strongest contact: FFmpeg's demuxer drops such
-  // packets instead (read per open, so it applies to this video).
-  setenv("OPENCV_FFMPEG_CAPTURE_OPTIONS", "fflags;discardcorrupt", 0);
+  prepare_video_environment();
   cv::VideoCapture video;
   // FFmpeg only: other backends (GStreamer) print their own warnings on failure, and libraries
   // here never print.
@@ -44,8 +52,10 @@ VideoProbe probe_video_file(const std::string& path) {
     if (fourcc == std::uint32_t(cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]))) probe.lossless = true;
   probe.inter_frame = !probe.lossless;
   for (const char* codec : {"MJPG", "mjpg", "AVRn", "dmb1", "jpeg"})
+    if (fourcc == std::uint32_t(cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]))) probe.inter_frame = false;
+  // Raw reading only for plain MJPG: AVRn and dmb1 may hold two interlaced fields per packet.
+  for (const char* codec : {"MJPG", "mjpg"})
     if (fourcc == std::uint32_t(cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]))) probe.mjpeg = true;
-  if (probe.mjpeg) probe.inter_frame = false;
   return probe;
 }
 

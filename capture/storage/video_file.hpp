@@ -11,6 +11,9 @@
 
 namespace haptex::capture {
 
+// Sets the environment OpenCV's FFmpeg backend reads (quiet, corrupt packets dropped), once; call it
+// before threads start (setenv races with other threads' getenv). open_video_file calls it too.
+void prepare_video_environment();
 // Throws haptex::Error (bad_input) naming the file when OpenCV cannot open it as a video.
 cv::VideoCapture open_video_file(const std::string& path);
 
@@ -21,7 +24,7 @@ struct VideoProbe {
   // Lossy with prediction between frames (MPEG-4, H.264 ...): its no-contact frames copy each other's
   // compression noise, unlike MJPG's, whose frames are each compressed alone.
   bool inter_frame = false;
-  bool mjpeg = false;  // each frame a JPEG (MJPG): read raw, the frames' bytes can be kept as they are
+  bool mjpeg = false;  // MJPG, each frame one JPEG: read raw, the frames' bytes can be kept as they are
 };
 // Opens the video and reads its first frame. Throws haptex::Error (bad_input) naming the file when
 // it does not open or has no readable frame.

@@ -19,8 +19,10 @@ void Handle::reset() {
   id_ = H5I_INVALID_HID;
 }
 
+// Per thread: in HDF5's thread-safe build (Debian's) the error stack and its printing are each
+// thread's own.
 void silence_library_errors() {
-  static const bool done = [] {
+  thread_local const bool done = [] {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     return true;
   }();

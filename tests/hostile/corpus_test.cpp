@@ -224,13 +224,15 @@ std::vector<HostileCase> press_image_cases() {
       w.dataset().set_attr("encoding", "png");
     };
   };
-  const std::vector<std::uint8_t> png = dataset::encode_png(cv::Mat(60, 80, CV_8UC3, cv::Scalar(10, 20, 30)));
+  const std::vector<std::uint8_t> png = dataset::encode_png(cv::Mat(120, 160, CV_8UC3, cv::Scalar(10, 20, 30)));  // the presses' size
   std::vector<std::uint8_t> huge = png;  // the IHDR's width and height at 100000 x 100000, its CRC made to fit
   for (int k : {16, 20}) huge[std::size_t(k)] = 0x00, huge[std::size_t(k) + 1] = 0x01, huge[std::size_t(k) + 2] = 0x86, huge[std::size_t(k) + 3] = 0xA0;
   const uLong crc = crc32(0, &huge[12], 17);
   for (int k = 0; k < 4; ++k) huge[std::size_t(29 + k)] = std::uint8_t(crc >> (24 - 8 * k));
   return {
       images("frames that are no image", frames_of({'G', 'I', 'F', '8', '9', 'a', 0, 0}), "neither a JPEG nor a PNG"),
+      images("a frame of another size than the press states",
+             frames_of(dataset::encode_png(cv::Mat(60, 80, CV_8UC3, cv::Scalar(10, 20, 30)))), "the press's width and height"),
       images("a frame whose header claims 100000 x 100000", frames_of(huge), "over 64 megapixels"),
       images("a PNG cut short", frames_of(std::vector<std::uint8_t>(png.begin(), png.begin() + std::ptrdiff_t(png.size() / 2))),
              "does not decode"),
