@@ -13,6 +13,8 @@ namespace haptex {
 
 namespace {
 
+constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+
 std::uint32_t big_endian(const unsigned char* p, int bytes) {
   std::uint32_t v = 0;
   for (int i = 0; i < bytes; ++i) v = (v << 8) | p[i];
@@ -23,8 +25,7 @@ std::uint32_t big_endian(const unsigned char* p, int bytes) {
 std::optional<ImageSize> png_size(std::istream& in) {
   std::array<unsigned char, 24> head{};
   if (!in.read(reinterpret_cast<char*>(head.data()), head.size())) return std::nullopt;
-  static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (!std::equal(kSignature, kSignature + 8, head.begin()) || std::string(head.begin() + 12, head.begin() + 16) != "IHDR")
+  if (!std::equal(kPngSignature, kPngSignature + 8, head.begin()) || std::string(head.begin() + 12, head.begin() + 16) != "IHDR")
     return std::nullopt;
   return ImageSize{big_endian(&head[16], 4), big_endian(&head[20], 4)};
 }
@@ -72,6 +73,12 @@ std::optional<ImageSize> image_header_size(std::span<const std::uint8_t> bytes) 
   return header_size(in);
 }
 
+std::string image_format(std::span<const std::uint8_t> b) {
+  if (b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) return "jpeg";
+  if (b.size() >= 8 && std::equal(kPngSignature, kPngSignature + 8, b.begin())) return "png";
+  return "";
+}
+
 bool is_complete_jpeg(std::span<const std::uint8_t> jpeg) {
   if (jpeg.size() < 4 || jpeg[0] != 0xFF || jpeg[1] != 0xD8) return false;
   const std::size_t tail = std::min<std::size_t>(jpeg.size(), 4096);
@@ -81,8 +88,7 @@ bool is_complete_jpeg(std::span<const std::uint8_t> jpeg) {
 }
 
 bool is_complete_png(std::span<const std::uint8_t> png) {
-  static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (png.size() < 8 || !std::equal(kSignature, kSignature + 8, png.begin())) return false;
+  if (png.size() < 8 || !std::equal(kPngSignature, kPngSignature + 8, png.begin())) return false;
   for (std::size_t at = 8; png.size() - at >= 12;) {
     const std::uint32_t length = big_endian(&png[at], 4);
     if (length > png.size() - at - 12) return false;
@@ -93,6 +99,11 @@ bool is_complete_png(std::span<const std::uint8_t> png) {
     if (end) return at == png.size();
   }
   return false;
+}
+
+bool is_complete_image(std::span<const std::uint8_t> bytes) {
+  const std::string format = image_format(bytes);
+  return format == "jpeg" ? is_complete_jpeg(bytes) : format == "png" && is_complete_png(bytes);
 }
 
 }  // namespace haptex

@@ -14,9 +14,6 @@
 namespace haptex::dataset {
 namespace {
 
-// What a decoder may allocate for one image: the same bound `predict --image` sets (docs/predict.md).
-constexpr std::uint64_t kMaxPixels = std::uint64_t(64) << 20;
-
 Error bad_image(const h5::Dataset& d, std::size_t i, const std::string& what) {
   return input_error(d.file(), d.object_path() + "[" + std::to_string(i) + "]", what,
                      "Write the file again with haptex capture extract (and align)");
@@ -26,16 +23,16 @@ Error bad_image(const h5::Dataset& d, std::size_t i, const std::string& what) {
 // makes OpenCV allocate more), and only when whole (so libjpeg conceals nothing and libpng prints no
 // complaint). Orientation tags are ignored, as any other reader of the bytes would.
 cv::Mat decode(const h5::Dataset& d, std::size_t i, const EncodedImage& bytes, std::optional<cv::Size> expected) {
-  const std::string encoding = image_encoding(bytes);
+  const std::string encoding = image_format(bytes);
   if (encoding.empty()) throw bad_image(d, i, "is neither a JPEG nor a PNG image");
   const std::optional<ImageSize> size = image_header_size(bytes);
   if (!size) throw bad_image(d, i, "has a damaged " + encoding + " header");
   const std::string stated = std::to_string(size->width) + " x " + std::to_string(size->height);
-  if (std::uint64_t(size->width) * size->height > kMaxPixels) throw bad_image(d, i, "its header states " + stated + " pixels, over 64 megapixels");
+  if (std::uint64_t(size->width) * size->height > kMaxImagePixels) throw bad_image(d, i, "its header states " + stated + " pixels, over 64 megapixels");
   if (expected && cv::Size(int(size->width), int(size->height)) != *expected)
     throw bad_image(d, i, "its header states " + stated + " pixels, the press's width and height " + std::to_string(expected->width) +
                               " x " + std::to_string(expected->height));
-  if (!(encoding == "jpeg" ? is_complete_jpeg(bytes) : is_complete_png(bytes)))
+  if (!is_complete_image(bytes))
     throw bad_image(d, i, "does not decode (a damaged or cut-off " + encoding + ")");
   cv::Mat image;
   try {
@@ -58,13 +55,6 @@ std::optional<cv::Size> size_stated_by(const h5::Group& press) {
 
 }  // namespace
 
-std::string image_encoding(const EncodedImage& b) {
-  if (b.size() >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF) return "jpeg";
-  static constexpr std::uint8_t kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (b.size() >= 8 && std::equal(kPng, kPng + 8, b.begin())) return "png";
-  return "";
-}
-
 EncodedImage encode_png(const cv::Mat& bgr) {
   CV_Assert(bgr.type() == CV_8UC3);
   EncodedImage png;
@@ -77,10 +67,10 @@ EncodedImage encode_png(const cv::Mat& bgr) {
 h5::Dataset write_press_images(h5::Group& press, const std::string& name, const std::vector<EncodedImage>& images,
                                const std::string& description) {
   CV_Assert(!images.empty());
-  const std::string encoding = image_encoding(images.front());
+  const std::string encoding = image_format(images.front());
   VlenBytesWriter writer(press, name);
   for (const EncodedImage& image : images) {
-    if (image_encoding(image) != encoding || encoding.empty())
+    if (image_format(image) != encoding || encoding.empty())
       throw failure(writer.dataset().where() + ": images must all be JPEG or all PNG");
     writer.append(image);
   }

@@ -18,8 +18,6 @@ namespace haptex::dataset {
 
 using EncodedImage = std::vector<std::uint8_t>;
 
-// "jpeg" or "png" from the bytes' signature; "" for anything else.
-std::string image_encoding(const EncodedImage& bytes);
 // A BGR image as a PNG (zlib level 1: the sensor's noise does not compress further).
 EncodedImage encode_png(const cv::Mat& bgr);
 

@@ -9,12 +9,8 @@
 namespace haptex::predict {
 namespace {
 
-// 8192 x 8192: twice the largest GelSight-type frame we know of (a 3280 x 2464 GelSight Mini frame is
-// 8 MP). The descriptor works at 256 x 256, so a larger image only costs time and memory.
-constexpr std::uint64_t kMostPixels = std::uint64_t(1) << 26;
-
 void check_pixels(const std::string& path, std::uint64_t width, std::uint64_t height) {
-  if (width * height > kMostPixels)
+  if (width * height > kMaxImagePixels)
     throw input_error(path, "", "the image is " + std::to_string(width) + " x " + std::to_string(height) +
                                     " pixels, over the limit of 64 megapixels for a press image",
                       "Scale it down (haptex describes it at 256 x 256 anyway), e.g. convert IMG -resize 2048x2048 SMALL.png");

@@ -19,7 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::uint64_t kMaxPixels = std::uint64_t(64) << 20;  // as predict --image (docs/predict.md)
 
 class ImageSequenceSource : public FrameSource {
  public:
@@ -70,7 +69,7 @@ class ImageSequenceSource : public FrameSource {
     for (std::int64_t i : indices) {
       dataset::EncodedImage bytes = file_bytes(std::size_t(i));
       const cv::Mat frame = load(std::size_t(i), bytes);
-      const bool plain_png = dataset::image_encoding(bytes) == "png" && bytes.size() > 24 && bytes[24] == 8;  // IHDR bit depth
+      const bool plain_png = image_format(bytes) == "png" && bytes.size() > 24 && bytes[24] == 8;  // IHDR bit depth
       if (!plain_png) bytes.clear();
       deliver(i, frame, bytes);
     }
@@ -86,10 +85,9 @@ class ImageSequenceSource : public FrameSource {
 
   cv::Mat load(std::size_t i, const dataset::EncodedImage& bytes) const {
     // A cut-off JPEG or PNG is refused before libjpeg conceals it or libpng prints its complaint.
-    const std::string encoding = dataset::image_encoding(bytes);
-    const bool whole = encoding == "jpeg" ? is_complete_jpeg(bytes) : encoding == "png" ? is_complete_png(bytes) : !bytes.empty();
+    const bool whole = image_format(bytes).empty() ? !bytes.empty() : is_complete_image(bytes);
     const std::optional<ImageSize> stated = image_header_size(bytes);
-    if (stated && std::uint64_t(stated->width) * stated->height > kMaxPixels)
+    if (stated && std::uint64_t(stated->width) * stated->height > kMaxImagePixels)
       throw input_error(files_[i], "frame " + std::to_string(i), "its header states " + std::to_string(stated->width) + " x " +
                                                                      std::to_string(stated->height) + " pixels, over 64 megapixels",
                         "Give the sensor's frames");

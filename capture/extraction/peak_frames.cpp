@@ -8,6 +8,7 @@
 
 #include "capture/scoring/scoring_image.hpp"
 #include "core/error.hpp"
+#include "core/image_header.hpp"
 #include "core/text/format.hpp"
 
 namespace haptex::capture {
@@ -230,12 +231,12 @@ void read_press_frames(FrameSource& source, const std::vector<PressPlan>& plans,
       PressFrames press;
       // The source's bytes are kept when every frame has them, all in one encoding (a folder may mix
       // PNG and JPEG files); else the frames are stored as PNG.
-      const std::string encoding = dataset::image_encoding(held.at(plan.frame_indices.front()).second);
+      const std::string encoding = image_format(held.at(plan.frame_indices.front()).second);
       bool all_encoded = !encoding.empty();
       for (std::int64_t i : plan.frame_indices) {
         press.frames.push_back(held.at(i).first);
         press.frames_encoded.push_back(held.at(i).second);
-        all_encoded = all_encoded && dataset::image_encoding(held.at(i).second) == encoding;
+        all_encoded = all_encoded && image_format(held.at(i).second) == encoding;
       }
       press.peak = held.at(plan.contact.peak).first;
       if (all_encoded) press.peak_encoded = held.at(plan.contact.peak).second;

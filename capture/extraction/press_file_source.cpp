@@ -7,6 +7,7 @@
 #include "capture/storage/image_datasets.hpp"
 #include "capture/storage/press_file_frames.hpp"
 #include "core/error.hpp"
+#include "core/image_header.hpp"
 #include "core/parallel.hpp"
 #include "core/sha256.hpp"
 #include "dataset/channel_order.hpp"
@@ -85,7 +86,7 @@ class PressFileSource : public FrameSource {
   }
 
   cv::Mat decode(const std::vector<std::uint8_t>& bytes) const {
-    if (bytes.empty() || !(frames_.encoding() == "jpeg" ? is_complete_jpeg(bytes) : is_complete_png(bytes))) return {};
+    if (!is_complete_image(bytes)) return {};
     cv::Mat image;
     try {
       image = cv::imdecode(bytes, cv::IMREAD_COLOR);
