@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/image_header.hpp"
 #include "dataset/channel_order.hpp"
+#include "dataset/decode_image.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/vlen_bytes.hpp"
 
@@ -34,11 +35,7 @@ cv::Mat decode(const h5::Dataset& d, std::size_t i, const EncodedImage& bytes, s
                               " x " + std::to_string(expected->height));
   if (!is_complete_image(bytes))
     throw bad_image(d, i, "does not decode (a damaged or cut-off " + encoding + ")");
-  cv::Mat image;
-  try {
-    image = cv::imdecode(bytes, cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);
-  } catch (const cv::Exception&) {
-  }
+  const cv::Mat image = decode_image(bytes);
   if (image.empty()) throw bad_image(d, i, "does not decode (a damaged image)");
   return image;
 }

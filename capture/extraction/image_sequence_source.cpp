@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/image_header.hpp"
 #include "core/sha256.hpp"
+#include "dataset/decode_image.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -93,7 +94,7 @@ class ImageSequenceSource : public FrameSource {
                         "Give the sensor's frames");
     cv::Mat image;
     try {
-      if (whole) image = cv::imdecode(bytes, cv::IMREAD_COLOR);
+      if (whole) image = image_format(bytes).empty() ? cv::imdecode(bytes, cv::IMREAD_COLOR) : dataset::decode_image(bytes);
     } catch (const cv::Exception&) {
     }
     if (image.empty())

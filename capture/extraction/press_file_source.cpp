@@ -1,5 +1,4 @@
 // Press files written by `haptex capture record`, read back for extraction.
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "capture/extraction/frame_source.hpp"
@@ -11,6 +10,7 @@
 #include "core/parallel.hpp"
 #include "core/sha256.hpp"
 #include "dataset/channel_order.hpp"
+#include "dataset/decode_image.hpp"
 #include "dataset/layout.hpp"
 
 namespace haptex::capture {
@@ -87,14 +87,9 @@ class PressFileSource : public FrameSource {
 
   cv::Mat decode(const std::vector<std::uint8_t>& bytes) const {
     if (!is_complete_image(bytes)) return {};
-    cv::Mat image;
-    try {
-      image = cv::imdecode(bytes, cv::IMREAD_COLOR);
-    } catch (const cv::Exception&) {
-      return {};
-    }
-    if (image.size() != frames_.size()) return {};
-    // imdecode hands the codec's R, G, B over as B, G, R; frames stored swapped are swapped back.
+    cv::Mat image = dataset::decode_image(bytes);
+    if (image.empty() || image.size() != frames_.size()) return {};
+    // The decoder hands the codec's R, G, B over as B, G, R; frames stored swapped are swapped back.
     if (order_ == dataset::ChannelOrder::bgr) cv::cvtColor(image, image, cv::COLOR_RGB2BGR);
     return image;
   }

@@ -1,7 +1,6 @@
 // Video files through OpenCV's FFmpeg backend (MJPG/MPEG-4 AVI, FFV1 Matroska, H.264 MP4 ...).
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 
 #include "capture/extraction/frame_source.hpp"
 #include "capture/scoring/scoring_image.hpp"
@@ -9,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/image_header.hpp"
 #include "core/sha256.hpp"
+#include "dataset/decode_image.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -107,11 +107,7 @@ class VideoSource : public FrameSource {
   cv::Mat decode(const dataset::EncodedImage& jpeg) const {
     const std::optional<ImageSize> size = image_header_size(jpeg);
     if (!size || cv::Size(int(size->width), int(size->height)) != probe_.size || !is_complete_jpeg(jpeg)) return {};
-    try {
-      return cv::imdecode(jpeg, cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);
-    } catch (const cv::Exception&) {
-      return {};
-    }
+    return dataset::decode_jpeg(jpeg);
   }
 
   void deliver_frame(const Frame& f, std::int64_t index, const Delivery& deliver) const {

@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "capture/scoring/scoring_image.hpp"
 #include "core/error.hpp"
+#include "dataset/decode_image.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -44,11 +44,7 @@ cv::Mat TakeProcessor::decode_full(const Frame& frame) const {
   cv::Mat bgr;
   if (session_.format.fourcc == V4L2_PIX_FMT_MJPEG) {
     if (!is_complete_jpeg(frame.bytes)) return {};
-    try {
-      bgr = cv::imdecode(frame.bytes, cv::IMREAD_COLOR);
-    } catch (const cv::Exception&) {
-      return {};
-    }
+    bgr = dataset::decode_jpeg(frame.bytes);
   } else if (frame.bytes.size() == std::size_t(size_.area()) * 2) {
     const cv::Mat yuyv(size_, CV_8UC2, const_cast<std::uint8_t*>(frame.bytes.data()));
     cv::cvtColor(yuyv, bgr, cv::COLOR_YUV2BGR_YUYV);

@@ -7,6 +7,7 @@
 #include "capture/device/fake_scene.hpp"
 #include "capture/replay/video_scene.hpp"
 #include "capture/scoring/scoring_image.hpp"
+#include "dataset/decode_image.hpp"
 #include "dataset/layout.hpp"
 
 namespace haptex::capture {
@@ -29,13 +30,7 @@ const std::vector<std::uint8_t>* PressFileScene::frame(std::uint64_t k) {
   payload_ = frames_.bytes(std::size_t(k));
   const bool jpeg = frames_.encoding() == "jpeg";
   if (jpeg && (order_ == dataset::kWrittenChannelOrder || !is_complete_jpeg(payload_))) return &payload_;
-  cv::Mat bgr;
-  if (!payload_.empty()) {
-    try {
-      bgr = cv::imdecode(payload_, cv::IMREAD_COLOR);
-    } catch (const cv::Exception&) {
-    }
-  }
+  const cv::Mat bgr = dataset::decode_image(payload_);
   if (bgr.size() != frames_.size()) {
     // The recorder stored a cut-off raw frame empty: send a third of a frame, as the fake camera's corrupt fault does.
     payload_.assign(std::size_t(frames_.size().area()) * 2 / 3, 0);

@@ -1,6 +1,7 @@
 #include "capture/scoring/scoring_image.hpp"
 
 #include "core/image_header.hpp"
+#include "dataset/decode_image.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,6 @@
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 namespace haptex::capture {
@@ -105,18 +105,7 @@ cv::Mat scoring_image(const cv::Mat& frame) {
 
 cv::Mat scoring_image_from_jpeg(std::span<const std::uint8_t> jpeg, cv::Size frame) {
   if (!is_complete_jpeg(jpeg)) return {};
-  const int r = jpeg_reduction(frame);
-  const int flag = r == 8 ? cv::IMREAD_REDUCED_GRAYSCALE_8
-                 : r == 4 ? cv::IMREAD_REDUCED_GRAYSCALE_4
-                 : r == 2 ? cv::IMREAD_REDUCED_GRAYSCALE_2
-                          : cv::IMREAD_GRAYSCALE;
-  const cv::Mat bytes(1, int(jpeg.size()), CV_8U, const_cast<std::uint8_t*>(jpeg.data()));
-  cv::Mat grey;
-  try {
-    grey = cv::imdecode(bytes, flag);
-  } catch (const cv::Exception&) {
-    return {};
-  }
+  const cv::Mat grey = dataset::decode_jpeg(jpeg, dataset::DecodedColour::grey, jpeg_reduction(frame));
   if (grey.empty() || grey.size() != scoring_size(frame)) return {};
   return to_float(grey);
 }

@@ -1,0 +1,98 @@
+#include "dataset/decode_image.hpp"
+
+#include <csetjmp>
+#include <cstdio>  // jpeglib.h needs FILE
+#include <memory>
+
+#include <jpeglib.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/image_header.hpp"
+
+namespace haptex::dataset {
+namespace {
+
+// libjpeg reports an error by calling error_exit, which must not return; it jumps back into the call
+// below that started the work. Warnings go to output_message, which stays silent (libjpeg still counts
+// them in num_warnings).
+struct JpegState {
+  jpeg_decompress_struct info{};
+  jpeg_error_mgr errors{};
+  std::jmp_buf jump{};
+  bool created = false;
+};
+
+void jump_back(j_common_ptr info) { std::longjmp(static_cast<JpegState*>(info->client_data)->jump, 1); }
+void stay_silent(j_common_ptr) {}
+
+// The two functions that call libjpeg hold no C++ object of their own, so the jump skips no destructor.
+bool start(JpegState& s, std::span<const std::uint8_t> jpeg, DecodedColour colour, int reduction, bool& cmyk) {
+  if (setjmp(s.jump)) return false;
+  jpeg_create_decompress(&s.info);
+  s.created = true;
+  s.info.client_data = &s;
+  jpeg_mem_src(&s.info, jpeg.data(), static_cast<unsigned long>(jpeg.size()));
+  if (jpeg_read_header(&s.info, TRUE) != JPEG_HEADER_OK) return false;
+  cmyk = s.info.num_components == 4;
+  if (cmyk) return false;
+  // As OpenCV asks for it, so the pixels are the same: the codec's own BGR or grey, scaled in the DCT.
+  s.info.scale_num = 1;
+  s.info.scale_denom = static_cast<unsigned>(reduction);
+  s.info.out_color_space = colour == DecodedColour::grey ? JCS_GRAYSCALE : JCS_EXT_BGR;
+  jpeg_calc_output_dimensions(&s.info);
+  if (std::uint64_t(s.info.output_width) * s.info.output_height > kMaxImagePixels) return false;
+  jpeg_start_decompress(&s.info);
+  return true;
+}
+
+bool read_rows(JpegState& s, std::uint8_t* pixels, std::size_t step) {
+  if (setjmp(s.jump)) return false;
+  while (s.info.output_scanline < s.info.output_height) {
+    JSAMPROW row = pixels + step * s.info.output_scanline;
+    jpeg_read_scanlines(&s.info, &row, 1);
+  }
+  jpeg_finish_decompress(&s.info);
+  return true;
+}
+
+cv::Mat opencv_decode(std::span<const std::uint8_t> bytes, DecodedColour colour) {
+  const cv::Mat wrapped(1, int(bytes.size()), CV_8U, const_cast<std::uint8_t*>(bytes.data()));
+  try {
+    return cv::imdecode(wrapped, (colour == DecodedColour::grey ? cv::IMREAD_GRAYSCALE : cv::IMREAD_COLOR) | cv::IMREAD_IGNORE_ORIENTATION);
+  } catch (const cv::Exception&) {
+    return {};
+  }
+}
+
+}  // namespace
+
+cv::Mat decode_jpeg(std::span<const std::uint8_t> jpeg, DecodedColour colour, int reduction, int* warnings) {
+  if (reduction != 1 && reduction != 2 && reduction != 4 && reduction != 8) return {};
+  if (!is_complete_jpeg(jpeg)) return {};  // libjpeg would draw the missing part grey, which scores as contact
+  auto s = std::make_unique<JpegState>();
+  s->info.err = jpeg_std_error(&s->errors);
+  s->errors.error_exit = jump_back;
+  s->errors.output_message = stay_silent;
+  s->info.client_data = s.get();
+  struct Destroy {
+    JpegState& s;
+    ~Destroy() {
+      if (s.created) jpeg_destroy_decompress(&s.info);
+    }
+  } destroy{*s};
+  bool cmyk = false;
+  if (!start(*s, jpeg, colour, reduction, cmyk)) return cmyk && reduction == 1 ? opencv_decode(jpeg, colour) : cv::Mat();
+  cv::Mat image(int(s->info.output_height), int(s->info.output_width), colour == DecodedColour::grey ? CV_8UC1 : CV_8UC3);
+  if (!read_rows(*s, image.data, image.step)) return {};
+  if (warnings) *warnings = int(s->errors.num_warnings);
+  return image;
+}
+
+cv::Mat decode_image(std::span<const std::uint8_t> bytes, DecodedColour colour) {
+  const std::string format = image_format(bytes);
+  if (format == "jpeg") return decode_jpeg(bytes, colour);
+  if (format == "png" && is_complete_png(bytes)) return opencv_decode(bytes, colour);
+  return {};
+}
+
+}  // namespace haptex::dataset

@@ -1,0 +1,31 @@
+#pragma once
+// One home for turning a press image's bytes (a JPEG or a PNG: a camera's MJPG frame, a press file's
+// frame, a file in a folder) into pixels. JPEGs are decoded with libjpeg directly rather than through
+// cv::imdecode, because libjpeg prints its warnings to stderr and OpenCV gives no way to stop it: OpenCV's
+// own MJPG encoder (`haptex synth`'s videos) and many webcams write frames that decode whole but draw
+// "Corrupt JPEG data: premature end of data segment" or "extraneous bytes before marker", and a
+// library here never prints (docs/architecture.md). The pixels are cv::imdecode's, bit for bit (a
+// test holds it), except that EXIF orientation is never applied: a sensor frame's pixel grid is the
+// sensor's.
+#include <cstdint>
+#include <span>
+
+#include <opencv2/core/mat.hpp>
+
+namespace haptex::dataset {
+
+enum class DecodedColour { bgr, grey };
+
+// A JPEG decoded at 1/reduction of its size (1, 2, 4 or 8: libjpeg's DCT-domain scaling, OpenCV's
+// IMREAD_REDUCED_*) as 8-bit BGR or grey, warnings counted in `warnings` when given and never printed;
+// empty when it is cut off (is_complete_jpeg), does not decode or states more than kMaxImagePixels
+// (core/image_header.hpp). A CMYK
+// JPEG, which no GelSight-type camera sends, goes to cv::imdecode.
+cv::Mat decode_jpeg(std::span<const std::uint8_t> jpeg, DecodedColour colour = DecodedColour::bgr, int reduction = 1,
+                    int* warnings = nullptr);
+
+// A JPEG (decode_jpeg) or a PNG (cv::imdecode, 8-bit BGR; is_complete_png checked first, so libpng
+// finds nothing to complain of) at full size; empty for anything else or when it does not decode.
+cv::Mat decode_image(std::span<const std::uint8_t> bytes, DecodedColour colour = DecodedColour::bgr);
+
+}  // namespace haptex::dataset
