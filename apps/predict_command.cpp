@@ -57,8 +57,7 @@ class PredictCommand : public Command {
       queries.push_back(query(predictor, code, action, 0));
     } else {
       const predict::Trajectory t = predict::read_trajectory(csv_);
-      if (t.force.size() < kActionSamples) throw input_error(csv_, "", "fewer than 10 samples (1 ms)", "Give a longer trajectory");
-      for (std::size_t s = kActionSamples - 1; s < t.force.size(); s += std::size_t(hop_)) {
+      for (std::size_t s = 0; s < t.force.size(); s += std::size_t(hop_)) {
         predict::action_at(t, s, action);
         queries.push_back(query(predictor, code, action, s));
       }

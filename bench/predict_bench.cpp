@@ -72,10 +72,10 @@ const Model& model(Variant variant) {
   return variant == Variant::unified ? unified : per_material;
 }
 
-// 1 ms of a stroke at about 1.2 N and 150 mm/s, inside the training range (no saturation).
+// 45 ms of a stroke at about 1.2 N and 150 mm/s, inside the training range (no saturation).
 std::vector<float> stroke_action() {
   std::vector<float> a(kActionValues);
-  for (int i = 0; i < 10; ++i) a[std::size_t(i)] = 1.2f + 0.001f * float(i), a[std::size_t(10 + i)] = 150.0f + 0.1f * float(i);
+  for (int i = 0; i < 10; ++i) a[std::size_t(i)] = 1.2f + 0.005f * float(i), a[std::size_t(10 + i)] = 150.0f + 0.5f * float(i);
   return a;
 }
 

@@ -12,13 +12,14 @@ constexpr std::array kFormats{
     Format{Kind::recordings, "recordings", 1, "haptex convert", ""},
     Format{Kind::gelsight, "gelsight", 2, "haptex capture extract",
            "it stores its images as pixels (gelsight/2 keeps them encoded, the sensor's JPEG bytes as they came)"},
-    Format{Kind::dataset, "dataset", 3, "haptex align",
-           "dataset/1 took the windows' action before the window, and dataset/2 stored the press images as pixels "
-           "(dataset/3 takes the action at the window's middle and keeps the images encoded)"},
-    Format{Kind::model, "model", 2, "haptex train", "it was trained on the action before its window (model/2 takes it at the window's middle)"},
+    Format{Kind::dataset, "dataset", 4, "haptex align",
+           "dataset/1 took the windows' action before the window, dataset/2 stored the press images as pixels, and "
+           "dataset/3 took the 1 ms at the window's middle (dataset/4 takes the 45 ms up to the middle, 5 ms apart, and keeps the images encoded)"},
+    Format{Kind::model, "model", 3, "haptex train",
+           "it was trained on another action (model/3 takes the 45 ms up to the window's middle, 5 ms apart)"},
     Format{Kind::truth, "truth", 2, "haptex synth", "it does not record what generated each recording"},
     Format{Kind::press, "press", 1, "haptex capture record", ""},
-    Format{Kind::windows, "windows", 1, "haptex windows", ""},
+    Format{Kind::windows, "windows", 2, "haptex windows", "its windows carry the 1 ms at the middle (windows/2: the 45 ms up to it)"},
 };
 
 std::string_view family_of(std::string_view name) { return name.substr(0, name.find('/')); }

@@ -65,6 +65,7 @@ inline constexpr const char* kStride = "stride";                    // attribute
 inline constexpr const char* kActionSamplesAttr = "action_samples";
 inline constexpr const char* kWindowSamplesAttr = "window_samples";
 inline constexpr const char* kActionEndAttr = "action_end";
+inline constexpr const char* kActionStepAttr = "action_step";
 
 // Merged files (haptex merge): /shards/{s}/..., one group per input in command-line order, holding
 // the input's stamp and root attributes as they were, and these.

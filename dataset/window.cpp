@@ -8,14 +8,7 @@ std::vector<std::int64_t> window_starts(std::size_t samples, std::size_t stride)
   return starts;
 }
 
-ActionPoint action_point(std::span<const float> action) {
-  ActionPoint p;
-  for (std::size_t k = 0; k < kActionSamples; ++k) {
-    p.force += action[k] / float(kActionSamples);
-    p.speed += action[kActionSamples + k] / float(kActionSamples);
-  }
-  return p;
-}
+ActionPoint action_point(std::span<const float> action) { return {action[kActionSamples - 1], action[kActionValues - 1]}; }
 
 std::string window_place(std::size_t w, std::string_view material, std::int64_t recording, std::int64_t start) {
   return "/windows[" + std::to_string(w) + "] (" + std::string(material) + ", recording " + std::to_string(recording) +

@@ -44,12 +44,13 @@ void write_window_table(h5::Group root, const WindowTable& t) {
   g.set_attr(layout::kActionSamplesAttr, std::int64_t(kActionSamples));
   g.set_attr(layout::kWindowSamplesAttr, std::int64_t(kWindowSamples));
   g.set_attr(layout::kActionEndAttr, std::int64_t(kActionEnd));
+  g.set_attr(layout::kActionStepAttr, std::int64_t(kActionStep));
   g.write_strings(layout::kWindowMaterials, t.materials);
   g.write(layout::kWindowMaterial, t.material);
   g.write(layout::kWindowRecording, t.recording);
   g.write(layout::kWindowStart, t.start);
   g.write_array<float>(layout::kWindowAction, t.action, {t.size(), kActionValues})
-      .set_attr("description", "10 low-passed normal-force samples (N) then 10 low-passed speed samples (mm/s) ending at start + 500, the window's middle");
+      .set_attr("description", "10 low-passed normal-force samples (N) then 10 low-passed speed samples (mm/s) at start + 50, start + 100, .. start + 500, the window's middle");
   h5::Dataset target = g.write_array<float>(layout::kWindowTarget, t.target, {t.size(), kTargetBins});
   target.set_attr("units", "m/s^2");
   target.set_attr("description", "single-sided amplitude spectrum 2|X_k|/N of accel[start, start + 1000), k = 1..100");
@@ -63,6 +64,7 @@ WindowTable read_window_table(const h5::File& file) {
   expect_attribute(w, layout::kActionSamplesAttr, kActionSamples, path);
   expect_attribute(w, layout::kWindowSamplesAttr, kWindowSamples, path);
   expect_attribute(w, layout::kActionEndAttr, kActionEnd, path);
+  expect_attribute(w, layout::kActionStepAttr, kActionStep, path);
   WindowTable t;
   if (!w.has_dataset(layout::kWindowMaterials) || w.open_dataset(layout::kWindowMaterials).dtype() != "string")
     throw input_error(path, w.object_path() + "/" + layout::kWindowMaterials, "is missing or not strings", kRealign);

@@ -64,27 +64,44 @@ std::vector<std::vector<double>> grid_section(const synth::TruthGrid& grid, cons
   return out;
 }
 
-// The grid's spectrum at the window's middle alone, held over the window.
+// What the model's input tells of a window (docs/evaluate.md, "The input floor"): the recorded action up
+// to the window's middle, where its action ends, and held there for the second half.
+std::size_t known_action_sample(std::size_t t, std::size_t i) { return std::min(i, t + dataset::kActionEnd); }
+
+// The grid's spectrum along that action, at the oracle's ten points.
 std::vector<std::vector<double>> grid_input_section(const synth::TruthGrid& grid, const SectionSignals& s,
                                                     const std::vector<std::size_t>& windows, double noise_power) {
   std::vector<std::vector<double>> out;
   for (std::size_t t : windows) {
-    std::vector<double> a = grid_power_at(grid, s.speed[t + dataset::kActionEnd], s.force[t + dataset::kActionEnd]);
-    for (double& v : a) v = std::sqrt(v);
-    add_sensor_noise(a, noise_power);
-    out.push_back(std::move(a));
+    std::vector<double> power(dataset::kTargetBins, 0.0);
+    for (std::size_t p = 0; p < kGridPoints; ++p) {
+      const std::size_t i = known_action_sample(t, t + 50 + 100 * p);
+      const auto at = grid_power_at(grid, s.speed[i], s.force[i]);
+      for (std::size_t k = 0; k < power.size(); ++k) power[k] += at[k] / double(kGridPoints);
+    }
+    for (double& v : power) v = std::sqrt(v);
+    add_sensor_noise(power, noise_power);
+    out.push_back(std::move(power));
   }
   return out;
 }
 
-// The closed form with one blend per window, at its middle: the model's action held over the window.
-static_assert(dataset::kActionEnd == dataset::kWindowSamples / 2, "one blend per window falls on the model's action");
+// The closed form along that action, one window at a time, blended every 100 samples as the grid's points.
 std::vector<std::vector<double>> ar_input_section(const ar::PiecewiseArModel& model, const SectionSignals& s, double noise_power) {
   ar::ExpectedSpectrumOptions o;
-  o.update = dataset::kWindowSamples;
+  o.update = 100;
   o.noise_power = noise_power;
-  const std::vector<std::size_t> grid = section_grid(s.accel.size());
-  return ar::expected_window_spectra(model, s.speed, s.force, grid, o);
+  std::vector<std::vector<double>> out;
+  std::vector<double> speed(dataset::kWindowSamples), force(dataset::kWindowSamples);
+  const std::size_t first[] = {0};
+  for (std::size_t t : section_grid(s.accel.size())) {
+    for (std::size_t i = 0; i < dataset::kWindowSamples; ++i) {
+      speed[i] = s.speed[known_action_sample(t, t + i)];
+      force[i] = s.force[known_action_sample(t, t + i)];
+    }
+    out.push_back(ar::expected_window_spectra(model, speed, force, first, o).front());
+  }
+  return out;
 }
 
 void check_length(const synth::TruthRecording& r, const SectionSignals& s, const std::string& path, const std::string& material) {

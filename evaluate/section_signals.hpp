@@ -34,7 +34,7 @@ std::vector<MaterialSignals> read_section_signals(const split::DatasetSplit& spl
 // window's 1000 samples fit (the rule of dataset::window_starts). Empty for short sections.
 std::vector<std::size_t> section_grid(std::size_t samples);
 
-// The 20 action values of each grid window (columns), as the model takes them: the 1 ms ending at the
+// The 20 action values of each grid window (columns), as the model takes them: 5 ms apart up to the
 // window's middle (dataset/window.hpp).
 Eigen::MatrixXf grid_actions(const SectionSignals& s, const std::vector<std::size_t>& grid);
 

@@ -1,7 +1,7 @@
 #pragma once
 // The action-conditional texture model of Heravi et al. (ICRA 2020), as haptex trains it:
 //   texture encoder: GelSight contact image -> fixed descriptor -> learned layers -> latent
-//   action encoder:  20 normalised action values (1 ms of force and speed) -> action code
+//   action encoder:  20 normalised action values (force and speed over 45 ms) -> action code
 //   predictor:       [latent, action code] -> 100 non-negative spectrum amplitudes
 // The per-material variant has no texture encoder: one action encoder and predictor per material.
 #include <Eigen/Core>

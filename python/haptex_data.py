@@ -16,7 +16,7 @@ import h5py
 import numpy as np
 
 WINDOW_SAMPLES = 1000  # dataset/window.hpp: a window uses samples [start, start + 1000)
-ACTION_SAMPLES = 10    # the action: 10 force samples (N), then 10 speed samples (mm/s)
+ACTION_SAMPLES = 10    # the action: 10 force samples (N), then 10 speed samples (mm/s), 5 ms apart up to the middle
 TARGET_BINS = 100      # 10, 20, ..., 1000 Hz
 SETS = ("train", "val", "test")
 
@@ -88,9 +88,9 @@ def _read_table(group, path):
 
 
 def read_windows(path):
-    """The evaluation's grid written by `haptex windows` (windows/1), in the order evaluate scores it."""
+    """The evaluation's grid written by `haptex windows` (windows/2), in the order evaluate scores it."""
     with h5py.File(path, "r") as f:
-        _check_format(f, path, "windows/1")
+        _check_format(f, path, "windows/2")
         w = _read_table(f["windows"], path)
         w.dataset_sha256 = _text(f.attrs["dataset_sha256"])
         w.split_sha256 = _text(f.attrs["split_sha256"])
@@ -146,7 +146,7 @@ def read_set_windows(dataset_path, split, sets=("train",)):
     if sha256_file(dataset_path) != split.dataset_sha256:
         raise HaptexFileError(f"{split.path}: was made from another dataset than {dataset_path} (dataset.sha256)")
     with h5py.File(dataset_path, "r") as f:
-        _check_format(f, dataset_path, "dataset/3")
+        _check_format(f, dataset_path, "dataset/4")
         w = _read_table(f["windows"], dataset_path)
         keep = np.zeros(len(w), dtype=bool)
         for m, material_id in enumerate(w.materials):
@@ -186,7 +186,7 @@ def read_presses(dataset_path, split, material_id, sets=("train",)):
     numbers = [p for name in sets for p in split.material_presses[material_id][name]]
     out = []
     with h5py.File(dataset_path, "r") as f:
-        _check_format(f, dataset_path, "dataset/3")
+        _check_format(f, dataset_path, "dataset/4")
         for j in numbers:
             g = f[f"materials/{material_id}/presses/{j}"]
             order = _text(g.attrs.get("channel_order", ""))

@@ -85,11 +85,12 @@ std::vector<WindowRun> window_runs(const h5::Group& root, const WindowTable& t) 
 // The window geometry the model was built for (docs/predict.md, "The model's sample").
 void check_geometry(const WindowTable& t, CheckTally& tally) {
   if (t.action_samples != std::int64_t(kActionSamples) || t.window_samples != std::int64_t(kWindowSamples) ||
-      t.action_end != std::int64_t(kActionEnd))
+      t.action_end != std::int64_t(kActionEnd) || t.action_step != std::int64_t(kActionStep))
     tally.fail("/windows", "action_samples " + std::to_string(t.action_samples) + ", window_samples " +
-                               std::to_string(t.window_samples) + " and action_end " + std::to_string(t.action_end) +
-                               ", expected " + std::to_string(kActionSamples) + ", " + std::to_string(kWindowSamples) +
-                               " and " + std::to_string(kActionEnd) + " (docs/predict.md, \"The model's sample\")");
+                               std::to_string(t.window_samples) + ", action_end " + std::to_string(t.action_end) + " and action_step " +
+                               std::to_string(t.action_step) + ", expected " + std::to_string(kActionSamples) + ", " +
+                               std::to_string(kWindowSamples) + ", " + std::to_string(kActionEnd) + " and " + std::to_string(kActionStep) +
+                               " (docs/predict.md, \"The model's sample\")");
 }
 
 // Every material of the file has windows, listed once.
@@ -120,7 +121,7 @@ std::string cache_mismatch(const WindowTable& t, std::size_t w, const CacheSourc
   const std::size_t start = std::size_t(t.start[w]);
   const float* action = &t.action[w * t.action_width];
   for (std::size_t j = 0; j < a; ++j) {
-    const std::size_t sample = start + std::size_t(t.action_end) + 1 - a + j;
+    const std::size_t sample = start + std::size_t(t.action_end) - (a - 1 - j) * std::size_t(t.action_step);
     if (!(std::abs(action[j] - s.force.values[sample]) <= s.force_tolerance))
       return "action[" + std::to_string(j) + "] is " + number(action[j]) + ", force_normal_lp[" + std::to_string(sample) +
              "] is " + number(s.force.values[sample]);

@@ -96,7 +96,7 @@ inline constexpr std::size_t kPressesPerMaterial = 5;
 
 // ---- dataset and split
 
-using dataset::kActionSamples, dataset::kActionEnd, dataset::kTargetBins;
+using dataset::kActionSamples, dataset::kActionEnd, dataset::kActionStep, dataset::kTargetBins;
 // Cached action and target values are float32 copies of computations on the stored signals: they
 // must agree to 1e-5 of the largest magnitude of the recording's signal (float32 rounding is 6e-8;
 // the margin allows for spectra computed in float32).

@@ -65,17 +65,20 @@ std::optional<WindowTable> load_window_table(const h5::Group& root, std::string&
     return std::nullopt;
   }
   const auto stride = int_attr(windows, "stride"), action = int_attr(windows, "action_samples"),
-             window = int_attr(windows, "window_samples"), action_end = int_attr(windows, "action_end");
-  if (!stride || !action || !window || !action_end || *stride <= 0 || *action <= 0 || *window <= 0 || *action_end < *action - 1 ||
+             window = int_attr(windows, "window_samples"), action_end = int_attr(windows, "action_end"),
+             action_step = int_attr(windows, "action_step");
+  if (!stride || !action || !window || !action_end || !action_step || *stride <= 0 || *action <= 0 || *window <= 0 ||
+      *action_step <= 0 || *action > *window || *action_step > *window || *action_end < (*action - 1) * *action_step ||
       *action_end >= *window) {
-    problem = "/windows has no positive integer stride, action_samples, window_samples and action_end attributes "
-              "(action_end: the action's last sample inside the window)";
+    problem = "/windows has no positive integer stride, action_samples, action_step, window_samples and action_end attributes "
+              "(action_end: the action's last sample inside the window, its first action_step (action_samples - 1) before it)";
     return std::nullopt;
   }
   t.stride = std::size_t(*stride);
   t.action_samples = *action;
   t.window_samples = *window;
   t.action_end = *action_end;
+  t.action_step = *action_step;
   if (!read_matrix(windows, "action", t.size(), t.action, t.action_width)) t.action.clear(), t.action_width = 0;
   if (!read_matrix(windows, "target", t.size(), t.target, t.target_width)) t.target.clear(), t.target_width = 0;
   return t;

@@ -15,9 +15,10 @@ namespace haptex::qa {
 // with the contract (dataset/window.hpp) instead of refusing the file, as dataset::read_window_table does.
 struct WindowTable : dataset::WindowTable {
   std::size_t action_width = 0, target_width = 0;  // action and target rows (empty when unreadable)
-  std::int64_t action_samples = 0, window_samples = 0, action_end = 0;
+  std::int64_t action_samples = 0, window_samples = 0, action_end = 0, action_step = 0;
 
-  // The first and one-past-last sample window w uses: [t, t + window_samples); its action ends at t + action_end.
+  // The first and one-past-last sample window w uses: [t, t + window_samples); its action samples are
+  // t + action_end - (action_samples - 1 - j) action_step, j = 0 .. action_samples - 1.
   std::int64_t first_sample(std::size_t w) const { return start[w]; }
   std::int64_t end_sample(std::size_t w) const { return start[w] + window_samples; }
 };

@@ -24,7 +24,7 @@ void check_trajectory(const predict::Trajectory& t) {
                                             std::to_string(t.speed.size()) + " speed samples; they must pair up");
   if (t.force.size() <= kFirstActionSample)
     throw Error(Error::Kind::bad_input, "render: the trajectory has " + std::to_string(t.force.size()) +
-                                            " samples; a rendering needs at least 10 (1 ms of force and speed)");
+                                            " samples; a rendering needs at least 10 (1 ms)");
 }
 
 // Copies samples that start at `position` of the output into `signal`, dropping those past its end.

@@ -101,7 +101,8 @@ class VibrationLoop {
 
   std::size_t latency_samples() const { return noise_ ? 0 : reconstruction_.latency_samples(); }
 
-  // action: dataset::kActionValues values (10 force in N, then 10 speed in mm/s, the newest last).
+  // action: dataset::kActionValues values (10 force in N, then 10 speed in mm/s, 5 ms apart, the newest
+  // last: dataset::action_ending_at over the force and speed the loop has measured).
   // Returns the next 100 samples (m/s^2) once look_ahead frames are queued; before that, nothing.
   // The span stays valid until the next call.
   std::span<const double> tick(std::span<const float> action);

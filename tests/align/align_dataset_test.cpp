@@ -50,7 +50,7 @@ TEST(AlignDataset, JoinsMaterialsByNormalisedNameAndListsTheRest) {
   EXPECT_EQ(r.windows, 123u);
 
   const h5::Group root = h5::File::open(in.dataset).root();
-  EXPECT_EQ(root.attr_string("haptex_format"), "dataset/3");
+  EXPECT_EQ(root.attr_string("haptex_format"), "dataset/4");
   EXPECT_EQ(root.open_group("windows").attr_int("action_end"), 500);
   EXPECT_EQ(root.attr_string("recordings_sha256").size(), 64u);
   const h5::Group book = root.open_group("materials").open_group("book");
@@ -81,9 +81,9 @@ TEST(AlignDataset, WindowsHoldTheSpectrumOf100MsAndTheActionAtItsMiddle) {
   const auto force = rec.open_dataset("force_normal_lp").read<float>();
   const auto speed = rec.open_dataset("speed_lp").read<float>();
   const auto accel = rec.open_dataset("accel").read<float>();
-  for (int k = 0; k < 10; ++k) {
-    EXPECT_EQ(action[i * 20 + std::size_t(k)], force[std::size_t(t + 491 + k)]);
-    EXPECT_EQ(action[i * 20 + 10 + std::size_t(k)], speed[std::size_t(t + 491 + k)]);
+  for (int k = 0; k < 10; ++k) {  // samples t + 50, t + 100, .. t + 500
+    EXPECT_EQ(action[i * 20 + std::size_t(k)], force[std::size_t(t + 50 + 50 * k)]);
+    EXPECT_EQ(action[i * 20 + 10 + std::size_t(k)], speed[std::size_t(t + 50 + 50 * k)]);
   }
   // The target by the definition, a direct DFT sum: 2 |X_k| / N, k = 1..100, of accel[t, t + 1000).
   for (int k = 1; k <= 100; k += 11) {

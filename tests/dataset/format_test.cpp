@@ -33,10 +33,10 @@ std::string refusal(const std::string& path, Kind kind) {
 }
 
 TEST(Format, NamesAndKindsAgree) {
-  EXPECT_EQ(format_name(Kind::dataset), "dataset/3");
+  EXPECT_EQ(format_name(Kind::dataset), "dataset/4");
   EXPECT_EQ(format_name(Kind::recordings), "recordings/1");
-  EXPECT_EQ(format_name(Kind::model), "model/2");
-  EXPECT_EQ(format_name(Kind::windows), "windows/1");
+  EXPECT_EQ(format_name(Kind::model), "model/3");
+  EXPECT_EQ(format_name(Kind::windows), "windows/2");
   for (Kind k : {Kind::recordings, Kind::gelsight, Kind::dataset, Kind::model, Kind::truth, Kind::press, Kind::windows})
     EXPECT_EQ(kind_named(format_name(k)), k);
   EXPECT_FALSE(kind_named("dataset/1"));
@@ -46,7 +46,7 @@ TEST(Format, NamesAndKindsAgree) {
 TEST(Format, OpensTheRightKindAndRefusesEveryOtherWithTheFix) {
   const test::TempDir dir;
   const std::string name = "it's \"a\" `file`.h5";  // quotes and back-quotes reach no shell
-  EXPECT_NO_THROW(open_checked(file_with_format(dir, name, "dataset/3"), Kind::dataset));
+  EXPECT_NO_THROW(open_checked(file_with_format(dir, name, "dataset/4"), Kind::dataset));
 
   const std::string older = refusal(file_with_format(dir, "old.h5", "dataset/1"), Kind::dataset);
   EXPECT_NE(older.find("old.h5"), std::string::npos) << older;
@@ -60,9 +60,15 @@ TEST(Format, OpensTheRightKindAndRefusesEveryOtherWithTheFix) {
   EXPECT_NE(pixels.find("Run haptex capture extract again to write gelsight/2"), std::string::npos) << pixels;
   const std::string dataset2 = refusal(file_with_format(dir, "d2.h5", "dataset/2"), Kind::dataset);
   EXPECT_NE(dataset2.find("dataset/2 stored the press images as pixels"), std::string::npos) << dataset2;
+  // dataset/3 and model/2 took the 1 ms at the window's middle as the action.
+  const std::string dataset3 = refusal(file_with_format(dir, "d3.h5", "dataset/3"), Kind::dataset);
+  EXPECT_NE(dataset3.find("dataset/3 took the 1 ms at the window's middle"), std::string::npos) << dataset3;
+  EXPECT_NE(dataset3.find("Run haptex align again to write dataset/4"), std::string::npos) << dataset3;
+  const std::string model2 = refusal(file_with_format(dir, "m2.h5", "model/2"), Kind::model);
+  EXPECT_NE(model2.find("Run haptex train again to write model/3"), std::string::npos) << model2;
 
   const std::string other = refusal(file_with_format(dir, "rec.h5", "recordings/1"), Kind::dataset);
-  EXPECT_NE(other.find("'recordings/1', not dataset/3"), std::string::npos) << other;
+  EXPECT_NE(other.find("'recordings/1', not dataset/4"), std::string::npos) << other;
   EXPECT_NE(other.find("haptex align wrote"), std::string::npos) << other;
 
   const std::string plain = refusal(file_with_format(dir, "plain.h5", ""), Kind::model);

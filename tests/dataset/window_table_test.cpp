@@ -59,6 +59,7 @@ TEST(WindowTableFile, RoundTripsWithTheContractsAttributes) {
   EXPECT_EQ(back.target_of(1)[kTargetBins - 1], 0.5f * float(2 * kTargetBins - 1));
   const h5::File file = h5::File::open(dir.file("d.h5"));
   EXPECT_EQ(file.root().open_group("windows").attr_int("action_end"), std::int64_t(kActionEnd));
+  EXPECT_EQ(file.root().open_group("windows").attr_int("action_step"), std::int64_t(kActionStep));
 }
 
 TEST(WindowTableFile, RefusesAnotherContractOrDamagedColumnsNamingTheObject) {
@@ -72,6 +73,14 @@ TEST(WindowTableFile, RefusesAnotherContractOrDamagedColumnsNamingTheObject) {
   EXPECT_NE(m.find("/windows/@action_end"), std::string::npos) << m;
   EXPECT_NE(m.find("is 9"), std::string::npos) << m;
   EXPECT_NE(m.find("haptex align again"), std::string::npos) << m;
+  {
+    h5::File f = h5::File::open(path, true);
+    f.root().open_group("windows").set_attr("action_end", std::int64_t(kActionEnd));
+    f.root().open_group("windows").set_attr("action_step", std::int64_t(1));  // dataset/3's 1 ms
+  }
+  m = refusal(path);
+  EXPECT_NE(m.find("/windows/@action_step"), std::string::npos) << m;
+  EXPECT_NE(m.find("is 1, this haptex's windows have 50"), std::string::npos) << m;
 
   const std::string broken = dir.file("broken \"`x`\".h5");
   {
@@ -79,8 +88,9 @@ TEST(WindowTableFile, RefusesAnotherContractOrDamagedColumnsNamingTheObject) {
     stamp(out.root(), Kind::dataset, "test");
     const WindowTable t = two_windows();
     h5::Group w = out.root().create_group("windows");
-    for (const char* name : {"stride", "action_samples", "window_samples", "action_end"})
-      w.set_attr(name, std::int64_t(name[0] == 's' ? 100 : name[0] == 'w' ? kWindowSamples : name[7] == 's' ? kActionSamples : kActionEnd));
+    const std::pair<const char*, std::size_t> attributes[] = {
+        {"stride", 100}, {"action_samples", kActionSamples}, {"window_samples", kWindowSamples}, {"action_end", kActionEnd}, {"action_step", kActionStep}};
+    for (const auto& [name, value] : attributes) w.set_attr(name, std::int64_t(value));
     w.write_strings("materials", t.materials);
     w.write("material", t.material);
     w.write("recording", t.recording);

@@ -25,7 +25,7 @@ grid = haptex_data.read_windows(windows_path)
 check(grid.dataset_sha256 == haptex_data.sha256_file(dataset), "dataset_sha256 is not the dataset's SHA-256")
 check(grid.split_sha256 == haptex_data.sha256_file(split_path), "split_sha256 is not the split's SHA-256")
 with h5py.File(windows_path, "r") as f:
-    check(f.attrs["haptex_format"] == "windows/1", "haptex_format")
+    check(f.attrs["haptex_format"] == "windows/2", "haptex_format")
     check("haptex windows" in f.attrs["source"], "source does not name the command")
 
 # The grid rule, from the split alone: per test section, windows every 100 samples from its first

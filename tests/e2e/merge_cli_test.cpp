@@ -106,7 +106,7 @@ TEST_F(MergeCli, AMergedDatasetSplitsAndItsSplitPassesQa) {
 TEST_F(MergeCli, H5pyReadsTheLayoutAndEveryShardsProvenance) {
   if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
   const std::string layout = std::string(HAPTEX_SCHEMA_DIR) + "/hdf5-layout.md";
-  for (const char* section : {"dataset/3", "Merged file"}) {
+  for (const char* section : {"dataset/4", "Merged file"}) {
     const CommandResult r = run_python({kScripts + "check_layout.py", layout, files_->merged_dataset, section});
     EXPECT_EQ(r.exit_code, 0) << section << ": " << r.out << r.err;
   }
@@ -151,7 +151,7 @@ TEST_F(MergeCli, AMaterialInTwoShardsIsRefusedUnlessKeepFirstIsGiven) {
   const CommandResult kept = run_haptex({"merge", first, whole, "-o", dir.file("m.h5"), "--keep-first", "--json"});
   ASSERT_EQ(kept.exit_code, 0) << kept.err;
   const nlohmann::json doc = nlohmann::json::parse(kept.out);
-  EXPECT_EQ(doc["format"], "dataset/3");
+  EXPECT_EQ(doc["format"], "dataset/4");
   EXPECT_EQ(doc["left_out"], (nlohmann::json::array({{{"id", id}, {"shard", whole}, {"kept_from", first}}})));
   EXPECT_EQ(doc["windows"], h5::File::open(whole).root().open_group("windows").open_dataset("start").elements())
       << "the first shard's copy of " << id << " has the same windows as the whole file's";

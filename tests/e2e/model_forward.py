@@ -73,8 +73,8 @@ def main():
     result = json.load(open(json_path))
     problems = []
     with h5py.File(model_path, "r") as f:
-        if text(f.attrs["haptex_format"]) != "model/2":
-            raise LayoutError("not a model/2 file")
+        if text(f.attrs["haptex_format"]) != "model/3":
+            raise LayoutError("not a model/3 file")
         variant = text(f.attrs["variant"])
         ids = [text(s) for s in f["materials/ids"][()]]
         n = f["normalisation"]

@@ -159,7 +159,7 @@ TEST(MergeFiles, RefusesShardsThatCannotBeJoinedNamingTheFile) {
   EXPECT_NE(empty.find("e.h5: /materials: holds no material"), std::string::npos) << empty;
 
   const std::string model = refusal(options({r, shard(dir, "model.h5", Kind::model, {{"cork"}})}, out));
-  EXPECT_NE(model.find("is 'model/2': haptex merge joins recordings/1, gelsight/2 or dataset/3"), std::string::npos) << model;
+  EXPECT_NE(model.find("is 'model/3': haptex merge joins recordings/1, gelsight/2 or dataset/4"), std::string::npos) << model;
 
   fs::create_symlink(r, dir.file("link.h5"));
   const std::string twice = refusal(options({r, dir.file("link.h5")}, out));

@@ -98,7 +98,7 @@ TEST(Catalog, JsonReportFollowsItsSchema) {
 
 TEST(Layout, SectionsOfEveryFormatQaChecks) {
   const auto& layout = qa::embedded_layout();
-  for (const char* format : {"recordings/1", "gelsight/2", "dataset/3"}) EXPECT_TRUE(qa::layout_has_format(layout, format)) << format;
+  for (const char* format : {"recordings/1", "gelsight/2", "dataset/4"}) EXPECT_TRUE(qa::layout_has_format(layout, format)) << format;
   const auto rows = qa::rows_for_format(layout, "recordings/1");
   const auto accel = std::find_if(rows.begin(), rows.end(), [](const auto& r) {
     return r.path == "/materials/{material}/recordings/{k}/accel_xyz";
@@ -112,7 +112,7 @@ TEST(Layout, SectionsOfEveryFormatQaChecks) {
 }
 
 TEST(Layout, DatasetRowsIncludeTheCopiedRecordingsAndPresses) {
-  const auto rows = qa::rows_for_format(qa::embedded_layout(), "dataset/3");
+  const auto rows = qa::rows_for_format(qa::embedded_layout(), "dataset/4");
   auto has = [&](const std::string& path) {
     return std::any_of(rows.begin(), rows.end(), [&](const auto& r) { return r.path == path; });
   };

@@ -80,7 +80,7 @@ TEST_F(DatasetMutation, ActionFromUnfilteredForceIsDatasetCache) {
     e.change_floats("windows/action", [&](std::vector<float>& v) {
       for (std::size_t w = 0; w < start.size(); ++w)
         if (ids[std::size_t(material[w])] == "sandpaper_1")
-          for (std::size_t j = 0; j < 10; ++j) v[w * 20 + j] = raw[std::size_t(dataset::window_action_first(start[w])) + j];
+          for (std::size_t j = 0; j < 10; ++j) v[w * 20 + j] = raw[std::size_t(dataset::window_action_sample(start[w], j))];
     });
   }
   const qa::Report r = qa();

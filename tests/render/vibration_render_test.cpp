@@ -68,7 +68,7 @@ TEST(RenderVibrationRender, OneFramePerHundredSamplesFromSampleZero) {
   EXPECT_EQ(render_frames(101), 2u);
   EXPECT_EQ(frame_action_sample(0, 2345), 500u);
   EXPECT_EQ(frame_action_sample(18, 2345), 2300u);
-  EXPECT_EQ(frame_action_sample(19, 2345), 2344u);  // past the end: the last 1 ms
+  EXPECT_EQ(frame_action_sample(19, 2345), 2344u);  // past the end: the 45 ms up to the last sample
   const predict::Trajectory t = stroke(2345);
   for (Reconstruction r : {Reconstruction::fgla, Reconstruction::online}) {
     const Rendering out = render_vibration(model(), code(), t, with(r, 4));
