@@ -2,7 +2,11 @@
 
 #include <csetjmp>
 #include <cstdio>  // jpeglib.h needs FILE
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
+#include <vector>
 
 #include <jpeglib.h>
 #include <opencv2/imgcodecs.hpp>
@@ -26,21 +30,21 @@ void jump_back(j_common_ptr info) { std::longjmp(static_cast<JpegState*>(info->c
 void stay_silent(j_common_ptr) {}
 
 // The two functions that call libjpeg hold no C++ object of their own, so the jump skips no destructor.
-bool start(JpegState& s, std::span<const std::uint8_t> jpeg, DecodedColour colour, int reduction, bool& cmyk) {
+bool start(JpegState& s, std::span<const std::uint8_t> jpeg, DecodedColour colour, int reduction) {
   if (setjmp(s.jump)) return false;
   jpeg_create_decompress(&s.info);
   s.created = true;
   s.info.client_data = &s;
   jpeg_mem_src(&s.info, jpeg.data(), static_cast<unsigned long>(jpeg.size()));
   if (jpeg_read_header(&s.info, TRUE) != JPEG_HEADER_OK) return false;
-  cmyk = s.info.num_components == 4;
-  if (cmyk) return false;
+  // The stated size, not the scaled one: a progressive JPEG holds every coefficient at full size
+  // however small it is decoded, so a 30 KB file stating 60000 x 60000 would take gigabytes.
+  if (std::uint64_t(s.info.image_width) * s.info.image_height > kMaxImagePixels) return false;
+  if (s.info.num_components != 1 && s.info.num_components != 3) return false;  // CMYK or worse: no sensor sends it
   // As OpenCV asks for it, so the pixels are the same: the codec's own BGR or grey, scaled in the DCT.
   s.info.scale_num = 1;
   s.info.scale_denom = static_cast<unsigned>(reduction);
   s.info.out_color_space = colour == DecodedColour::grey ? JCS_GRAYSCALE : JCS_EXT_BGR;
-  jpeg_calc_output_dimensions(&s.info);
-  if (std::uint64_t(s.info.output_width) * s.info.output_height > kMaxImagePixels) return false;
   jpeg_start_decompress(&s.info);
   return true;
 }
@@ -55,7 +59,7 @@ bool read_rows(JpegState& s, std::uint8_t* pixels, std::size_t step) {
   return true;
 }
 
-cv::Mat opencv_decode(std::span<const std::uint8_t> bytes, DecodedColour colour) {
+cv::Mat png_decode(std::span<const std::uint8_t> bytes, DecodedColour colour) {
   const cv::Mat wrapped(1, int(bytes.size()), CV_8U, const_cast<std::uint8_t*>(bytes.data()));
   try {
     return cv::imdecode(wrapped, (colour == DecodedColour::grey ? cv::IMREAD_GRAYSCALE : cv::IMREAD_COLOR) | cv::IMREAD_IGNORE_ORIENTATION);
@@ -80,8 +84,7 @@ cv::Mat decode_jpeg(std::span<const std::uint8_t> jpeg, DecodedColour colour, in
       if (s.created) jpeg_destroy_decompress(&s.info);
     }
   } destroy{*s};
-  bool cmyk = false;
-  if (!start(*s, jpeg, colour, reduction, cmyk)) return cmyk && reduction == 1 ? opencv_decode(jpeg, colour) : cv::Mat();
+  if (!start(*s, jpeg, colour, reduction)) return {};
   cv::Mat image(int(s->info.output_height), int(s->info.output_width), colour == DecodedColour::grey ? CV_8UC1 : CV_8UC3);
   if (!read_rows(*s, image.data, image.step)) return {};
   if (warnings) *warnings = int(s->errors.num_warnings);
@@ -91,8 +94,27 @@ cv::Mat decode_jpeg(std::span<const std::uint8_t> jpeg, DecodedColour colour, in
 cv::Mat decode_image(std::span<const std::uint8_t> bytes, DecodedColour colour) {
   const std::string format = image_format(bytes);
   if (format == "jpeg") return decode_jpeg(bytes, colour);
-  if (format == "png" && is_complete_png(bytes)) return opencv_decode(bytes, colour);
+  if (format == "png" && is_complete_png(bytes)) return png_decode(bytes, colour);
   return {};
+}
+
+cv::Mat read_image_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::uint8_t> head(8);
+  if (!in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()))) return {};
+  if (image_format(head).empty()) {
+    try {
+      return cv::imread(path, cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);
+    } catch (const cv::Exception&) {
+      return {};
+    }
+  }
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error || size > 4 * kMaxImagePixels) return {};
+  in.seekg(0);
+  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return decode_image(bytes);
 }
 
 }  // namespace haptex::dataset

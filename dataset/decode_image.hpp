@@ -9,6 +9,7 @@
 // sensor's.
 #include <cstdint>
 #include <span>
+#include <string>
 
 #include <opencv2/core/mat.hpp>
 
@@ -18,14 +19,21 @@ enum class DecodedColour { bgr, grey };
 
 // A JPEG decoded at 1/reduction of its size (1, 2, 4 or 8: libjpeg's DCT-domain scaling, OpenCV's
 // IMREAD_REDUCED_*) as 8-bit BGR or grey, warnings counted in `warnings` when given and never printed;
-// empty when it is cut off (is_complete_jpeg), does not decode or states more than kMaxImagePixels
-// (core/image_header.hpp). A CMYK
-// JPEG, which no GelSight-type camera sends, goes to cv::imdecode.
+// empty when it is cut off (is_complete_jpeg), does not decode, states more than kMaxImagePixels
+// (core/image_header.hpp) whatever the reduction, or is CMYK (no GelSight-type camera sends it). A
+// frame cut off and closed with an end marker still decodes, its missing part grey, with a warning
+// ("premature end of data segment"): OpenCV's own MJPG encoder closes whole frames the same way, so
+// the two cannot be told apart.
 cv::Mat decode_jpeg(std::span<const std::uint8_t> jpeg, DecodedColour colour = DecodedColour::bgr, int reduction = 1,
                     int* warnings = nullptr);
 
 // A JPEG (decode_jpeg) or a PNG (cv::imdecode, 8-bit BGR; is_complete_png checked first, so libpng
 // finds nothing to complain of) at full size; empty for anything else or when it does not decode.
 cv::Mat decode_image(std::span<const std::uint8_t> bytes, DecodedColour colour = DecodedColour::bgr);
+
+// An image file as 8-bit BGR: a JPEG or PNG through decode_image (a file over 256 MiB, four bytes
+// per pixel of kMaxImagePixels, is not read), any other format OpenCV reads through cv::imread, EXIF
+// orientation never applied; empty when it cannot be read.
+cv::Mat read_image_file(const std::string& path);
 
 }  // namespace haptex::dataset

@@ -1,6 +1,6 @@
 #pragma once
 // The files haptex writes, by format: the root attribute haptex_format names the kind and its
-// version ("dataset/3"), and every reader opens a file through open_checked, so a file of another
+// version ("dataset/4"), and every reader opens a file through open_checked, so a file of another
 // kind or an older version is refused in one place, with the file and the fix
 // (schemas/hdf5-layout.md; docs/architecture.md, "Formats").
 #include <optional>
@@ -22,7 +22,7 @@ struct Format {
 };
 
 const Format& format_of(Kind kind);
-std::string format_name(Kind kind);  // "dataset/3"
+std::string format_name(Kind kind);  // "dataset/4"
 // The kind whose current format is `name` exactly; nullopt for anything else.
 std::optional<Kind> kind_named(std::string_view name);
 

@@ -1,5 +1,5 @@
 #pragma once
-// The images of a press in gelsight (`gelsight/2`) and dataset (`dataset/3`) files: `reference`, `peak`
+// The images of a press in gelsight (`gelsight/2`) and dataset (`dataset/4`) files: `reference`, `peak`
 // and `frames`, each a 1-D dataset of encoded images (variable-length uint8, dataset/vlen_bytes.hpp),
 // JPEG or PNG, with an `encoding` attribute. JPEG frames are the bytes the sensor sent (an MJPG video or
 // press file), so storing them loses nothing and costs a tenth of the decoded pixels; the reference

@@ -1,5 +1,5 @@
 #pragma once
-// The model file (haptex_format model/2; schemas/hdf5-layout.md): weights, normalisation
+// The model file (haptex_format model/3; schemas/hdf5-layout.md): weights, normalisation
 // statistics, the texture descriptor's spec, the training options and metrics, and the hashes of
 // the dataset and split it was trained on. Plain float32 arrays and attributes, so numpy can run
 // the network from it.

@@ -1,10 +1,10 @@
 #include "predict/texture_choice.hpp"
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
 #include "core/image_header.hpp"
+#include "dataset/decode_image.hpp"
 
 namespace haptex::predict {
 namespace {
@@ -19,8 +19,8 @@ void check_pixels(const std::string& path, std::uint64_t width, std::uint64_t he
 // RGB, the order texture_descriptor takes (OpenCV decodes PNG and JPEG as BGR).
 cv::Mat read_rgb(const std::string& path) {
   if (const auto size = image_header_size(path)) check_pixels(path, size->width, size->height);
-  cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
-  if (image.empty()) throw input_error(path, "", "not an image OpenCV can read", "Give a PNG or JPEG frame of the sensor");
+  cv::Mat image = dataset::read_image_file(path);
+  if (image.empty()) throw input_error(path, "", "not an image haptex can read", "Give a PNG or JPEG frame of the sensor");
   check_pixels(path, std::uint64_t(image.cols), std::uint64_t(image.rows));
   cv::cvtColor(image, image, cv::COLOR_BGR2RGB);
   return image;

@@ -30,7 +30,7 @@ std::vector<LayoutSection> parse_layout(std::string_view markdown);
 const std::vector<LayoutSection>& embedded_layout();
 
 // The rows a file of this haptex_format must satisfy: "Every file", its own section, the optional
-// rows of "Merged file" (/shards, present only in files haptex merge wrote), and for dataset/3 the
+// rows of "Merged file" (/shards, present only in files haptex merge wrote), and for a dataset file the
 // recordings/1 and gelsight/2 rows below /materials/{material}/recordings/ and
 // /materials/{material}/presses/ (the dataset file copies those groups unchanged).
 std::vector<LayoutRow> rows_for_format(const std::vector<LayoutSection>& layout, std::string_view format);

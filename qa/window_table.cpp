@@ -68,7 +68,7 @@ std::optional<WindowTable> load_window_table(const h5::Group& root, std::string&
              window = int_attr(windows, "window_samples"), action_end = int_attr(windows, "action_end"),
              action_step = int_attr(windows, "action_step");
   if (!stride || !action || !window || !action_end || !action_step || *stride <= 0 || *action <= 0 || *window <= 0 ||
-      *action_step <= 0 || *action > *window || *action_step > *window || *action_end < (*action - 1) * *action_step ||
+      *action_step <= 0 || *action > *window || *action_step > *window || (*action - 1) > *action_end / *action_step ||
       *action_end >= *window) {
     problem = "/windows has no positive integer stride, action_samples, action_step, window_samples and action_end attributes "
               "(action_end: the action's last sample inside the window, its first action_step (action_samples - 1) before it)";

@@ -22,7 +22,7 @@ void check_trajectory(const predict::Trajectory& t) {
   if (t.force.size() != t.speed.size())
     throw Error(Error::Kind::bad_input, "render: the trajectory has " + std::to_string(t.force.size()) + " force and " +
                                             std::to_string(t.speed.size()) + " speed samples; they must pair up");
-  if (t.force.size() <= kFirstActionSample)
+  if (t.force.size() < kMinTrajectorySamples)
     throw Error(Error::Kind::bad_input, "render: the trajectory has " + std::to_string(t.force.size()) +
                                             " samples; a rendering needs at least 10 (1 ms)");
 }
@@ -71,7 +71,7 @@ void render_online(const predict::Model& model, const predict::TextureCode& code
 
 }  // namespace
 
-std::size_t render_frames(std::size_t n) { return n <= kFirstActionSample ? 0 : (n - 1) / kHop + 1; }
+std::size_t render_frames(std::size_t n) { return n < kMinTrajectorySamples ? 0 : (n - 1) / kHop + 1; }
 
 std::size_t frame_action_sample(std::size_t m, std::size_t n) { return std::min(m * kHop + dataset::kActionEnd, n - 1); }
 

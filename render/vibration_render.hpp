@@ -37,8 +37,9 @@
 
 namespace haptex::render {
 
-// The first trajectory sample with a whole action (10 samples) ending at it: a rendering needs it.
-inline constexpr std::size_t kFirstActionSample = dataset::kActionValues / 2 - 1;  // 9
+// The shortest trajectory a rendering takes: 1 ms. (The action needs no history: before a trajectory's
+// first sample, that sample stands in, dataset::action_ending_at.)
+inline constexpr std::size_t kMinTrajectorySamples = 10;
 // The trajectory sample frame m's action ends at: its middle, or the trajectory's last sample.
 std::size_t frame_action_sample(std::size_t m, std::size_t n);
 

@@ -6,7 +6,6 @@
 #include <fstream>
 #include <future>
 #include <limits>
-#include <opencv2/imgcodecs.hpp>
 
 #include "capture/extraction/capture_inputs.hpp"
 #include "capture/extraction/contact_sheet.hpp"
@@ -21,6 +20,7 @@
 #include "core/sha256.hpp"
 #include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
+#include "dataset/decode_image.hpp"
 
 namespace haptex::capture {
 namespace fs = std::filesystem;
@@ -34,7 +34,7 @@ void write_sheet(const PartialDirectory& sheets, const std::string& name, const 
 }
 
 cv::Mat load_reference(const std::string& path) {
-  cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
+  cv::Mat image = dataset::read_image_file(path);
   if (image.empty())
     throw input_error(path, "", "cannot read the reference image", "Give a PNG or JPEG no-contact frame of the sensor");
   return image;

@@ -64,8 +64,9 @@ class ImageSequenceSource : public FrameSource {
   }
 
   // An 8-bit PNG frame file is stored as it is: any reader decodes it to these pixels. A JPEG file
-  // may carry an orientation tag, which OpenCV applies and others need not, and a 16-bit PNG
-  // decodes differently in OpenCV and PIL: those are stored as the PNG of the decoded frame.
+  // may carry an orientation tag, which haptex ignores (dataset/decode_image.hpp) and other readers
+  // may apply, and a 16-bit PNG decodes differently in OpenCV and PIL: those are stored as the PNG of
+  // the decoded frame.
   void read(const std::vector<std::int64_t>& indices, const Delivery& deliver) override {
     for (std::int64_t i : indices) {
       dataset::EncodedImage bytes = file_bytes(std::size_t(i));

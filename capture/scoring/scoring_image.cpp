@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #ifdef __SSE2__
@@ -104,7 +105,9 @@ cv::Mat scoring_image(const cv::Mat& frame) {
 }
 
 cv::Mat scoring_image_from_jpeg(std::span<const std::uint8_t> jpeg, cv::Size frame) {
-  if (!is_complete_jpeg(jpeg)) return {};
+  // A frame whose header states another size is not the camera's: refused before libjpeg sizes its buffers by it.
+  const std::optional<ImageSize> stated = image_header_size(jpeg);
+  if (!stated || cv::Size(int(stated->width), int(stated->height)) != frame) return {};
   const cv::Mat grey = dataset::decode_jpeg(jpeg, dataset::DecodedColour::grey, jpeg_reduction(frame));
   if (grey.empty() || grey.size() != scoring_size(frame)) return {};
   return to_float(grey);

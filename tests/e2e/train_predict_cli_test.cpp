@@ -111,7 +111,10 @@ TEST(PredictCli, FollowsATrajectoryAndRefusesABadOne) {
   const std::string material = first_material();
   const CommandResult r = run_haptex({"predict", trained_model(), "--material", material, "--csv", dir.file("traj.csv")});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1 + 10);  // header + samples 9, 109, ..., 909
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1 + 10);  // header + samples 0, 100, ..., 900
+  // From the first sample on: before it, the first sample stands in for the 45 ms of action.
+  EXPECT_EQ(r.out.find("\n0,0.0000,1,50,"), r.out.find('\n')) << r.out.substr(0, 300);
+  EXPECT_NE(r.out.find("\n900,0.0900,1.9,140,"), std::string::npos) << r.out;
   {
     std::ofstream csv(dir.file("bad.csv"));
     csv << "time_s,force,speed\n0,1,50\n0.0001,x,50\n";
