@@ -28,7 +28,6 @@ inline constexpr std::size_t kActionEnd = kWindowSamples / 2;
 // Samples between two action samples: 5 ms, so the 10 span 45 ms (the force and speed are low-passed
 // at 20 Hz, docs/convert.md, so 5 ms apart they still follow every turn of the stroke).
 inline constexpr std::size_t kActionStep = 50;
-inline constexpr std::size_t kActionSpan = (kActionSamples - 1) * kActionStep;  // 450 samples
 // The evaluation's grid and the reconstruction's hop: a window every 10 ms (and align's default stride).
 inline constexpr std::size_t kGridStride = 100;
 

@@ -6,7 +6,6 @@
 #include "capture/storage/image_datasets.hpp"
 #include "capture/storage/press_file_frames.hpp"
 #include "core/error.hpp"
-#include "core/image_header.hpp"
 #include "core/parallel.hpp"
 #include "core/sha256.hpp"
 #include "dataset/channel_order.hpp"
@@ -86,8 +85,7 @@ class PressFileSource : public FrameSource {
   }
 
   cv::Mat decode(const std::vector<std::uint8_t>& bytes) const {
-    if (!is_complete_image(bytes)) return {};
-    cv::Mat image = dataset::decode_image(bytes);
+    cv::Mat image = dataset::decode_image(bytes);  // empty when cut off or neither JPEG nor PNG
     if (image.empty() || image.size() != frames_.size()) return {};
     // The decoder hands the codec's R, G, B over as B, G, R; frames stored swapped are swapped back.
     if (order_ == dataset::ChannelOrder::bgr) cv::cvtColor(image, image, cv::COLOR_RGB2BGR);

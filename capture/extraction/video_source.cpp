@@ -1,7 +1,6 @@
 // Video files through OpenCV's FFmpeg backend (MJPG/MPEG-4 AVI, FFV1 Matroska, H.264 MP4 ...).
 #include <vector>
 
-
 #include "capture/extraction/frame_source.hpp"
 #include "capture/scoring/scoring_image.hpp"
 #include "capture/storage/video_file.hpp"
@@ -106,8 +105,8 @@ class VideoSource : public FrameSource {
   // neither decodes concealed nor makes OpenCV allocate more); empty otherwise.
   cv::Mat decode(const dataset::EncodedImage& jpeg) const {
     const std::optional<ImageSize> size = image_header_size(jpeg);
-    if (!size || cv::Size(int(size->width), int(size->height)) != probe_.size || !is_complete_jpeg(jpeg)) return {};
-    return dataset::decode_jpeg(jpeg);
+    if (!size || cv::Size(int(size->width), int(size->height)) != probe_.size) return {};
+    return dataset::decode_jpeg(jpeg);  // empty when cut off
   }
 
   void deliver_frame(const Frame& f, std::int64_t index, const Delivery& deliver) const {

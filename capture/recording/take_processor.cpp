@@ -43,8 +43,7 @@ cv::Mat TakeProcessor::scoring(const Frame& frame) const {
 cv::Mat TakeProcessor::decode_full(const Frame& frame) const {
   cv::Mat bgr;
   if (session_.format.fourcc == V4L2_PIX_FMT_MJPEG) {
-    if (!is_complete_jpeg(frame.bytes)) return {};
-    bgr = dataset::decode_jpeg(frame.bytes);
+    bgr = dataset::decode_jpeg(frame.bytes);  // empty when cut off
   } else if (frame.bytes.size() == std::size_t(size_.area()) * 2) {
     const cv::Mat yuyv(size_, CV_8UC2, const_cast<std::uint8_t*>(frame.bytes.data()));
     cv::cvtColor(yuyv, bgr, cv::COLOR_YUV2BGR_YUYV);
