@@ -20,7 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-
 class ImageSequenceSource : public FrameSource {
  public:
   explicit ImageSequenceSource(std::string folder) : path_(std::move(folder)) {
@@ -86,8 +85,6 @@ class ImageSequenceSource : public FrameSource {
   cv::Mat load(std::size_t i) const { return load(i, file_bytes(i)); }
 
   cv::Mat load(std::size_t i, const dataset::EncodedImage& bytes) const {
-    // A cut-off JPEG or PNG is refused before libjpeg conceals it or libpng prints its complaint.
-    const bool whole = image_format(bytes).empty() ? !bytes.empty() : is_complete_image(bytes);
     const std::optional<ImageSize> stated = image_header_size(bytes);
     if (stated && std::uint64_t(stated->width) * stated->height > kMaxImagePixels)
       throw input_error(files_[i], "frame " + std::to_string(i), "its header states " + std::to_string(stated->width) + " x " +
@@ -95,7 +92,8 @@ class ImageSequenceSource : public FrameSource {
                         "Give the sensor's frames");
     cv::Mat image;
     try {
-      if (whole) image = image_format(bytes).empty() ? cv::imdecode(bytes, cv::IMREAD_COLOR) : dataset::decode_image(bytes);
+      if (!image_format(bytes).empty()) image = dataset::decode_image(bytes);  // empty when cut off, before libjpeg conceals it
+      else if (!bytes.empty()) image = cv::imdecode(bytes, cv::IMREAD_COLOR);  // another format OpenCV reads
     } catch (const cv::Exception&) {
     }
     if (image.empty())
