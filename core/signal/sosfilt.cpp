@@ -56,6 +56,16 @@ std::vector<std::array<double, 2>> scaled(std::vector<std::array<double, 2>> zi,
   return zi;
 }
 
+// The samples a pass filters in place: forward through a buffer, or backward from its end, so the
+// backward pass of sosfiltfilt needs no reversed copy.
+struct Samples {
+  double* first;
+  std::ptrdiff_t step;  // +1 or -1
+  std::size_t size;
+  double& operator[](std::size_t i) const { return first[std::ptrdiff_t(i) * step]; }
+  Samples after(std::size_t skip) const { return {first + std::ptrdiff_t(skip) * step, step, size - skip}; }
+};
+
 // A section's last two inputs and outputs: x1, x2, y1, y2.
 using History = std::array<double, 4>;
 
@@ -65,9 +75,10 @@ double direct_form(const Section& c, double in, const History& h) {
   return (c[0] * in + c[1] * h[0] + c[2] * h[1] - c[5] * h[3]) - c[4] * h[2];
 }
 
-void single_pass(const Section& c, std::span<double> x, History& h) {
+void single_pass(const Section& c, Samples x, History& h) {
   History local = h;
-  for (double& sample : x) {
+  for (std::size_t i = 0; i < x.size; ++i) {
+    double& sample = x[i];
     const double out = direct_form(c, sample, local);
     local = shifted(local, sample, out);
     sample = out;
@@ -76,9 +87,10 @@ void single_pass(const Section& c, std::span<double> x, History& h) {
 }
 
 // Sections c then d over the signal in one loop: d takes c's output sample by sample.
-void pair_pass(const Section& c, const Section& d, std::span<double> x, History& hc, History& hd) {
+void pair_pass(const Section& c, const Section& d, Samples x, History& hc, History& hd) {
   History a = hc, b = hd;
-  for (double& sample : x) {
+  for (std::size_t i = 0; i < x.size; ++i) {
+    double& sample = x[i];
     const double mid = direct_form(c, sample, a);
     const double out = direct_form(d, mid, b);
     a = shifted(a, sample, mid);
@@ -87,6 +99,8 @@ void pair_pass(const Section& c, const Section& d, std::span<double> x, History&
   }
   hc = a, hd = b;
 }
+
+void filter(const Sos& sos, Samples x, std::vector<std::array<double, 2>>& zi);
 
 }  // namespace
 
@@ -105,6 +119,12 @@ std::vector<std::array<double, 2>> sosfilt_zi(const Sos& sos) {
 }
 
 void sosfilt(const Sos& sos, std::span<double> x, std::vector<std::array<double, 2>>& zi) {
+  filter(sos, Samples{x.data(), 1, x.size()}, zi);
+}
+
+namespace {
+
+void filter(const Sos& sos, Samples x, std::vector<std::array<double, 2>>& zi) {
   check_sections(sos, "sosfilt");
   if (zi.size() != sos.size())
     throw failure("sosfilt: " + std::to_string(zi.size()) + " initial states for " + std::to_string(sos.size()) +
@@ -113,7 +133,7 @@ void sosfilt(const Sos& sos, std::span<double> x, std::vector<std::array<double,
   // Each section's history, for the direct form below.
   std::vector<History> past(sections);
   // The first two samples as scipy filters them, from the state zi holds.
-  const std::size_t head = std::min<std::size_t>(2, x.size());
+  const std::size_t head = std::min<std::size_t>(2, x.size);
   for (std::size_t i = 0; i < head; ++i) {
     double current = x[i];
     for (std::size_t s = 0; s < sections; ++s) {
@@ -127,14 +147,14 @@ void sosfilt(const Sos& sos, std::span<double> x, std::vector<std::array<double,
     }
     x[i] = current;
   }
-  if (x.size() < 2) return;
+  if (x.size < 2) return;
   // Then in direct form I, the same filter summed another way, two sections per pass with their
   // state in registers: only one multiply and one subtraction wait for each section's previous
   // output, which sets the speed of a recursive filter, and the two sections' chains overlap.
   // Results agree with scipy's to 1e-9 (tests/core/signal_sosfilt_test.cpp).
   std::size_t pair = 0;
-  for (; pair + 1 < sections; pair += 2) pair_pass(sos[pair], sos[pair + 1], x.subspan(2), past[pair], past[pair + 1]);
-  if (pair < sections) single_pass(sos[pair], x.subspan(2), past[pair]);
+  for (; pair + 1 < sections; pair += 2) pair_pass(sos[pair], sos[pair + 1], x.after(2), past[pair], past[pair + 1]);
+  if (pair < sections) single_pass(sos[pair], x.after(2), past[pair]);
   // The state scipy's form would hold after the last sample, for a caller that filters on.
   for (std::size_t s = 0; s < sections; ++s) {
     const Section& c = sos[s];
@@ -142,6 +162,8 @@ void sosfilt(const Sos& sos, std::span<double> x, std::vector<std::array<double,
     zi[s] = {c[1] * p[0] - c[4] * p[2] + (c[2] * p[1] - c[5] * p[3]), c[2] * p[0] - c[5] * p[2]};
   }
 }
+
+}  // namespace
 
 std::size_t sosfiltfilt_padlen(const Sos& sos) {
   auto zero_count = [&](int column) {
@@ -160,16 +182,17 @@ std::vector<double> sosfiltfilt(const Sos& sos, std::span<const double> x) {
     throw failure("sosfiltfilt: the signal has " + std::to_string(x.size()) +
                   " samples; zero-phase filtering with this filter needs more than " + std::to_string(padlen));
   const auto zi = sosfilt_zi(sos);
+  // One buffer, filtered forward and then backward in place, its padding cut off at the end: a
+  // second buffer or a reversed copy would cost more than a pass (fresh pages for 8 bytes a sample).
   std::vector<double> y = odd_extension(x, padlen);
   // Start each pass in the steady state of its first sample, so the edges do not ring.
   auto state = scaled(zi, y.front());
-  sosfilt(sos, y, state);
-  std::reverse(y.begin(), y.end());
-  state = scaled(zi, y.front());
-  sosfilt(sos, y, state);
-  std::reverse(y.begin(), y.end());
-  return std::vector<double>(y.begin() + static_cast<std::ptrdiff_t>(padlen),
-                             y.end() - static_cast<std::ptrdiff_t>(padlen));
+  filter(sos, Samples{y.data(), 1, y.size()}, state);
+  state = scaled(zi, y.back());
+  filter(sos, Samples{y.data() + y.size() - 1, -1, y.size()}, state);
+  y.erase(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(padlen));
+  y.resize(x.size());
+  return y;
 }
 
 }  // namespace haptex::signal
