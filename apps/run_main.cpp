@@ -5,6 +5,7 @@
 #include "apps/number_checks.hpp"
 #include "apps/provenance.hpp"
 #include "core/error.hpp"
+#include "core/freed_memory.hpp"
 #include "core/version.hpp"
 
 namespace haptex::apps {
@@ -20,6 +21,7 @@ void require_finite_numbers(CLI::App& app) {
 }  // namespace
 
 int run_main(int argc, char** argv) {
+  keep_freed_memory();
   CLI::App app{"haptex: build, check and model haptic texture data (GelSight images + vibrations)", "haptex"};
   app.set_version_flag("--version", std::string("haptex ") + kVersion);
   app.require_subcommand(1);

@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "core/freed_memory.hpp"
 #include "predict/model_file.hpp"
 #include "dataset/window.hpp"
 #include "predict/predictor.hpp"
@@ -160,6 +161,7 @@ BENCHMARK(BM_Encode960x720)->Unit(benchmark::kMicrosecond);
 }  // namespace
 
 int main(int argc, char** argv) {
+  haptex::keep_freed_memory();  // as the haptex binary runs
   if (argc == 3 && std::strcmp(argv[1], "--export-model") == 0) {
     write_model(model(Variant::unified), argv[2], true, "bench_predict --export-model: default sizes, random weights");
     return 0;

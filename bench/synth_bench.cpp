@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "core/freed_memory.hpp"
 #include "convert/hatt_model_reader.hpp"
 #include "core/ar/lsf.hpp"
 #include "core/ar/texture_renderer.hpp"
@@ -84,4 +85,10 @@ BENCHMARK(BM_ProbeVibration)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  haptex::keep_freed_memory();  // as the haptex binary runs
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
