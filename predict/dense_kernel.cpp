@@ -29,7 +29,9 @@ struct FourColumns {
 
 // y = W x + b, W column-major (rows m, columns n, leading dimension ld), four columns a step so that
 // each pass over y reads four columns of W: W is most of the memory traffic (35 000 floats for the
-// default model, in L2 not L1). The rows past the last whole eight go through masked loads.
+// default model, in L2 not L1). A column whose x is exactly zero adds nothing and is not read: after a
+// ReLU about half of a hidden layer is zero, so the weights read halve. The rows past the last whole
+// eight go through masked loads.
 __attribute__((target("avx2,fma"))) void gemv_avx2(const float* w, long ld, long m, long n, const float* x, const float* b,
                                                    float* y) {
   const long full = m / 8 * 8;
@@ -38,20 +40,25 @@ __attribute__((target("avx2,fma"))) void gemv_avx2(const float* w, long ld, long
   for (long i = 0; i < full; i += 8) _mm256_storeu_ps(y + i, _mm256_loadu_ps(b + i));
   // The rows past the last whole eight stay in a register until the end: masked stores are slow.
   __m256 rest = _mm256_maskload_ps(b + full, tail);
-  long j = 0;
-  for (; j + 4 <= n; j += 4) {
-    const float *c0 = w + j * ld, *c1 = c0 + ld, *c2 = c1 + ld, *c3 = c2 + ld;
-    const FourColumns f{_mm256_set1_ps(x[j]), _mm256_set1_ps(x[j + 1]), _mm256_set1_ps(x[j + 2]), _mm256_set1_ps(x[j + 3])};
+  const float* c[4];  // the next four columns with a non-zero x
+  float xc[4];
+  int k = 0;
+  for (long j = 0; j < n; ++j) {
+    if (x[j] == 0.0f) continue;
+    c[k] = w + j * ld, xc[k] = x[j];
+    if (++k < 4) continue;
+    k = 0;
+    const FourColumns f{_mm256_set1_ps(xc[0]), _mm256_set1_ps(xc[1]), _mm256_set1_ps(xc[2]), _mm256_set1_ps(xc[3])};
     for (long i = 0; i < full; i += 8)
-      _mm256_storeu_ps(y + i, f.add_to(_mm256_loadu_ps(y + i), _mm256_loadu_ps(c0 + i), _mm256_loadu_ps(c1 + i),
-                                       _mm256_loadu_ps(c2 + i), _mm256_loadu_ps(c3 + i)));
+      _mm256_storeu_ps(y + i, f.add_to(_mm256_loadu_ps(y + i), _mm256_loadu_ps(c[0] + i), _mm256_loadu_ps(c[1] + i),
+                                       _mm256_loadu_ps(c[2] + i), _mm256_loadu_ps(c[3] + i)));
     if (full < m)
-      rest = f.add_to(rest, _mm256_maskload_ps(c0 + full, tail), _mm256_maskload_ps(c1 + full, tail),
-                      _mm256_maskload_ps(c2 + full, tail), _mm256_maskload_ps(c3 + full, tail));
+      rest = f.add_to(rest, _mm256_maskload_ps(c[0] + full, tail), _mm256_maskload_ps(c[1] + full, tail),
+                      _mm256_maskload_ps(c[2] + full, tail), _mm256_maskload_ps(c[3] + full, tail));
   }
   if (full < m) _mm256_maskstore_ps(y + full, tail, rest);
-  for (; j < n; ++j)
-    for (long i = 0; i < m; ++i) y[i] += w[j * ld + i] * x[j];
+  for (int last = 0; last < k; ++last)
+    for (long i = 0; i < m; ++i) y[i] += c[last][i] * xc[last];
 }
 
 // e^a for a <= 0, eight at once: a = k ln 2 + r with |r| <= ln 2 / 2, e^r by its Taylor series to r^7

@@ -1,6 +1,7 @@
 // The per-query kernel against Eigen and the scalar formula it replaces, on sizes that leave partial
 // blocks of rows (not a multiple of 8) and of columns (not a multiple of 4). On a CPU without AVX2
-// both sides are Eigen's and the comparison still holds; the test says which kernel ran.
+// both sides are Eigen's and the comparison still holds; the test says which kernel ran. Inputs as a
+// ReLU leaves them (about half exactly zero: the kernel skips those columns) and all zero as well.
 #include "predict/dense_kernel.hpp"
 
 #include <gtest/gtest.h>
@@ -15,18 +16,23 @@ TEST(DenseKernel, EqualsEigenOnEverySizeAndOnAColumnBlock) {
   SCOPED_TRACE(dense_kernel_uses_avx2() ? "AVX2 and FMA kernel" : "Eigen kernel");
   std::mt19937 rng(5);
   std::normal_distribution<float> normal;
+  enum class Input { dense, relu, zero };
   for (const auto& [m, n] : {std::pair{100, 256}, std::pair{256, 32}, std::pair{7, 3}, std::pair{33, 5}, std::pair{8, 4}, std::pair{1, 1}})
-    for (const Activation a : {Activation::linear, Activation::relu, Activation::softplus}) {
-      const Eigen::MatrixXf w = Eigen::MatrixXf::NullaryExpr(m, n + 6, [&] { return normal(rng); });
-      const Eigen::VectorXf x = Eigen::VectorXf::NullaryExpr(n, [&] { return normal(rng); });
-      const Eigen::VectorXf b = Eigen::VectorXf::NullaryExpr(m, [&] { return normal(rng); });
-      Eigen::MatrixXf expected = w.rightCols(n) * x + b;
-      activate(a, expected);
-      Eigen::VectorXf out(m);
-      dense_column(w.rightCols(n), x, b, a, out);
-      for (int i = 0; i < m; ++i)
-        ASSERT_NEAR(out(i), expected(i, 0), 2e-5f * (1 + std::abs(expected(i, 0)))) << m << " x " << n << ", row " << i << ", " << activation_name(a);
-    }
+    for (const Activation a : {Activation::linear, Activation::relu, Activation::softplus})
+      for (const Input input : {Input::dense, Input::relu, Input::zero}) {
+        const Eigen::MatrixXf w = Eigen::MatrixXf::NullaryExpr(m, n + 6, [&] { return normal(rng); });
+        Eigen::VectorXf x = Eigen::VectorXf::NullaryExpr(n, [&] { return normal(rng); });
+        if (input == Input::relu) x = x.cwiseMax(0.0f);
+        if (input == Input::zero) x.setZero();
+        const Eigen::VectorXf b = Eigen::VectorXf::NullaryExpr(m, [&] { return normal(rng); });
+        Eigen::MatrixXf expected = w.rightCols(n) * x + b;
+        activate(a, expected);
+        Eigen::VectorXf out(m);
+        dense_column(w.rightCols(n), x, b, a, out);
+        for (int i = 0; i < m; ++i)
+          ASSERT_NEAR(out(i), expected(i, 0), 2e-5f * (1 + std::abs(expected(i, 0))))
+              << m << " x " << n << ", row " << i << ", " << activation_name(a) << ", input " << int(input);
+      }
 }
 
 TEST(DenseKernel, SoftplusWithinFloatPrecisionOfTheFormulaFromTinyToHuge) {
