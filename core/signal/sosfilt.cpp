@@ -100,30 +100,6 @@ void pair_pass(const Section& c, const Section& d, Samples x, History& hc, Histo
   hc = a, hd = b;
 }
 
-void filter(const Sos& sos, Samples x, std::vector<std::array<double, 2>>& zi);
-
-}  // namespace
-
-std::vector<std::array<double, 2>> sosfilt_zi(const Sos& sos) {
-  check_sections(sos, "sosfilt_zi");
-  std::vector<std::array<double, 2>> zi;
-  // Each section starts in the steady state of the step that reaches it: the product of the
-  // DC gains b.sum() / a.sum() of the sections before it.
-  double scale = 1.0;
-  for (const Section& s : sos) {
-    auto state = biquad_zi(s);
-    zi.push_back({scale * state[0], scale * state[1]});
-    scale *= (s[0] + s[1] + s[2]) / (s[3] + s[4] + s[5]);
-  }
-  return zi;
-}
-
-void sosfilt(const Sos& sos, std::span<double> x, std::vector<std::array<double, 2>>& zi) {
-  filter(sos, Samples{x.data(), 1, x.size()}, zi);
-}
-
-namespace {
-
 void filter(const Sos& sos, Samples x, std::vector<std::array<double, 2>>& zi) {
   check_sections(sos, "sosfilt");
   if (zi.size() != sos.size())
@@ -164,6 +140,24 @@ void filter(const Sos& sos, Samples x, std::vector<std::array<double, 2>>& zi) {
 }
 
 }  // namespace
+
+std::vector<std::array<double, 2>> sosfilt_zi(const Sos& sos) {
+  check_sections(sos, "sosfilt_zi");
+  std::vector<std::array<double, 2>> zi;
+  // Each section starts in the steady state of the step that reaches it: the product of the
+  // DC gains b.sum() / a.sum() of the sections before it.
+  double scale = 1.0;
+  for (const Section& s : sos) {
+    auto state = biquad_zi(s);
+    zi.push_back({scale * state[0], scale * state[1]});
+    scale *= (s[0] + s[1] + s[2]) / (s[3] + s[4] + s[5]);
+  }
+  return zi;
+}
+
+void sosfilt(const Sos& sos, std::span<double> x, std::vector<std::array<double, 2>>& zi) {
+  filter(sos, Samples{x.data(), 1, x.size()}, zi);
+}
 
 std::size_t sosfiltfilt_padlen(const Sos& sos) {
   auto zero_count = [&](int column) {
