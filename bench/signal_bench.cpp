@@ -49,6 +49,7 @@ BENCHMARK(BM_AmplitudeSpectrum_1000);
 int main(int argc, char** argv) {
   haptex::keep_freed_memory();  // as the haptex binary runs
   benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

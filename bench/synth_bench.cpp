@@ -88,6 +88,7 @@ BENCHMARK(BM_ProbeVibration)->Unit(benchmark::kMillisecond);
 int main(int argc, char** argv) {
   haptex::keep_freed_memory();  // as the haptex binary runs
   benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

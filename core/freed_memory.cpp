@@ -7,12 +7,14 @@
 
 namespace haptex {
 
-void keep_freed_memory() {
+bool keep_freed_memory() {
 #if defined(__GLIBC__)
-  // Blocks up to 32 MB (glibc's largest threshold on 64-bit) come from the heap, not from their own
-  // mapping, and the heap's free top is never trimmed.
-  mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  // Blocks up to 32 MB (glibc's largest threshold on 64-bit; 32-bit refuses it) come from the heap,
+  // not from their own mapping; only then is trimming switched off, since that also stops glibc from
+  // raising its threshold on its own.
+  return mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024) == 1 && mallopt(M_TRIM_THRESHOLD, 1 << 30) == 1;
+#else
+  return false;
 #endif
 }
 

@@ -176,8 +176,8 @@ std::vector<double> sosfiltfilt(const Sos& sos, std::span<const double> x) {
     throw failure("sosfiltfilt: the signal has " + std::to_string(x.size()) +
                   " samples; zero-phase filtering with this filter needs more than " + std::to_string(padlen));
   const auto zi = sosfilt_zi(sos);
-  // One buffer, filtered forward and then backward in place, its padding cut off at the end: a
-  // second buffer or a reversed copy would cost more than a pass (fresh pages for 8 bytes a sample).
+  // One buffer, filtered forward and then backward in place, its padding cut off at the end (one move
+  // of the samples): reversed copies and a second buffer cost more than both passes (perf).
   std::vector<double> y = odd_extension(x, padlen);
   // Start each pass in the steady state of its first sample, so the edges do not ring.
   auto state = scaled(zi, y.front());
