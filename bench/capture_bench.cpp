@@ -15,7 +15,7 @@
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/freed_memory.hpp"
+#include "bench/run_benchmarks.hpp"
 #include "capture/device/fake_camera.hpp"
 #include "capture/extraction/extract_presses.hpp"
 #include "capture/recording/press_recorder.hpp"
@@ -130,11 +130,7 @@ int export_frames(const std::string& dir) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  haptex::keep_freed_memory();  // as the haptex binary runs
   cv::setNumThreads(1);  // one core, as the figures say
   if (argc == 3 && std::strcmp(argv[1], "--export-frames") == 0) return export_frames(argv[2]);
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return haptex::bench::run_benchmarks(argc, argv);
 }

@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "core/freed_memory.hpp"
+#include "bench/run_benchmarks.hpp"
 #include "convert/convert_recordings.hpp"
 #include "convert/hatt_recording_reader.hpp"
 #include "core/sha256.hpp"
@@ -82,10 +82,6 @@ int export_xml(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  haptex::keep_freed_memory();  // as the haptex binary runs
   if (argc == 3 && std::string(argv[1]) == "--export-xml") return export_xml(argv[2]);
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return haptex::bench::run_benchmarks(argc, argv);
 }

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <random>
 
-#include "core/freed_memory.hpp"
+#include "bench/run_benchmarks.hpp"
 #include "evaluate/spectral_distance.hpp"
 #include "evaluate/welch_test.hpp"
 #include "render/griffin_lim.hpp"
@@ -114,10 +114,6 @@ int export_signal(const char* path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  haptex::keep_freed_memory();  // as the haptex binary runs
   if (argc == 3 && std::strcmp(argv[1], "--export-signal") == 0) return export_signal(argv[2]);
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return haptex::bench::run_benchmarks(argc, argv);
 }

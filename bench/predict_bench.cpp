@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "core/freed_memory.hpp"
+#include "bench/run_benchmarks.hpp"
 #include "predict/model_file.hpp"
 #include "dataset/window.hpp"
 #include "predict/predictor.hpp"
@@ -161,13 +161,9 @@ BENCHMARK(BM_Encode960x720)->Unit(benchmark::kMicrosecond);
 }  // namespace
 
 int main(int argc, char** argv) {
-  haptex::keep_freed_memory();  // as the haptex binary runs
   if (argc == 3 && std::strcmp(argv[1], "--export-model") == 0) {
     write_model(model(Variant::unified), argv[2], true, "bench_predict --export-model: default sizes, random weights");
     return 0;
   }
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return haptex::bench::run_benchmarks(argc, argv);
 }

@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "core/freed_memory.hpp"
+#include "bench/run_benchmarks.hpp"
 #include "core/signal/butterworth.hpp"
 #include "core/signal/dft321.hpp"
 #include "core/signal/sosfilt.hpp"
@@ -47,10 +47,5 @@ BENCHMARK(BM_AmplitudeSpectrum_1000);
 }  // namespace
 
 int main(int argc, char** argv) {
-  haptex::keep_freed_memory();  // as the haptex binary runs
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return haptex::bench::run_benchmarks(argc, argv);
 }

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <numbers>
 
-#include "core/freed_memory.hpp"
+#include "bench/run_benchmarks.hpp"
 #include "convert/hatt_model_reader.hpp"
 #include "core/ar/lsf.hpp"
 #include "core/ar/texture_renderer.hpp"
@@ -86,10 +86,5 @@ BENCHMARK(BM_ProbeVibration)->Unit(benchmark::kMillisecond);
 }  // namespace
 
 int main(int argc, char** argv) {
-  haptex::keep_freed_memory();  // as the haptex binary runs
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return haptex::bench::run_benchmarks(argc, argv);
 }
