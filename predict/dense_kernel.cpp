@@ -30,8 +30,8 @@ struct FourColumns {
 // y = W x + b, W column-major (rows m, columns n, leading dimension ld), four columns a step so that
 // each pass over y reads four columns of W: W is most of the memory traffic (35 000 floats for the
 // default model, in L2 not L1). A column whose x is exactly zero adds nothing and is not read: after a
-// ReLU many inputs are zero (84 % of the trained default model's 256 hidden units; docs/predict.md). The rows past the last whole
-// eight go through masked loads.
+// ReLU many inputs are zero (84 % of the trained default model's 256 hidden units; docs/predict.md).
+// The rows past the last whole eight go through masked loads.
 __attribute__((target("avx2,fma"))) void gemv_avx2(const float* w, long ld, long m, long n, const float* x, const float* b,
                                                    float* y) {
   const long full = m / 8 * 8;
