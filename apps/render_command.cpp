@@ -69,7 +69,7 @@ class RenderCommand : public Command {
     }
     const predict::Trajectory trajectory = predict::read_trajectory(trajectory_path_);
     if (trajectory.force.size() < render::kMinTrajectorySamples)
-      throw input_error(trajectory_path_, "", "fewer than 10 samples (1 ms)", "Give a longer trajectory");
+      throw input_error(trajectory_path_, "", "fewer than " + render::min_trajectory_text(), "Give a longer trajectory");
     const predict::Model model = predict::read_model(model_path_);
     const predict::TextureCode code = predict::choose_texture(predict::Predictor(model), model_path_, texture_);
 

@@ -24,7 +24,7 @@ void check_trajectory(const predict::Trajectory& t) {
                                             std::to_string(t.speed.size()) + " speed samples; they must pair up");
   if (t.force.size() < kMinTrajectorySamples)
     throw Error(Error::Kind::bad_input, "render: the trajectory has " + std::to_string(t.force.size()) +
-                                            " samples; a rendering needs at least 10 (1 ms)");
+                                            " samples; a rendering needs at least " + min_trajectory_text());
 }
 
 // Copies samples that start at `position` of the output into `signal`, dropping those past its end.
@@ -70,6 +70,11 @@ void render_online(const predict::Model& model, const predict::TextureCode& code
 }
 
 }  // namespace
+
+std::string min_trajectory_text() {
+  const auto ms = std::lround(double(kMinTrajectorySamples) * 1000.0 / dataset::kSampleRateHz);
+  return std::to_string(kMinTrajectorySamples) + " samples (" + std::to_string(ms) + " ms)";
+}
 
 std::size_t render_frames(std::size_t n) { return n < kMinTrajectorySamples ? 0 : (n - 1) / kHop + 1; }
 

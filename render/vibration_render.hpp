@@ -40,6 +40,8 @@ namespace haptex::render {
 // The shortest trajectory a rendering takes: 1 ms. (The action needs no history: before a trajectory's
 // first sample, that sample stands in, dataset::action_ending_at.)
 inline constexpr std::size_t kMinTrajectorySamples = 10;
+// "10 samples (1 ms)", for the messages that refuse a shorter trajectory.
+std::string min_trajectory_text();
 // The trajectory sample frame m's action ends at: its middle, or the trajectory's last sample.
 std::size_t frame_action_sample(std::size_t m, std::size_t n);
 
@@ -66,7 +68,7 @@ struct Rendering {
 // when n < 10).
 std::size_t render_frames(std::size_t n);
 
-// Throws haptex::Error (bad_input) when the trajectory has fewer than 10 samples or its force and
+// Throws haptex::Error (bad_input) when the trajectory has fewer than kMinTrajectorySamples or its force and
 // speed columns differ in length, and for RenderOptions the reconstructions refuse.
 Rendering render_vibration(const predict::Model& model, const predict::TextureCode& code,
                            const predict::Trajectory& trajectory, const RenderOptions& options = {});
