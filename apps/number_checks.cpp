@@ -29,4 +29,13 @@ CLI::Validator finite_number() { return checking(-INFINITY, false, ""); }
 CLI::Validator positive_number() { return checking(0, true, "POSITIVE"); }
 CLI::Validator non_negative_number() { return checking(0, false, "NONNEGATIVE"); }
 
+CLI::Validator odd_number() {
+  return CLI::Validator([](std::string& input) -> std::string {
+    char* end = nullptr;
+    const long value = std::strtol(input.c_str(), &end, 10);
+    if (end == input.c_str() || *end) return "";  // no whole number: left to CLI11's conversion
+    return value % 2 ? "" : "must be odd, not " + input;
+  }, "ODD");
+}
+
 }  // namespace haptex::apps

@@ -8,5 +8,6 @@ namespace haptex::apps {
 CLI::Validator finite_number();        // every floating-point option has it (run_main.cpp)
 CLI::Validator positive_number();      // finite and > 0
 CLI::Validator non_negative_number();  // finite and >= 0
+CLI::Validator odd_number();           // a whole number not divisible by 2
 
 }  // namespace haptex::apps

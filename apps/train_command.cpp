@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "apps/command.hpp"
+#include "apps/number_checks.hpp"
 #include "apps/terminal_progress.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "core/output_is_input.hpp"
@@ -60,6 +61,9 @@ class TrainCommand : public Command {
     app.add_option("--learning-rate", options_.learning_rate, "Adam's step size")->capture_default_str()->check(CLI::Range(1e-7, 1.0));
     app.add_flag("--balance-materials,!--no-balance-materials", options_.balance_materials,
                  "Unified: weigh every material alike in the loss (default), or by its vibration level");
+    app.add_option("--target-smoothing", options_.target_smoothing,
+                   "Bins each training target is averaged over (odd; 1: none); validation and evaluation keep the windows' own")
+        ->capture_default_str()->check(CLI::Range(1, 99) & odd_number());
     app.add_option("--seed", options_.seed, "Random seed (same seed, same weights)")->capture_default_str();
     app.add_option("--threads", options_.threads, "Threads (0: every core); the weights do not depend on it")->capture_default_str();
     app.add_flag("--force", force_, "Replace the output files if they exist");

@@ -6,6 +6,7 @@
 #include "core/parallel.hpp"
 #include "predict/spectrum_net.hpp"
 #include "predict/spectrum_training.hpp"
+#include "predict/target_smoothing.hpp"
 #include "predict/texture_training.hpp"
 
 namespace haptex::predict {
@@ -62,7 +63,9 @@ void train_unified(const TrainingData& data, const TrainOptions& o, const Eigen:
     // Validation presses as prediction sees a new press: recognised (the classifier is frozen now).
     val_latents.push_back(recognised_latents(model, texture_latents(model, data.materials[m].images[split::kVal])));
   }
-  SpectrumProblem p{&actions, &data.target, model.normalisation.target_scale, all_rows(data, split::kTrain),
+  const std::vector<std::size_t> train = all_rows(data, split::kTrain);
+  const Eigen::MatrixXf targets = smoothed_targets(data.target, train, o.target_smoothing);
+  SpectrumProblem p{&actions, &targets, model.normalisation.target_scale, train,
                     all_rows(data, split::kVal), &material, &train_latents, &val_latents};
   if (o.balance_materials) p.weight = material_balance_weights(data.target, material, p.train, data.materials.size());
   const SpectrumResult r = train_spectrum_net(p, o, {o.batch, o.max_epochs, o.patience, "spectrum", o.threads}, progress);
@@ -73,6 +76,7 @@ void train_unified(const TrainingData& data, const TrainOptions& o, const Eigen:
 void train_per_material(const TrainingData& data, const TrainOptions& o, const Eigen::MatrixXf& actions, Model& model,
                         const EpochCallback& progress) {
   std::vector<SpectrumResult> results(data.materials.size());
+  const Eigen::MatrixXf targets = smoothed_targets(data.target, all_rows(data, split::kTrain), o.target_smoothing);
   std::mutex mutex;
   const EpochCallback serialised = [&](const EpochReport& r) {
     std::lock_guard lock(mutex);
@@ -81,7 +85,7 @@ void train_per_material(const TrainingData& data, const TrainOptions& o, const E
   // One material per core; each trains on one thread, so the result does not depend on the core count.
   parallel_for(data.materials.size(), [&](std::size_t m) {
     const MaterialData& md = data.materials[m];
-    SpectrumProblem p{&actions, &data.target, model.normalisation.target_scale, md.rows[split::kTrain], md.rows[split::kVal]};
+    SpectrumProblem p{&actions, &targets, model.normalisation.target_scale, md.rows[split::kTrain], md.rows[split::kVal]};
     results[m] = train_spectrum_net(p, o, {o.per_material_batch, o.per_material_max_epochs, o.per_material_patience,
                                           "spectrum " + md.id, 1}, serialised);
   }, o.threads);

@@ -21,6 +21,7 @@ nlohmann::json TrainOptions::to_json() const {
           {"texture_patience", texture_patience},
           {"learning_rate", learning_rate},
           {"balance_materials", balance_materials},
+          {"target_smoothing", target_smoothing},
           {"seed", seed}};
 }
 

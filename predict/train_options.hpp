@@ -25,6 +25,9 @@ struct TrainOptions {
   // Unified model: every material's windows weigh alike in the loss, whatever its vibration level
   // (material_balance_weights in predict/spectrum_training.hpp); off, loud materials rule it.
   bool balance_materials = true;
+  // Each training target averaged over this many neighbouring bins (odd; 1: the window's own spectrum),
+  // which cuts its scatter around the expected spectrum (predict/target_smoothing.hpp).
+  int target_smoothing = 3;
   std::uint64_t seed = 0;
   unsigned threads = 0;  // 0: every core this process may use
 

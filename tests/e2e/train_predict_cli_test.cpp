@@ -58,6 +58,24 @@ TEST(TrainCli, WritesTheModelAndAValidTrainingLog) {
   EXPECT_EQ(fs::file_size(dir.file("m.h5")), size);
 }
 
+// --target-smoothing is recorded with the other options, and an even width refused before any work.
+TEST(TrainCli, TargetSmoothingIsRecordedAndMustBeOdd) {
+  const TempDir dir;
+  std::vector<std::string> args = train_args(small_pipeline().split, dir.file("m.h5"));
+  args.insert(args.end(), {"--target-smoothing", "5"});
+  const CommandResult r = run_haptex(args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(json::read_file(dir.file("m.training.json"))["options"]["target_smoothing"], 5);
+  for (const char* width : {"4", "0", "101"}) {
+    args.back() = width;
+    args[5] = dir.file(std::string("bad") + width + ".h5");
+    const CommandResult bad = run_haptex(args);
+    EXPECT_EQ(bad.exit_code, 2) << width;
+    EXPECT_NE(bad.err.find("--target-smoothing"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(args[5]));
+  }
+}
+
 TEST(TrainCli, RefusesASplitMadeFromAnotherDataset) {
   const TempDir dir;
   const std::string split = write_json(dir, edited_split([](nlohmann::json& d) { d["dataset"]["sha256"] = std::string(64, '0'); }));
