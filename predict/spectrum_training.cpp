@@ -19,18 +19,20 @@ struct Batch {
   Eigen::VectorXf weights;
 };
 
-Batch gather(const SpectrumProblem& p, const std::size_t* columns, std::size_t n, bool training, std::uint64_t draw_seed) {
+// `targets`: the spectra to compare with (the problem's targets, or what the loss fits).
+Batch gather(const SpectrumProblem& p, const Eigen::MatrixXf& targets, const std::size_t* columns, std::size_t n, bool training,
+             std::uint64_t draw_seed) {
   Batch b;
   const int latent = p.latent_size();
   b.latents.resize(latent, Eigen::Index(n));
   b.actions.resize(p.actions->rows(), Eigen::Index(n));
-  b.targets.resize(p.targets->rows(), Eigen::Index(n));
+  b.targets.resize(targets.rows(), Eigen::Index(n));
   b.weights.resize(Eigen::Index(n));
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t c = columns[i];
     b.weights[Eigen::Index(i)] = p.weight.empty() ? 1.0f : p.weight[c];
     b.actions.col(Eigen::Index(i)) = p.actions->col(Eigen::Index(c));
-    b.targets.col(Eigen::Index(i)) = p.targets->col(Eigen::Index(c));
+    b.targets.col(Eigen::Index(i)) = targets.col(Eigen::Index(c));
     if (!latent) continue;
     const Eigen::MatrixXf& from = (training ? *p.train_latents : *p.val_latents)[std::size_t((*p.material)[c])];
     const std::uint64_t pick = training ? derive_seed(draw_seed, c) % std::uint64_t(from.cols()) : c % std::uint64_t(from.cols());
@@ -61,7 +63,7 @@ Distances mean_distance(const SpectrumNet& net, const SpectrumProblem& p, const 
   std::vector<Distances> sums(chunks);
   parallel_for(chunks, [&](std::size_t c) {
     const std::size_t begin = c * kChunkColumns, n = std::min(columns.size(), begin + kChunkColumns) - begin;
-    const Batch b = gather(p, columns.data() + begin, n, training, 0);
+    const Batch b = gather(p, *p.targets, columns.data() + begin, n, training, 0);
     SpectrumTrace trace;
     const Eigen::MatrixXf predicted = p.target_scale.asDiagonal() * spectrum_forward(net, b.latents, b.actions, trace);
     const Eigen::VectorXf distance = (predicted - b.targets).colwise().norm().transpose();
@@ -116,6 +118,7 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& 
   std::vector<SpectrumGradient> slots;
   EarlyStopping stopping(s.patience);
   std::vector<std::size_t> order = p.train;
+  const Eigen::MatrixXf& fitted = p.fitted ? *p.fitted : *p.targets;
   const auto start = std::chrono::steady_clock::now();
   for (int epoch = 1; epoch <= s.max_epochs && !stopping.stop(); ++epoch) {
     const std::uint64_t epoch_seed = derive_seed(seed, 4, std::uint64_t(epoch));
@@ -125,7 +128,7 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& 
     for (std::size_t first = 0; first < order.size(); first += std::size_t(s.batch)) {
       const std::size_t n = std::min(order.size() - first, std::size_t(s.batch));
       train_loss += chunked_gradient<SpectrumGradient>(n, slots, total, s.threads, [&](std::size_t begin, std::size_t end, SpectrumGradient& g) {
-        return batch_gradient(net, p, gather(p, order.data() + first + begin, end - begin, true, epoch_seed), 1.0f / float(n), g);
+        return batch_gradient(net, p, gather(p, fitted, order.data() + first + begin, end - begin, true, epoch_seed), 1.0f / float(n), g);
       });
       adam_action.step(net.action, total.action);
       adam_predictor.step(net.predictor, total.predictor);

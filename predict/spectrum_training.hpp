@@ -16,7 +16,7 @@ namespace haptex::predict {
 
 struct SpectrumProblem {
   const Eigen::MatrixXf* actions = nullptr;  // normalised, kActionValues x windows
-  const Eigen::MatrixXf* targets = nullptr;  // kTargetBins x windows
+  const Eigen::MatrixXf* targets = nullptr;  // kTargetBins x windows: the windows' own spectra
   Eigen::VectorXf target_scale;              // per bin
   std::vector<std::size_t> train, val;       // columns
   // Unified only: each column's material, and per material the latents (columns) of its training
@@ -26,6 +26,9 @@ struct SpectrumProblem {
   const std::vector<Eigen::MatrixXf>* val_latents = nullptr;
   // Per column, how much its squared error counts (empty: 1 each); see material_balance_weights.
   std::vector<float> weight = {};
+  // What the loss fits on the training columns when not `targets` (smoothed training targets,
+  // predict/target_smoothing.hpp); validation and the reported distances keep `targets`.
+  const Eigen::MatrixXf* fitted = nullptr;
   int latent_size() const { return train_latents ? int(train_latents->front().rows()) : 0; }
 };
 
@@ -38,7 +41,8 @@ struct SpectrumSchedule {  // from TrainOptions (unified or per-material)
 struct SpectrumResult {
   SpectrumNet net;
   int epochs = 0, best_epoch = 0;
-  double train_distance = 0, val_distance = 0;  // mean Euclidean distance (m/s^2) at the best epoch
+  // Mean Euclidean distance (m/s^2) to the windows' own spectra at the best epoch.
+  double train_distance = 0, val_distance = 0;
 };
 
 SpectrumResult train_spectrum_net(const SpectrumProblem& problem, const TrainOptions& options,

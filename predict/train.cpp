@@ -64,10 +64,11 @@ void train_unified(const TrainingData& data, const TrainOptions& o, const Eigen:
     val_latents.push_back(recognised_latents(model, texture_latents(model, data.materials[m].images[split::kVal])));
   }
   const std::vector<std::size_t> train = all_rows(data, split::kTrain);
-  const Eigen::MatrixXf targets = smoothed_targets(data.target, train, o.target_smoothing);
-  SpectrumProblem p{&actions, &targets, model.normalisation.target_scale, train,
+  const Eigen::MatrixXf fitted = smoothed_targets(data.target, train, o.target_smoothing);
+  SpectrumProblem p{&actions, &data.target, model.normalisation.target_scale, train,
                     all_rows(data, split::kVal), &material, &train_latents, &val_latents};
   if (o.balance_materials) p.weight = material_balance_weights(data.target, material, p.train, data.materials.size());
+  p.fitted = &fitted;
   const SpectrumResult r = train_spectrum_net(p, o, {o.batch, o.max_epochs, o.patience, "spectrum", o.threads}, progress);
   model.nets = {r.net};
   model.metrics["spectrum"] = result_json(r);
@@ -76,7 +77,7 @@ void train_unified(const TrainingData& data, const TrainOptions& o, const Eigen:
 void train_per_material(const TrainingData& data, const TrainOptions& o, const Eigen::MatrixXf& actions, Model& model,
                         const EpochCallback& progress) {
   std::vector<SpectrumResult> results(data.materials.size());
-  const Eigen::MatrixXf targets = smoothed_targets(data.target, all_rows(data, split::kTrain), o.target_smoothing);
+  const Eigen::MatrixXf fitted = smoothed_targets(data.target, all_rows(data, split::kTrain), o.target_smoothing);
   std::mutex mutex;
   const EpochCallback serialised = [&](const EpochReport& r) {
     std::lock_guard lock(mutex);
@@ -85,7 +86,8 @@ void train_per_material(const TrainingData& data, const TrainOptions& o, const E
   // One material per core; each trains on one thread, so the result does not depend on the core count.
   parallel_for(data.materials.size(), [&](std::size_t m) {
     const MaterialData& md = data.materials[m];
-    SpectrumProblem p{&actions, &targets, model.normalisation.target_scale, md.rows[split::kTrain], md.rows[split::kVal]};
+    SpectrumProblem p{&actions, &data.target, model.normalisation.target_scale, md.rows[split::kTrain], md.rows[split::kVal]};
+    p.fitted = &fitted;
     results[m] = train_spectrum_net(p, o, {o.per_material_batch, o.per_material_max_epochs, o.per_material_patience,
                                           "spectrum " + md.id, 1}, serialised);
   }, o.threads);

@@ -27,7 +27,7 @@ struct TrainOptions {
   bool balance_materials = true;
   // Each training target averaged over this many neighbouring bins (odd; 1: the window's own spectrum),
   // which cuts its scatter around the expected spectrum (predict/target_smoothing.hpp).
-  int target_smoothing = 3;
+  int target_smoothing = 7;
   std::uint64_t seed = 0;
   unsigned threads = 0;  // 0: every core this process may use
 

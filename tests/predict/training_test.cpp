@@ -74,6 +74,9 @@ TEST(Training, SmoothedTargetsBringTheModelNearerTheTruth) {
   o.target_smoothing = 3;
   const Model smoothed = train_model(data, o);
   EXPECT_EQ(smoothed.config["target_smoothing"], 3);
+  // Its training distance is to the windows' own spectra, as the validation distance is, not to what it fitted.
+  const double train = smoothed.metrics["spectrum"]["train_distance"], val = smoothed.metrics["spectrum"]["val_distance"];
+  EXPECT_GT(train, 0.85 * val) << train << " against " << val;
   const double error = test_error_against_truth(smoothed, data);
   EXPECT_LT(error, 0.95 * raw) << "smoothed " << error << " against " << raw;
 }
