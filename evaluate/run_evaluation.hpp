@@ -24,7 +24,9 @@ struct EvaluationOptions {
   // The stitched-signal experiment's method; none (--reconstruct none): no such experiment.
   std::optional<render::Reconstruction> reconstruct = render::Reconstruction::fgla;
   std::size_t repeats = 10;                             // baseline renderings (seeds) per test section
-  std::vector<std::size_t> fgla_iterations{0, 8, 32, 100};  // speed-vs-accuracy points; the largest is the experiment's
+  // Speed-vs-accuracy and realism points; the largest is the experiment's. 4 iterations leave a signal about as varied
+  // as the surface (docs/evaluate.md, "Realism").
+  std::vector<std::size_t> fgla_iterations{0, 4, 8, 32, 100};
   std::string truth;               // truth.h5 of haptex synth (hatt or materials): the oracle noise floor; empty: estimates
   std::uint64_t seed = 0;
   unsigned threads = 0;
