@@ -32,8 +32,8 @@ CLI::Validator non_negative_number() { return checking(0, false, "NONNEGATIVE");
 CLI::Validator odd_number() {
   return CLI::Validator([](std::string& input) -> std::string {
     char* end = nullptr;
-    const long value = std::strtol(input.c_str(), &end, 10);
-    if (end == input.c_str() || *end) return "";  // no whole number: left to CLI11's conversion
+    const long value = std::strtol(input.c_str(), &end, 0);  // base 0: "0x4" is 4 to CLI11 too
+    if (end == input.c_str() || *end) return "";                 // no whole number: left to CLI11's conversion
     return value % 2 ? "" : "must be odd, not " + input;
   }, "ODD");
 }

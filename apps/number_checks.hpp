@@ -1,6 +1,7 @@
 #pragma once
 // Checks of numeric options. CLI11 reads "nan", "inf" and 1e999 as numbers; its range checks let NaN
-// through and answer infinity with a bound of 309 digits. These refuse both first, saying so.
+// through and answer infinity with a bound of 309 digits. These refuse both first, saying so. odd_number
+// reads a whole number as CLI11 does (decimal, 0x hexadecimal, 0 octal) and refuses an even one.
 #include <CLI/CLI.hpp>
 
 namespace haptex::apps {

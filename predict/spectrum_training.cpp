@@ -102,6 +102,8 @@ SpectrumResult train_spectrum_net(const SpectrumProblem& p, const TrainOptions& 
   if (s.batch <= 0 || s.max_epochs <= 0 || s.patience <= 0)
     throw failure("train: batch, epochs and patience must be positive (" + std::to_string(s.batch) + ", " + std::to_string(s.max_epochs) +
                   ", " + std::to_string(s.patience) + ")");
+  if (p.fitted && (p.fitted->rows() != p.targets->rows() || p.fitted->cols() != p.targets->cols()))
+    throw failure("train: the fitted targets are not shaped as the targets");
   std::vector<int> action_sizes{int(p.actions->rows())}, predictor_sizes;
   for (int i = 0; i < o.action_layers; ++i) action_sizes.push_back(o.action_hidden);
   predictor_sizes.push_back(p.latent_size() + action_sizes.back());

@@ -26,8 +26,8 @@ struct SpectrumProblem {
   const std::vector<Eigen::MatrixXf>* val_latents = nullptr;
   // Per column, how much its squared error counts (empty: 1 each); see material_balance_weights.
   std::vector<float> weight = {};
-  // What the loss fits on the training columns when not `targets` (smoothed training targets,
-  // predict/target_smoothing.hpp); validation and the reported distances keep `targets`.
+  // What the loss fits on the training columns when not `targets` (predict/target_smoothing.hpp);
+  // same shape as `targets`.
   const Eigen::MatrixXf* fitted = nullptr;
   int latent_size() const { return train_latents ? int(train_latents->front().rows()) : 0; }
 };

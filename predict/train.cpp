@@ -51,8 +51,9 @@ nlohmann::json result_json(const SpectrumResult& r) {
   return {{"epochs", r.epochs}, {"best_epoch", r.best_epoch}, {"train_distance", r.train_distance}, {"val_distance", r.val_distance}};
 }
 
-void train_unified(const TrainingData& data, const TrainOptions& o, const Eigen::MatrixXf& actions, Model& model,
-                   const EpochCallback& progress) {
+// fitted: what the loss fits on the training columns (smoothed_targets), computed before any training.
+void train_unified(const TrainingData& data, const TrainOptions& o, const Eigen::MatrixXf& actions, const Eigen::MatrixXf& fitted,
+                   Model& model, const EpochCallback& progress) {
   train_texture_encoder(data, o, model, progress);
   std::vector<int> material(std::size_t(data.action.cols()), -1);
   std::vector<Eigen::MatrixXf> train_latents, val_latents;
@@ -63,9 +64,7 @@ void train_unified(const TrainingData& data, const TrainOptions& o, const Eigen:
     // Validation presses as prediction sees a new press: recognised (the classifier is frozen now).
     val_latents.push_back(recognised_latents(model, texture_latents(model, data.materials[m].images[split::kVal])));
   }
-  const std::vector<std::size_t> train = all_rows(data, split::kTrain);
-  const Eigen::MatrixXf fitted = smoothed_targets(data.target, train, o.target_smoothing);
-  SpectrumProblem p{&actions, &data.target, model.normalisation.target_scale, train,
+  SpectrumProblem p{&actions, &data.target, model.normalisation.target_scale, all_rows(data, split::kTrain),
                     all_rows(data, split::kVal), &material, &train_latents, &val_latents};
   if (o.balance_materials) p.weight = material_balance_weights(data.target, material, p.train, data.materials.size());
   p.fitted = &fitted;
@@ -74,10 +73,9 @@ void train_unified(const TrainingData& data, const TrainOptions& o, const Eigen:
   model.metrics["spectrum"] = result_json(r);
 }
 
-void train_per_material(const TrainingData& data, const TrainOptions& o, const Eigen::MatrixXf& actions, Model& model,
-                        const EpochCallback& progress) {
+void train_per_material(const TrainingData& data, const TrainOptions& o, const Eigen::MatrixXf& actions, const Eigen::MatrixXf& fitted,
+                        Model& model, const EpochCallback& progress) {
   std::vector<SpectrumResult> results(data.materials.size());
-  const Eigen::MatrixXf fitted = smoothed_targets(data.target, all_rows(data, split::kTrain), o.target_smoothing);
   std::mutex mutex;
   const EpochCallback serialised = [&](const EpochReport& r) {
     std::lock_guard lock(mutex);
@@ -118,10 +116,11 @@ Model train_model(const TrainingData& data, const TrainOptions& o, const EpochCa
   for (const MaterialData& m : data.materials) model.material_ids.push_back(m.id), model.material_names.push_back(m.name);
   model.normalisation = action_normalisation(data);
   const Eigen::MatrixXf actions = normalised_actions(model.normalisation, data.action);
+  const Eigen::MatrixXf fitted = smoothed_targets(data.target, all_rows(data, split::kTrain), o.target_smoothing);
   if (o.variant == Variant::unified)
-    train_unified(data, o, actions, model, progress);
+    train_unified(data, o, actions, fitted, model, progress);
   else
-    train_per_material(data, o, actions, model, progress);
+    train_per_material(data, o, actions, fitted, model, progress);
   model.config = o.to_json();
   const Eigen::MatrixXf means = mean_training_spectra(data);
   model.metrics["mean_spectrum_baseline"] = {{"train_distance", mean_spectrum_distance(data, means, split::kTrain)},

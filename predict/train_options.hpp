@@ -25,8 +25,7 @@ struct TrainOptions {
   // Unified model: every material's windows weigh alike in the loss, whatever its vibration level
   // (material_balance_weights in predict/spectrum_training.hpp); off, loud materials rule it.
   bool balance_materials = true;
-  // Each training target averaged over this many neighbouring bins (odd; 1: the window's own spectrum),
-  // which cuts its scatter around the expected spectrum (predict/target_smoothing.hpp).
+  // Bins each training target is averaged over (odd; 1: none; predict/target_smoothing.hpp).
   int target_smoothing = 7;
   std::uint64_t seed = 0;
   unsigned threads = 0;  // 0: every core this process may use
@@ -37,7 +36,8 @@ struct TrainOptions {
 struct EpochReport {
   std::string stage;     // "texture" (stage 1), "spectrum" (stage 2) or "spectrum <material id>"
   int epoch = 0, max_epochs = 0;
-  double train_loss = 0, val_loss = 0;  // stage 1: cross-entropy; stage 2: mean Euclidean distance (m/s^2)
+  // Stage 1: cross-entropy; stage 2: mean Euclidean distance (m/s^2), train_loss to the (smoothed) targets the loss fits.
+  double train_loss = 0, val_loss = 0;
   double val_accuracy = -1;             // stage 1 only
   double val_weighted = -1;             // stage 2: val_loss weighted as the loss is (what `best` follows); -1: none
   bool best = false;                    // the best validation loss (stage 2: val_weighted) so far: these weights are kept

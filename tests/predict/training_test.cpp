@@ -81,6 +81,17 @@ TEST(Training, SmoothedTargetsBringTheModelNearerTheTruth) {
   EXPECT_LT(error, 0.95 * raw) << "smoothed " << error << " against " << raw;
 }
 
+// The per-material models fit the smoothed targets too.
+TEST(Training, PerMaterialModelsFitSmoothedTargetsToo) {
+  const TrainingData data = test::synthetic_problem({.windows = 300, .noise = 0.5});
+  TrainOptions o = small_options(Variant::per_material);
+  o.target_smoothing = 1;
+  const double raw = test_error_against_truth(train_model(data, o), data);
+  o.target_smoothing = 3;
+  const double error = test_error_against_truth(train_model(data, o), data);
+  EXPECT_LT(error, 0.95 * raw) << "smoothed " << error << " against " << raw;
+}
+
 TEST(Training, PerMaterialModelsLearnTheActions) {
   const TrainingData data = test::synthetic_problem();
   const Model m = train_model(data, small_options(Variant::per_material));
