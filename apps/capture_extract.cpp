@@ -75,8 +75,9 @@ class CaptureExtract : public CaptureSubcommand {
     nlohmann::json detections = nlohmann::json::array();
     for (const auto& d : r.detections) {
       const float snr = d.signal_to_noise();
-      detections.push_back({{"source", d.source}, {"reference", d.reference}, {"presses", d.presses},
-                            {"noise", d.noise}, {"pixel_threshold", d.pixel_threshold}, {"no_contact_level", d.level},
+      detections.push_back({{"source", d.source}, {"reference", d.reference},
+                            {"reference_kind", d.reference_kind}, {"presses", d.presses},
+                            {"noise", d.noise}, {"pixel_threshold", d.pixel_threshold}, {"no_contact_level", d.level}, {"jitter", d.jitter},
                             {"trigger", d.trigger}, {"release", d.release}, {"highest_score", d.highest_score},
                             {"highest_frame", d.highest_frame},
                             {"signal_to_noise", std::isfinite(snr) ? nlohmann::json(snr) : nlohmann::json()}});

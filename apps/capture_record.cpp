@@ -63,7 +63,9 @@ class CaptureRecord : public CaptureSubcommand {
     app->add_option("--control", controls_, "NAME=VALUE for a V4L2 control (old or new kernel names), e.g. exposure_time_absolute=150")
         ->take_all();
     app->add_option("--seconds", options_.seconds, "End the take after this long (0: no limit)")->capture_default_str();
-    app->add_option("--warmup", options_.warmup_frames, "Frames discarded after stream start")->capture_default_str();
+    warmup_ = app->add_option("--warmup", options_.warmup_frames,
+                              "Frames discarded after stream start (a sensor's black and settling frames; default 10, "
+                              "0 with --device replay:, which starts with the file's first frame)");
     app->add_option("--reference-frames", options_.reference_frames, "No-contact frames averaged into the reference (10 to 250)")
         ->capture_default_str();
     app->add_option("--pre-frames", options_.pre_frames, "Frames kept before each contact")->capture_default_str();
@@ -78,6 +80,8 @@ class CaptureRecord : public CaptureSubcommand {
     if (device_.empty() && serial_.empty())
       throw input_error("capture record", "", "no sensor given", "Name it with --device /dev/videoN or --serial S");
     text::require_utf8(options_.material, "--material", "the material name");
+    // A replayed file holds no stream start-up: its first frame is the take's first (docs/capture.md, "Replay").
+    if (capture::is_replay_device(device_) && warmup_->count() == 0) options_.warmup_frames = 0;
     build_request();
     StopOnSignal stop_on_signal;
     const capture::RecordingResult result = record(global);
@@ -104,7 +108,10 @@ class CaptureRecord : public CaptureSubcommand {
           capture::is_fake_device(device_) ? capture::parse_fake_device(device_) : capture::parse_replay_device(device_);
       capture::FakeCamera camera(fake.config);
       request_.node = fake.node;
-      if (fake.inter_frame) options_.calibration_frames = capture::kCalibrationFrames;
+      if (fake.inter_frame) {
+        const auto& modes = fake.config.modes;
+        options_.calibration_frames = capture::calibration_frames(modes.empty() || modes.front().fps.empty() ? 0 : modes.front().fps.front());
+      }
       return capture::record_session(camera, request_, options_, &g_stop, progress, warn);
     }
     capture::SystemKernel kernel;
@@ -176,6 +183,7 @@ class CaptureRecord : public CaptureSubcommand {
   std::string device_, serial_, format_, size_, sensors_;
   double fps_ = 0;
   std::vector<std::string> controls_;
+  CLI::Option* warmup_ = nullptr;
   capture::SessionRequest request_;
   capture::RecorderOptions options_;
 };

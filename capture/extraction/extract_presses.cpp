@@ -45,7 +45,7 @@ std::string figure(double v) { return text::format("%.3g", v); }
 
 SourceDetection detection_of(const std::string& path, const SourceScores& scores, int presses) {
   const ContactReference& c = *scores.contact;
-  SourceDetection d{path, scores.reference_note, presses, c.noise(), c.pixel_threshold(), c.level(), c.trigger(), c.release()};
+  SourceDetection d{path, scores.reference_note, reference_kind_name(scores.reference_kind), presses, c.noise(), c.pixel_threshold(), c.level(), c.spread(), c.trigger(), c.release()};
   for (std::size_t i = 0; i < scores.scores.size(); ++i)
     if (std::isfinite(scores.scores[i]) && (d.highest_frame < 0 || scores.scores[i] > d.highest_score)) {
       d.highest_score = scores.scores[i];
@@ -93,7 +93,7 @@ class Extraction {
     text::require_utf8(a.material, input.path, "the material name (--material, the folder's name or the press file's)");
     a.scores = score_source(*a.source, settings_);
     a.plans = plan_presses(a.scores.scores, a.scores.contact->segmenter(settings_.segmenter), settings_.frames_per_press,
-                           settings_.margin_frames);
+                           settings_.margin_frames, a.scores.end_level);
     a.sha = a.plans.empty() ? "" : a.source->sha256();
     return a;
   }

@@ -37,8 +37,9 @@ struct ExtractedPressSummary {
 // What a source's presses were judged by, so a user sees why one was or was not found.
 struct SourceDetection {
   std::string source, reference;  // reference: where the no-contact reference came from
+  std::string reference_kind;     // reference_kind_name: start, end, least contact, image, press file
   int presses = 0;
-  float noise = 0, pixel_threshold = 0, level = 0, trigger = 0, release = 0;
+  float noise = 0, pixel_threshold = 0, level = 0, jitter = 0, trigger = 0, release = 0;
   float highest_score = 0;  // the source's strongest frame
   std::int64_t highest_frame = -1;
   // The strongest frame over the no-contact level: the score's signal-to-noise. The trigger asks for

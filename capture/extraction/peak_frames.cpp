@@ -14,114 +14,6 @@
 namespace haptex::capture {
 namespace {
 
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-// Sensors send a few black frames right after stream start; a mean this dark is not a gel image.
-constexpr double kBlackLevel = 10.0;
-
-// Collects the leading no-contact frames into the reference, scoring them once it is complete.
-class LeadingReference {
- public:
-  // calibration_frames: no-contact frames after the reference that set the thresholds (inter-frame
-  // video, ContactReference::from_calibration), or 0.
-  LeadingReference(const ExtractSettings& settings, const ScoreSettings& score, const std::string& path, int calibration_frames)
-      : settings_(settings), score_(score), path_(path), calibration_frames_(calibration_frames) {}
-
-  bool complete() const { return done_; }
-
-  // Were the reference frames no contact?
-  void require_steady(const ContactReference& contact) const {
-    if (contact.steady()) return;
-    const std::string why =
-        contact.trending()
-            ? text::format("they change from the first to the last as a press coming or going does (the first "
-                           "half's mean against the second half's scores %.4g, over the no-contact level %.4g)",
-                           double(contact.trend()), double(contact.trend_limit()))
-            : text::format("two in a row differ from the others' mean by a score of %.4g, over the trigger %.4g",
-                           double(contact.worst_reference_score()), double(contact.reference_limit()));
-    throw input_error(path_, "frames " + std::to_string(first_) + "-" + std::to_string(indices_.back()),
-                      "the first " + std::to_string(settings_.reference_frames) +
-                          " frames are not a steady no-contact stretch: " + why,
-                      "Start the video with at least " + std::to_string(settings_.reference_frames) +
-                          " frames without contact, or give a no-contact image with --reference");
-  }
-  bool collecting() const { return !done_; }
-
-  void add(std::int64_t index, const cv::Mat& scoring, const cv::Mat& full, SourceScores& out) {
-    if (int(small_.size()) < settings_.reference_frames) {
-      if (sum_.empty()) sum_ = cv::Mat::zeros(full.size(), CV_16UC3);  // 255 x 250 frames fits
-      cv::add(sum_, full, sum_, cv::noArray(), CV_16UC3);
-      small_.push_back(scoring);
-      indices_.push_back(index);
-    } else {
-      later_.push_back(scoring);
-      later_indices_.push_back(index);
-    }
-    if (int(small_.size()) == settings_.reference_frames && int(later_.size()) == calibration_frames_) finish(out);
-  }
-
-  // At the source's end: a video too short for all its calibration frames uses those it has.
-  void require_complete(SourceScores& out) {
-    if (!done_ && int(small_.size()) == settings_.reference_frames) finish(out);
-    if (!done_)
-      throw input_error(path_, "", "only " + std::to_string(small_.size()) + " usable frames; " +
-                                       std::to_string(settings_.reference_frames) +
-                                       " no-contact frames are needed for the reference and more for a press",
-                        "Give a longer video, or a no-contact image with --reference");
-  }
-
- private:
-  void finish(SourceScores& out) {
-    done_ = true;
-    const ContactReference contact = calibration_frames_ > 0 ? ContactReference::from_calibration(small_, later_, score_)
-                                                             : ContactReference::from_frames(small_, score_);
-    first_ = indices_.front();
-    sum_.convertTo(out.reference, CV_8UC3, 1.0 / double(small_.size()));
-    out.reference_note = "mean of frames " + std::to_string(indices_.front()) + "-" + std::to_string(indices_.back());
-    for (std::size_t i = 0; i < small_.size(); ++i) out.scores[std::size_t(indices_[i])] = contact.score(small_[i]);
-    for (std::size_t i = 0; i < later_.size(); ++i) out.scores[std::size_t(later_indices_[i])] = contact.score(later_[i]);
-    out.contact = contact;
-    small_.clear();
-    later_.clear();
-    indices_.erase(indices_.begin(), indices_.end() - 1);
-  }
-
-  const ExtractSettings& settings_;
-  ScoreSettings score_;
-  std::string path_;
-  cv::Mat sum_;
-  int calibration_frames_ = 0;
-  std::vector<cv::Mat> small_, later_;
-  std::vector<std::int64_t> indices_, later_indices_;
-  std::int64_t first_ = 0;
-  bool done_ = false;
-};
-
-std::optional<ContactReference> given_reference(FrameSource& source, const ExtractSettings& settings, SourceScores& out) {
-  if (!settings.reference_image.empty()) {
-    if (settings.reference_image.size() != source.frame_size())
-      throw input_error(settings.reference_image_path, "",
-                        "the reference image is " + std::to_string(settings.reference_image.cols) + "x" +
-                            std::to_string(settings.reference_image.rows) + " but the frames of " + source.path() +
-                            " are " + std::to_string(source.frame_size().width) + "x" +
-                            std::to_string(source.frame_size().height),
-                        "Give a no-contact image taken with the same sensor and size");
-    out.reference = settings.reference_image;
-    out.reference_note = "image " + settings.reference_image_path;
-    // A single image shows no noise: the lossy floors apply unless the user set others.
-    ScoreSettings floors = score_settings_for(false);
-    floors.pixel_threshold = settings.pixel_threshold;
-    floors.trigger = settings.trigger;
-    return ContactReference::from_image(scoring_image(settings.reference_image), floors);
-  }
-  if (const auto stored = source.stored_reference()) {
-    out.reference = stored->image;
-    out.reference_note = "stored in the press file (mean of the session's no-contact frames)";
-    return ContactReference(scoring_image(stored->image), stored->noise, stored->pixel_threshold, stored->trigger,
-                            stored->level);
-  }
-  return std::nullopt;
-}
-
 // Sum of scores of frames [start, start + count); -inf when one of them did not decode.
 double window_total(const std::vector<float>& scores, std::int64_t start, int count) {
   double total = 0;
@@ -157,46 +49,23 @@ std::vector<std::int64_t> choose_window(const std::vector<float>& scores, std::i
 
 }  // namespace
 
-ScoreSettings score_settings(const FrameSource& source, const ExtractSettings& settings) {
-  ScoreSettings s = score_settings_for(source.lossless());
-  s.pixel_threshold = settings.pixel_threshold;
-  s.trigger = settings.trigger;
-  return s;
+namespace {
+
+// Drops the presses that are the video's settled end (plan_presses).
+std::vector<PressInterval> without_settled_end(std::vector<PressInterval> presses, const SegmenterSettings& s, float end_level) {
+  if (std::isnan(end_level) || presses.empty()) return presses;
+  float strongest = s.level;
+  for (const auto& p : presses) strongest = std::max(strongest, p.peak_score);
+  if (end_level - s.level >= 0.5f * (strongest - s.level)) return presses;
+  std::erase_if(presses, [&](const PressInterval& p) { return p.peak_score <= end_level + (s.trigger - s.level); });
+  return presses;
 }
 
-SourceScores score_source(FrameSource& source, const ExtractSettings& settings) {
-  SourceScores out;
-  const ScoreSettings score = score_settings(source, settings);
-  out.contact = given_reference(source, settings, out);
-  LeadingReference leading(settings, score, source.path(), source.inter_frame() ? settings.calibration_frames : 0);
-  const bool from_leading = !out.contact;
-  bool started = false;  // past the black frames sensors send after stream start
-  source.scan(
-      [&](std::int64_t index, const cv::Mat& scoring, const cv::Mat& full) {
-        out.scores.push_back(kNaN);
-        if (!scoring.empty() && !started && cv::mean(scoring)[0] < kBlackLevel) {
-          ++out.black_frames;
-          return;
-        }
-        started = started || !scoring.empty();
-        if (scoring.empty()) {
-          ++out.unreadable_frames;
-        } else if (!from_leading || leading.complete()) {
-          out.scores.back() = out.contact->score(scoring);
-        } else {
-          leading.add(index, scoring, full, out);
-        }
-      },
-      [&](std::int64_t) { return from_leading && leading.collecting(); });
-  if (!from_leading) return out;
-  leading.require_complete(out);
-  leading.require_steady(*out.contact);
-  return out;
-}
+}  // namespace
 
 std::vector<PressPlan> plan_presses(const std::vector<float>& scores, const SegmenterSettings& segmenter,
-                                    int frames_per_press, int margin_frames) {
-  const std::vector<PressInterval> presses = segment_presses(scores, segmenter);
+                                    int frames_per_press, int margin_frames, float end_level) {
+  const std::vector<PressInterval> presses = without_settled_end(segment_presses(scores, segmenter), segmenter, end_level);
   const std::int64_t last_frame = std::int64_t(scores.size()) - 1;
   std::vector<PressPlan> plans;
   for (std::size_t k = 0; k < presses.size(); ++k) {

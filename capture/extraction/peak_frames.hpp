@@ -4,6 +4,7 @@
 // neighbours, 12 frames in all (schemas/hdf5-layout.md "GelSight file": training presses use all 12).
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,7 +21,6 @@ struct ExtractSettings {
   int reference_frames = 10;   // leading no-contact frames averaged into the reference
   int frames_per_press = 12;   // the peak and its neighbours
   int margin_frames = 10;      // frames before and after the contact kept in each press's score curve
-  int calibration_frames = kCalibrationFrames; // inter-frame video: no-contact frames after the reference that set the thresholds
   // --pixel-threshold and --trigger: replace what the footage (or a given image's floors) gives
   // (contact_score.hpp).
   std::optional<float> pixel_threshold, trigger;
@@ -29,19 +29,28 @@ struct ExtractSettings {
   std::string reference_image_path;
 };
 
+// Where a source's no-contact reference came from (docs/capture.md, "The no-contact reference").
+enum class ReferenceKind { start, end, least_contact, image, press_file };
+const char* reference_kind_name(ReferenceKind kind);  // "start", "end", "least contact", "image", "press file"
+
 struct SourceScores {
   std::vector<float> scores;  // one per frame; NaN for black start-up frames and frames that do not decode
   cv::Mat reference;          // BGR, frame size
   std::optional<ContactReference> contact;
+  ReferenceKind reference_kind = ReferenceKind::start;
   std::string reference_note; // where the reference came from, for the file's attributes
   std::int64_t black_frames = 0, unreadable_frames = 0;
+  // With the start's reference: the median score of the video's last frames when they too are a
+  // steady stretch (the gel may settle a little differently after a grasp); NaN otherwise.
+  float end_level = std::numeric_limits<float>::quiet_NaN();
 };
 
 // The score settings for a source: its defaults (lossy or lossless) and the overrides.
 ScoreSettings score_settings(const FrameSource& source, const ExtractSettings& settings);
 
-// First pass. Throws haptex::Error (bad_input) naming the source when it is too short, when its
-// leading frames are not a steady no-contact stretch, or when a given reference has another size.
+// Every frame's score against the source's no-contact reference (source_scores.cpp). Throws
+// haptex::Error (bad_input) naming the source when it has too few usable frames, or when a given
+// reference has another size.
 SourceScores score_source(FrameSource& source, const ExtractSettings& settings);
 
 struct PressPlan {
@@ -54,8 +63,12 @@ struct PressPlan {
 // The presses in the scores, with the frames each keeps: the run of frames_per_press consecutive
 // frames that contains the peak and scores highest in total, inside the press's own range when it
 // is long enough (so neighbouring presses never share frames).
+// With an end_level (SourceScores), a press that does not rise over it by the trigger's margin is
+// the settled end, not a press, unless the end is within half the strongest press of its peak (a press
+// held to the end).
 std::vector<PressPlan> plan_presses(const std::vector<float>& scores, const SegmenterSettings& segmenter,
-                                    int frames_per_press, int margin_frames);
+                                    int frames_per_press, int margin_frames,
+                                    float end_level = std::numeric_limits<float>::quiet_NaN());
 
 // A press's kept frames (frame_indices order) and its peak, decoded (BGR), and the source's own bytes
 // of each when it gave them for all (else the byte lists are empty).

@@ -75,8 +75,9 @@ float worst_two_in_a_row(const std::vector<float>& scores) {
   return worst;
 }
 
-float footage_trigger(float level, const ScoreSettings& settings) {
-  return settings.trigger.value_or(level + std::max(settings.level_factor * level, settings.min_trigger));
+float footage_trigger(float level, const ScoreSettings& settings, float spread = 0) {
+  return settings.trigger.value_or(
+      level + std::max({settings.jitter_factor * spread, settings.level_factor * level, settings.min_trigger}));
 }
 
 }  // namespace
@@ -274,6 +275,12 @@ float contact_score(const cv::Mat& image, const cv::Mat& reference, float pixel_
   return DriftFit(reference).score(image, reference, pixel_threshold);
 }
 
+int calibration_frames(double fps) {
+  constexpr int kFewest = 10, kMost = 25;
+  if (!(fps > 0)) return kMost;
+  return int(std::clamp(std::lround(fps), long(kFewest), long(kMost)));
+}
+
 void require_reference_frames(int count) {
   if (count < kMinReferenceFrames || count > kMaxReferenceFrames)
     throw input_error("--reference-frames", std::to_string(count),
@@ -325,7 +332,7 @@ float trend_of(const std::vector<cv::Mat>& frames, const std::vector<float>& sco
 // trigger until no press stood out (a press in most of those frames moved their median).
 std::vector<cv::Mat> quiet_frames(const std::vector<cv::Mat>& later, const cv::Mat& reference, const DriftFit& fit,
                                   const ScoreSettings& settings) {
-  const float t = settings.pixel_threshold.value_or(settings.noise_threshold * temporal_noise(later, mean_of(later)));
+  const float t = settings.pixel_threshold.value_or(0.0f);
   std::vector<float> scores;
   for (const auto& f : later) scores.push_back(fit.score(f, reference, t));
   std::vector<float> sorted = scores;
@@ -346,10 +353,10 @@ ContactReference ContactReference::from_frames(const std::vector<cv::Mat>& frame
   if (frames.size() < 2) throw failure("internal: a contact reference from frames needs at least two of them");
   const cv::Mat mean = mean_of(frames);
   const float noise = temporal_noise(frames, mean);
-  const float t = settings.pixel_threshold.value_or(settings.noise_threshold * noise);
+  const float t = settings.pixel_threshold.value_or(0.0f);
   const std::vector<float> scores = leave_one_out_scores(frames, t);
   const Spread s = spread_of(scores);
-  ContactReference r(mean, noise, t, footage_trigger(s.level, settings), s.level, s.spread);
+  ContactReference r(mean, noise, t, footage_trigger(s.level, settings, s.spread), s.level, s.spread);
   r.worst_reference_score_ = worst_two_in_a_row(scores);
   r.reference_limit_ = r.trigger_;
   // A press during the reference frames raises most of their scores, and so the level it would be
@@ -373,11 +380,11 @@ ContactReference ContactReference::from_calibration(const std::vector<cv::Mat>& 
     return r;
   }
   const float noise = temporal_noise(quiet, mean_of(quiet));
-  const float t = settings.pixel_threshold.value_or(settings.noise_threshold * noise);
+  const float t = settings.pixel_threshold.value_or(0.0f);
   std::vector<float> scores;
   for (const auto& f : quiet) scores.push_back(r.fit_.score(f, r.mean_, t));
   const Spread s = spread_of(scores);
-  r = ContactReference(r.mean_, noise, t, footage_trigger(s.level, settings), s.level, s.spread);
+  r = ContactReference(r.mean_, noise, t, footage_trigger(s.level, settings, s.spread), s.level, s.spread);
   // Steadiness by the quiet frames' own leave-one-out level, as from_frames judges: their level
   // against the reference mean rises with a press in the reference, so it would excuse that press.
   const float own_level = spread_of(leave_one_out_scores(quiet, t)).level;
@@ -392,6 +399,14 @@ ContactReference ContactReference::from_calibration(const std::vector<cv::Mat>& 
 ContactReference ContactReference::from_image(const cv::Mat& image, const ScoreSettings& settings) {
   return ContactReference(image.clone(), 0.0f, settings.pixel_threshold.value_or(settings.image_pixel_threshold),
                           settings.trigger.value_or(settings.image_trigger));
+}
+
+void ContactReference::take_thresholds(const ContactReference& other) {
+  if (other.pixel_threshold_ != pixel_threshold_) throw failure("internal: thresholds taken from a reference with another per-pixel threshold");
+  noise_ = other.noise_;
+  level_ = other.level_;
+  spread_ = other.spread_;
+  trigger_ = other.trigger_;
 }
 
 SegmenterSettings ContactReference::segmenter(SegmenterSettings base) const {

@@ -35,17 +35,20 @@ constexpr int kMinReferenceFrames = 10, kMaxReferenceFrames = 250;
 void require_reference_frames(int count);
 
 // Inter-frame video: the no-contact frames after the reference whose scores set the level
-// (ContactReference::from_calibration); a second at 25 fps.
-constexpr int kCalibrationFrames = 25;
+// (ContactReference::from_calibration): a second of them, 10 to 25 (25 at 25 fps or more; 10 at 10 fps
+// or less, where a second is all a short clip may leave before its press). An unknown rate (0) gives 25.
+int calibration_frames(double fps);
 
 struct ScoreSettings {
-  // Footage: t = noise_threshold x the reference frames' per-pixel noise (a soft threshold: most of
-  // the noise goes, a press of a few noise levels stays), and trigger = level + max(level_factor x
-  // level, min_trigger). A press that scores 2.5 times the no-contact level rises above it; drift
-  // and compression flicker, which move the score by up to 1.2 times the level, do not
-  // (docs/capture.md, "Finding presses", has the figures).
-  float noise_threshold = 1.0f;
-  float level_factor = 1.5f;
+  // Footage: the score is the plain mean |residual| over the image (no per-pixel threshold: a
+  // threshold set from single pixels' noise is itself too noisy on compressed footage), and
+  //   trigger = level + max(jitter_factor x jitter, level_factor x level, min_trigger)
+  // where jitter is the robust spread of the no-contact frames' scores: the statistic's own
+  // frame-to-frame noise sets the trigger. The level term keeps compression steps and drift, which
+  // jitter over a second does not show, from starting a press (docs/capture.md, "The thresholds",
+  // has the figures they were chosen by).
+  float jitter_factor = 5.0f;
+  float level_factor = 0.5f;
   float min_trigger = 0.05f;  // grey levels: below any press a person sees
   // A single given image (its noise unknown): t and the trigger. Lossy images (JPEG) differ from
   // later frames by a few grey levels of compression; lossless ones (PNG) only by noise.
@@ -116,6 +119,9 @@ class ContactReference {
   bool trending() const { return trend_ > trend_limit_; }
   float trend() const { return trend_; }
   float trend_limit() const { return trend_limit_; }
+  // The level, jitter and trigger of `other` (a calibration on other frames), keeping this
+  // reference's image and its steadiness verdict. The per-pixel threshold must be the same.
+  void take_thresholds(const ContactReference& other);
   // The segmentation thresholds, over the level, with the rest of `base`.
   SegmenterSettings segmenter(SegmenterSettings base) const;
 

@@ -54,7 +54,7 @@ TEST(RealCaptures, MiniExampleVideo) {
   EXPECT_NEAR(double(strongest->contact.peak), 98.0, 3.0);
   // The presses docs/capture.md lists.
   ASSERT_EQ(plans.size(), 3u);
-  EXPECT_EQ(plans[0].contact.first, 58);
+  EXPECT_EQ(plans[0].contact.first, 57);
   EXPECT_EQ(plans[1].contact.first, 90);
   EXPECT_EQ(plans[2].contact.first, 160);
   for (const auto& p : plans) EXPECT_EQ(p.frame_indices.size(), 12u);

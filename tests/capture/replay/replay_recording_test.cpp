@@ -59,14 +59,16 @@ class ReplayRecording : public ::testing::Test {
   std::unique_ptr<FakeCamera> camera_;
 };
 
-// Contact intervals and peaks the recorder cut live against those extraction finds in the same file.
-void expect_same_presses(const RecordingResult& live, const ExtractResult& offline) {
+// Contact intervals and peaks the recorder cut live against those extraction finds in the same file:
+// equal where the device sends the file's own pixels (lossless), within `frames` where it re-encodes
+// them (a lossy video is sent as JPEG at quality 95, which moves a score near the release a little).
+void expect_same_presses(const RecordingResult& live, const ExtractResult& offline, int frames = 0) {
   ASSERT_EQ(live.presses.size(), offline.presses.size());
   for (std::size_t j = 0; j < live.presses.size(); ++j) {
     const RecordedPress& l = live.presses[j];
     const ExtractedPressSummary& o = offline.presses[j];
-    EXPECT_EQ(l.contact_first, o.contact_first) << "press " << j;
-    EXPECT_EQ(l.contact_last, o.contact_last) << "press " << j;
+    EXPECT_LE(std::abs(l.contact_first - o.contact_first), frames) << "press " << j;
+    EXPECT_LE(std::abs(l.contact_last - o.contact_last), frames) << "press " << j;
     // The synthetic press holds its full depth for 4 frames: the peak may be any of them.
     EXPECT_NEAR(double(l.peak_frame), double(o.peak_index), 3.0) << "press " << j;
   }
@@ -86,7 +88,7 @@ TEST_F(ReplayRecording, ALossyVideoCutsTheSamePressesLiveAsOffline) {
   EXPECT_EQ(live.ended_by, "source ended");
   EXPECT_EQ(live.totals.frames, std::uint64_t(kVideoFrames)) << "every frame of the file, none lost";
   ASSERT_EQ(live.presses.size(), std::size_t(kPresses));
-  expect_same_presses(live, extract(video, dir_.file("g.h5")));
+  expect_same_presses(live, extract(video, dir_.file("g.h5")), 1);
   for (const auto& p : live.presses) EXPECT_EQ(p.ended_by, "release");
   const nlohmann::json manifest = json::read_file(file("session", "session.json"));
   EXPECT_NO_THROW(json::validate(manifest, "capture-session.schema.json", "session.json"));

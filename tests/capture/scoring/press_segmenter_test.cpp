@@ -52,6 +52,14 @@ TEST(PressSegmenter, DipsWithinAPressDoNotEndIt) {
   EXPECT_EQ(presses[0].peak, 13);
 }
 
+// One contact is one press: a grasp that squeezes, eases to a third of its excess and squeezes again
+// never clearly ends (it stays above a fifth of its peak and above the release), so it is one press; a
+// contact that falls to a sixth of its peak between the squeezes has clearly ended (docs/capture.md).
+TEST(PressSegmenter, AGraspThatEasesAndSqueezesAgainIsOnePress) {
+  EXPECT_EQ(segment_presses(course({{5, 0.0f}, {5, 6.0f}, {4, 2.0f}, {5, 6.5f}, {5, 0.0f}}), settings()).size(), 1u);
+  EXPECT_EQ(segment_presses(course({{5, 0.0f}, {5, 6.0f}, {4, 1.0f}, {5, 6.5f}, {5, 0.0f}}), settings()).size(), 2u);
+}
+
 TEST(PressSegmenter, SkipsFramesWithoutAScoreAndClosesAPressAtTheEnd) {
   std::vector<float> s = course({{5, 0.0f}, {3, 2.0f}});
   s.push_back(std::nanf(""));

@@ -1,0 +1,319 @@
+// Scoring a source's frames against its no-contact reference (docs/capture.md, "The no-contact
+// reference"): a given image or a press file's stored reference as they are; otherwise the steady
+// no-contact stretch at the start of the video, else the one at its end, else the end of least
+// contact. The first case costs one reading of the source; the others read it a second time.
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+
+#include "capture/extraction/peak_frames.hpp"
+#include "capture/scoring/scoring_image.hpp"
+#include "core/error.hpp"
+#include "core/text/format.hpp"
+
+namespace haptex::capture {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+// Sensors send a few black frames right after stream start; a mean this dark is not a gel image.
+constexpr double kBlackLevel = 10.0;
+
+// Usable frames (past the black start-up frames, decoded) and their scoring images.
+struct Stretch {
+  std::vector<cv::Mat> images;
+  std::vector<std::int64_t> indices;
+  std::int64_t first() const { return indices.front(); }
+  std::int64_t last() const { return indices.back(); }
+};
+
+std::string frame_range(std::int64_t first, std::int64_t last) {
+  return "frames " + std::to_string(first) + "-" + std::to_string(last);
+}
+
+// Why the frames of a reference are not a steady no-contact stretch, with the figure and its limit.
+std::string unsteadiness(const ContactReference& contact) {
+  return contact.trending()
+             ? text::format("they change from the first to the last as a press coming or going does (the first "
+                            "half's mean against the second half's scores %.4g, over the no-contact level %.4g)",
+                            double(contact.trend()), double(contact.trend_limit()))
+             : text::format("two in a row differ from the others' mean by a score of %.4g, over the trigger %.4g",
+                            double(contact.worst_reference_score()), double(contact.reference_limit()));
+}
+
+// The reference frames at one end (`reference` of them, nearest the end) and, for inter-frame video,
+// the calibration frames beyond them (ContactReference::from_calibration).
+struct EndFrames {
+  Stretch reference, calibration;
+};
+
+ContactReference reference_of(const EndFrames& end, const ScoreSettings& settings, bool inter_frame) {
+  return inter_frame ? ContactReference::from_calibration(end.reference.images, end.calibration.images, settings)
+                     : ContactReference::from_frames(end.reference.images, settings);
+}
+
+// The first reading: every usable frame's scoring image passes through here in order. The leading
+// frames make the start's reference, which scores the frames after them as they come (the usual
+// case needs no second reading); the last frames are kept for the end's reference.
+class FirstReading {
+ public:
+  FirstReading(const ExtractSettings& settings, const ScoreSettings& score, const FrameSource& source)
+      : settings_(settings), score_(score), inter_frame_(source.inter_frame()),
+        calibration_(source.inter_frame() ? calibration_frames(source.fps()) : 0) {}
+
+  void add(std::int64_t index, const cv::Mat& scoring, const cv::Mat& full, SourceScores& out) {
+    ++usable_;
+    tail_.images.push_back(scoring);
+    tail_.indices.push_back(index);
+    if (int(tail_.images.size()) > settings_.reference_frames + calibration_) {
+      tail_.images.erase(tail_.images.begin());
+      tail_.indices.erase(tail_.indices.begin());
+    }
+    if (start_) {
+      out.scores[std::size_t(index)] = start_->score(scoring);
+      return;
+    }
+    if (int(head_.reference.images.size()) < settings_.reference_frames) {
+      if (sum_.empty()) sum_ = cv::Mat::zeros(full.size(), CV_16UC3);  // 255 x 250 frames fits
+      cv::add(sum_, full, sum_, cv::noArray(), CV_16UC3);
+      head_.reference.images.push_back(scoring);
+      head_.reference.indices.push_back(index);
+    } else {
+      head_.calibration.images.push_back(scoring);
+      head_.calibration.indices.push_back(index);
+    }
+    if (int(head_.reference.images.size()) == settings_.reference_frames &&
+        int(head_.calibration.images.size()) == calibration_)
+      finish_start(out);
+  }
+
+  // Whether the source's start is complete enough to score by (a video too short for all its
+  // calibration frames uses those it has).
+  void finish(const std::string& path, SourceScores& out) {
+    if (!start_ && int(head_.reference.images.size()) == settings_.reference_frames) finish_start(out);
+    if (start_ && inter_frame_) calibrate_start();
+    if (!start_)
+      throw input_error(path, "", "only " + std::to_string(usable_) + " usable frames; " +
+                                      std::to_string(settings_.reference_frames) +
+                                      " no-contact frames are needed for the reference and more for a press",
+                        "Give a longer video, or a no-contact image with --reference");
+  }
+
+  const std::optional<ContactReference>& start() const { return start_; }
+  const Stretch& start_frames() const { return head_.reference; }
+  const cv::Mat& start_sum() const { return sum_; }
+
+  // The end's frames in the same roles as the start's: the last `reference_frames` usable frames,
+  // and the calibration frames before them, nearest first.
+  EndFrames end_frames() const {
+    EndFrames end;
+    const std::size_t n = tail_.images.size(), reference = std::min<std::size_t>(n, std::size_t(settings_.reference_frames));
+    end.reference.images.assign(tail_.images.end() - std::ptrdiff_t(reference), tail_.images.end());
+    end.reference.indices.assign(tail_.indices.end() - std::ptrdiff_t(reference), tail_.indices.end());
+    for (std::size_t k = n - reference; k-- > 0;) {
+      end.calibration.images.push_back(tail_.images[k]);
+      end.calibration.indices.push_back(tail_.indices[k]);
+    }
+    return end;
+  }
+
+  ContactReference end_reference() const { return reference_of(end_frames(), score_, inter_frame_); }
+
+ private:
+  void finish_start(SourceScores& out) {
+    start_ = reference_of(head_, score_, inter_frame_);
+    for (const Stretch* s : {&head_.reference, &head_.calibration})
+      for (std::size_t i = 0; i < s->images.size(); ++i) out.scores[std::size_t(s->indices[i])] = start_->score(s->images[i]);
+  }
+
+  // Inter-frame video: the thresholds from the frames after the start's reference and the last
+  // frames of the video together, the quiet ones among them (ContactReference::from_calibration): a
+  // short clip pressed right after its first frames still ends untouched. The scores do not change
+  // (the per-pixel threshold is 0 unless the user set one), nor does the verdict on the reference's
+  // steadiness (judged by the frames right after it); only the level, the jitter and the trigger.
+  void calibrate_start() {
+    EndFrames pool = head_;
+    const std::int64_t after = pool.calibration.indices.empty() ? pool.reference.last() : pool.calibration.last();
+    for (std::size_t i = 0; i < tail_.images.size(); ++i)
+      if (tail_.indices[i] > after) {
+        pool.calibration.images.push_back(tail_.images[i]);
+        pool.calibration.indices.push_back(tail_.indices[i]);
+      }
+    start_->take_thresholds(reference_of(pool, score_, true));
+  }
+
+  const ExtractSettings& settings_;
+  ScoreSettings score_;
+  bool inter_frame_;
+  int calibration_;
+  std::int64_t usable_ = 0;
+  EndFrames head_;
+  Stretch tail_;
+  cv::Mat sum_;
+  std::optional<ContactReference> start_;
+};
+
+// The median score of the end's reference frames when they are a steady stretch, else NaN.
+float settled_end_level(const FirstReading& first, const std::vector<float>& scores) {
+  if (!first.end_reference().steady()) return std::numeric_limits<float>::quiet_NaN();
+  std::vector<float> end;
+  for (std::int64_t i : first.end_frames().reference.indices) end.push_back(scores[std::size_t(i)]);
+  std::nth_element(end.begin(), end.begin() + std::ptrdiff_t(end.size() / 2), end.end());
+  return end[end.size() / 2];
+}
+
+// Reads the source again, scoring every usable frame against each reference, and hands over the full
+// frames `wanted` asks for.
+std::vector<std::vector<float>> score_again(FrameSource& source, const std::vector<float>& first_scores,
+                                            const std::vector<const ContactReference*>& references,
+                                            const std::function<bool(std::int64_t)>& wanted,
+                                            const std::function<void(std::int64_t, const cv::Mat&)>& take) {
+  std::vector<std::vector<float>> scores(references.size(), std::vector<float>(first_scores.size(), kNaN));
+  source.scan(
+      [&](std::int64_t index, const cv::Mat& scoring, const cv::Mat& full) {
+        if (std::size_t(index) >= first_scores.size() || std::isnan(first_scores[std::size_t(index)]) || scoring.empty()) return;
+        for (std::size_t r = 0; r < references.size(); ++r) scores[r][std::size_t(index)] = references[r]->score(scoring);
+        if (wanted(index)) take(index, full);
+      },
+      wanted);
+  return scores;
+}
+
+// A single given image shows no noise: the lossy floors apply unless the user set others.
+ScoreSettings image_floors(const ExtractSettings& settings) {
+  ScoreSettings floors = score_settings_for(false);
+  floors.pixel_threshold = settings.pixel_threshold;
+  floors.trigger = settings.trigger;
+  return floors;
+}
+
+std::optional<ContactReference> given_reference(FrameSource& source, const ExtractSettings& settings, SourceScores& out) {
+  if (!settings.reference_image.empty()) {
+    if (settings.reference_image.size() != source.frame_size())
+      throw input_error(settings.reference_image_path, "",
+                        "the reference image is " + std::to_string(settings.reference_image.cols) + "x" +
+                            std::to_string(settings.reference_image.rows) + " but the frames of " + source.path() +
+                            " are " + std::to_string(source.frame_size().width) + "x" +
+                            std::to_string(source.frame_size().height),
+                        "Give a no-contact image taken with the same sensor and size");
+    out.reference = settings.reference_image;
+    out.reference_kind = ReferenceKind::image;
+    out.reference_note = "image " + settings.reference_image_path;
+    return ContactReference::from_image(scoring_image(settings.reference_image), image_floors(settings));
+  }
+  if (const auto stored = source.stored_reference()) {
+    out.reference = stored->image;
+    out.reference_kind = ReferenceKind::press_file;
+    out.reference_note = "stored in the press file (mean of the session's no-contact frames)";
+    return ContactReference(scoring_image(stored->image), stored->noise, stored->pixel_threshold, stored->trigger,
+                            stored->level);
+  }
+  return std::nullopt;
+}
+
+// The end's stretch, when the start is not steady: the source is read again against it.
+void use_end(FrameSource& source, const FirstReading& first, ContactReference end, const std::string& why_not_start,
+             SourceScores& out) {
+  const Stretch stretch = first.end_frames().reference;
+  cv::Mat sum;
+  out.scores = score_again(source, out.scores, {&end}, [&](std::int64_t i) { return i >= stretch.first() && i <= stretch.last(); },
+                           [&](std::int64_t, const cv::Mat& full) {
+                             if (sum.empty()) sum = cv::Mat::zeros(full.size(), CV_16UC3);
+                             cv::add(sum, full, sum, cv::noArray(), CV_16UC3);
+                           })[0];
+  sum.convertTo(out.reference, CV_8UC3, 1.0 / double(stretch.indices.size()));
+  out.contact = std::move(end);
+  out.reference_kind = ReferenceKind::end;
+  out.reference_note = "mean of " + frame_range(stretch.first(), stretch.last()) + ", the video's end (its start, " +
+                       frame_range(first.start_frames().first(), first.start_frames().last()) +
+                       ", is not a steady no-contact stretch: " + why_not_start + ")";
+}
+
+// Neither end is steady: of the start's and the end's reference frames, those farther from the
+// source's strongest contact (its highest score against them is the larger) are the no-contact
+// reference, with the thresholds their own scores give (raised by their unsteadiness: a cautious
+// trigger). The source is read again to score against both.
+void use_least_contact(FrameSource& source, const FirstReading& first, ContactReference end, SourceScores& out) {
+  const Stretch& start_frames = first.start_frames();
+  const Stretch end_frames = first.end_frames().reference;
+  const ContactReference& start = *first.start();
+  cv::Mat sums[2];
+  const auto wanted = [&](std::int64_t i) { return i >= end_frames.first() && i <= end_frames.last(); };
+  auto scores = score_again(source, out.scores, {&start, &end}, wanted, [&](std::int64_t, const cv::Mat& full) {
+    if (sums[1].empty()) sums[1] = cv::Mat::zeros(full.size(), CV_16UC3);
+    cv::add(sums[1], full, sums[1], cv::noArray(), CV_16UC3);
+  });
+  const auto highest = [](const std::vector<float>& v) {
+    float h = 0;
+    for (float x : v) h = std::isnan(x) ? h : std::max(h, x);
+    return h;
+  };
+  const bool at_end = highest(scores[1]) > highest(scores[0]);
+  const Stretch& chosen = at_end ? end_frames : start_frames;
+  (at_end ? sums[1] : first.start_sum()).convertTo(out.reference, CV_8UC3, 1.0 / double(chosen.indices.size()));
+  out.scores = std::move(scores[at_end ? 1 : 0]);
+  out.contact = at_end ? std::move(end) : start;
+  out.reference_kind = ReferenceKind::least_contact;
+  out.reference_note = "mean of " + frame_range(chosen.first(), chosen.last()) + ", the video's " +
+                       (at_end ? "end" : "start") +
+                       ", the end of least contact (neither end is a steady no-contact stretch)";
+}
+
+}  // namespace
+
+const char* reference_kind_name(ReferenceKind kind) {
+  switch (kind) {
+    case ReferenceKind::start: return "start";
+    case ReferenceKind::end: return "end";
+    case ReferenceKind::least_contact: return "least contact";
+    case ReferenceKind::image: return "image";
+    case ReferenceKind::press_file: return "press file";
+  }
+  return "";
+}
+
+ScoreSettings score_settings(const FrameSource& source, const ExtractSettings& settings) {
+  ScoreSettings s = score_settings_for(source.lossless());
+  s.pixel_threshold = settings.pixel_threshold;
+  s.trigger = settings.trigger;
+  return s;
+}
+
+SourceScores score_source(FrameSource& source, const ExtractSettings& settings) {
+  SourceScores out;
+  const ScoreSettings score = score_settings(source, settings);
+  out.contact = given_reference(source, settings, out);
+  FirstReading first(settings, score, source);
+  bool started = false;  // past the black frames sensors send after stream start
+  source.scan(
+      [&](std::int64_t index, const cv::Mat& scoring, const cv::Mat& full) {
+        out.scores.push_back(kNaN);
+        if (!scoring.empty() && !started && cv::mean(scoring)[0] < kBlackLevel) {
+          ++out.black_frames;
+          return;
+        }
+        started = started || !scoring.empty();
+        if (scoring.empty()) ++out.unreadable_frames;
+        else if (out.contact) out.scores.back() = out.contact->score(scoring);
+        else first.add(index, scoring, full, out);
+      },
+      [&](std::int64_t) { return !out.contact && !first.start(); });
+  if (out.contact) return out;
+  first.finish(source.path(), out);
+  const ContactReference& start = *first.start();
+  if (start.steady()) {
+    const Stretch& s = first.start_frames();
+    first.start_sum().convertTo(out.reference, CV_8UC3, 1.0 / double(s.indices.size()));
+    out.contact = start;
+    out.reference_kind = ReferenceKind::start;
+    out.reference_note = "mean of " + frame_range(s.first(), s.last());
+    out.end_level = settled_end_level(first, out.scores);
+    return out;
+  }
+  ContactReference end = first.end_reference();
+  if (end.steady()) use_end(source, first, std::move(end), unsteadiness(start), out);
+  else use_least_contact(source, first, std::move(end), out);
+  return out;
+}
+
+}  // namespace haptex::capture
