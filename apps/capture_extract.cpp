@@ -38,6 +38,9 @@ class CaptureExtract : public CaptureSubcommand {
         ->check(positive_number());
     app->add_option("--sheets", options_.sheets_dir, "Folder for the contact sheets (default: <output>_sheets)");
     app->add_flag("--no-sheets", no_sheets_, "Write no contact sheets");
+    app->add_flag("--explain", options_.explain,
+                  "Chart each source's score over time (reference frames, thresholds, presses) in <output>_explain/, "
+                  "also when no press is found");
     app->add_flag("--force", options_.overwrite, "Replace the output file, and the sheets folder while it holds only the sheets its haptex-files.json lists");
     return app;
   }
@@ -48,6 +51,7 @@ class CaptureExtract : public CaptureSubcommand {
     inputs.push_back(reference_);
     refuse_output_among_inputs(output_, inputs);
     refuse_output_among_inputs(options_.sheets_dir.empty() ? capture::default_sheets_dir(output_) : options_.sheets_dir, inputs);
+    if (options_.explain) refuse_output_among_inputs(capture::default_explain_dir(output_), inputs);
     if (!material_.empty()) options_.material = material_;
     if (pixel_threshold_) options_.settings.pixel_threshold = *pixel_threshold_;
     if (trigger_) options_.settings.trigger = *trigger_;
@@ -86,7 +90,8 @@ class CaptureExtract : public CaptureSubcommand {
                                 {"detection", detections}, {"sources", r.sources},
                                 {"sources_without_press", r.sources_without_press}, {"frames_scored", r.frames_scored},
                                 {"frames_unreadable", r.frames_unreadable},
-                                {"sheets", written ? nlohmann::json(r.sheets_dir) : nlohmann::json()}}
+                                {"sheets", written ? nlohmann::json(r.sheets_dir) : nlohmann::json()},
+                                {"explain", r.explain_dir.empty() ? nlohmann::json() : nlohmann::json(r.explain_dir)}}
                      .dump(2)
               << "\n";
   }
@@ -109,6 +114,7 @@ class CaptureExtract : public CaptureSubcommand {
     std::cout << "wrote " << output_ << ": " << r.presses.size() << " presses of " << materials.size()
               << " materials from " << r.sources << " files";
     if (!r.sheets_dir.empty()) std::cout << "; contact sheets in " << r.sheets_dir;
+    if (!r.explain_dir.empty()) std::cout << "; score charts in " << r.explain_dir;
     std::cout << "\n";
     if (r.frames_unreadable > 0)
       std::cout << r.frames_unreadable << " frames did not decode (damaged, or announced by a video cut short); none was "

@@ -7,18 +7,15 @@
 
 #include <opencv2/core.hpp>
 
+#include "capture/extraction/score_chart.hpp"
+
 namespace haptex::capture {
 
 struct ContactSheetInput {
   std::string title;              // material, press and source
   cv::Mat reference, peak;        // BGR, same size
-  std::vector<float> scores;      // the whole source, NaN where there is no score
-  std::int64_t range_first = 0, range_last = 0;      // the press's stored frames
-  std::int64_t contact_first = 0, contact_last = 0;  // contact
   std::int64_t peak_index = 0;
-  std::vector<std::int64_t> kept;  // the frames kept for the dataset
-  float trigger = 0, release = 0, level = 0;  // level: the no-contact score the trigger stands above
-  std::string detection;  // the thresholds and signal-to-noise in words (extract_presses.hpp, describe)
+  ScoreChart chart;               // the source's scores with this press, its stored range and kept frames
 };
 
 cv::Mat contact_sheet(const ContactSheetInput& input);  // BGR image

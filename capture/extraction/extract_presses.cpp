@@ -6,10 +6,12 @@
 #include <fstream>
 #include <future>
 #include <limits>
+#include <set>
 
 #include "capture/extraction/capture_inputs.hpp"
 #include "capture/extraction/contact_sheet.hpp"
 #include "capture/extraction/gelsight_writer.hpp"
+#include "capture/extraction/score_chart.hpp"
 #include "capture/scoring/contact_score.hpp"
 #include "capture/storage/video_file.hpp"
 #include "core/durable_file.hpp"
@@ -59,6 +61,20 @@ std::string relative_to_output(const std::string& file, const std::string& outpu
   return fs::absolute(file).lexically_relative(base).string();
 }
 
+// The source's scores, thresholds, reference frames and presses, for a chart.
+ScoreChart chart_of(const SourceScores& scores, const std::vector<PressPlan>& plans, const SourceDetection& d) {
+  ScoreChart c;
+  c.scores = scores.scores;
+  c.level = d.level, c.trigger = d.trigger, c.release = d.release;
+  c.reference_first = scores.reference_first, c.reference_last = scores.reference_last;
+  for (const auto& p : plans) c.presses.push_back({p.contact.first, p.contact.last, p.contact.peak});
+  c.caption = "reference: " + std::string(reference_kind_name(scores.reference_kind)) + "  no-contact level " +
+              figure(d.level) + "  jitter " + figure(d.jitter) + "  trigger " + figure(d.trigger) + "  release " +
+              figure(d.release);
+  if (d.jitter > 0) c.caption += "  signal-to-noise " + figure(d.signal_to_noise());
+  return c;
+}
+
 class Extraction {
  public:
   Extraction(const std::string& output, const ExtractOptions& options)
@@ -70,6 +86,9 @@ class Extraction {
     if (options.sheets)
       sheets_ = std::make_unique<PartialDirectory>(options.sheets_dir.empty() ? default_sheets_dir(output) : options.sheets_dir,
                                                    FolderOptions{options.overwrite, "contact sheet folder", "--sheets", "haptex capture extract"});
+    if (options.explain)
+      explain_ = std::make_unique<PartialDirectory>(default_explain_dir(output),
+                                                    FolderOptions{options.overwrite, "explain folder", "--explain", "haptex capture extract"});
   }
 
   // One source opened, its frames scored and its presses planned: what write() reads the kept frames
@@ -104,6 +123,7 @@ class Extraction {
     result_.frames_unreadable += a.scores.unreadable_frames + a.source->frames_missing();
     if (a.plans.empty()) result_.sources_without_press.push_back(a.input->path);
     result_.detections.push_back(detection_of(a.input->path, a.scores, int(a.plans.size())));
+    if (explain_) explain(a);
     read_press_frames(*a.source, a.plans, [&](const PressPlan& plan, PressFrames frames) {
       write_press(a.material, *a.source, a.scores, a.sha, plan, std::move(frames));
     });
@@ -112,6 +132,10 @@ class Extraction {
   }
 
   ExtractResult finish() {
+    if (explain_) {  // the charts say why no press was found too
+      explain_->commit();
+      result_.explain_dir = explain_->final_path();
+    }
     if (result_.presses.empty()) throw NoPressFound(no_press_message(), result_);
     writer_.commit();
     if (sheets_) {
@@ -122,12 +146,23 @@ class Extraction {
   }
 
  private:
+  // One chart per source, named after the source's file (numbered when two sources share a name).
+  void explain(const Analysed& a) {
+    const std::string stem = fs::path(a.input->path).filename().string();
+    std::string name = stem + ".png";
+    for (int k = 2; !explain_names_.insert(name).second; ++k) name = stem + "_" + std::to_string(k) + ".png";
+    const SourceDetection& d = result_.detections.back();
+    write_sheet(*explain_, name,
+                score_chart_png(a.input->path + ": " + std::to_string(a.plans.size()) + " press(es)", chart_of(a.scores, a.plans, d)));
+  }
+
   std::string no_press_message() const {
     std::string m = "no press found in " + std::to_string(result_.sources) + " input(s); nothing was written.";
     constexpr std::size_t kShown = 5;
     for (std::size_t i = 0; i < std::min(kShown, result_.detections.size()); ++i)
       m += "\n  " + result_.detections[i].source + ": " + describe(result_.detections[i]);
     if (result_.detections.size() > kShown) m += "\n  ... and " + std::to_string(result_.detections.size() - kShown) + " more";
+    if (!result_.explain_dir.empty()) m += "\nEach source's score over time: " + result_.explain_dir;
     return m + "\nIf the sensor was pressed, give a lower --trigger (above the no-contact level), or a no-contact "
                "image with --reference";
   }
@@ -188,20 +223,11 @@ class Extraction {
                std::to_string(plan.contact.first) + "-" + std::to_string(plan.contact.last);
     in.reference = scores.reference;
     in.peak = peak;
-    in.scores = scores.scores;
-    in.range_first = plan.range_first;
-    in.range_last = plan.range_last;
-    in.contact_first = plan.contact.first;
-    in.contact_last = plan.contact.last;
     in.peak_index = plan.contact.peak;
-    in.kept = plan.frame_indices;
-    in.trigger = scores.contact->trigger();
-    in.release = scores.contact->release();
-    in.level = scores.contact->level();
-    in.detection = "no-contact level " + figure(detection.level) + "  trigger " + figure(detection.trigger) + "  release " +
-                   figure(detection.release) + "  pixel threshold " + figure(detection.pixel_threshold) + "  noise " +
-                   figure(detection.noise);
-    if (detection.level > 0) in.detection += "  signal-to-noise " + figure(detection.signal_to_noise());
+    in.chart = chart_of(scores, {plan}, detection);
+    in.chart.range_first = plan.range_first;
+    in.chart.range_last = plan.range_last;
+    in.chart.kept = plan.frame_indices;
     return in;
   }
 
@@ -209,28 +235,38 @@ class Extraction {
   const ExtractOptions& options_;
   ExtractSettings settings_;
   GelsightWriter writer_;
-  std::unique_ptr<PartialDirectory> sheets_;
+  std::unique_ptr<PartialDirectory> sheets_, explain_;
+  std::set<std::string> explain_names_;
   ExtractResult result_;
 };
 
 }  // namespace
 
 float SourceDetection::signal_to_noise() const {
-  return level > 0 ? highest_score / level : std::numeric_limits<float>::infinity();
+  return jitter > 0 ? (highest_score - level) / jitter : std::numeric_limits<float>::infinity();
 }
 
 std::string describe(const SourceDetection& d) {
   std::string s = d.highest_frame < 0 ? "no frame decoded" : "highest score " + figure(d.highest_score) + " (frame " +
                                                                  std::to_string(d.highest_frame) + ")";
-  s += ", trigger " + figure(d.trigger) + " over a no-contact level of " + figure(d.level);
-  if (d.level > 0) s += " (signal-to-noise " + figure(d.signal_to_noise()) + ", a press needs " + figure(d.trigger / d.level) + ")";
-  return s + "; per-pixel threshold " + figure(d.pixel_threshold) + " grey levels, noise " + figure(d.noise);
+  s += ", trigger " + figure(d.trigger) + " over a no-contact level of " + figure(d.level) + " (jitter " + figure(d.jitter);
+  if (d.jitter > 0) s += "; signal-to-noise " + figure(d.signal_to_noise()) + ", a press needs " + figure((d.trigger - d.level) / d.jitter);
+  s += "); reference: " + d.reference;
+  if (d.pixel_threshold > 0) s += "; per-pixel threshold " + figure(d.pixel_threshold) + " grey levels";
+  return s;
 }
 
-std::string default_sheets_dir(const std::string& output) {
+namespace {
+
+std::string beside_output(const std::string& output, const std::string& suffix) {
   fs::path p(output);
-  return (p.parent_path() / (p.stem().string() + "_sheets")).string();
+  return (p.parent_path() / (p.stem().string() + suffix)).string();
 }
+
+}  // namespace
+
+std::string default_sheets_dir(const std::string& output) { return beside_output(output, "_sheets"); }
+std::string default_explain_dir(const std::string& output) { return beside_output(output, "_explain"); }
 
 ExtractResult extract_presses(const std::vector<std::string>& inputs, const std::string& output,
                               const ExtractOptions& options, const Progress& progress) {

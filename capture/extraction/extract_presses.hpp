@@ -21,6 +21,10 @@ struct ExtractOptions {
   bool overwrite = false;
   bool sheets = true;
   std::string sheets_dir;  // default: <output without extension>_sheets beside the output
+  // --explain: one chart per source of its score over time with the reference, the thresholds and the
+  // presses (score_chart.hpp), in <output without extension>_explain, written even when no source
+  // holds a press.
+  bool explain = false;
   std::string provenance;
   // Image sequences analysed at once (0: one per core, at most 4); the output is the same for any count.
   unsigned threads = 0;
@@ -42,8 +46,9 @@ struct SourceDetection {
   float noise = 0, pixel_threshold = 0, level = 0, jitter = 0, trigger = 0, release = 0;
   float highest_score = 0;  // the source's strongest frame
   std::int64_t highest_frame = -1;
-  // The strongest frame over the no-contact level: the score's signal-to-noise. The trigger asks for
-  // trigger / level (2.5 by default). Infinite when the level is 0 (a given image, a quiet sensor).
+  // The strongest frame's excess over the no-contact level in units of the score's jitter: the
+  // score's signal-to-noise. A press needs (trigger - level) / jitter, 5 or more by default. Infinite
+  // when the jitter is 0 (a given image, copied frames).
   float signal_to_noise() const;
 };
 // One line: the strongest frame, the trigger, the level and the signal-to-noise.
@@ -58,6 +63,7 @@ struct ExtractResult {
   // Frames that did not decode (damaged, or announced by a video cut short): never a peak or kept.
   std::int64_t frames_unreadable = 0;
   std::string sheets_dir;  // empty without sheets
+  std::string explain_dir;  // empty without --explain
 };
 
 // No input held a press, and nothing was written: what each source was judged by comes with the error.
@@ -77,5 +83,6 @@ ExtractResult extract_presses(const std::vector<std::string>& inputs, const std:
                               const ExtractOptions& options, const Progress& progress = {});
 
 std::string default_sheets_dir(const std::string& output);
+std::string default_explain_dir(const std::string& output);
 
 }  // namespace haptex::capture

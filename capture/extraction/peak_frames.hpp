@@ -38,6 +38,7 @@ struct SourceScores {
   cv::Mat reference;          // BGR, frame size
   std::optional<ContactReference> contact;
   ReferenceKind reference_kind = ReferenceKind::start;
+  std::int64_t reference_first = -1, reference_last = -1;  // the frames averaged into it; -1: an image
   std::string reference_note; // where the reference came from, for the file's attributes
   std::int64_t black_frames = 0, unreadable_frames = 0;
   // With the start's reference: the median score of the video's last frames when they too are a

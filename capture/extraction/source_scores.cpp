@@ -224,6 +224,7 @@ void use_end(FrameSource& source, const FirstReading& first, ContactReference en
   sum.convertTo(out.reference, CV_8UC3, 1.0 / double(stretch.indices.size()));
   out.contact = std::move(end);
   out.reference_kind = ReferenceKind::end;
+  out.reference_first = stretch.first(), out.reference_last = stretch.last();
   out.reference_note = "mean of " + frame_range(stretch.first(), stretch.last()) + ", the video's end (its start, " +
                        frame_range(first.start_frames().first(), first.start_frames().last()) +
                        ", is not a steady no-contact stretch: " + why_not_start + ")";
@@ -254,6 +255,7 @@ void use_least_contact(FrameSource& source, const FirstReading& first, ContactRe
   out.scores = std::move(scores[at_end ? 1 : 0]);
   out.contact = at_end ? std::move(end) : start;
   out.reference_kind = ReferenceKind::least_contact;
+  out.reference_first = chosen.first(), out.reference_last = chosen.last();
   out.reference_note = "mean of " + frame_range(chosen.first(), chosen.last()) + ", the video's " +
                        (at_end ? "end" : "start") +
                        ", the end of least contact (neither end is a steady no-contact stretch)";
@@ -306,6 +308,7 @@ SourceScores score_source(FrameSource& source, const ExtractSettings& settings) 
     first.start_sum().convertTo(out.reference, CV_8UC3, 1.0 / double(s.indices.size()));
     out.contact = start;
     out.reference_kind = ReferenceKind::start;
+    out.reference_first = s.first(), out.reference_last = s.last();
     out.reference_note = "mean of " + frame_range(s.first(), s.last());
     out.end_level = settled_end_level(first, out.scores);
     return out;

@@ -151,6 +151,28 @@ TEST_F(ExtractCli, NoPressAnywhereExitsOneAndWritesNothing) {
   expect_nothing_written();
 }
 
+// --explain: one score chart per source, pressed or not, named after the source, and kept when no
+// source holds a press (it says why); --json names the folder and where each reference came from.
+TEST_F(ExtractCli, ExplainChartsEverySourceEvenWithoutAPress) {
+  fs::create_directories(dir_.path() / "still" / "Glass");
+  capture::fixtures::write_press_video(dir_.file("still/Glass/still.mkv"), capture::fixtures::quick_presses(0), 30);
+  const CommandResult none = run_haptex({"capture", "extract", dir_.file("still"), "-o", out(), "--explain"});
+  EXPECT_EQ(none.exit_code, 1);
+  EXPECT_NE(none.err.find("Each source's score over time: " + dir_.file("gelsight_explain")), std::string::npos) << none.err;
+  EXPECT_TRUE(fs::is_regular_file(dir_.file("gelsight_explain/still.mkv.png")));
+  EXPECT_FALSE(fs::exists(out()));
+
+  const CommandResult r = run_haptex({"--json", "capture", "extract", dir_.file("gelsight/Cork"), dir_.file("still"), "-o",
+                                      out(), "--explain", "--force"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["explain"], dir_.file("gelsight_explain"));
+  ASSERT_EQ(doc["detection"].size(), 3u);
+  for (const auto& d : doc["detection"]) EXPECT_EQ(d["reference_kind"], "start") << d.dump();
+  for (const char* chart : {"press_0.mkv.png", "press_1.mkv.png", "still.mkv.png"})
+    EXPECT_EQ(cv::imread(dir_.file(std::string("gelsight_explain/") + chart)).cols, 960) << chart;
+}
+
 TEST_F(ExtractCli, BadInputIsRefusedWithOneMessageAndNothingWritten) {
   const auto refused = [&](std::vector<std::string> args, const std::vector<std::string>& parts) {
     args.insert(args.begin(), {"capture", "extract"});

@@ -53,6 +53,27 @@ class ReplayCli : public ::testing::Test {
   TempDir dir_;
 };
 
+// A replayed file starts with its first frame: no warm-up is dropped unless asked for (a sensor's
+// black start-up frames are not in a file). A 48-frame video pressed from frame 12 records its press
+// with the defaults; dropping 10 frames, as for a sensor, leaves a reference the press spoils.
+TEST_F(ReplayCli, AReplayStartsWithTheFilesFirstFrame) {
+  capture::PressSchedule s = capture::fixtures::quick_presses(1);
+  s.black_frames = 0;
+  s.idle_frames = 12;
+  const std::string video = dir_.file("short.avi");
+  capture::fixtures::write_press_video(video, s, 48, 320, 240, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'));
+  const CommandResult r = record("replay:" + video + ",lockstep", "default");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json m = manifest("default");
+  EXPECT_EQ(m["recorder"]["warmup_frames"], 0);
+  ASSERT_EQ(m["presses"].size(), 1u) << r.out;
+  EXPECT_GE(m["presses"][0]["peak_frame"].get<int>(), 12);
+  const CommandResult sensor_like = record("replay:" + video + ",lockstep", "warm", {"--warmup", "10"});
+  ASSERT_EQ(sensor_like.exit_code, 0) << sensor_like.err;
+  EXPECT_EQ(manifest("warm")["recorder"]["warmup_frames"], 10);
+  EXPECT_TRUE(manifest("warm")["presses"].empty());
+}
+
 // The tolerance: live, each frame is the video's frame re-encoded as JPEG (quality 95) and scored from
 // a reduced-size JPEG decoding; offline, the decoded MPEG-4 frame is averaged over the same blocks.
 // The two scoring images differ by a fraction of a grey level, which can move a threshold crossing
