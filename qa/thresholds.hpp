@@ -72,8 +72,8 @@ inline constexpr double kRawMinShare = 1e-8;
 // At least this many presses are needed for a meaningful median.
 inline constexpr std::size_t kMinReferencesForMedian = 3;
 // The peak frame, scored again against the stored reference with the press's pixel threshold, must
-// reach the press's contact trigger, which already stands 2.5 times the footage's no-contact level
-// above nothing (docs/capture.md, "Finding presses"): a peak under it could not have started the
+// reach the press's contact trigger, which stands at least 1.5 times the footage's no-contact level
+// (docs/capture.md, "The thresholds"): a peak under it could not have started the
 // press, so the reference or the peak is not the one the press was cut with. 0.9, not 1: the stored
 // reference is the reference frames' mean rounded to 8 bits.
 inline constexpr double kPeakOverTrigger = 0.9;

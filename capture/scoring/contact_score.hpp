@@ -7,16 +7,18 @@
 //                                the reference: exposure and LED changes scale the image) and a tilt
 //                                (x and y ramps: a light warming unevenly), refitted without the
 //                                pixels that do not fit, so a press does not move it
-//   score = mean over pixels of max(0, |r| - t)      in grey levels
+//   score = mean over pixels of |r|                  in grey levels (a user's --pixel-threshold t: of
+//                                                     max(0, |r| - t))
 //
-// With a reference taken from the footage itself (its leading no-contact frames, or a live take's),
-// t is the frames' per-pixel noise and the trigger comes from that footage: each reference frame is
-// scored against the mean of the others, which gives the no-contact level of the score without a
-// single extra frame (inter-frame video takes it over the frames after the reference instead:
-// ContactReference::from_calibration), and contact is a score above that level by a multiple of it. So
-// the trigger adapts to each sensor's noise, compression and resolution, and a press of a few grey
-// levels on a 320 x 240 MPEG-4 is found as surely as a deep one on a 3280 x 2464 MJPG. A single
-// given no-contact image shows no noise: then t and the trigger are fixed floors.
+// With a reference taken from the footage itself (its no-contact frames, or a live take's), the
+// trigger comes from that footage: each reference frame is scored against the mean of the others,
+// which gives the no-contact level of the score and its jitter without a single extra frame
+// (inter-frame video takes them over later frames instead: ContactReference::from_calibration), and
+// contact is a score above that level by five times its jitter, and at least half the level. A mean
+// over the whole image jitters far less than any pixel, so the statistic's own noise, not the
+// pixels', sets the trigger, and a press of a few grey levels on a 320 x 240 MPEG-4 is found as surely
+// as a deep one on a 3280 x 2464 MJPG. A single given no-contact image shows no noise: then a
+// per-pixel threshold and the trigger are fixed floors.
 #include <cmath>
 #include <optional>
 #include <vector>
