@@ -41,6 +41,7 @@ struct SourceScores {
   std::int64_t reference_first = -1, reference_last = -1;  // the frames averaged into it; -1: an image
   std::string reference_note; // where the reference came from, for the file's attributes
   std::int64_t black_frames = 0, unreadable_frames = 0;
+  std::int64_t stale_frames = 0;  // start-up frames of an earlier moment, before a jump (source_scores.cpp)
   // With the start's reference: the median score of the video's last frames when they too are a
   // steady stretch (the gel may settle a little differently after a grasp); NaN otherwise.
   float end_level = std::numeric_limits<float>::quiet_NaN();

@@ -162,6 +162,39 @@ float settled_end_level(const FirstReading& first, const std::vector<float>& sco
   return end[end.size() / 2];
 }
 
+// Drivers may hand over stale buffers when a stream starts: frames of an earlier moment (another
+// grasp, another exposure) that end in one jump to the live image. So the frames before a change
+// between consecutive frames, within the first `within` usable frames, that is more than twice any
+// later change (and over half a grey level) are start-up frames, as black ones are. A press under way
+// at the start is no such jump: its own release changes the image as much.
+class StartupJump {
+ public:
+  void add(std::int64_t index, const cv::Mat& scoring) {
+    if (!previous_.empty())
+      changes_.push_back({index, float(cv::norm(scoring, previous_, cv::NORM_L1) / double(scoring.total()))});
+    previous_ = scoring;
+  }
+  // The first frame after the last such jump, or -1 when there is none.
+  std::int64_t first_live(int within) const {
+    constexpr float kFactor = 2.0f, kLeast = 0.5f;
+    float later = kLeast;  // the largest change after the one looked at
+    std::int64_t live = -1;
+    for (std::size_t k = changes_.size(); k-- > 0;) {
+      if (k + 1 < std::size_t(within) && live < 0 && changes_[k].change > kFactor * later) live = changes_[k].index;
+      later = std::max(later, changes_[k].change);
+    }
+    return live;
+  }
+
+ private:
+  struct Change {
+    std::int64_t index;  // the later frame
+    float change;        // mean |difference| of the two scoring images, grey levels
+  };
+  std::vector<Change> changes_;
+  cv::Mat previous_;
+};
+
 // Reads the source again, scoring every usable frame against each reference, and hands over the full
 // frames `wanted` asks for.
 std::vector<std::vector<float>> score_again(FrameSource& source, const std::vector<float>& first_scores,
@@ -281,26 +314,41 @@ ScoreSettings score_settings(const FrameSource& source, const ExtractSettings& s
   return s;
 }
 
-SourceScores score_source(FrameSource& source, const ExtractSettings& settings) {
+namespace {
+
+// score_source with the frames before `first_live` taken as start-up frames.
+SourceScores score_from(FrameSource& source, const ExtractSettings& settings, std::int64_t first_live) {
   SourceScores out;
   const ScoreSettings score = score_settings(source, settings);
   out.contact = given_reference(source, settings, out);
   FirstReading first(settings, score, source);
+  StartupJump jump;
   bool started = false;  // past the black frames sensors send after stream start
   source.scan(
       [&](std::int64_t index, const cv::Mat& scoring, const cv::Mat& full) {
         out.scores.push_back(kNaN);
+        if (index < first_live) {
+          ++out.stale_frames;
+          return;
+        }
         if (!scoring.empty() && !started && cv::mean(scoring)[0] < kBlackLevel) {
           ++out.black_frames;
           return;
         }
         started = started || !scoring.empty();
-        if (scoring.empty()) ++out.unreadable_frames;
-        else if (out.contact) out.scores.back() = out.contact->score(scoring);
-        else first.add(index, scoring, full, out);
+        if (scoring.empty()) {
+          ++out.unreadable_frames;
+        } else if (out.contact) {
+          out.scores.back() = out.contact->score(scoring);
+        } else {
+          jump.add(index, scoring);
+          first.add(index, scoring, full, out);
+        }
       },
       [&](std::int64_t) { return !out.contact && !first.start(); });
   if (out.contact) return out;
+  if (first_live == 0)
+    if (const std::int64_t live = jump.first_live(settings.reference_frames); live > 0) return score_from(source, settings, live);
   first.finish(source.path(), out);
   const ContactReference& start = *first.start();
   if (start.steady()) {
@@ -311,12 +359,19 @@ SourceScores score_source(FrameSource& source, const ExtractSettings& settings) 
     out.reference_first = s.first(), out.reference_last = s.last();
     out.reference_note = "mean of " + frame_range(s.first(), s.last());
     out.end_level = settled_end_level(first, out.scores);
-    return out;
+  } else {
+    ContactReference end = first.end_reference();
+    if (end.steady()) use_end(source, first, std::move(end), unsteadiness(start), out);
+    else use_least_contact(source, first, std::move(end), out);
   }
-  ContactReference end = first.end_reference();
-  if (end.steady()) use_end(source, first, std::move(end), unsteadiness(start), out);
-  else use_least_contact(source, first, std::move(end), out);
+  if (first_live > 0)
+    out.reference_note += "; frames 0-" + std::to_string(first_live - 1) +
+                          " are stale start-up frames (they end in a jump over twice any later change)";
   return out;
 }
+
+}  // namespace
+
+SourceScores score_source(FrameSource& source, const ExtractSettings& settings) { return score_from(source, settings, 0); }
 
 }  // namespace haptex::capture

@@ -178,6 +178,7 @@ TEST_F(VideoScores, AVideoThatStartsInContactTakesItsEnd) {
   const auto depth = fixtures::write_press_video(video, s, 60);
   auto source = open_video(video);
   const SourceScores scores = score_source(*source, {});
+  EXPECT_EQ(scores.stale_frames, 0) << "a press under way is no stale start";
   EXPECT_EQ(scores.reference_kind, ReferenceKind::end);
   EXPECT_NE(scores.reference_note.find("mean of frames 50-59, the video's end (its start, frames 0-9, is not a steady "
                                        "no-contact stretch"),
@@ -208,6 +209,28 @@ std::string pressed_sequence(const std::string& folder, const std::vector<std::p
     cv::imwrite(folder + "/frame_" + std::to_string(100 + i) + ".png", pixels);
   }
   return folder;
+}
+
+// Stale start-up frames (a driver's buffers of an earlier moment: here 4 frames of another touch, on
+// the left) end in one jump to the live gel, larger than any later change: they are skipped as black
+// frames are, and the press that follows (centre, rising over 5 frames) is the only one.
+TEST_F(VideoScores, StaleStartUpFramesBeforeAJumpAreSkipped) {
+  std::vector<double> stale, press;
+  for (int i = 0; i < 50; ++i) {
+    stale.push_back(i < 4 ? 40.0 : 0.0);
+    press.push_back(i >= 20 && i < 35 ? 5.0 * std::min({i - 19, 35 - i, 5}) : 0.0);
+  }
+  auto source = open_image_sequence(pressed_sequence(dir_.file("stale"), {{{35, 60}, stale}, {{100, 60}, press}}));
+  const SourceScores scores = score_source(*source, {});
+  EXPECT_EQ(scores.stale_frames, 4);
+  EXPECT_EQ(scores.reference_kind, ReferenceKind::start);
+  EXPECT_NE(scores.reference_note.find("mean of frames 4-13; frames 0-3 are stale start-up frames"), std::string::npos)
+      << scores.reference_note;
+  for (int i = 0; i < 4; ++i) EXPECT_TRUE(std::isnan(scores.scores[std::size_t(i)]));
+  const auto plans = plan_presses(scores.scores, scores.contact->segmenter({}), 12, 10);
+  ASSERT_EQ(plans.size(), 1u);
+  EXPECT_GE(plans[0].contact.peak, 24);
+  EXPECT_LE(plans[0].contact.peak, 30);
 }
 
 // A press coming on slowly over the reference frames (0.6 grey levels a frame) puts no two of them
