@@ -1,6 +1,7 @@
 // haptex capture extract <press files | videos | folder per material | folder of those> -o gelsight.h5
 // Per press: the peak frame and its neighbours, the reference, the score curve; and a contact sheet PNG.
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -51,7 +52,13 @@ class CaptureExtract : public CaptureSubcommand {
     inputs.push_back(reference_);
     refuse_output_among_inputs(output_, inputs);
     refuse_output_among_inputs(options_.sheets_dir.empty() ? capture::default_sheets_dir(output_) : options_.sheets_dir, inputs);
-    if (options_.explain) refuse_output_among_inputs(capture::default_explain_dir(output_), inputs);
+    if (options_.explain) {
+      const std::string explain = capture::default_explain_dir(output_);
+      refuse_output_among_inputs(explain, inputs);
+      if (!options_.sheets_dir.empty() &&
+          std::filesystem::absolute(options_.sheets_dir).lexically_normal() == std::filesystem::absolute(explain).lexically_normal())
+        throw input_error("--sheets", options_.sheets_dir, "is the --explain folder", "Give the contact sheets another folder");
+    }
     if (!material_.empty()) options_.material = material_;
     if (pixel_threshold_) options_.settings.pixel_threshold = *pixel_threshold_;
     if (trigger_) options_.settings.trigger = *trigger_;
@@ -81,6 +88,7 @@ class CaptureExtract : public CaptureSubcommand {
       const float snr = d.signal_to_noise();
       detections.push_back({{"source", d.source}, {"reference", d.reference},
                             {"reference_kind", d.reference_kind}, {"presses", d.presses},
+                            {"chart", d.chart.empty() ? nlohmann::json() : nlohmann::json(d.chart)},
                             {"noise", d.noise}, {"pixel_threshold", d.pixel_threshold}, {"no_contact_level", d.level}, {"jitter", d.jitter},
                             {"trigger", d.trigger}, {"release", d.release}, {"highest_score", d.highest_score},
                             {"highest_frame", d.highest_frame},

@@ -28,11 +28,21 @@ namespace haptex::capture {
 namespace fs = std::filesystem;
 namespace {
 
-// One contact sheet into the sheets folder being built.
-void write_sheet(const PartialDirectory& sheets, const std::string& name, const std::vector<std::uint8_t>& png) {
-  std::ofstream out(fs::path(sheets.path()) / name, std::ios::binary);
+// One PNG (a contact sheet, a score chart) into a folder being built.
+void write_png(const PartialDirectory& folder, const std::string& name, const std::vector<std::uint8_t>& png,
+               const std::string& what) {
+  std::ofstream out(fs::path(folder.path()) / name, std::ios::binary);
   out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
-  if (!out) throw failure(sheets.path() + "/" + name + ": cannot write the contact sheet");
+  if (!out) throw failure(folder.path() + "/" + name + ": cannot write the " + what);
+}
+
+// A source's chart name: its file's (or folder's) name as an id, ASCII and at most 100 characters, so
+// any file name gives a valid one ("Cork take 1.avi" -> "cork_take_1_avi").
+std::string chart_stem(const std::string& source) {
+  fs::path p = fs::path(source).lexically_normal();
+  if (p.filename().empty()) p = p.parent_path();
+  const std::string id = material_id(p.filename().string()).substr(0, 100);
+  return id.empty() ? "source" : id;
 }
 
 cv::Mat load_reference(const std::string& path) {
@@ -47,7 +57,8 @@ std::string figure(double v) { return text::format("%.3g", v); }
 
 SourceDetection detection_of(const std::string& path, const SourceScores& scores, int presses) {
   const ContactReference& c = *scores.contact;
-  SourceDetection d{path, scores.reference_note, reference_kind_name(scores.reference_kind), presses, c.noise(), c.pixel_threshold(), c.level(), c.spread(), c.trigger(), c.release()};
+  SourceDetection d{path,      scores.reference_note, reference_kind_name(scores.reference_kind), presses, c.noise(),
+                    c.pixel_threshold(), c.level(), c.spread(), c.trigger(), c.release(), 0, -1, {}};
   for (std::size_t i = 0; i < scores.scores.size(); ++i)
     if (std::isfinite(scores.scores[i]) && (d.highest_frame < 0 || scores.scores[i] > d.highest_score)) {
       d.highest_score = scores.scores[i];
@@ -88,7 +99,8 @@ class Extraction {
                                                    FolderOptions{options.overwrite, "contact sheet folder", "--sheets", "haptex capture extract"});
     if (options.explain)
       explain_ = std::make_unique<PartialDirectory>(default_explain_dir(output),
-                                                    FolderOptions{options.overwrite, "explain folder", "--explain", "haptex capture extract"});
+                                                    FolderOptions{options.overwrite, "explain folder", "-o (the folder is named after it)",
+                                                                  "haptex capture extract"});
   }
 
   // One source opened, its frames scored and its presses planned: what write() reads the kept frames
@@ -132,12 +144,12 @@ class Extraction {
   }
 
   ExtractResult finish() {
-    if (explain_) {  // the charts say why no press was found too
-      explain_->commit();
-      result_.explain_dir = explain_->final_path();
+    if (result_.presses.empty()) {
+      commit_explain();  // the charts say why no press was found
+      throw NoPressFound(no_press_message(), result_);
     }
-    if (result_.presses.empty()) throw NoPressFound(no_press_message(), result_);
     writer_.commit();
+    commit_explain();
     if (sheets_) {
       sheets_->commit();
       result_.sheets_dir = sheets_->final_path();
@@ -146,14 +158,23 @@ class Extraction {
   }
 
  private:
-  // One chart per source, named after the source's file (numbered when two sources share a name).
+  void commit_explain() {
+    if (!explain_) return;
+    explain_->commit();
+    result_.explain_dir = explain_->final_path();
+  }
+
+  // One chart per source, named after the source (chart_stem; numbered _2, _3 ... when two sources give
+  // the same name); its path goes into the source's detection.
   void explain(const Analysed& a) {
-    const std::string stem = fs::path(a.input->path).filename().string();
+    const std::string stem = chart_stem(a.input->path);
     std::string name = stem + ".png";
     for (int k = 2; !explain_names_.insert(name).second; ++k) name = stem + "_" + std::to_string(k) + ".png";
-    const SourceDetection& d = result_.detections.back();
-    write_sheet(*explain_, name,
-                score_chart_png(a.input->path + ": " + std::to_string(a.plans.size()) + " press(es)", chart_of(a.scores, a.plans, d)));
+    SourceDetection& d = result_.detections.back();
+    d.chart = (fs::path(explain_->final_path()) / name).string();
+    write_png(*explain_, name, score_chart_png(a.input->path + ": " + std::to_string(a.plans.size()) + " press(es)",
+                                               chart_of(a.scores, a.plans, d)),
+              "score chart");
   }
 
   std::string no_press_message() const {
@@ -203,7 +224,9 @@ class Extraction {
       p.contact_sheet = relative_to_output((fs::path(sheets_->final_path()) / sheet_name).string(), output_);
     }
     const int j = writer_.add_press(material, p);
-    if (sheets_) write_sheet(*sheets_, sheet_name, contact_sheet_png(sheet_input(material, j, source, scores, plan, peak, result_.detections.back())));
+    if (sheets_)
+      write_png(*sheets_, sheet_name, contact_sheet_png(sheet_input(material, j, source, scores, plan, peak, result_.detections.back())),
+                "contact sheet");
     result_.presses.push_back({material, id, source.path(), j, plan.press_in_source, p.frame_start, p.frame_end,
                                p.contact_first, p.contact_last, p.peak_index, p.peak_score, p.contact_sheet});
   }

@@ -22,8 +22,8 @@ struct ExtractOptions {
   bool sheets = true;
   std::string sheets_dir;  // default: <output without extension>_sheets beside the output
   // --explain: one chart per source of its score over time with the reference, the thresholds and the
-  // presses (score_chart.hpp), in <output without extension>_explain, written even when no source
-  // holds a press.
+  // presses (score_chart.hpp), in <output without extension>_explain/<the source's name as an id>.png,
+  // written even when no source holds a press.
   bool explain = false;
   std::string provenance;
   // Image sequences analysed at once (0: one per core, at most 4); the output is the same for any count.
@@ -46,6 +46,7 @@ struct SourceDetection {
   float noise = 0, pixel_threshold = 0, level = 0, jitter = 0, trigger = 0, release = 0;
   float highest_score = 0;  // the source's strongest frame
   std::int64_t highest_frame = -1;
+  std::string chart;  // its --explain chart, or empty
   // The strongest frame's excess over the no-contact level in units of the score's jitter: the
   // score's signal-to-noise. A press needs (trigger - level) / jitter, 5 or more by default. Infinite
   // when the jitter is 0 (a given image, copied frames).

@@ -51,13 +51,23 @@ std::vector<std::int64_t> choose_window(const std::vector<float>& scores, std::i
 
 namespace {
 
-// Drops the presses that are the video's settled end (plan_presses).
-std::vector<PressInterval> without_settled_end(std::vector<PressInterval> presses, const SegmenterSettings& s, float end_level) {
+// Drops the last press when it is the video's settled end (plan_presses): it lasts to the last scored
+// frame, hovers at the trigger (its peak within twice the trigger's margin over the level, and within
+// one margin of the end's level), and the end is less than half as far from the level as the
+// strongest press. A press a person sees stands higher, and one in the middle of a video is never
+// the settled end.
+std::vector<PressInterval> without_settled_end(std::vector<PressInterval> presses, const std::vector<float>& scores,
+                                               const SegmenterSettings& s, float end_level) {
   if (std::isnan(end_level) || presses.empty()) return presses;
+  std::int64_t last_scored = std::int64_t(scores.size()) - 1;
+  while (last_scored >= 0 && std::isnan(scores[std::size_t(last_scored)])) --last_scored;
   float strongest = s.level;
   for (const auto& p : presses) strongest = std::max(strongest, p.peak_score);
-  if (end_level - s.level >= 0.5f * (strongest - s.level)) return presses;
-  std::erase_if(presses, [&](const PressInterval& p) { return p.peak_score <= end_level + (s.trigger - s.level); });
+  const PressInterval& last = presses.back();
+  const float margin = s.trigger - s.level;
+  if (last.last == last_scored && last.peak_score <= s.level + 2 * margin && last.peak_score <= end_level + margin &&
+      end_level - s.level < 0.5f * (strongest - s.level))
+    presses.pop_back();
   return presses;
 }
 
@@ -65,7 +75,7 @@ std::vector<PressInterval> without_settled_end(std::vector<PressInterval> presse
 
 std::vector<PressPlan> plan_presses(const std::vector<float>& scores, const SegmenterSettings& segmenter,
                                     int frames_per_press, int margin_frames, float end_level) {
-  const std::vector<PressInterval> presses = without_settled_end(segment_presses(scores, segmenter), segmenter, end_level);
+  const std::vector<PressInterval> presses = without_settled_end(segment_presses(scores, segmenter), scores, segmenter, end_level);
   const std::int64_t last_frame = std::int64_t(scores.size()) - 1;
   std::vector<PressPlan> plans;
   for (std::size_t k = 0; k < presses.size(); ++k) {

@@ -65,9 +65,8 @@ struct PressPlan {
 // The presses in the scores, with the frames each keeps: the run of frames_per_press consecutive
 // frames that contains the peak and scores highest in total, inside the press's own range when it
 // is long enough (so neighbouring presses never share frames).
-// With an end_level (SourceScores), a press that does not rise over it by the trigger's margin is
-// the settled end, not a press, unless the end is within half the strongest press of its peak (a press
-// held to the end).
+// With an end_level (SourceScores), a last press that lasts to the end hovering at the trigger is the
+// video's settled end, not a press (peak_frames.cpp, without_settled_end).
 std::vector<PressPlan> plan_presses(const std::vector<float>& scores, const SegmenterSettings& segmenter,
                                     int frames_per_press, int margin_frames,
                                     float end_level = std::numeric_limits<float>::quiet_NaN());

@@ -63,11 +63,13 @@ class FirstReading {
 
   void add(std::int64_t index, const cv::Mat& scoring, const cv::Mat& full, SourceScores& out) {
     ++usable_;
-    tail_.images.push_back(scoring);
-    tail_.indices.push_back(index);
-    if (int(tail_.images.size()) > settings_.reference_frames + calibration_) {
-      tail_.images.erase(tail_.images.begin());
-      tail_.indices.erase(tail_.indices.begin());
+    if (cv::mean(scoring)[0] >= kBlackLevel) {  // a dark end (a sensor unplugged, a fade) is no gel image
+      tail_.images.push_back(scoring);
+      tail_.indices.push_back(index);
+      if (int(tail_.images.size()) > settings_.reference_frames + calibration_) {
+        tail_.images.erase(tail_.images.begin());
+        tail_.indices.erase(tail_.indices.begin());
+      }
     }
     if (start_) {
       out.scores[std::size_t(index)] = start_->score(scoring);
@@ -245,16 +247,45 @@ std::optional<ContactReference> given_reference(FrameSource& source, const Extra
 }
 
 // The end's stretch, when the start is not steady: the source is read again against it.
+// The full frames of a stretch summed on the second reading, into its mean. Every one of them decoded on
+// the first reading; one that does not on the second (a file changed or damaged meanwhile) is refused.
+class StretchSum {
+ public:
+  StretchSum(const std::string& path, const Stretch& stretch) : path_(path), stretch_(stretch) {}
+  bool wanted(std::int64_t i) const {
+    return std::find(stretch_.indices.begin(), stretch_.indices.end(), i) != stretch_.indices.end();
+  }
+  void add(const cv::Mat& full) {
+    if (full.empty()) return;
+    if (sum_.empty()) sum_ = cv::Mat::zeros(full.size(), CV_16UC3);
+    cv::add(sum_, full, sum_, cv::noArray(), CV_16UC3);
+    ++added_;
+  }
+  cv::Mat mean() const {
+    if (added_ != stretch_.indices.size())
+      throw input_error(path_, frame_range(stretch_.first(), stretch_.last()),
+                        "decoded differently on the second reading (" + std::to_string(added_) + " of " +
+                            std::to_string(stretch_.indices.size()) + " reference frames)",
+                        "The file may have changed or be damaged; copy it again, or give a no-contact image with --reference");
+    cv::Mat mean;
+    sum_.convertTo(mean, CV_8UC3, 1.0 / double(added_));
+    return mean;
+  }
+
+ private:
+  std::string path_;
+  const Stretch& stretch_;
+  cv::Mat sum_;
+  std::size_t added_ = 0;
+};
+
 void use_end(FrameSource& source, const FirstReading& first, ContactReference end, const std::string& why_not_start,
              SourceScores& out) {
   const Stretch stretch = first.end_frames().reference;
-  cv::Mat sum;
-  out.scores = score_again(source, out.scores, {&end}, [&](std::int64_t i) { return i >= stretch.first() && i <= stretch.last(); },
-                           [&](std::int64_t, const cv::Mat& full) {
-                             if (sum.empty()) sum = cv::Mat::zeros(full.size(), CV_16UC3);
-                             cv::add(sum, full, sum, cv::noArray(), CV_16UC3);
-                           })[0];
-  sum.convertTo(out.reference, CV_8UC3, 1.0 / double(stretch.indices.size()));
+  StretchSum sum(source.path(), stretch);
+  out.scores = score_again(source, out.scores, {&end}, [&](std::int64_t i) { return sum.wanted(i); },
+                           [&](std::int64_t, const cv::Mat& full) { sum.add(full); })[0];
+  out.reference = sum.mean();
   out.contact = std::move(end);
   out.reference_kind = ReferenceKind::end;
   out.reference_first = stretch.first(), out.reference_last = stretch.last();
@@ -271,12 +302,9 @@ void use_least_contact(FrameSource& source, const FirstReading& first, ContactRe
   const Stretch& start_frames = first.start_frames();
   const Stretch end_frames = first.end_frames().reference;
   const ContactReference& start = *first.start();
-  cv::Mat sums[2];
-  const auto wanted = [&](std::int64_t i) { return i >= end_frames.first() && i <= end_frames.last(); };
-  auto scores = score_again(source, out.scores, {&start, &end}, wanted, [&](std::int64_t, const cv::Mat& full) {
-    if (sums[1].empty()) sums[1] = cv::Mat::zeros(full.size(), CV_16UC3);
-    cv::add(sums[1], full, sums[1], cv::noArray(), CV_16UC3);
-  });
+  StretchSum end_sum(source.path(), end_frames);
+  auto scores = score_again(source, out.scores, {&start, &end}, [&](std::int64_t i) { return end_sum.wanted(i); },
+                            [&](std::int64_t, const cv::Mat& full) { end_sum.add(full); });
   const auto highest = [](const std::vector<float>& v) {
     float h = 0;
     for (float x : v) h = std::isnan(x) ? h : std::max(h, x);
@@ -284,7 +312,8 @@ void use_least_contact(FrameSource& source, const FirstReading& first, ContactRe
   };
   const bool at_end = highest(scores[1]) > highest(scores[0]);
   const Stretch& chosen = at_end ? end_frames : start_frames;
-  (at_end ? sums[1] : first.start_sum()).convertTo(out.reference, CV_8UC3, 1.0 / double(chosen.indices.size()));
+  if (at_end) out.reference = end_sum.mean();
+  else first.start_sum().convertTo(out.reference, CV_8UC3, 1.0 / double(chosen.indices.size()));
   out.scores = std::move(scores[at_end ? 1 : 0]);
   out.contact = at_end ? std::move(end) : start;
   out.reference_kind = ReferenceKind::least_contact;

@@ -159,7 +159,7 @@ TEST_F(ExtractCli, ExplainChartsEverySourceEvenWithoutAPress) {
   const CommandResult none = run_haptex({"capture", "extract", dir_.file("still"), "-o", out(), "--explain"});
   EXPECT_EQ(none.exit_code, 1);
   EXPECT_NE(none.err.find("Each source's score over time: " + dir_.file("gelsight_explain")), std::string::npos) << none.err;
-  EXPECT_TRUE(fs::is_regular_file(dir_.file("gelsight_explain/still.mkv.png")));
+  EXPECT_TRUE(fs::is_regular_file(dir_.file("gelsight_explain/still_mkv.png")));
   EXPECT_FALSE(fs::exists(out()));
 
   const CommandResult r = run_haptex({"--json", "capture", "extract", dir_.file("gelsight/Cork"), dir_.file("still"), "-o",
@@ -169,8 +169,18 @@ TEST_F(ExtractCli, ExplainChartsEverySourceEvenWithoutAPress) {
   EXPECT_EQ(doc["explain"], dir_.file("gelsight_explain"));
   ASSERT_EQ(doc["detection"].size(), 3u);
   for (const auto& d : doc["detection"]) EXPECT_EQ(d["reference_kind"], "start") << d.dump();
-  for (const char* chart : {"press_0.mkv.png", "press_1.mkv.png", "still.mkv.png"})
+  // Charts are named after their source as an id; each detection names its own.
+  for (const char* chart : {"press_0_mkv.png", "press_1_mkv.png", "still_mkv.png"})
     EXPECT_EQ(cv::imread(dir_.file(std::string("gelsight_explain/") + chart)).cols, 960) << chart;
+  EXPECT_EQ(doc["detection"][2]["chart"], dir_.file("gelsight_explain/still_mkv.png"));
+  // Two sources of one name in two folders get two charts.
+  const CommandResult twice = run_haptex({"--json", "capture", "extract", dir_.file("gelsight/Cork/press_0.mkv"),
+                                          dir_.file("gelsight/Brick 2/press_0.mkv"), "-o", out(), "--explain", "--force"});
+  ASSERT_EQ(twice.exit_code, 0) << twice.err;
+  const nlohmann::json t = nlohmann::json::parse(twice.out);
+  EXPECT_EQ(t["detection"][0]["chart"], dir_.file("gelsight_explain/press_0_mkv.png"));
+  EXPECT_EQ(t["detection"][1]["chart"], dir_.file("gelsight_explain/press_0_mkv_2.png"));
+  EXPECT_TRUE(fs::is_regular_file(dir_.file("gelsight_explain/press_0_mkv_2.png")));
 }
 
 TEST_F(ExtractCli, BadInputIsRefusedWithOneMessageAndNothingWritten) {

@@ -1,6 +1,7 @@
 // Scoring a source, cutting presses and choosing the 12 frames around each peak.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -47,6 +48,15 @@ TEST(PlanPresses, TheSettledEndOfAVideoIsNoPress) {
   std::vector<float> held(40, 0.3f);
   for (int i = 0; i < 40; ++i) held.push_back(std::min(1.1f, 0.3f + 0.2f * float(i)));  // pressed and held to the end
   EXPECT_EQ(plan_presses(held, s, 12, 10, 1.1f).size(), 1u);
+  // A weaker press held to the end that a person sees (twice the trigger's margin and more) stays, as
+  // does a weak press in the middle of a video that ends settled.
+  std::vector<float> weak_held(scores.begin(), scores.begin() + 55);
+  weak_held.insert(weak_held.end(), 30, 0.55f);
+  EXPECT_EQ(plan_presses(weak_held, s, 12, 10, 0.55f).size(), 2u);
+  std::vector<float> weak_middle(scores.begin(), scores.begin() + 55);
+  for (float v : {0.5f, 0.5f, 0.5f, 0.5f, 0.3f, 0.3f}) weak_middle.push_back(v);
+  weak_middle.insert(weak_middle.end(), 30, 0.45f);
+  EXPECT_EQ(plan_presses(weak_middle, s, 12, 10, 0.45f).size(), 2u);
 }
 
 TEST(PlanPresses, KeepsTwelveConsecutiveFramesAroundThePeakThatScoreHighest) {
@@ -231,6 +241,27 @@ TEST_F(VideoScores, StaleStartUpFramesBeforeAJumpAreSkipped) {
   ASSERT_EQ(plans.size(), 1u);
   EXPECT_GE(plans[0].contact.peak, 24);
   EXPECT_LE(plans[0].contact.peak, 30);
+}
+
+// A video that starts mid-touch and ends with dark frames (the sensor unplugged, a fade): the dark
+// frames are no gel image, so the end's reference is the last frames before them.
+TEST_F(VideoScores, DarkFramesAtTheEndAreNoReference) {
+  std::vector<double> easing, press;
+  for (int i = 0; i < 50; ++i) {
+    easing.push_back(std::max(0.0, 30.0 - 3.0 * i));
+    press.push_back(i >= 20 && i < 30 ? 6.0 * std::min(i - 19, 30 - i) : 0.0);
+  }
+  const std::string folder = pressed_sequence(dir_.file("dark"), {{{35, 60}, easing}, {{100, 60}, press}});
+  for (int i = 50; i < 60; ++i) cv::imwrite(folder + "/frame_" + std::to_string(100 + i) + ".png", cv::Mat(120, 160, CV_8UC3, cv::Scalar::all(3)));
+  auto source = open_image_sequence(folder);
+  const SourceScores scores = score_source(*source, {});
+  EXPECT_EQ(scores.reference_kind, ReferenceKind::end);
+  EXPECT_EQ(scores.reference_first, 40);
+  EXPECT_EQ(scores.reference_last, 49);
+  const auto plans = plan_presses(scores.scores, scores.contact->segmenter({}), 12, 10);
+  ASSERT_FALSE(plans.empty());
+  EXPECT_TRUE(std::any_of(plans.begin(), plans.end(), [](const PressPlan& p) { return p.contact.peak >= 23 && p.contact.peak <= 26; }))
+      << "the press at frames 20 to 29 is found";
 }
 
 // A press coming on slowly over the reference frames (0.6 grey levels a frame) puts no two of them
