@@ -120,6 +120,8 @@ class FirstReading {
   }
 
   ContactReference end_reference() const { return reference_of(end_frames(), score_, inter_frame_); }
+  // Whether the end has a reference's worth of gel images (dark frames are none).
+  bool end_usable() const { return int(tail_.images.size()) >= settings_.reference_frames; }
 
  private:
   void finish_start(SourceScores& out) {
@@ -157,7 +159,7 @@ class FirstReading {
 
 // The median score of the end's reference frames when they are a steady stretch, else NaN.
 float settled_end_level(const FirstReading& first, const std::vector<float>& scores) {
-  if (!first.end_reference().steady()) return std::numeric_limits<float>::quiet_NaN();
+  if (!first.end_usable() || !first.end_reference().steady()) return std::numeric_limits<float>::quiet_NaN();
   std::vector<float> end;
   for (std::int64_t i : first.end_frames().reference.indices) end.push_back(scores[std::size_t(i)]);
   std::nth_element(end.begin(), end.begin() + std::ptrdiff_t(end.size() / 2), end.end());
@@ -380,13 +382,16 @@ SourceScores score_from(FrameSource& source, const ExtractSettings& settings, st
     if (const std::int64_t live = jump.first_live(settings.reference_frames); live > 0) return score_from(source, settings, live);
   first.finish(source.path(), out);
   const ContactReference& start = *first.start();
-  if (start.steady()) {
+  if (start.steady() || !first.end_usable()) {
     const Stretch& s = first.start_frames();
     first.start_sum().convertTo(out.reference, CV_8UC3, 1.0 / double(s.indices.size()));
     out.contact = start;
     out.reference_kind = ReferenceKind::start;
     out.reference_first = s.first(), out.reference_last = s.last();
     out.reference_note = "mean of " + frame_range(s.first(), s.last());
+    if (!start.steady())
+      out.reference_note += " (not a steady no-contact stretch: " + unsteadiness(start) +
+                            "; the end has too few frames bright enough to be gel images to take instead)";
     out.end_level = settled_end_level(first, out.scores);
   } else {
     ContactReference end = first.end_reference();
