@@ -399,8 +399,9 @@ SourceScores score_from(FrameSource& source, const ExtractSettings& settings, st
     else use_least_contact(source, first, std::move(end), out);
   }
   if (first_live > 0)
-    out.reference_note += "; frames 0-" + std::to_string(first_live - 1) +
-                          " are stale start-up frames (they end in a jump over twice any later change)";
+    out.reference_note += (first_live == 1 ? "; frame 0 is a stale start-up frame"
+                                           : "; frames 0-" + std::to_string(first_live - 1) + " are stale start-up frames") +
+                          std::string(" (they end in a jump over twice any later change)");
   return out;
 }
 
