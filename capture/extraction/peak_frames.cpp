@@ -4,12 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <opencv2/imgproc.hpp>
 
-#include "capture/scoring/scoring_image.hpp"
-#include "core/error.hpp"
 #include "core/image_header.hpp"
-#include "core/text/format.hpp"
 
 namespace haptex::capture {
 namespace {

@@ -4,7 +4,6 @@
 // contact. The first case costs one reading of the source; the others read it a second time.
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <limits>
 
 #include "capture/extraction/peak_frames.hpp"
