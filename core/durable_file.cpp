@@ -1,7 +1,6 @@
 #include "core/durable_file.hpp"
 
 #include <fcntl.h>
-#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -10,6 +9,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/temporary_name.hpp"
 
 namespace haptex {
 namespace fs = std::filesystem;
@@ -54,23 +54,10 @@ void durable_rename(const std::string& from, const std::string& to) {
   fsync_path(directory_of(to), O_RDONLY | O_DIRECTORY);
 }
 
-PartialFile::PartialFile(const std::string& final_path) : final_path_(final_path), path_(final_path + ".partial") {
-  fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd_ < 0)
-    throw input_error(final_path, "", std::string("cannot create the output file: ") + std::strerror(errno),
-                      "Choose a directory you can write to with -o");
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    ::close(fd_);
-    fd_ = -1;
-    throw input_error(final_path, "", "another haptex run is writing this output right now (" + path_ + " is locked)",
-                      "Wait for it to finish, or choose another -o");
-  }
-  if (::ftruncate(fd_, 0) != 0) {  // the leftovers of a killed run
-    const int saved = errno;
-    ::close(fd_);
-    throw input_error(final_path, "", std::string("cannot truncate ") + path_ + ": " + std::strerror(saved),
-                      "Remove it by hand");
-  }
+PartialFile::PartialFile(const std::string& final_path) : final_path_(final_path) {
+  Temporary t = create_temporary_file(final_path);
+  path_ = std::move(t.path);
+  fd_ = t.fd;
 }
 
 PartialFile::~PartialFile() {

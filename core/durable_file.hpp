@@ -1,6 +1,7 @@
 #pragma once
-// The file-system half of haptex's atomic writes (docs/architecture.md, "Modules"): every output is written
-// to NAME.partial, synced, and renamed, so a crash never leaves a half file under the final name.
+// The file-system half of haptex's atomic writes (docs/architecture.md, "Outputs are atomic"): every
+// output is written to a temporary name beside it (core/temporary_name.hpp), synced, and renamed, so a
+// crash never leaves a half file under the final name.
 #include <string>
 #include <string_view>
 
@@ -14,9 +15,8 @@ void fsync_path(const std::string& path, int flags);
 // fsync `from`, rename it to `to`, fsync the directory.
 void durable_rename(const std::string& from, const std::string& to);
 
-// NAME.partial, created and locked (flock) for as long as this object lives, so two haptex runs
-// writing the same output refuse instead of corrupting each other. A partial file left by a
-// killed run carries no lock and is simply reused.
+// A new temporary file for NAME (core/temporary_name.hpp), locked (flock) for as long as this object
+// lives, so two haptex runs writing the same output refuse instead of corrupting each other.
 class PartialFile {
  public:
   explicit PartialFile(const std::string& final_path);  // throws bad_input: unwritable, or locked by another run

@@ -1,7 +1,6 @@
 #include "core/partial_directory.hpp"
 
 #include <fcntl.h>
-#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -12,6 +11,7 @@
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/owned_folder.hpp"
+#include "core/temporary_name.hpp"
 
 namespace haptex {
 namespace fs = std::filesystem;
@@ -68,23 +68,11 @@ void fsync_tree(const std::string& dir) {
 }  // namespace
 
 PartialDirectory::PartialDirectory(std::string final_path, FolderOptions options)
-    : final_(trimmed(std::move(final_path))), path_(final_ + ".partial"), options_(std::move(options)) {
+    : final_(trimmed(std::move(final_path))), options_(std::move(options)) {
   check_destination(final_, options_);
-  std::error_code ec;
-  fs::create_directory(path_, ec);
-  if (ec)
-    throw input_error(final_, "", "cannot create " + path_ + " (" + ec.message() + ")",
-                      "Choose a folder you can write to with " + options_.option + ", or remove " + path_);
-  fd_ = ::open(path_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd_ < 0)
-    throw input_error(final_, "", "cannot open " + path_ + ": " + std::strerror(errno), "Remove " + path_ + " by hand");
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    ::close(fd_);
-    fd_ = -1;
-    throw input_error(final_, "", "another haptex run is writing this " + options_.what + " right now (" + path_ + " is locked)",
-                      "Wait for it to finish, or choose another " + options_.option);
-  }
-  for (const fs::directory_entry& entry : fs::directory_iterator(path_)) fs::remove_all(entry.path());  // left by a killed run
+  Temporary t = create_temporary_folder(final_);
+  path_ = std::move(t.path);
+  fd_ = t.fd;
 }
 
 PartialDirectory::~PartialDirectory() {

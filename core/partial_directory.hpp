@@ -1,13 +1,14 @@
 #pragma once
 // Output folders haptex writes whole (synth's output, extract's contact sheets, evaluate's report),
 // with the guarantees of an atomic file (core/durable_file.hpp) for a folder:
-// - everything is written into DIR.partial, locked (flock) while this object lives, so two runs
-//   writing the same folder refuse instead of mixing their files;
+// - everything is written into a new temporary folder beside DIR (core/temporary_name.hpp), locked
+//   (flock) while this object lives, so two runs writing the same folder refuse instead of mixing
+//   their files;
 // - commit() lists the files (core/owned_folder.hpp), fsyncs every file and folder, and renames
-//   DIR.partial to DIR; an existing DIR (with overwrite) is swapped out in one rename
+//   the temporary folder to DIR; an existing DIR (with overwrite) is swapped out in one rename
 //   (RENAME_EXCHANGE) and only then removed, so a crash at any moment leaves the old folder or the
 //   new one under DIR, never neither and never a mixture;
-// - without commit() (an error, an exception) DIR.partial is removed and DIR is untouched.
+// - without commit() (an error, an exception) the temporary folder is removed and DIR is untouched.
 // A DIR that holds anything its haptex-files.json does not list is never replaced.
 #include <string>
 

@@ -207,13 +207,14 @@ def read_split_and_grid(split_path, windows_path):
 
 
 def example_arguments(description):
-    """An argparse parser with what every example takes: DATASET SPLIT WINDOWS -o PREDS."""
+    """An argparse parser with what every example takes: DATASET SPLIT WINDOWS -o PREDS [--force]."""
     import argparse
     p = argparse.ArgumentParser(description=description)
     p.add_argument("dataset")
     p.add_argument("split")
     p.add_argument("windows")
     p.add_argument("-o", "--output", required=True)
+    p.add_argument("--force", action="store_true", help="replace an earlier predictions file")
     return p
 
 
@@ -232,10 +233,15 @@ def grid_sections(grid):
             for a, b in zip(firsts, ends)]
 
 
-def write_predictions(path, grid, spectra, source, query_seconds=None, signals=None, signal_seconds=None):
+def write_predictions(path, grid, spectra, source, query_seconds=None, signals=None, signal_seconds=None,
+                      inputs=(), overwrite=False):
     """A predictions file for `haptex evaluate --predictions NAME=path`: spectra (W, 100), row i for
     window i of `grid`; optionally one signal per grid section (grid_sections) and the compute
-    times. Written to path.partial and renamed, so a failed run leaves no half file."""
+    times. Refuses a path that is one of `inputs` (the same file by any name), an existing file
+    unless `overwrite`, and with `overwrite` any file but an earlier predictions file. Written to a
+    new temporary name beside path and renamed (docs/architecture.md, "Outputs are atomic"), so a
+    failed run leaves no half file and touches nothing else."""
+    check_output(path, inputs, overwrite)
     spectra = np.asarray(spectra, dtype=np.float32)
     if spectra.shape != (len(grid), TARGET_BINS):
         raise HaptexFileError(f"{path}: {spectra.shape} spectra for a grid of {len(grid)} windows")
@@ -249,7 +255,7 @@ def write_predictions(path, grid, spectra, source, query_seconds=None, signals=N
         sections = grid_sections(grid)
         if len(signals) != len(sections) or any(len(x) < covered for x, (_, _, _, covered) in zip(signals, sections)):
             raise HaptexFileError(f"{path}: give one signal per grid section ({len(sections)}), each covering its windows (grid_sections)")
-    partial = path + ".partial"
+    partial = _temporary_file(path)
     try:
         with h5py.File(partial, "w") as f:
             f.attrs["predictions_format"] = PREDICTIONS_FORMAT
@@ -265,10 +271,50 @@ def write_predictions(path, grid, spectra, source, query_seconds=None, signals=N
                     g.create_dataset(str(k), data=np.asarray(x, dtype=np.float32))
                 if signal_seconds is not None:
                     g.attrs["seconds"] = float(signal_seconds)
+        with open(partial, "rb") as f:
+            os.fsync(f.fileno())
         os.replace(partial, path)
+        partial = None
     finally:
-        if os.path.exists(partial):
+        if partial is not None:
             os.remove(partial)
+
+
+def check_output(path, inputs=(), overwrite=False):
+    """Raises HaptexFileError when write_predictions would refuse path (call it before the work)."""
+    if not path:
+        raise HaptexFileError("the output name is empty: name a file with -o")
+    for given in inputs:
+        if os.path.exists(path) and os.path.exists(given) and os.path.samefile(path, given):
+            raise HaptexFileError(f"{path}: is also an input ({given}): choose another output name")
+    if not os.path.lexists(path):
+        return
+    if not overwrite:
+        raise HaptexFileError(f"{path}: the output file already exists: remove it, choose another -o, or pass --force")
+    try:
+        with h5py.File(path, "r") as f:
+            ours = f.attrs.get("predictions_format") is not None
+    except OSError:
+        ours = False
+    if not ours or os.path.islink(path):
+        raise HaptexFileError(f"{path}: --force replaces only an earlier predictions file, and this is not one: "
+                              "choose another output name, or move the file away yourself")
+
+
+def _temporary_file(path):
+    """A new empty file at PATH.<8 letters and digits>.partial, created exclusively (core/temporary_name.hpp
+    holds the rule): a name that exists is never opened, followed or reused."""
+    import secrets
+    import string
+    letters = string.ascii_letters + string.digits
+    for _ in range(100):
+        partial = path + "." + "".join(secrets.choice(letters) for _ in range(8)) + ".partial"
+        try:
+            os.close(os.open(partial, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o666))
+            return partial
+        except FileExistsError:
+            continue
+    raise HaptexFileError(f"{path}: no free temporary name beside it")
 
 
 try:

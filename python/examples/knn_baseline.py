@@ -79,11 +79,13 @@ def main():
     p.add_argument("-k", type=int, default=8)
     args = p.parse_args()
     try:
+        haptex_data.check_output(args.output, (args.dataset, args.split, args.windows), args.force)
         split, grid = haptex_data.read_split_and_grid(args.split, args.windows)
         train = haptex_data.read_set_windows(args.dataset, split, ("train",))
         spectra, query_seconds = predict(train, grid, args.k)
         haptex_data.write_predictions(args.output, grid, spectra, f"knn_baseline.py, k = {args.k}, numpy, one query at a time",
-                                      query_seconds)
+                                      query_seconds, inputs=(args.dataset, args.split, args.windows),
+                                      overwrite=args.force)
     except (haptex_data.HaptexFileError, OSError, KeyError) as e:
         print(f"knn_baseline: {e}", file=sys.stderr)
         return 2

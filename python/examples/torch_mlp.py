@@ -19,8 +19,12 @@ import sys
 import time
 
 import numpy as np
-import torch
-from torch import nn
+
+try:
+    import torch
+    from torch import nn
+except ImportError:
+    sys.exit("torch_mlp: needs PyTorch, which this Python cannot import (on Debian: apt-get install python3-torch)")
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 import haptex_data  # noqa: E402
@@ -125,6 +129,7 @@ def main():
     args = p.parse_args()
     torch.set_num_threads(1)
     try:
+        haptex_data.check_output(args.output, (args.dataset, args.split, args.windows), args.force)
         split, grid = haptex_data.read_split_and_grid(args.split, args.windows)
         train_windows = haptex_data.read_set_windows(args.dataset, split, ("train",))
         val_windows = haptex_data.read_set_windows(args.dataset, split, ("val",))
@@ -132,7 +137,8 @@ def main():
         spectra, query_seconds = predict(model, grid, train_windows.materials)
         haptex_data.write_predictions(args.output, grid, spectra,
                                       f"torch_mlp.py, {len(history)} epochs, seed {args.seed}, torch {torch.__version__}, one thread",
-                                      query_seconds)
+                                      query_seconds, inputs=(args.dataset, args.split, args.windows),
+                                      overwrite=args.force)
     except (haptex_data.HaptexFileError, OSError, KeyError) as e:
         print(f"torch_mlp: {e}", file=sys.stderr)
         return 2

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/signal/fft.hpp"
+#include "core/temporary_name.hpp"
 #include "tests/support/sample_recording.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -148,7 +149,7 @@ TEST(ConvertRecordings, AnyBadFileLeavesNoOutput) {
   const std::string output = out.file("r.h5");
   EXPECT_THROW(convert_recordings({in.path().string()}, output, {}), Error);
   EXPECT_FALSE(std::filesystem::exists(output));
-  EXPECT_FALSE(std::filesystem::exists(output + ".partial"));
+  EXPECT_TRUE(temporaries_of(output).empty());
 }
 
 TEST(ConvertRecordings, DirectoryWithoutRecordingsIsRefused) {

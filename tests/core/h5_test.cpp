@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
+#include "core/temporary_name.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::h5 {
@@ -138,10 +139,10 @@ TEST(H5, UncommittedFileLeavesNothing) {
   {
     AtomicFile out(path, false);
     out.root().write("x", std::vector<double>{1, 2, 3});
-    EXPECT_TRUE(std::filesystem::exists(path + ".partial"));
+    EXPECT_EQ(temporaries_of(path), std::vector<std::string>{out.partial_path()});
   }
   EXPECT_FALSE(std::filesystem::exists(path));
-  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+  EXPECT_TRUE(temporaries_of(path).empty());
 }
 
 TEST(H5, SecondWriterOfTheSameOutputIsRefused) {
@@ -170,15 +171,20 @@ TEST(H5, CommitFinishesTheFileEvenWithHandlesStillOpen) {
   EXPECT_EQ(File::open(path).root().open_group("g").open_dataset("x").read<double>()[999], 2.0);
 }
 
-TEST(H5, StalePartialFromAKilledRunIsReused) {
+TEST(H5, ANamePartialIsNeitherFollowedNorEmptied) {
   TempDir dir;
-  const std::string path = dir.file("stale.h5");
-  { std::ofstream(path + ".partial") << "half a file"; }
+  const std::string path = dir.file("stale.h5"), kept = dir.file("kept.txt");
+  { std::ofstream(path + ".partial") << "a file of the user's"; }
+  { std::ofstream(kept) << "keep me"; }
+  std::filesystem::create_symlink(kept, path + ".x");
   AtomicFile out(path, false);
   out.root().set_attr("ok", 1);
   out.commit();
   EXPECT_EQ(File::open(path).root().attr_int("ok"), 1);
-  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+  std::ifstream user(path + ".partial"), link(kept);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(user), {}), "a file of the user's");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(link), {}), "keep me");
+  EXPECT_TRUE(temporaries_of(path).empty());
 }
 
 TEST(H5, RefusesExistingOutputUnlessOverwrite) {

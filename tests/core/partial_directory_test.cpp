@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/temporary_name.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex {
@@ -43,7 +44,7 @@ TEST(PartialDirectory, AppearsWholeOnCommitWithItsFileList) {
   const std::string out = dir.file(kName);
   {
     PartialDirectory partial(out, {false, "report folder", "-o", "haptex test"});
-    EXPECT_EQ(partial.path(), out + ".partial");
+    EXPECT_EQ(temporaries_of(out), std::vector<std::string>{partial.path()});
     write_text(fs::path(partial.path()) / "a.txt", "new");
     write_text(fs::path(partial.path()) / "sub" / "b.txt", "deep");
     EXPECT_FALSE(fs::exists(out));
@@ -52,7 +53,7 @@ TEST(PartialDirectory, AppearsWholeOnCommitWithItsFileList) {
   EXPECT_EQ(read_text(fs::path(out) / "a.txt"), "new");
   EXPECT_EQ(read_text(fs::path(out) / "sub" / "b.txt"), "deep");
   EXPECT_TRUE(fs::exists(fs::path(out) / "haptex-files.json"));
-  EXPECT_FALSE(fs::exists(out + ".partial"));
+  EXPECT_TRUE(temporaries_of(out).empty());
 }
 
 TEST(PartialDirectory, WithoutCommitLeavesTheOldFolderAsItWas) {
@@ -64,7 +65,7 @@ TEST(PartialDirectory, WithoutCommitLeavesTheOldFolderAsItWas) {
     write_text(fs::path(failed.path()) / "a.txt", "half");
   }  // an exception half way: no commit
   EXPECT_EQ(read_text(fs::path(out) / "a.txt"), "old");
-  EXPECT_FALSE(fs::exists(out + ".partial"));
+  EXPECT_TRUE(temporaries_of(out).empty());
 }
 
 TEST(PartialDirectory, ReplacesOnlyWithForceAndOnlyWhatHaptexWrote) {

@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <regex>
 
+#include "core/temporary_name.hpp"
 #include "tests/capture/fake_setup.hpp"
 #include "tests/capture/press_videos.hpp"
 #include "tests/support/run_haptex.hpp"
@@ -33,9 +34,9 @@ class ExtractCli : public ::testing::Test {
   std::string out() const { return dir_.file("gelsight.h5"); }
   void expect_nothing_written() const {
     EXPECT_FALSE(fs::exists(out()));
-    EXPECT_FALSE(fs::exists(out() + ".partial"));
+    EXPECT_TRUE(temporaries_of(out()).empty());
     EXPECT_FALSE(fs::exists(dir_.file("gelsight_sheets")));
-    EXPECT_FALSE(fs::exists(dir_.file("gelsight_sheets.partial")));
+    EXPECT_TRUE(temporaries_of(dir_.file("gelsight_sheets")).empty());
   }
   // check_layout.py on a copy of the layout whose H and W are this file's frame size, and whose
   // variable-length dtype has h5py's name (the script takes extents and dtypes literally).

@@ -14,6 +14,7 @@
 
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
+#include "core/temporary_name.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -138,15 +139,15 @@ TEST_F(RecordCli, CtrlCClosesTheCurrentPressFileCleanly) {
   }
   // In (twice) real time, as from a sensor; interrupt during the second press.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (!fs::exists(session_ + "/press_1.h5.partial") && std::chrono::steady_clock::now() < deadline)
+  while (temporaries_of(session_ + "/press_1.h5").empty() && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  ASSERT_TRUE(fs::exists(session_ + "/press_1.h5.partial")) << "the second press never started";
+  ASSERT_FALSE(temporaries_of(session_ + "/press_1.h5").empty()) << "the second press never started";
   kill(child, SIGINT);
   int status = 0;
   waitpid(child, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0);
-  EXPECT_FALSE(fs::exists(session_ + "/press_1.h5.partial"));
+  EXPECT_TRUE(temporaries_of(session_ + "/press_1.h5").empty());
   ASSERT_TRUE(fs::exists(session_ + "/press_1.h5"));
   EXPECT_EQ(h5::File::open(session_ + "/press_1.h5").root().attr_string("ended_by"), "interrupted");
   const nlohmann::json m = manifest();

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/json/schema.hpp"
+#include "core/temporary_name.hpp"
 #include "tests/capture/fake_setup.hpp"
 #include "tests/capture/press_videos.hpp"
 #include "tests/support/npy.hpp"
@@ -206,7 +207,7 @@ TEST_F(ReplayCli, DropsErrorBuffersAndADisconnectAreASensors) {
   ASSERT_EQ(m["presses"].size(), 2u);
   EXPECT_EQ(m["presses"][1]["ended_by"], "disconnected");
   EXPECT_EQ(m["presses"][1]["take_last_frame"], 63) << "the last frame taken is kept";
-  EXPECT_FALSE(fs::exists(dir_.file("unplugged/press_1.h5.partial")));
+  EXPECT_TRUE(temporaries_of(dir_.file("unplugged/press_1.h5")).empty());
 }
 
 TEST_F(ReplayCli, APressFileRecordedFromAReplayReplaysAgain) {

@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/device/fake_scene.hpp"
+#include "core/temporary_name.hpp"
 #include "dataset/press_images.hpp"
 #include "dataset/vlen_bytes.hpp"
 #include "core/error.hpp"
@@ -278,7 +279,7 @@ TEST_F(ColourOrder, AnUnknownOrderIsRefusedNamingTheFileAndTheAttribute) {
   EXPECT_NE(r.err.find(gelsight + ": /" + press + "/@channel_order: unknown channel order 'GRB'. Set it to RGB or BGR"),
             std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_.file("d.h5")));
-  EXPECT_FALSE(fs::exists(dir_.file("d.h5.partial")));
+  EXPECT_TRUE(temporaries_of(dir_.file("d.h5")).empty());
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/temporary_name.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/sample_recording.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -47,7 +48,7 @@ class BadInput : public ::testing::Test {
     for (const auto& part : message_parts) EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one clear message: " << r.err;
     EXPECT_FALSE(std::filesystem::exists(output_)) << "output left behind";
-    EXPECT_FALSE(std::filesystem::exists(output_ + ".partial")) << "partial output left behind";
+    EXPECT_TRUE(temporaries_of(output_).empty()) << "partial output left behind";
   }
 
   TempDir dir_;

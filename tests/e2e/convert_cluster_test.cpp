@@ -8,6 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "core/temporary_name.hpp"
 #include "tests/support/cluster_tree.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -86,7 +87,7 @@ TEST_F(ClusterCli, ADamagedTreeIsRefusedAndNothingWritten) {
     EXPECT_EQ(r.exit_code, 2) << r.err;
     for (const auto& m : mentions) EXPECT_NE(r.err.find(m), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out()));
-    EXPECT_FALSE(fs::exists(out() + ".partial"));
+    EXPECT_TRUE(temporaries_of(out()).empty());
   };
   const std::string accel = dir_.file("db/sensor_data/accel/12_45_60_500_0.csv");
   fs::resize_file(accel, fs::file_size(accel) / 2 + 7);  // cut inside a row

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/json/schema.hpp"
+#include "core/temporary_name.hpp"
 #include "dataset/format.hpp"
 #include "dataset/window_table.hpp"
 #include "tests/support/quick_models.hpp"
@@ -51,7 +52,7 @@ TEST(EvaluateCli, WritesAReportWhoseTotalsMatchItsTables) {
   std::ifstream report(dir.file("report/report.md"));
   const std::string text{std::istreambuf_iterator<char>(report), {}};
   EXPECT_NE(text.find("better on"), std::string::npos);
-  EXPECT_FALSE(fs::exists(dir.file("report.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("report")).empty());
 }
 
 // haptex windows writes the windows evaluate scores (docs/windows.md): per material as many as it
@@ -118,7 +119,7 @@ TEST(EvaluateCli, RefusesATruthThatIsNotOne) {
   EXPECT_NE(r.err.find(fake), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("not truth/2"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir.file("report")));
-  EXPECT_FALSE(fs::exists(dir.file("report.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("report")).empty());
 }
 
 TEST(EvaluateCli, RefusesAModelTrainedOnAnotherSplit) {
@@ -148,7 +149,7 @@ TEST(EvaluateCli, PublishedBaselineNeedsItsFolderAndAMatchingModelFile) {
   EXPECT_EQ(none.exit_code, 2);
   EXPECT_NE(none.err.find(dir.file("models")), std::string::npos) << none.err;
   EXPECT_FALSE(fs::exists(dir.file("report")));
-  EXPECT_FALSE(fs::exists(dir.file("report.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("report")).empty());
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "core/json/schema.hpp"
+#include "core/temporary_name.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
@@ -59,9 +60,9 @@ std::vector<double> csv_acceleration(const std::string& path) {
 
 void expect_nothing_written(const TempDir& dir) {
   EXPECT_FALSE(fs::exists(dir.file("out.wav")));
-  EXPECT_FALSE(fs::exists(dir.file("out.wav.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("out.wav")).empty());
   EXPECT_FALSE(fs::exists(dir.file("out.csv")));
-  EXPECT_FALSE(fs::exists(dir.file("out.csv.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("out.csv")).empty());
 }
 
 TEST(RenderCli, WritesATenKilohertzWavWhoseGainMatchesTheCsv) {
@@ -72,8 +73,8 @@ TEST(RenderCli, WritesATenKilohertzWavWhoseGainMatchesTheCsv) {
   EXPECT_NE(r.out.find("wrote " + dir.file("out.wav") + " and " + dir.file("out.csv") + ": 12345 samples, 1.234 s"), std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("fgla 100 iterations"), std::string::npos) << r.out;
-  EXPECT_FALSE(fs::exists(dir.file("out.wav.partial")));
-  EXPECT_FALSE(fs::exists(dir.file("out.csv.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("out.wav")).empty());
+  EXPECT_TRUE(temporaries_of(dir.file("out.csv")).empty());
 
   const WavFile wav = read_wav_file(dir.file("out.wav"));
   EXPECT_EQ(wav.info.samplerate, 10000);
@@ -287,7 +288,7 @@ TEST(RenderCli, BadInputsExitTwoNamingTheFileAndLeaveNothing) {
   EXPECT_NE(csv_exists.err.find(csv), std::string::npos) << csv_exists.err;
   EXPECT_FALSE(fs::exists(dir.file("other.wav")));
   EXPECT_EQ(fs::file_size(out), size);
-  EXPECT_FALSE(fs::exists(out + ".partial"));
+  EXPECT_TRUE(temporaries_of(out).empty());
   const CommandResult forced = run_haptex(render_args(traj, out, {"--iterations", "2", "--csv", csv, "--force"}));
   EXPECT_EQ(forced.exit_code, 0) << forced.err;
   EXPECT_EQ(csv_acceleration(csv).size(), 2000u);

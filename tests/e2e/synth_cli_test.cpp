@@ -11,6 +11,7 @@
 #include "core/json/schema.hpp"
 #include "core/naming.hpp"
 #include "core/sha256.hpp"
+#include "core/temporary_name.hpp"
 #include "synth/truth_file.hpp"
 #include "tests/support/npy.hpp"
 #include "tests/support/run_haptex.hpp"
@@ -136,7 +137,7 @@ TEST(SynthCli, ForceReplacesTheWholeFolder) {
   EXPECT_FALSE(fs::exists(dir.file("out/recordings/sandpaper_1_0.xml.gz"))) << "a material of the earlier run survived";
   EXPECT_FALSE(fs::exists(dir.file("out/gelsight/Sandpaper 1")));
   EXPECT_TRUE(fs::exists(dir.file("out/recordings/polished_1_0.xml.gz")));
-  EXPECT_FALSE(fs::exists(dir.file("out.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("out")).empty());
 }
 
 TEST(SynthCli, AFailureHalfWayLeavesNoOutput) {
@@ -152,7 +153,7 @@ TEST(SynthCli, AFailureHalfWayLeavesNoOutput) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("Book_square.jpg"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir.file("out")));
-  EXPECT_FALSE(fs::exists(dir.file("out.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("out")).empty());
   const CommandResult no_images = run_haptex({"synth", "hatt", "--models", dir.file("models"), "--images", dir.file("nowhere"),
                                               "-o", dir.file("out2")});
   EXPECT_EQ(no_images.exit_code, 2);

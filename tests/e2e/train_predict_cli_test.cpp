@@ -7,6 +7,7 @@
 
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
+#include "core/temporary_name.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
@@ -81,7 +82,7 @@ TEST(TrainCli, RefusesASplitMadeFromAnotherDataset) {
   EXPECT_NE(r.err.find(split), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("another dataset"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir.file("m.h5")));
-  EXPECT_FALSE(fs::exists(dir.file("m.h5.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("m.h5")).empty());
 }
 
 TEST(TrainCli, AMaterialWithoutValidationWindowsIsNamed) {

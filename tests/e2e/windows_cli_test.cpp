@@ -9,6 +9,7 @@
 #include <set>
 
 #include "core/sha256.hpp"
+#include "core/temporary_name.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
@@ -36,7 +37,7 @@ TEST(WindowsCli, WritesTheEvaluationGridThatTheKnnExamplePredicts) {
   EXPECT_EQ(layout.exit_code, 0) << layout.out << layout.err;
   const CommandResult knn = run_python({kSource + "python/examples/knn_baseline.py", p.dataset, p.split, windows, "-o", preds});
   ASSERT_EQ(knn.exit_code, 0) << knn.out << knn.err;
-  EXPECT_FALSE(fs::exists(preds + ".partial"));
+  EXPECT_TRUE(temporaries_of(preds).empty());
   const CommandResult checked = run_python({kSource + "tests/e2e/check_windows.py", kSource + "python", p.dataset, p.split, windows, preds});
   EXPECT_EQ(checked.exit_code, 0) << checked.out << checked.err;
   EXPECT_NE(checked.out.find("windows ok"), std::string::npos) << checked.out;

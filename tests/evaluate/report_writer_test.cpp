@@ -18,6 +18,7 @@
 #include "core/process/run_program.hpp"
 #include "core/error.hpp"
 #include "core/json/schema.hpp"
+#include "core/temporary_name.hpp"
 #include "evaluate/report_csv.hpp"
 #include "evaluate/report_markdown.hpp"
 #include "evaluate/results_json.hpp"
@@ -265,7 +266,7 @@ TEST(ReportWriter, WritesEveryFileOfTheReportAndNoPartial) {
   EXPECT_FALSE(fs::exists(fs::path(dir) / "experiment-unified-new-presses.gnuplot")) << "no chart without materials";
   for (const std::string& f : files.files) EXPECT_TRUE(fs::is_regular_file(f)) << f;
   EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
-  EXPECT_FALSE(fs::exists(dir + ".partial"));
+  EXPECT_TRUE(temporaries_of(dir).empty());
 }
 
 TEST(ReportWriter, ResultsJsonFollowsTheSchemaAndCountsTheTotals) {
@@ -632,7 +633,7 @@ TEST(ReportWriter, AnExistingFolderIsRefusedWithoutOverwriteAndKept) {
   EXPECT_EQ(read_text(dir + "/old.txt"), "the old report");
   EXPECT_FALSE(fs::exists(dir + "/report.md"));
   EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
-  EXPECT_FALSE(fs::exists(dir + ".partial"));
+  EXPECT_TRUE(temporaries_of(dir).empty());
 }
 
 // An earlier report: every file of it listed in haptex-files.json, and one file of its own marked.
@@ -652,7 +653,7 @@ TEST(ReportWriter, OverwriteReplacesTheOldReport) {
   EXPECT_EQ(read_text(dir + "/report.md").find("the old report"), std::string::npos);
   EXPECT_TRUE(fs::is_regular_file(dir + "/report.md"));
   EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
-  EXPECT_FALSE(fs::exists(dir + ".partial"));
+  EXPECT_TRUE(temporaries_of(dir).empty());
 }
 
 // Issue 11 point 2: overwrite replaces only what haptex wrote.
@@ -679,7 +680,7 @@ TEST(ReportWriter, AFailureLeavesNoHalfReportAndKeepsTheOldOne) {
   const std::string fresh = tmp.file("fresh");
   EXPECT_EQ(kind_of_failure(broken, fresh, false), Error::Kind::failed);
   EXPECT_FALSE(fs::exists(fresh));
-  EXPECT_FALSE(fs::exists(fresh + ".partial"));
+  EXPECT_TRUE(temporaries_of(fresh).empty());
 
   const std::string old = tmp.file("old");
   write_old_report(old);
@@ -688,29 +689,29 @@ TEST(ReportWriter, AFailureLeavesNoHalfReportAndKeepsTheOldOne) {
   EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
 }
 
-TEST(ReportWriter, TheLeftoversOfAKilledRunAreReplaced) {
+TEST(ReportWriter, AFolderOrLinkNamedLikeTheOldTemporaryIsLeftAlone) {
   test::TempDir tmp;
-  const std::string dir = tmp.file("report");
-  make_folder_with(dir + ".partial/sub", "leftover.csv", "");
-  make_folder_with(dir + ".partial", "speed.csv", "half a file");
+  const std::string dir = tmp.file("report"), thesis = tmp.file("thesis");
+  make_folder_with(thesis, "chapter1.tex", "years of work");
+  fs::create_directory_symlink(thesis, dir + ".partial");
   write_report(sample_evaluation(), dir, false);
-  EXPECT_FALSE(fs::exists(dir + "/sub"));
-  EXPECT_NE(read_text(dir + "/speed.csv"), "half a file");
-  EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
+  EXPECT_EQ(read_text(thesis + "/chapter1.tex"), "years of work");
+  EXPECT_TRUE(fs::is_symlink(dir + ".partial"));
+  EXPECT_TRUE(fs::exists(dir + "/report.md"));
+  EXPECT_TRUE(temporaries_of(dir).empty());
 }
 
 TEST(ReportWriter, AReportAnotherRunIsWritingIsRefusedAndLeftAlone) {
   test::TempDir tmp;
   const std::string dir = tmp.file("report");
-  make_folder_with(dir + ".partial", "speed.csv", "being written");
-  const int fd = ::open((dir + ".partial").c_str(), O_RDONLY | O_DIRECTORY);
-  ASSERT_GE(fd, 0);
-  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  const Temporary other = create_temporary_folder(dir);  // as the other run holds it
+  make_folder_with(other.path, "speed.csv", "being written");
   std::string message;
   EXPECT_EQ(kind_of_failure(sample_evaluation(), dir, false, &message), Error::Kind::bad_input);
   EXPECT_NE(message.find("another haptex run"), std::string::npos) << message;
-  EXPECT_EQ(read_text(dir + ".partial/speed.csv"), "being written");
-  ::close(fd);
+  EXPECT_EQ(read_text(other.path + "/speed.csv"), "being written");
+  EXPECT_EQ(temporaries_of(dir), std::vector<std::string>{other.path});
+  ::close(other.fd);
 }
 
 TEST(ReportWriter, NumbersAreFormattedForReading) {

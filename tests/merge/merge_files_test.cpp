@@ -1,5 +1,6 @@
 // merge_files on small hand-made shards: what is copied, how windows are renumbered, what the
 // merged file records of its inputs, and what is refused before anything is written.
+#include "core/temporary_name.hpp"
 #include "merge/merge_files.hpp"
 
 #include <gtest/gtest.h>
@@ -74,7 +75,7 @@ MergeOptions options(const std::vector<std::string>& shards, const std::string& 
 std::string refusal(const MergeOptions& o) {
   const std::string message = test::bad_input_message([&] { merge_files(o); });
   EXPECT_FALSE(fs::exists(o.output)) << "nothing is written";
-  EXPECT_FALSE(fs::exists(o.output + ".partial"));
+  EXPECT_TRUE(temporaries_of(o.output).empty());
   return message;
 }
 

@@ -14,6 +14,7 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "core/temporary_name.hpp"
 #include "predict/train.hpp"
 #include "render/wav_writer.hpp"
 #include "tests/predict/synthetic_problem.hpp"
@@ -258,7 +259,7 @@ TEST(RenderWavWriter, TwentyFourBitPcmAtTenKilohertzWithItsGain) {
   const test::TempDir dir;
   const Rendering r = render_vibration(model(), code(), stroke(12345), with(Reconstruction::online, 2));
   const WavSummary w = write_wav(dir.file("v.wav"), r.signal);
-  EXPECT_FALSE(fs::exists(dir.file("v.wav.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("v.wav")).empty());
   const test::WavFile back = test::read_wav_file(dir.file("v.wav"));
   EXPECT_EQ(back.info.samplerate, 10000);
   EXPECT_EQ(back.info.channels, 1);
@@ -285,7 +286,7 @@ TEST(RenderWavWriter, TwentyFourBitPcmAtTenKilohertzWithItsGain) {
   fixed.full_scale_m_s2 = 0.5 * w.peak_m_s2;
   EXPECT_THROW(write_wav(dir.file("clipped.wav"), r.signal, fixed), Error);
   EXPECT_FALSE(fs::exists(dir.file("clipped.wav")));
-  EXPECT_FALSE(fs::exists(dir.file("clipped.wav.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("clipped.wav")).empty());
 }
 
 TEST(RenderWavWriter, RefusesToOverwriteAndNonFiniteSamples) {
@@ -307,7 +308,7 @@ TEST(RenderWavWriter, RefusesToOverwriteAndNonFiniteSamples) {
   EXPECT_EQ(test::read_wav_file(dir.file("a.wav")).samples.size(), 100u);
   EXPECT_THROW(write_wav(dir.file("nan.wav"), std::vector<double>{0.0, std::nan("")}), Error);
   EXPECT_FALSE(fs::exists(dir.file("nan.wav")));
-  EXPECT_FALSE(fs::exists(dir.file("nan.wav.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("nan.wav")).empty());
   // Silence is written with a full scale of 1 m/s^2.
   EXPECT_EQ(write_wav(dir.file("zero.wav"), std::vector<double>(10, 0.0)).full_scale_m_s2, 1.0);
 }
@@ -327,7 +328,7 @@ TEST(RenderVibrationCsv, OneRowPerSampleInMetresPerSecondSquared) {
   const predict::Trajectory t = stroke(250);
   const std::vector<double> x(250, 0.125);
   write_vibration_csv(dir.file("v.csv"), t, x, false);
-  EXPECT_FALSE(fs::exists(dir.file("v.csv.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("v.csv")).empty());
   const predict::Trajectory back = predict::read_trajectory(dir.file("v.csv"));  // it is a trajectory too
   EXPECT_EQ(back.force, t.force);
   EXPECT_EQ(back.speed, t.speed);

@@ -12,6 +12,7 @@
 #include "capture/recording/press_recorder.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
+#include "core/temporary_name.hpp"
 #include "dataset/press_images.hpp"
 #include "dataset/vlen_bytes.hpp"
 #include "tests/capture/fake_setup.hpp"
@@ -35,9 +36,9 @@ class Extract : public ::testing::Test {
   std::string out(const std::string& name = "gelsight.h5") const { return dir_.file(name); }
   void expect_nothing_written() const {
     EXPECT_FALSE(fs::exists(out()));
-    EXPECT_FALSE(fs::exists(out() + ".partial"));
+    EXPECT_TRUE(temporaries_of(out()).empty());
     EXPECT_FALSE(fs::exists(dir_.file("gelsight_sheets")));
-    EXPECT_FALSE(fs::exists(dir_.file("gelsight_sheets.partial")));
+    EXPECT_TRUE(temporaries_of(dir_.file("gelsight_sheets")).empty());
   }
   haptex::test::TempDir dir_;
 };

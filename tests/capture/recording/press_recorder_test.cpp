@@ -12,6 +12,7 @@
 
 #include "capture/extraction/extract_presses.hpp"
 #include "capture/recording/press_recorder.hpp"
+#include "core/temporary_name.hpp"
 #include "dataset/vlen_bytes.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
@@ -172,7 +173,7 @@ TEST_F(Recorder, StopRequestClosesTheCurrentFileCleanly) {
   EXPECT_EQ(r.presses[1].ended_by, "interrupted");
   EXPECT_GT(r.presses[1].frames, 5u);
   EXPECT_NO_THROW(h5::File::open(file("press_1.h5")));
-  EXPECT_FALSE(fs::exists(file("press_1.h5.partial")));
+  EXPECT_TRUE(temporaries_of(file("press_1.h5")).empty());
   EXPECT_EQ(manifest()["ended_by"], "interrupted");
 }
 

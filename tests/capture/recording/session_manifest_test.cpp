@@ -6,6 +6,7 @@
 #include "capture/recording/session_manifest.hpp"
 #include "core/error.hpp"
 #include "core/json/schema.hpp"
+#include "core/temporary_name.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::capture {
@@ -47,7 +48,7 @@ TEST(SessionManifest, FollowsItsSchemaAndIsWrittenAtomically) {
   haptex::test::TempDir dir;
   write_session_manifest(dir.file("session.json"), doc);
   EXPECT_EQ(json::read_file(dir.file("session.json")), doc);
-  EXPECT_FALSE(std::filesystem::exists(dir.file("session.json.partial")));
+  EXPECT_TRUE(temporaries_of(dir.file("session.json")).empty());
 }
 
 TEST(SessionManifest, TheSchemaCatchesMistakes) {

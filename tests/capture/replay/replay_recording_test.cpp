@@ -12,6 +12,7 @@
 #include "capture/extraction/extract_presses.hpp"
 #include "capture/recording/press_recorder.hpp"
 #include "capture/replay/replay_device.hpp"
+#include "core/temporary_name.hpp"
 #include "dataset/vlen_bytes.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
@@ -121,7 +122,7 @@ TEST_F(ReplayRecording, ThePressOpenWhenTheFileEndsKeepsEveryFrame) {
   EXPECT_EQ(last.take_last_frame, 91) << "up to the file's last frame";
   EXPECT_EQ(last.contact_last, 91);
   EXPECT_EQ(h5::File::open(file("session", last.file)).root().attr_string("ended_by"), "source ended");
-  EXPECT_FALSE(fs::exists(file("session", last.file + ".partial")));
+  EXPECT_TRUE(temporaries_of(file("session", last.file)).empty());
 }
 
 TEST_F(ReplayRecording, DropsAndErrorBuffersAreCountedAsTheFakeCamerasAre) {

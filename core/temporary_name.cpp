@@ -1,0 +1,116 @@
+#include "core/temporary_name.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <random>
+
+#include "core/error.hpp"
+
+namespace haptex {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr std::string_view kSuffix = ".partial";
+constexpr std::size_t kRandomLetters = 8;
+
+std::string folder_of(const std::string& path) {
+  const fs::path parent = fs::path(path).parent_path();
+  return parent.empty() ? "." : parent.string();
+}
+
+std::string fresh_name(const std::string& final_path) {
+  static constexpr char kLetters[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+  thread_local std::mt19937_64 random{std::random_device{}()};
+  std::uniform_int_distribution<std::size_t> pick(0, sizeof kLetters - 2);
+  std::string name = final_path + ".";
+  for (std::size_t i = 0; i < kRandomLetters; ++i) name += kLetters[pick(random)];
+  return name + std::string(kSuffix);
+}
+
+bool is_temporary_of(const std::string& entry, const std::string& final_name) {
+  if (entry.size() != final_name.size() + 1 + kRandomLetters + kSuffix.size()) return false;
+  if (!entry.starts_with(final_name + ".") || !entry.ends_with(kSuffix)) return false;
+  for (std::size_t i = final_name.size() + 1; i < final_name.size() + 1 + kRandomLetters; ++i)
+    if (!std::isalnum(static_cast<unsigned char>(entry[i]))) return false;
+  return true;
+}
+
+// Whether another run holds the lock of one of final_path's temporaries. Opening one neither
+// follows a link nor blocks on a FIFO, and changes nothing.
+bool another_run_writes(const std::string& final_path, const std::string& own) {
+  for (const std::string& other : temporaries_of(final_path)) {
+    if (other == own) continue;
+    const int fd = ::open(other.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) continue;
+    struct stat st {};
+    const bool ours = ::fstat(fd, &st) == 0 && (S_ISREG(st.st_mode) || S_ISDIR(st.st_mode));
+    const bool locked = ours && ::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+    ::close(fd);
+    if (locked) return true;
+  }
+  return false;
+}
+
+// Makes a fresh temporary with `make` (which returns an open descriptor, or -1 with errno EEXIST when
+// the name exists), locks it, then looks for a concurrent run writing the same output.
+template <class Make>
+Temporary create_temporary(const std::string& final_path, const char* what, Make make) {
+  Temporary t;
+  for (int attempt = 0;; ++attempt) {
+    t.path = fresh_name(final_path);
+    if ((t.fd = make(t.path)) >= 0) break;
+    if (errno != EEXIST || attempt == 100)
+      throw input_error(final_path, "", std::string("cannot create the ") + what + " " + t.path + " to write it in: " +
+                                            std::strerror(errno),
+                        "Choose a folder you can write to");
+  }
+  if (::flock(t.fd, LOCK_EX | LOCK_NB) != 0 || another_run_writes(final_path, t.path)) {
+    ::close(t.fd);
+    std::error_code ignored;
+    fs::remove(t.path, ignored);  // empty: only this run made it
+    throw input_error(final_path, "", "another haptex run is writing this output right now (it holds a locked " +
+                                          std::string(what) + " beside it)",
+                      "Wait for it to finish, or choose another output name");
+  }
+  return t;
+}
+
+}  // namespace
+
+Temporary create_temporary_file(const std::string& final_path) {
+  return create_temporary(final_path, "temporary file", [](const std::string& p) {
+    return ::open(p.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+  });
+}
+
+Temporary create_temporary_folder(const std::string& final_path) {
+  return create_temporary(final_path, "temporary folder", [](const std::string& p) {
+    if (::mkdir(p.c_str(), 0777) != 0) return -1;
+    const int fd = ::open(p.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0) {
+      const int saved = errno;
+      ::rmdir(p.c_str());
+      errno = saved == EEXIST ? EIO : saved;  // not a name to draw again
+    }
+    return fd;
+  });
+}
+
+std::vector<std::string> temporaries_of(const std::string& final_path) {
+  std::vector<std::string> found;
+  const std::string folder = folder_of(final_path), name = fs::path(final_path).filename().string();
+  std::error_code ec;
+  for (auto it = fs::directory_iterator(folder, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+    if (is_temporary_of(it->path().filename().string(), name))
+      found.push_back((fs::path(final_path).parent_path() / it->path().filename()).string());
+  return found;
+}
+
+}  // namespace haptex

@@ -1,0 +1,90 @@
+// Issue 32, classes 5 and 17: the Python examples keep haptex's promises about outputs. An output that
+// is one of the inputs is refused before any work, an existing file needs --force, --force replaces only
+// an earlier predictions file, and a missing PyTorch is a sentence, not a traceback.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/temporary_name.hpp"
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kExamples = std::string(HAPTEX_SCHEMA_DIR) + "/../python/examples/";
+
+struct Knn {
+  TempDir dir;
+  std::string windows = dir.file("windows.h5");
+  Knn() {
+    const SmallPipeline& p = small_pipeline();
+    const CommandResult r = run_haptex({"windows", p.dataset, "--split", p.split, "-o", windows});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+  }
+  CommandResult run(const std::string& output, bool force = false) const {
+    const SmallPipeline& p = small_pipeline();
+    std::vector<std::string> args{kExamples + "knn_baseline.py", p.dataset, p.split, windows, "-o", output};
+    if (force) args.push_back("--force");
+    return run_python(args);
+  }
+};
+
+TEST(PythonExamples, KnnRefusesToWriteOverItsInputs) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const Knn knn;
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string dataset = d.file("d.h5");
+  fs::copy_file(p.dataset, dataset);
+  for (const std::string& output : {dataset, knn.windows, p.split}) {
+    const std::string before = file_bytes(output);
+    for (const bool force : {false, true}) {
+      SCOPED_TRACE(output + (force ? " --force" : ""));
+      std::vector<std::string> args{kExamples + "knn_baseline.py", dataset, p.split, knn.windows, "-o", output};
+      if (force) args.push_back("--force");
+      const CommandResult r = run_python(args);
+      EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+      EXPECT_NE(r.err.find("is also an input"), std::string::npos) << r.err;
+      EXPECT_EQ(file_bytes(output), before);
+      EXPECT_TRUE(temporaries_of(output).empty());
+    }
+  }
+}
+
+TEST(PythonExamples, KnnForceReplacesOnlyAnEarlierPredictionsFile) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const Knn knn;
+  const TempDir d;
+  const std::string mine = d.file("mine.h5"), preds = d.file("preds.h5");
+  std::ofstream(mine) << "my notes";
+  for (const bool force : {false, true}) {
+    const CommandResult r = knn.run(mine, force);
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find(force ? "replaces only an earlier predictions file" : "already exists"), std::string::npos) << r.err;
+    EXPECT_EQ(file_bytes(mine), "my notes");
+  }
+  ASSERT_EQ(knn.run(preds).exit_code, 0);
+  EXPECT_EQ(knn.run(preds).exit_code, 2) << "an existing file needs --force";
+  EXPECT_EQ(knn.run(preds, true).exit_code, 0) << "which replaces the example's own file";
+  fs::create_symlink(preds, d.file("link.h5"));
+  EXPECT_EQ(knn.run(d.file("link.h5"), true).exit_code, 2) << "a link is not replaced";
+  std::ofstream(preds + ".partial") << "mine too";
+  EXPECT_EQ(knn.run(preds, true).exit_code, 0);
+  EXPECT_EQ(file_bytes(preds + ".partial"), "mine too");
+  EXPECT_TRUE(temporaries_of(preds).empty());
+}
+
+TEST(PythonExamples, TorchMissingIsASentence) {
+  if (python_has("torch")) GTEST_SKIP() << "torch is installed here";
+  const CommandResult r = run_python({kExamples + "torch_mlp.py", "d.h5", "s.json", "w.h5", "-o", "p.h5"});
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("python3-torch"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace haptex::test

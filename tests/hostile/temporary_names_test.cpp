@@ -1,0 +1,129 @@
+// Issue 32, class 1: a name beside the output that looks like haptex's old temporary name (OUT.partial)
+// is never trusted: not followed when it is a link, not emptied when it is a folder, not deleted when it
+// is a user's file or one of the inputs (core/temporary_name.hpp).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/temporary_name.hpp"
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/quick_models.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+struct Command {
+  std::string name;
+  std::vector<std::string> args;  // without -o
+  std::string input;              // the file a link at OUT.partial points to
+};
+
+std::vector<Command> commands(const TempDir& inputs) {
+  const SmallPipeline& p = small_pipeline();
+  const std::string trajectory = inputs.file("trajectory.csv");
+  {
+    std::ofstream out(trajectory);
+    out << "force,speed\n";
+    for (int i = 0; i < 4000; ++i) out << "1,100\n";
+  }
+  return {
+      {"align", {"align", "--recordings", p.recordings, "--gelsight", p.gelsight}, p.recordings},
+      {"merge", {"merge", p.gelsight}, p.gelsight},
+      {"windows", {"windows", p.dataset, "--split", p.split}, p.dataset},
+      {"split", {"split", p.dataset, "--no-plots"}, p.dataset},
+      {"render", {"render", quick_model(), "--material", small_material(), "--trajectory", trajectory}, trajectory},
+  };
+}
+
+TEST(TemporaryNames, ALinkAtOutPartialIsNotFollowed) {
+  const TempDir inputs;
+  for (const Command& c : commands(inputs)) {
+    for (const bool to_input : {true, false}) {
+      SCOPED_TRACE(c.name + (to_input ? ": link to the input" : ": link to another file"));
+      const TempDir d;
+      const std::string out = d.file("out"), other = d.file("thesis.tex");
+      std::ofstream(other) << "years of work";
+      const std::string target = to_input ? c.input : other, before = file_bytes(target);
+      fs::create_symlink(target, out + ".partial");
+      std::vector<std::string> args = c.args;
+      args.insert(args.end(), {"-o", out});
+      const CommandResult r = run_haptex(args);
+      EXPECT_EQ(r.exit_code, 0) << r.err;
+      EXPECT_EQ(file_bytes(target), before);
+      EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(out))) << "the output is a file of its own, not a link";
+      EXPECT_TRUE(fs::is_symlink(out + ".partial"));
+      EXPECT_TRUE(temporaries_of(out).empty());
+    }
+  }
+}
+
+TEST(TemporaryNames, AUsersFileNamedOutPartialIsKept) {
+  const TempDir inputs;
+  for (const Command& c : commands(inputs)) {
+    SCOPED_TRACE(c.name);
+    const TempDir d;
+    const std::string out = d.file("out");
+    std::ofstream(out + ".partial") << "mine";
+    std::vector<std::string> args = c.args;
+    args.insert(args.end(), {"-o", out});
+    EXPECT_EQ(run_haptex(args).exit_code, 0);
+    EXPECT_EQ(file_bytes(out + ".partial"), "mine");
+  }
+}
+
+// HDF5's own file locks are off on many cluster file systems; then nothing but the temporary name's
+// uniqueness keeps merge from writing over an input called OUT.partial.
+TEST(TemporaryNames, AnInputNamedOutPartialIsNotDeleted) {
+  const TempDir d;
+  const std::string out = d.file("merged.h5"), input = out + ".partial";
+  fs::copy_file(small_pipeline().gelsight, input);
+  const std::string before = file_bytes(input);
+  const CommandResult r =
+      run_program({"env", "HDF5_USE_FILE_LOCKING=FALSE", haptex_binary(), "merge", input, "-o", out});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(file_bytes(input), before);
+  EXPECT_TRUE(fs::is_regular_file(out));
+}
+
+TEST(TemporaryNames, AFolderOrLinkAtReportPartialIsLeftAlone) {
+  const SmallPipeline& p = small_pipeline();
+  for (const bool link : {true, false}) {
+    SCOPED_TRACE(link ? "rep.partial -> thesis/" : "a folder rep.partial of the user's");
+    const TempDir d;
+    const std::string thesis = d.file("thesis"), partial = d.file("rep.partial");
+    fs::create_directory(thesis);
+    std::ofstream(thesis + "/chapter1.tex") << "years of work";
+    if (link) {
+      fs::create_directory_symlink(thesis, partial);
+    } else {
+      fs::create_directory(partial);
+      std::ofstream(partial + "/notes.md") << "mine";
+    }
+    const CommandResult r = run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", quick_model(), "--repeats",
+                                        "2", "--reconstruct", "none", "-o", d.file("rep")});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(file_bytes(thesis + "/chapter1.tex"), "years of work");
+    if (!link) EXPECT_EQ(file_bytes(partial + "/notes.md"), "mine");
+    EXPECT_TRUE(fs::exists(d.file("rep/report.md")));
+    EXPECT_TRUE(temporaries_of(d.file("rep")).empty());
+  }
+}
+
+// A locked temporary of the same output is another run writing it: refused, and its file kept.
+TEST(TemporaryNames, AnotherRunWritingTheSameOutputIsRefused) {
+  const TempDir d;
+  const std::string out = d.file("merged.h5");
+  const Temporary other = create_temporary_file(out);
+  expect_refusal(run_haptex({"merge", small_pipeline().gelsight, "-o", out}), {out, "another haptex run"});
+  EXPECT_EQ(temporaries_of(out), std::vector<std::string>{other.path});
+  ::close(other.fd);
+  EXPECT_EQ(run_haptex({"merge", small_pipeline().gelsight, "-o", out}).exit_code, 0) << "once that run has ended";
+}
+
+}  // namespace
+}  // namespace haptex::test
