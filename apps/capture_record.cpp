@@ -16,6 +16,7 @@
 #include "capture/recording/press_recorder.hpp"
 #include "capture/replay/replay_device.hpp"
 #include "core/error.hpp"
+#include "core/text/shell_quote.hpp"
 #include "core/text/utf8.hpp"
 
 namespace haptex::apps {
@@ -108,6 +109,7 @@ class CaptureRecord : public CaptureSubcommand {
           capture::is_fake_device(device_) ? capture::parse_fake_device(device_) : capture::parse_replay_device(device_);
       capture::FakeCamera camera(fake.config);
       request_.node = fake.node;
+      if (!fake.source_file.empty()) request_.inputs = {fake.source_file};
       if (fake.inter_frame) {
         const auto& modes = fake.config.modes;
         options_.calibration_frames = capture::calibration_frames(modes.empty() || modes.front().fps.empty() ? 0 : modes.front().fps.front());
@@ -119,8 +121,9 @@ class CaptureRecord : public CaptureSubcommand {
   }
 
   void build_request() {
-    request_.command = "haptex capture record " + (device_.empty() ? "--serial " + serial_ : "--device " + device_) +
-                       " --material '" + options_.material + "' -o " + request_.output_dir;
+    request_.command = "haptex capture record " +
+                       (device_.empty() ? "--serial " + text::shell_quoted(serial_) : "--device " + text::shell_quoted(device_)) +
+                       " --material " + text::shell_quoted(options_.material) + " -o " + text::shell_quoted(request_.output_dir);
     if (!serial_.empty()) {
       capture::SensorCatalog catalog = capture::SensorCatalog::builtin();
       if (!sensors_.empty()) catalog.prepend(capture::SensorCatalog::from_file(sensors_));

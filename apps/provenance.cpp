@@ -3,6 +3,8 @@
 #include <array>
 #include <string_view>
 
+#include "core/text/shell_quote.hpp"
+
 namespace haptex::apps {
 namespace {
 
@@ -20,7 +22,7 @@ void append_options(const CLI::App& app, std::string& line) {
     if (option->count() == 0 || left_out(*option)) continue;
     for (const std::string& value : option->results()) {
       if (option->nonpositional()) line += " " + option->get_name();
-      if (!option->nonpositional() || option->get_expected_max() != 0) line += " " + value;
+      if (!option->nonpositional() || option->get_expected_max() != 0) line += " " + text::shell_quoted(value);
     }
   }
   for (const CLI::App* sub : app.get_subcommands()) {

@@ -7,7 +7,8 @@
 
 namespace haptex::apps {
 
-// "haptex <subcommand> [<sub-subcommand>] <every option given, positionals by value>", without
+// "haptex <subcommand> [<sub-subcommand>] <every option given, positionals by value>" (values quoted
+// as a shell reads them: core/text/shell_quote.hpp), without
 // where the output goes (-o, --output, --sheets, --log, --csv), --force and the shared output flags:
 // enough to make the same output again, and the same run written elsewhere records the same line.
 std::string command_line(const CLI::App& subcommand);

@@ -21,6 +21,7 @@ struct FakeDevice {
   // no-contact frames repeat each other's artefacts, so the recorder calibrates its thresholds on the
   // frames after the reference (RecorderOptions::calibration_frames).
   bool inter_frame = false;
+  std::string source_file;  // the replayed file (empty for the fake camera): an input of the take
 };
 
 bool is_fake_device(const std::string& device);

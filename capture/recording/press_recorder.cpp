@@ -14,6 +14,7 @@
 #include "capture/device/v4l2_device.hpp"
 #include "capture/recording/delivered_rate.hpp"
 #include "capture/recording/frame_queue.hpp"
+#include "capture/recording/session_folder.hpp"
 #include "capture/scoring/contact_score.hpp"
 #include "core/error.hpp"
 
@@ -27,11 +28,6 @@ double cpu_seconds() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
-
-bool is_session_file(const fs::path& p) {
-  const std::string name = p.filename().string();
-  return name == "session.json" || (name.rfind("press_", 0) == 0 && p.extension() == ".h5");
 }
 
 // The processing thread: pops frames until the queue closes. An exception stops it and is kept for
@@ -123,39 +119,6 @@ void check_recorder_options(const RecorderOptions& o) {
   if (o.seconds < 0) refuse("--seconds", "must not be negative", "Give a time limit in seconds, or 0 for none");
 }
 
-std::vector<fs::path> session_files(const std::string& dir) {
-  std::vector<fs::path> found;
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return found;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (is_session_file(entry.path())) found.push_back(entry.path());
-  return found;
-}
-
-void check_session_dir(const std::string& dir, bool overwrite) {
-  std::error_code ec;
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-    throw input_error(dir, "", "exists and is not a folder", "Give a folder for the session with -o");
-  // The nearest existing folder must be writable: the session folder is made inside it.
-  fs::path existing = fs::absolute(dir);
-  while (!fs::exists(existing, ec) && existing.has_parent_path() && existing != existing.parent_path())
-    existing = existing.parent_path();
-  if (::access(existing.c_str(), W_OK) != 0)
-    throw input_error(dir, "", existing.string() + " is not writable", "Choose a folder you can write to with -o");
-  const auto existing_files = session_files(dir);
-  if (!existing_files.empty() && !overwrite)
-    throw input_error(dir, "", "already holds a capture session (" + existing_files.front().filename().string() + ")",
-                      "Record into a new folder with -o, or pass --force to replace the old session");
-}
-
-void prepare_session_dir(const std::string& dir, bool overwrite) {
-  check_session_dir(dir, overwrite);
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw input_error(dir, "", "cannot create the session folder: " + ec.message(), "Choose a folder you can write to with -o");
-  for (const auto& p : session_files(dir)) fs::remove(p);
-}
-
 RecordingResult record_take(V4l2Stream& stream, const SessionDescription& session, const std::string& output_dir,
                             const RecorderOptions& options, const std::atomic<bool>* stop, const Progress& progress) {
   const double cpu_start = cpu_seconds();
@@ -214,7 +177,7 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
 RecordingResult record_session(KernelInterface& kernel, const SessionRequest& request, const RecorderOptions& options,
                                const std::atomic<bool>* stop, const Progress& progress, const Warn& warn) {
   check_recorder_options(options);
-  check_session_dir(request.output_dir, request.overwrite);  // refused before the device is touched
+  check_session_dir(request.output_dir, request.overwrite, request.inputs);  // refused before the device is touched
   V4l2Device device(kernel, request.node);
   const StreamFormat format = negotiate_format(device, request.format);
   if (format.fourcc != V4L2_PIX_FMT_MJPEG && format.fourcc != V4L2_PIX_FMT_YUYV)
@@ -236,7 +199,7 @@ RecordingResult record_session(KernelInterface& kernel, const SessionRequest& re
   session.post_frames = options.post_frames;
   V4l2Stream stream(device, format, request.buffers);
   session.buffers = stream.buffer_count();
-  prepare_session_dir(request.output_dir, request.overwrite);  // only now, so a refused device leaves nothing
+  prepare_session_dir(request.output_dir, request.overwrite, request.inputs);  // only now, so a refused device leaves nothing
   if (warn && !session.link_warning.empty()) warn(session.link_warning);  // before the user starts pressing
   return record_take(stream, session, request.output_dir, options, stop, progress);
 }

@@ -31,7 +31,8 @@ struct SessionRequest {
   std::map<std::uint32_t, std::int64_t> controls;  // by control ID
   unsigned buffers = 6;
   std::string output_dir;
-  bool overwrite = false;
+  bool overwrite = false;               // replace the folder's old session (capture/recording/session_folder.hpp)
+  std::vector<std::string> inputs;      // files the take reads (a replayed file): never replaced
   std::string command;  // provenance
 };
 
@@ -60,10 +61,6 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
                             const RecorderOptions& options, const std::atomic<bool>* stop = nullptr,
                             const Progress& progress = {});
 
-// Refuses a folder that cannot be made or already holds a session (unless overwrite), touching nothing.
-void check_session_dir(const std::string& dir, bool overwrite);
-// Creates the folder and, with overwrite, removes the old session's files.
-void prepare_session_dir(const std::string& dir, bool overwrite);
 void check_recorder_options(const RecorderOptions& options);
 
 }  // namespace haptex::capture

@@ -74,6 +74,7 @@ FakeDevice parse_replay_device(const std::string& device) {
   check_file(file, keys);
 
   FakeDevice replay;
+  replay.source_file = file;
   FakeCameraConfig& c = replay.config;
   c.realtime = true;
   FakeMode mode = is_press_file_name(file) ? press_file_replay_mode(file) : video_replay_mode(file);

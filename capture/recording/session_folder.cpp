@@ -1,0 +1,97 @@
+#include "capture/recording/session_folder.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <regex>
+
+#include "core/error.hpp"
+#include "core/h5/atomic_file.hpp"
+#include "core/json/schema.hpp"
+#include "core/output_is_input.hpp"
+
+namespace haptex::capture {
+namespace fs = std::filesystem;
+namespace {
+
+const std::regex kPressFile("press_[0-9]+\\.h5");
+
+bool is_session_file(const fs::path& p) {
+  const std::string name = p.filename().string();
+  return name == "session.json" || (name.starts_with("press_") && p.extension() == ".h5");
+}
+
+std::vector<fs::path> session_files(const std::string& dir) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return found;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (is_session_file(entry.path())) found.push_back(entry.path());
+  return found;
+}
+
+[[noreturn]] void refuse_replacing(const std::string& dir, const fs::path& file, const std::string& why) {
+  throw input_error(dir, "", "--force replaces only the old session's own files, and " + file.filename().string() + " " + why,
+                    "Move it out of the folder, or record into a new folder with -o");
+}
+
+// The old session's files, which --force may remove: session.json and the press files it lists.
+std::vector<fs::path> old_session_files(const std::string& dir) {
+  const fs::path manifest = fs::path(dir) / "session.json";
+  std::error_code ec;
+  if (!fs::is_regular_file(fs::symlink_status(manifest, ec)))
+    refuse_replacing(dir, manifest, "is missing or not a plain file, so nothing says which press files haptex wrote");
+  const nlohmann::json doc = json::read_file(manifest.string());
+  if (!doc.is_object() || doc.value("format", "") != "capture-session/1" || !doc.contains("presses") || !doc["presses"].is_array())
+    refuse_replacing(dir, manifest, "is not a capture session's manifest (format capture-session/1)");
+  std::vector<fs::path> owned{manifest};
+  for (const nlohmann::json& press : doc["presses"])
+    if (press.is_object() && press.contains("file") && press["file"].is_string() &&
+        std::regex_match(press["file"].get<std::string>(), kPressFile))
+      owned.push_back(fs::path(dir) / press["file"].get<std::string>());
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (std::find(owned.begin(), owned.end(), entry.path()) == owned.end())
+      refuse_replacing(dir, entry.path(), "is not one of them (session.json does not list it)");
+    if (!entry.is_regular_file(ec) || entry.is_symlink(ec)) refuse_replacing(dir, entry.path(), "is not a plain file");
+  }
+  std::erase_if(owned, [](const fs::path& p) {
+    std::error_code ignored;
+    return !fs::exists(fs::symlink_status(p, ignored));
+  });
+  for (const fs::path& p : owned)
+    if (p.extension() == ".h5") h5::require_replaceable(p.string());
+  return owned;
+}
+
+}  // namespace
+
+void check_session_dir(const std::string& dir, bool overwrite, const std::vector<std::string>& inputs) {
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw input_error(dir, "", "exists and is not a folder", "Give a folder for the session with -o");
+  // The nearest existing folder must be writable: the session folder is made inside it.
+  fs::path existing = fs::absolute(dir);
+  while (!fs::exists(existing, ec) && existing.has_parent_path() && existing != existing.parent_path())
+    existing = existing.parent_path();
+  if (::access(existing.c_str(), W_OK) != 0)
+    throw input_error(dir, "", existing.string() + " is not writable", "Choose a folder you can write to with -o");
+  const auto existing_files = session_files(dir);
+  if (existing_files.empty()) return;
+  if (!overwrite)
+    throw input_error(dir, "", "already holds a capture session (" + existing_files.front().filename().string() + ")",
+                      "Record into a new folder with -o, or pass --force to replace the old session");
+  for (const fs::path& old : old_session_files(dir)) refuse_output_among_inputs(old.string(), inputs);
+}
+
+void prepare_session_dir(const std::string& dir, bool overwrite, const std::vector<std::string>& inputs) {
+  check_session_dir(dir, overwrite, inputs);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw input_error(dir, "", "cannot create the session folder: " + ec.message(), "Choose a folder you can write to with -o");
+  if (!session_files(dir).empty())
+    for (const fs::path& p : old_session_files(dir)) fs::remove(p);
+}
+
+}  // namespace haptex::capture

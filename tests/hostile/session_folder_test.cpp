@@ -1,0 +1,93 @@
+// Issue 32, classes 2 and 17: `capture record --force` replaces only what the old session wrote
+// (capture/recording/session_folder.hpp), and session.json's `command` pastes as the same command.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+CommandResult record(const std::string& device, const std::string& out, bool force, const std::string& material = "Cork") {
+  std::vector<std::string> args{"capture", "record", "--device", device, "--material", material, "--presses", "1", "-o", out};
+  if (force) args.push_back("--force");
+  return run_haptex(args);
+}
+
+const std::string kFake = "fake:size=160x120,lockstep";
+
+TEST(SessionFolder, ForceKeepsTheReplayedPressFile) {
+  const TempDir d;
+  const std::string o = d.file("o");
+  ASSERT_EQ(record(kFake, o, false).exit_code, 0);
+  const std::string press = o + "/press_0.h5", before = file_bytes(press);
+  expect_refusal(record("replay:" + press, o, true), {press, "also an input"});
+  EXPECT_EQ(file_bytes(press), before);
+  EXPECT_TRUE(fs::exists(o + "/session.json"));
+}
+
+TEST(SessionFolder, ForceRefusesAFolderHoldingFilesTheSessionDidNotWrite) {
+  for (const std::string name : {"press_mycalibration.h5", "notes.txt", "press_7.h5"}) {
+    SCOPED_TRACE(name);
+    const TempDir d;
+    const std::string o = d.file("o");
+    ASSERT_EQ(record(kFake, o, false).exit_code, 0);
+    std::ofstream(o + "/" + name) << "mine";
+    const std::string press = file_bytes(o + "/press_0.h5");
+    expect_refusal(record(kFake, o, true), {o, name, "does not list it"});
+    EXPECT_EQ(file_bytes(o + "/" + name), "mine");
+    EXPECT_EQ(file_bytes(o + "/press_0.h5"), press) << "nothing is deleted before the refusal";
+  }
+}
+
+TEST(SessionFolder, ForceRefusesASessionJsonHaptexDidNotWrite) {
+  const TempDir d;
+  const std::string o = d.file("o");
+  fs::create_directory(o);
+  std::ofstream(o + "/session.json") << R"({"presses": [{"file": "press_0.h5"}]})";
+  std::ofstream(o + "/press_0.h5") << "my own";
+  expect_refusal(record(kFake, o, true), {"session.json", "capture-session/1"});
+  EXPECT_EQ(file_bytes(o + "/press_0.h5"), "my own");
+}
+
+TEST(SessionFolder, ForceRefusesAListedPressFileHaptexDidNotWrite) {
+  const TempDir d;
+  const std::string o = d.file("o");
+  ASSERT_EQ(record(kFake, o, false).exit_code, 0);
+  fs::remove(o + "/press_0.h5");
+  std::ofstream(o + "/press_0.h5") << "my own";
+  expect_refusal(record(kFake, o, true), {"press_0.h5", "haptex wrote"});
+  EXPECT_EQ(file_bytes(o + "/press_0.h5"), "my own");
+}
+
+TEST(SessionFolder, ForceReplacesTheOldSession) {
+  const TempDir d;
+  const std::string o = d.file("o");
+  ASSERT_EQ(record(kFake, o, false).exit_code, 0);
+  const CommandResult r = record(kFake, o, true, "Felt");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(file_bytes(o + "/session.json"))["material"], "Felt");
+}
+
+// The recorded command, split as a POSIX shell splits it (shlex), gives back every word: a name with
+// quotes, back-quotes or $ stays a name when the line is pasted.
+TEST(SessionFolder, TheRecordedCommandPastesAsTheSameCommand) {
+  if (!python_has("json")) GTEST_SKIP() << "python3 is not installed";
+  const TempDir d;
+  const std::string material = "Bob's `touch pwned` $(id) \"felt\"", o = d.file("it's $HOME");
+  ASSERT_EQ(record(kFake, o, false, material).exit_code, 0);
+  const std::string command = nlohmann::json::parse(file_bytes(o + "/session.json"))["command"];
+  const CommandResult split = run_python({"-c", "import json, shlex, sys; print(json.dumps(shlex.split(sys.argv[1])))", command});
+  ASSERT_EQ(split.exit_code, 0) << split.err;
+  const nlohmann::json words = nlohmann::json::parse(split.out);
+  const std::vector<std::string> expected{"haptex", "capture", "record", "--device", kFake, "--material", material, "-o", o};
+  EXPECT_EQ(words.get<std::vector<std::string>>(), expected) << command;
+}
+
+}  // namespace
+}  // namespace haptex::test
