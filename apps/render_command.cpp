@@ -8,7 +8,6 @@
 
 #include "apps/command.hpp"
 #include "apps/number_checks.hpp"
-#include "core/h5/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_is_input.hpp"
 #include "core/text/format.hpp"
@@ -61,11 +60,11 @@ class RenderCommand : public Command {
     const std::vector<std::string> inputs{model_path_, trajectory_path_, texture_.image, texture_.reference};
     refuse_output_among_inputs(output_, inputs);
     refuse_output_among_inputs(csv_, inputs);
-    h5::check_text_output_path(output_, force_);
+    render::check_wav_output(output_, force_);
     if (!csv_.empty()) {
       if (std::filesystem::weakly_canonical(csv_) == std::filesystem::weakly_canonical(output_))
         throw input_error(csv_, "", "--csv and -o name the same file", "Give the CSV another name");
-      h5::check_text_output_path(csv_, force_);
+      render::check_vibration_csv_output(csv_, force_);
     }
     const predict::Trajectory trajectory = predict::read_trajectory(trajectory_path_);
     if (trajectory.force.size() < render::kMinTrajectorySamples)

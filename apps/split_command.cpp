@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "apps/command.hpp"
-#include "core/h5/atomic_file.hpp"
+#include "core/durable_file.hpp"
 #include "core/output_is_input.hpp"
 #include "core/json/schema.hpp"
 #include "split/split_manifest.hpp"
@@ -37,7 +37,8 @@ class SplitCommand : public Command {
   int run(const GlobalOptions& global) override {
     refuse_output_among_inputs(output_, {dataset_});
     refuse_output_among_inputs(plots_folder(), {dataset_});
-    h5::check_text_output_path(output_, force_);
+    check_replaceable_output(output_, force_, "a split manifest (format split/1)",
+                             [](const std::string& p) { return json::has_format(p, "split/1"); });
     const auto windows = split::read_dataset_windows(dataset_);
     const auto splits = split::search_split(windows, options_, dataset_);
     const nlohmann::json manifest = split::manifest_json(dataset_, options_, splits, global.command_line);

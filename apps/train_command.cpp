@@ -76,7 +76,8 @@ class TrainCommand : public Command {
     refuse_output_among_inputs(output_, {dataset_, split_});
     refuse_output_among_inputs(log_, {dataset_, split_});
     check_output_path(output_, force_);
-    h5::check_text_output_path(log_, force_);
+    check_replaceable_output(log_, force_, "a training log (format training-log/1)",
+                             [](const std::string& p) { return json::has_format(p, "training-log/1"); });
     options_.variant = per_material_ ? predict::Variant::per_material : predict::Variant::unified;
     const auto start = std::chrono::steady_clock::now();
     const split::DatasetSplit split = split::read_dataset_split(dataset_, split_);

@@ -47,6 +47,15 @@ void check_output_path(const std::string& path, bool overwrite) {
     throw input_error(path, "", "the output file already exists", "Remove it, choose another -o, or pass --force");
 }
 
+void check_replaceable_output(const std::string& path, bool overwrite, const std::string& what,
+                              bool (*haptex_wrote)(const std::string& path)) {
+  check_output_path(path, overwrite);
+  std::error_code ec;
+  if (!overwrite || !fs::exists(path, ec) || haptex_wrote(path)) return;
+  throw input_error(path, "", "--force replaces only " + what + ", and this file is not one",
+                    "Choose another output name, or move the file away yourself");
+}
+
 void durable_rename(const std::string& from, const std::string& to) {
   fsync_path(from, O_RDONLY);
   if (std::rename(from.c_str(), to.c_str()) != 0)

@@ -10,6 +10,12 @@ namespace haptex {
 // Checks that path can be created: its directory exists and is writable, and it does not exist
 // (or, with overwrite, is a regular file). Throws haptex::Error (bad_input) saying which and what to do.
 void check_output_path(const std::string& path, bool overwrite);
+// For --force on an output that is not HDF5: check_output_path's checks, then a refusal (bad_input)
+// to replace an existing file unless haptex_wrote(path) tells that haptex wrote it (by the mark each
+// format carries: docs/architecture.md, "Outputs are atomic"); `what` names such a file ("a WAV haptex
+// rendered") in the message.
+void check_replaceable_output(const std::string& path, bool overwrite, const std::string& what,
+                              bool (*haptex_wrote)(const std::string& path));
 // fsync one file or (with O_DIRECTORY in flags) directory; throws haptex::Error (failed) naming it.
 void fsync_path(const std::string& path, int flags);
 // fsync `from`, rename it to `to`, fsync the directory.

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <memory>
 
@@ -113,11 +114,11 @@ double rendered_convergence_db(const Rendering& rendering) {
 
 void write_vibration_csv(const std::string& path, const predict::Trajectory& trajectory, std::span<const double> signal,
                          bool overwrite) {
-  check_output_path(path, overwrite);
+  check_vibration_csv_output(path, overwrite);
   if (signal.size() != trajectory.force.size() || signal.size() != trajectory.speed.size())
     throw failure(path + ": the signal has " + std::to_string(signal.size()) + " samples, the trajectory " +
                   std::to_string(trajectory.force.size()) + "; they must match");
-  std::string text = "time_s,force_n,speed_mm_s,accel_m_s2\n";
+  std::string text = std::string(kVibrationCsvHeader) + "\n";
   char row[128];
   for (std::size_t i = 0; i < signal.size(); ++i) {
     const int n = std::snprintf(row, sizeof row, "%.4f,%.9g,%.9g,%.9g\n", double(i) * 1e-4, double(trajectory.force[i]),
@@ -125,6 +126,17 @@ void write_vibration_csv(const std::string& path, const predict::Trajectory& tra
     text.append(row, std::size_t(n));
   }
   write_file_durably(path, text);
+}
+
+bool is_vibration_csv(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string first(kVibrationCsvHeader.size() + 1, '\0');
+  return in.read(first.data(), std::streamsize(first.size())) && first == std::string(kVibrationCsvHeader) + "\n";
+}
+
+void check_vibration_csv_output(const std::string& path, bool overwrite) {
+  check_replaceable_output(path, overwrite, "a CSV haptex render wrote (its first line " + std::string(kVibrationCsvHeader) + ")",
+                           is_vibration_csv);
 }
 
 double rendered_distance(const Rendering& rendering) {

@@ -85,12 +85,17 @@ double rendered_convergence_db(const Rendering& rendering);
 // it, online 39 %, the random initial phase 74 %).
 double rendered_distance(const Rendering& rendering);
 
-// The rendering as CSV, one row per sample: time_s,force_n,speed_mm_s,accel_m_s2 (the force and
-// speed columns make it a trajectory that haptex predict and render read back). Written to
-// PATH.partial, synced and renamed; throws haptex::Error (bad_input) naming the file when it exists
-// and overwrite is false, (failed) when the write fails.
+// The rendering as CSV, one row per sample, under the header kVibrationCsvHeader (the force and
+// speed columns make it a trajectory that haptex predict and render read back). Written under a
+// temporary name, synced and renamed; throws haptex::Error (bad_input) naming the file when it exists
+// and overwrite is false or it is not such a CSV, (failed) when the write fails.
+inline constexpr std::string_view kVibrationCsvHeader = "time_s,force_n,speed_mm_s,accel_m_s2";
 void write_vibration_csv(const std::string& path, const predict::Trajectory& trajectory, std::span<const double> signal,
                          bool overwrite);
+// Whether path is a CSV write_vibration_csv wrote (its first line is the header): what --force replaces.
+bool is_vibration_csv(const std::string& path);
+// check_replaceable_output for the CSV.
+void check_vibration_csv_output(const std::string& path, bool overwrite);
 
 // The live loop, one tick per 100 samples (10 ms): predict the spectrum for the action just
 // measured, convert it, push it through the online reconstruction (or the shaped noise, with

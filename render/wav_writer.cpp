@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 #include "core/durable_file.hpp"
@@ -58,8 +59,20 @@ double full_scale_from_comment(const std::string& comment) {
   return end == start ? std::nan("") : value;
 }
 
+bool is_haptex_wav(const std::string& path) {
+  SF_INFO info{};
+  std::unique_ptr<SNDFILE, SndfileCloser> file(sf_open(path.c_str(), SFM_READ, &info));
+  if (!file) return false;
+  const char* software = sf_get_string(file.get(), SF_STR_SOFTWARE);
+  return software && std::string_view(software).starts_with("haptex ");
+}
+
+void check_wav_output(const std::string& path, bool overwrite) {
+  check_replaceable_output(path, overwrite, "a WAV haptex rendered (its software string starts \"haptex\")", is_haptex_wav);
+}
+
 WavSummary write_wav(const std::string& path, std::span<const double> signal_m_s2, const WavOptions& options) {
-  check_output_path(path, options.overwrite);
+  check_wav_output(path, options.overwrite);
   WavSummary summary;
   summary.samples = signal_m_s2.size();
   summary.peak_m_s2 = peak_of(path, signal_m_s2);

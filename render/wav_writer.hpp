@@ -44,6 +44,11 @@ struct WavSummary {
 // under PATH or PATH.partial when it throws.
 WavSummary write_wav(const std::string& path, std::span<const double> signal_m_s2, const WavOptions& options = {});
 
+// Whether path is a WAV write_wav wrote (its software string starts "haptex "): what --force replaces.
+bool is_haptex_wav(const std::string& path);
+// check_replaceable_output for a WAV.
+void check_wav_output(const std::string& path, bool overwrite);
+
 // The full scale for a peak: rounded up to three significant digits; 1 m/s^2 for silence.
 double rounded_full_scale(double peak_m_s2);
 

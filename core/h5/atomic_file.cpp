@@ -1,8 +1,6 @@
 #include "core/h5/atomic_file.hpp"
 
 #include <filesystem>
-#include <fstream>
-#include <string_view>
 
 #include "core/error.hpp"
 
@@ -19,16 +17,6 @@ void require_replaceable(const std::string& path) {
   }
   throw input_error(path, "", "--force replaces only a file haptex wrote, and " + why,
                     "Choose another output name, or move the file away yourself");
-}
-
-void check_text_output_path(const std::string& path, bool overwrite) {
-  check_output_path(path, overwrite);
-  if (!overwrite) return;
-  std::ifstream in(path, std::ios::binary);
-  char signature[8] = {};
-  if (!in.read(signature, sizeof signature) || std::string_view(signature, sizeof signature) != std::string_view("\x89HDF\r\n\x1a\n", 8)) return;
-  throw input_error(path, "", "--force would replace an HDF5 file with this command's text output, and haptex never wrote that output as HDF5",
-                    "Choose another output name");
 }
 
 namespace {

@@ -14,11 +14,6 @@ namespace haptex::h5 {
 // that does not exist, or is not a regular file (core/durable_file.hpp refuses that), passes.
 void require_replaceable(const std::string& path);
 
-// The checks before writing an output that is not HDF5 (JSON, CSV, WAV): check_output_path's, and
-// with overwrite a refusal (haptex::Error, bad_input) to replace an existing HDF5 file, which that
-// output never was (a dataset, a model, a predictions file).
-void check_text_output_path(const std::string& path, bool overwrite);
-
 class AtomicFile {
  public:
   // Refuses (haptex::Error, bad_input) when final_path exists and overwrite is false, or exists and

@@ -50,6 +50,15 @@ nlohmann::json read_file(const std::string& path) {
   }
 }
 
+bool has_format(const std::string& path, std::string_view format) {
+  constexpr std::uintmax_t kLargest = 64u << 20;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kLargest || ec) return false;
+  std::ifstream in(path, std::ios::binary);
+  const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
+  return doc.is_object() && doc.contains("format") && doc["format"].is_string() && doc["format"].get<std::string>() == format;
+}
+
 void validate(const nlohmann::json& doc, std::string_view schema_name, const std::string& file) {
   valijson::Validator validator;
   valijson::ValidationResults results;

@@ -10,6 +10,10 @@ namespace haptex::json {
 // Parses a JSON file; a syntax error becomes haptex::Error (bad_input) naming the file and byte.
 nlohmann::json read_file(const std::string& path);
 
+// Whether path is a JSON file (of at most 64 MiB) whose top-level "format" is `format`: how --force
+// knows that haptex wrote it. Never throws.
+bool has_format(const std::string& path, std::string_view format);
+
 // Throws haptex::Error (bad_input) naming `file`, the JSON pointer of the first failing element and
 // the reason, when doc does not satisfy schemas/<schema_name>.
 void validate(const nlohmann::json& doc, std::string_view schema_name, const std::string& file);

@@ -141,25 +141,72 @@ TEST(Force, NoCommandReplacesAFileHaptexDidNotWrite) {
   }
 }
 
-// The commands whose output is text (JSON, CSV) or sound never replace an HDF5 file, with --force or
-// without: none of those outputs was ever HDF5 (a dataset, a model, a predictions file of your own).
-TEST(Force, NoTextOutputReplacesAnHdf5File) {
+// A WAV of the user's: a valid RIFF header and silence, with no software string.
+void write_foreign_wav(const std::string& path) {
+  std::string wav = "RIFF", body;
+  const auto u32 = [](std::string& s, std::uint32_t v) { for (int i = 0; i < 4; ++i) s += char((v >> (8 * i)) & 0xff); };
+  const auto u16 = [](std::string& s, std::uint16_t v) { s += char(v & 0xff); s += char(v >> 8); };
+  body = "WAVEfmt ";
+  u32(body, 16), u16(body, 1), u16(body, 1), u32(body, 8000), u32(body, 16000), u16(body, 2), u16(body, 16);
+  body += "data";
+  u32(body, 200);
+  body += std::string(200, '\0');
+  u32(wav, std::uint32_t(body.size()));
+  std::ofstream(path, std::ios::binary) << wav << body;
+}
+
+// Issue 32, class 3: the commands whose output is text (JSON, CSV) or sound replace, with --force, only
+// a file of that kind haptex wrote (docs/architecture.md, "Outputs are atomic"): never an HDF5 file, a
+// CSV, a JSON or a WAV of the user's.
+TEST(Force, NoTextOutputReplacesAFileHaptexDidNotWrite) {
   const SmallPipeline& p = small_pipeline();
   const TempDir d;
-  const std::string hdf5 = copy_into(d, p.recordings, "mine.h5");
-  const std::string before = sha256_file(hdf5);
   std::ofstream(d.file("traj.csv")) << "time_s,force_n,speed_mm_s\n0,1,50\n0.01,1,50\n0.02,1,50\n";
-  const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
-      {"split", {"split", p.dataset, "-o", hdf5, "--no-plots", "--force"}},
-      {"train --log", {"train", p.dataset, "--split", p.split, "-o", d.file("m.h5"), "--log", hdf5, "--force"}},
-      {"render", {"render", quick_model(), "--material", small_material(), "--trajectory", d.file("traj.csv"), "-o", hdf5, "--force"}},
+  const std::string hdf5 = copy_into(d, p.recordings, "mine.h5");
+  std::ofstream(d.file("mine.csv")) << "a,b\n1,2\n";
+  std::ofstream(d.file("mine.json")) << R"({"format": "notes/1", "text": "mine"})";
+  write_foreign_wav(d.file("mine.wav"));
+  const auto commands = [&](const std::string& victim) {
+    return std::vector<std::pair<std::string, std::vector<std::string>>>{
+        {"split", {"split", p.dataset, "-o", victim, "--no-plots", "--force"}},
+        {"train --log", {"train", p.dataset, "--split", p.split, "-o", d.file("m.h5"), "--log", victim, "--force"}},
+        {"render -o", {"render", quick_model(), "--material", small_material(), "--trajectory", d.file("traj.csv"), "-o", victim, "--force"}},
+        {"render --csv", {"render", quick_model(), "--material", small_material(), "--trajectory", d.file("traj.csv"), "-o",
+                          d.file("v.wav"), "--csv", victim, "--force"}},
+    };
   };
-  for (const auto& [name, command] : commands) {
-    SCOPED_TRACE(name);
-    expect_refusal(run_haptex(command), {hdf5, "HDF5"});
-    EXPECT_EQ(sha256_file(hdf5), before);
+  for (const std::string& victim : {hdf5, d.file("mine.csv"), d.file("mine.json"), d.file("mine.wav")}) {
+    for (const auto& [name, command] : commands(victim)) {
+      SCOPED_TRACE(name + " over " + victim);
+      const std::string before = file_bytes(victim);
+      expect_refusal(run_haptex(command), {victim, "--force replaces only"});
+      EXPECT_EQ(file_bytes(victim), before);
+    }
   }
   EXPECT_FALSE(fs::exists(d.file("m.h5")));
+  EXPECT_FALSE(fs::exists(d.file("v.wav")));
+}
+
+TEST(Force, TextOutputsReplaceTheirOwn) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  {
+    std::ofstream trajectory(d.file("traj.csv"));
+    trajectory << "force,speed\n";
+    for (int i = 0; i < 4000; ++i) trajectory << "1,100\n";
+  }
+  const std::vector<std::vector<std::string>> commands = {
+      {"split", p.dataset, "-o", d.file("s.json"), "--no-plots", "--force"},
+      {"render", quick_model(), "--material", small_material(), "--trajectory", d.file("traj.csv"), "-o", d.file("v.wav"),
+       "--csv", d.file("v.csv"), "--force"},
+  };
+  for (const auto& command : commands) {
+    SCOPED_TRACE(command.front());
+    const CommandResult first = run_haptex(command);
+    ASSERT_EQ(first.exit_code, 0) << first.err;
+    const CommandResult again = run_haptex(command);
+    EXPECT_EQ(again.exit_code, 0) << again.err;
+  }
 }
 
 TEST(Force, TrainRefusesALogThatIsTheModel) {
