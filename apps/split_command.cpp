@@ -3,9 +3,11 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 #include "apps/command.hpp"
 #include "core/durable_file.hpp"
+#include "core/partial_directory.hpp"
 #include "core/output_is_input.hpp"
 #include "core/json/schema.hpp"
 #include "split/split_manifest.hpp"
@@ -39,15 +41,17 @@ class SplitCommand : public Command {
     refuse_output_among_inputs(plots_folder(), {dataset_});
     check_replaceable_output(output_, force_, "a split manifest (format split/1)",
                              [](const std::string& p) { return json::has_format(p, "split/1"); });
+    // The plots go into a folder written whole (refused now, before any work, when it may not be replaced).
+    std::optional<PartialDirectory> plots_dir;
+    if (!no_plots_) plots_dir.emplace(plots_folder(), FolderOptions{force_, "plot folder", "-o", "haptex split"});
     const auto windows = split::read_dataset_windows(dataset_);
     const auto splits = split::search_split(windows, options_, dataset_);
     const nlohmann::json manifest = split::manifest_json(dataset_, options_, splits, global.command_line);
     qa::require_sound_split({output_, manifest}, dataset_);
-    json::write_file(manifest, "split.schema.json", output_);
     split::PlotResult plots;
-    if (!no_plots_) {
-      plots = split::write_split_plots(dataset_, windows, splits, options_.sections, plots_folder());
-    }
+    if (plots_dir) plots = split::write_split_plots(dataset_, windows, splits, options_.sections, plots_dir->path(), plots_folder());
+    json::write_file(manifest, "split.schema.json", output_);
+    if (plots_dir) plots_dir->commit();  // a manifest without its plots, never plots without their manifest
     if (global.json) {
       std::cout << json::read_file(output_).dump(2) << "\n";
       return 0;

@@ -79,10 +79,8 @@ std::string script_text(const std::string& id, const std::string& title, const s
 }  // namespace
 
 PlotResult write_split_plots(const std::string& dataset_path, const std::vector<MaterialWindows>& windows,
-                             const std::vector<MaterialSplit>& splits, std::size_t sections, const std::string& directory) {
-  std::error_code ec;
-  fs::create_directories(directory, ec);
-  if (ec) throw input_error(directory, "", "cannot create the plot folder (" + ec.message() + ")", "Choose a writable place");
+                             const std::vector<MaterialSplit>& splits, std::size_t sections, const std::string& directory,
+                             const std::string& named) {
   const h5::Group materials = h5::File::open(dataset_path).root().open_group(dataset::layout::kMaterials);
   const std::string terminal = gnuplot::png_terminal();
   PlotResult result;
@@ -97,10 +95,11 @@ PlotResult write_split_plots(const std::string& dataset_path, const std::vector<
     std::ofstream(base.string() + ".gnuplot")
         << script_text(id, windows[m].name + ": train, validation and test (recording 0)",
                            terminal.empty() ? "pngcairo" : terminal, splits[m], std::int64_t(accel.size()), sections);
-    if (!terminal.empty() && gnuplot::draw(directory, id + ".gnuplot", id + ".png")) result.images.push_back(base.string() + ".png");
+    if (!terminal.empty() && gnuplot::draw(directory, id + ".gnuplot", id + ".png"))
+      result.images.push_back((fs::path(named) / (id + ".png")).string());
   }
-  if (terminal.empty()) result.note = "gnuplot is not installed: wrote the CSV data and gnuplot scripts to " + directory + " only";
-  else if (result.images.size() < windows.size()) result.note = "gnuplot failed on some plots; their CSV data and scripts are in " + directory;
+  if (terminal.empty()) result.note = "gnuplot is not installed: wrote the CSV data and gnuplot scripts to " + named + " only";
+  else if (result.images.size() < windows.size()) result.note = "gnuplot failed on some plots; their CSV data and scripts are in " + named;
   return result;
 }
 

@@ -15,8 +15,10 @@ struct PlotResult {
   std::string note;                 // why none were drawn, when so
 };
 
+// Writes the plots into `directory` (an existing folder: split writes them into a PartialDirectory's,
+// core/partial_directory.hpp); `named` is the folder as messages name it (where they will be).
 PlotResult write_split_plots(const std::string& dataset_path, const std::vector<MaterialWindows>& windows,
                              const std::vector<MaterialSplit>& splits, const std::size_t sections,
-                             const std::string& directory);
+                             const std::string& directory, const std::string& named);
 
 }  // namespace haptex::split

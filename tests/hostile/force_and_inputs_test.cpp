@@ -228,5 +228,29 @@ TEST(Force, EvaluateRefusesAReportFolderHoldingItsDataset) {
   EXPECT_EQ(sha256_file(dataset), before);
 }
 
+// Issue 32, class 4: split's plot folder is written whole (core/partial_directory.hpp): a PNG of the
+// user's in an existing folder is kept, with --force or without, and the folder split wrote is replaced.
+TEST(Force, SplitKeepsAPlotOfTheUsers) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string manifest = d.file("s.json"), plots = d.file("s.plots");
+  fs::create_directory(plots);
+  const std::string mine = plots + "/" + material_ids(p.dataset).front() + ".png";
+  std::ofstream(mine) << "my figure";
+  for (const bool force : {false, true}) {
+    std::vector<std::string> args{"split", p.dataset, "-o", manifest};
+    if (force) args.push_back("--force");
+    expect_refusal(run_haptex(args), {plots});
+    EXPECT_EQ(file_bytes(mine), "my figure");
+    EXPECT_FALSE(fs::exists(manifest)) << "refused before any work";
+  }
+  fs::remove_all(plots);
+  ASSERT_EQ(run_haptex({"split", p.dataset, "-o", manifest}).exit_code, 0);
+  EXPECT_TRUE(fs::exists(plots + "/haptex-files.json"));
+  const CommandResult again = run_haptex({"split", p.dataset, "-o", manifest, "--force"});
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
+}
+
 }  // namespace
 }  // namespace haptex::test
