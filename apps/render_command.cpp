@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "apps/command.hpp"
 #include "apps/number_checks.hpp"
+#include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/output_is_input.hpp"
 #include "core/text/format.hpp"
@@ -82,8 +84,14 @@ class RenderCommand : public Command {
     wav.overwrite = force_;
     wav.title = texture_.material.empty() ? texture_.image : texture_.material;
     wav.source = global.command_line + ", " + method(options);
-    const render::WavSummary written = render::write_wav(output_, rendering.signal, wav);
-    if (!csv_.empty()) render::write_vibration_csv(csv_, trajectory, rendering.signal, force_);
+    // Both outputs are written, then both committed: a full disk never leaves a WAV without its CSV.
+    PartialFile wav_file(output_);
+    std::optional<PartialFile> csv_file;
+    if (!csv_.empty()) csv_file.emplace(csv_);
+    const render::WavSummary written = render::write_wav(wav_file, rendering.signal, wav);
+    if (csv_file) write_text(*csv_file, render::vibration_csv_text(trajectory, rendering.signal));
+    wav_file.commit();
+    if (csv_file) csv_file->commit();
 
     const double seconds = double(rendering.signal.size()) / render::kWavSampleRate;
     const Report report{written, rendering, options, sc, distance, compute / seconds};

@@ -81,13 +81,19 @@ void PartialFile::commit() {
   fd_ = -1;
 }
 
+void write_text(PartialFile& out, std::string_view text) {
+  std::FILE* file = std::fopen(out.path().c_str(), "wb");
+  if (!file) throw failure(out.final_path() + ": cannot open " + out.path() + " for writing: " + std::strerror(errno));
+  const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+  const int saved = errno;
+  const bool closed = std::fclose(file) == 0;
+  if (!written || !closed)
+    throw failure(out.final_path() + ": cannot write it: " + (saved == ENOSPC || errno == ENOSPC ? std::string("the disk is full") : std::strerror(written ? errno : saved)));
+}
+
 void write_file_durably(const std::string& path, std::string_view text) {
   PartialFile partial(path);
-  std::FILE* file = std::fopen(partial.path().c_str(), "wb");
-  if (!file) throw failure(partial.path() + ": cannot open for writing");
-  const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-  const bool closed = std::fclose(file) == 0;
-  if (!written || !closed) throw failure(partial.path() + ": write failed (disk full?)");
+  write_text(partial, text);
   partial.commit();
 }
 

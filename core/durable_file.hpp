@@ -31,6 +31,7 @@ class PartialFile {
   PartialFile& operator=(const PartialFile&) = delete;
 
   const std::string& path() const { return path_; }
+  const std::string& final_path() const { return final_path_; }
   // fsync, rename to the final path, fsync the directory; afterwards nothing is removed.
   void commit();
 
@@ -39,6 +40,10 @@ class PartialFile {
   int fd_ = -1;
   bool committed_ = false;
 };
+
+// The whole of `text` into out's temporary file (the commit is the caller's: several outputs can
+// appear together). Throws haptex::Error (failed) naming the output when writing fails (a full disk).
+void write_text(PartialFile& out, std::string_view text);
 
 // The whole of `text` as a new file at path, through PartialFile: the final name appears only once
 // everything is written and synced. Throws haptex::Error (failed) naming the file when writing fails.

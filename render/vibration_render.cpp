@@ -112,11 +112,9 @@ double rendered_convergence_db(const Rendering& rendering) {
   return spectral_convergence_db(std::span(rendering.signal).subspan(rendering.first_frame_sample), s);
 }
 
-void write_vibration_csv(const std::string& path, const predict::Trajectory& trajectory, std::span<const double> signal,
-                         bool overwrite) {
-  check_vibration_csv_output(path, overwrite);
+std::string vibration_csv_text(const predict::Trajectory& trajectory, std::span<const double> signal) {
   if (signal.size() != trajectory.force.size() || signal.size() != trajectory.speed.size())
-    throw failure(path + ": the signal has " + std::to_string(signal.size()) + " samples, the trajectory " +
+    throw failure("internal: the signal has " + std::to_string(signal.size()) + " samples, the trajectory " +
                   std::to_string(trajectory.force.size()) + "; they must match");
   std::string text = std::string(kVibrationCsvHeader) + "\n";
   char row[128];
@@ -125,7 +123,13 @@ void write_vibration_csv(const std::string& path, const predict::Trajectory& tra
                                 double(trajectory.speed[i]), signal[i]);
     text.append(row, std::size_t(n));
   }
-  write_file_durably(path, text);
+  return text;
+}
+
+void write_vibration_csv(const std::string& path, const predict::Trajectory& trajectory, std::span<const double> signal,
+                         bool overwrite) {
+  check_vibration_csv_output(path, overwrite);
+  write_file_durably(path, vibration_csv_text(trajectory, signal));
 }
 
 bool is_vibration_csv(const std::string& path) {

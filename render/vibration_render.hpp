@@ -92,6 +92,8 @@ double rendered_distance(const Rendering& rendering);
 inline constexpr std::string_view kVibrationCsvHeader = "time_s,force_n,speed_mm_s,accel_m_s2";
 void write_vibration_csv(const std::string& path, const predict::Trajectory& trajectory, std::span<const double> signal,
                          bool overwrite);
+// The CSV's text (for a caller committing it with other outputs: core/durable_file.hpp, write_text).
+std::string vibration_csv_text(const predict::Trajectory& trajectory, std::span<const double> signal);
 // Whether path is a CSV write_vibration_csv wrote (its first line is the header): what --force replaces.
 bool is_vibration_csv(const std::string& path);
 // check_replaceable_output for the CSV.

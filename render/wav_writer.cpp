@@ -3,6 +3,7 @@
 #include <sndfile.h>
 
 #include <charconv>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -73,6 +74,14 @@ void check_wav_output(const std::string& path, bool overwrite) {
 
 WavSummary write_wav(const std::string& path, std::span<const double> signal_m_s2, const WavOptions& options) {
   check_wav_output(path, options.overwrite);
+  PartialFile partial(path);
+  const WavSummary summary = write_wav(partial, signal_m_s2, options);
+  partial.commit();
+  return summary;
+}
+
+WavSummary write_wav(PartialFile& out, std::span<const double> signal_m_s2, const WavOptions& options) {
+  const std::string& path = out.final_path();
   WavSummary summary;
   summary.samples = signal_m_s2.size();
   summary.peak_m_s2 = peak_of(path, signal_m_s2);
@@ -91,26 +100,26 @@ WavSummary write_wav(const std::string& path, std::span<const double> signal_m_s
                     "; 10 kHz, peak " + number(summary.peak_m_s2) + " m/s^2" +
                     (options.source.empty() ? std::string() : "; " + options.source);
 
-  PartialFile partial(path);
   SF_INFO info{};
   info.samplerate = kWavSampleRate;
   info.channels = 1;
   info.format = SF_FORMAT_WAV | SF_FORMAT_PCM_24;
-  std::unique_ptr<SNDFILE, SndfileCloser> file(sf_open(partial.path().c_str(), SFM_WRITE, &info));
-  if (!file) throw failure(partial.path() + ": cannot open for writing: " + sf_strerror(nullptr));
+  std::unique_ptr<SNDFILE, SndfileCloser> file(sf_open(out.path().c_str(), SFM_WRITE, &info));
+  if (!file)
+    throw failure(path + ": cannot write it: " +
+                  (errno == ENOSPC ? std::string("the disk is full") : std::string(sf_strerror(nullptr)) + " (" + out.path() + ")"));
   sf_command(file.get(), SFC_SET_CLIPPING, nullptr, SF_TRUE);  // a rounding past 1.0 saturates, never wraps
   const std::string software = std::string("haptex ") + kVersion;
   if (sf_set_string(file.get(), SF_STR_COMMENT, summary.comment.c_str()) != 0 ||
       sf_set_string(file.get(), SF_STR_SOFTWARE, software.c_str()) != 0 ||
       (!options.title.empty() && sf_set_string(file.get(), SF_STR_TITLE, options.title.c_str()) != 0))
-    throw failure(partial.path() + ": cannot store the WAV's strings: " + sf_strerror(file.get()));
+    throw failure(path + ": cannot store the WAV's strings: " + sf_strerror(file.get()));
   std::vector<double> scaled(signal_m_s2.size());
   for (std::size_t i = 0; i < scaled.size(); ++i) scaled[i] = signal_m_s2[i] / summary.full_scale_m_s2;
   if (sf_write_double(file.get(), scaled.data(), sf_count_t(scaled.size())) != sf_count_t(scaled.size()))
-    throw failure(partial.path() + ": write failed (disk full?): " + sf_strerror(file.get()));
+    throw failure(path + ": cannot write it: " + (errno == ENOSPC ? std::string("the disk is full") : sf_strerror(file.get())));
   if (const int status = sf_close(file.release()); status != 0)
-    throw failure(partial.path() + ": closing the WAV failed: " + sf_error_number(status));
-  partial.commit();
+    throw failure(path + ": closing the WAV failed: " + sf_error_number(status));
   return summary;
 }
 

@@ -19,6 +19,7 @@
 #include <span>
 #include <string>
 
+#include "core/durable_file.hpp"
 #include "dataset/window.hpp"
 
 namespace haptex::render {
@@ -43,6 +44,9 @@ struct WavSummary {
 // exceeds a given full scale; failed for a non-finite sample or a write error. Nothing is left
 // under PATH or PATH.partial when it throws.
 WavSummary write_wav(const std::string& path, std::span<const double> signal_m_s2, const WavOptions& options = {});
+// The same into out's temporary file, leaving the commit to the caller (so a WAV and its CSV appear
+// together) and the checks of the path (check_wav_output) too.
+WavSummary write_wav(PartialFile& out, std::span<const double> signal_m_s2, const WavOptions& options = {});
 
 // Whether path is a WAV write_wav wrote (its software string starts "haptex "): what --force replaces.
 bool is_haptex_wav(const std::string& path);

@@ -21,15 +21,16 @@ File File::open(const std::string& path, bool writable) {
   return File(std::move(file), path);
 }
 
-File File::create(const std::string& path) {
+File File::create(const std::string& path, const std::string& shown_as) {
   silence_library_errors();
   Handle access(H5Pcreate(H5P_FILE_ACCESS));
   // Closing the file closes every object still open in it, so close() really finishes the file.
   H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG);
   // The caller holds the lock (PartialFile); HDF5's own lock on a second descriptor would clash with it.
   H5Pset_file_locking(access.get(), false, true);
-  Handle file(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), "create the file", path));
-  return File(std::move(file), path);
+  const std::string& named = shown_as.empty() ? path : shown_as;
+  Handle file(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), "create the file", named));
+  return File(std::move(file), named);
 }
 
 Group File::root() const {

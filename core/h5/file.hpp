@@ -12,8 +12,9 @@ class File {
  public:
   // Throws haptex::Error (bad_input) naming the path when it is missing or not an HDF5 file.
   static File open(const std::string& path, bool writable = false);
-  // Creates (or truncates) a file.
-  static File create(const std::string& path);
+  // Creates (or truncates) a file. Messages name it `shown_as` when given (AtomicFile: the output's
+  // final name, not its temporary one).
+  static File create(const std::string& path, const std::string& shown_as = "");
 
   const std::string& path() const { return path_; }
   Group root() const;

@@ -1,8 +1,21 @@
 #include "core/h5/handle.hpp"
 
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
 #include "core/error.hpp"
 
 namespace haptex::h5 {
+namespace {
+
+// HDF5 closes the files still open at exit from an exit handler, and after a failed flush (a full
+// disk) HDF5 1.10 crashes doing so. haptex closes every file it writes, or abandons it and removes
+// its temporary, before exit, so the handler has nothing to do: it is not installed. This must run
+// before the library's first call, hence a static initialiser.
+[[maybe_unused]] const herr_t kNoExitHandler = H5dont_atexit();
+
+}  // namespace
 
 void Handle::reset() {
   if (id_ < 0) return;
@@ -29,6 +42,21 @@ void silence_library_errors() {
   (void)done;
 }
 
+namespace {
+
+// The failed system call's reason, when HDF5's innermost message carries one ("... errno = 28, error
+// message = 'No space left on device', ..."): a full disk in plain words, not the driver's report.
+std::string plain_reason(const std::string& detail) {
+  const std::size_t at = detail.find("errno = ");
+  if (at == std::string::npos) return detail;
+  const int code = std::atoi(detail.c_str() + at + 8);
+  if (code == ENOSPC) return "the disk is full: no space left on the device";
+  if (code == EDQUOT) return "the disk quota is used up";
+  return std::strerror(code);
+}
+
+}  // namespace
+
 std::string last_library_error() {
   std::string message;
   H5Ewalk2(
@@ -40,10 +68,11 @@ std::string last_library_error() {
       },
       &message);
   H5Eclear2(H5E_DEFAULT);
-  return message;
+  return plain_reason(message);
 }
 
 hid_t check(hid_t id, const std::string& what, const std::string& path) {
+  silence_library_errors();  // this thread's next failure is not printed either
   if (id < 0) {
     std::string detail = last_library_error();
     throw failure(path + ": HDF5 could not " + what + (detail.empty() ? "" : " (" + detail + ")"));

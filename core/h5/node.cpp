@@ -311,12 +311,6 @@ Dataset Group::write_raw(std::string_view name, hid_t type, std::size_t element_
   return Dataset(std::move(dataset), file_, path);
 }
 
-void Group::copy_from(const Group& source, std::string_view name, std::string_view new_name) {
-  check_status(H5Ocopy(source.id(), std::string(name).c_str(), id(), std::string(new_name).c_str(), H5P_DEFAULT,
-                       H5P_DEFAULT),
-               "copy " + source.where() + "/" + std::string(name), file_ + ":" + child_path(new_name));
-}
-
 Dataset Group::write_strings(std::string_view name, const std::vector<std::string>& values) {
   const std::string path = child_path(name);
   const hsize_t dims[1] = {values.size()};

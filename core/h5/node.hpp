@@ -20,7 +20,9 @@ std::string shape_text(const Shape& shape);
 class Node {
  public:
   Node(Handle handle, std::string file, std::string object_path)
-      : handle_(std::move(handle)), file_(std::move(file)), object_path_(std::move(object_path)) {}
+      : handle_(std::move(handle)), file_(std::move(file)), object_path_(std::move(object_path)) {
+    silence_library_errors();  // in the thread that uses it (HDF5's error printing is per thread)
+  }
 
   const std::string& file() const { return file_; }
   const std::string& object_path() const { return object_path_; }

@@ -289,9 +289,16 @@ TEST(RenderCli, BadInputsExitTwoNamingTheFileAndLeaveNothing) {
   EXPECT_FALSE(fs::exists(dir.file("other.wav")));
   EXPECT_EQ(fs::file_size(out), size);
   EXPECT_TRUE(temporaries_of(out).empty());
-  const CommandResult forced = run_haptex(render_args(traj, out, {"--iterations", "2", "--csv", csv, "--force"}));
+  // --force replaces the WAV render wrote, never a CSV of the user's (issue 32, class 3).
+  const std::vector<std::string> forced_args = render_args(traj, out, {"--iterations", "2", "--csv", csv, "--force"});
+  const CommandResult refused = run_haptex(forced_args);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find(csv), std::string::npos) << refused.err;
+  fs::remove(csv);
+  const CommandResult forced = run_haptex(forced_args);
   EXPECT_EQ(forced.exit_code, 0) << forced.err;
   EXPECT_EQ(csv_acceleration(csv).size(), 2000u);
+  EXPECT_EQ(run_haptex(forced_args).exit_code, 0) << "its own CSV is replaced";
 }
 
 }  // namespace

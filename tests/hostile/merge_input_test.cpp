@@ -2,6 +2,7 @@
 // where in it and the fix, and writes nothing (no output, no NAME.partial). Names with quotes and
 // back-quotes are ordinary names: they merge, and a bad shard so named is named intact.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <filesystem>
 #include <fstream>
@@ -34,6 +35,23 @@ std::string second_material_of(const TempDir& dir, const std::string& file, cons
   return copy_with_materials(dir, file, name, {material_ids(file).back()});
 }
 
+// Overwrites the middle of a compressed dataset's first chunk with bytes that do not inflate.
+void corrupt_first_chunk(const std::string& file, const std::string& dataset) {
+  haddr_t offset = 0;
+  hsize_t size = 0;
+  {
+    const h5::File f = h5::File::open(file);
+    const h5::Dataset d = f.root().open_dataset(dataset);
+    hsize_t origin[1] = {0};
+    unsigned filter_mask = 0;
+    ASSERT_GE(H5Dget_chunk_info_by_coord(d.id(), origin, &filter_mask, &offset, &size), 0) << dataset << " is not chunked";
+  }
+  std::fstream out(file, std::ios::in | std::ios::out | std::ios::binary);
+  out.seekp(std::streamoff(offset + size / 4));
+  const std::string garbage(std::size_t(size / 2), '\x5a');
+  out.write(garbage.data(), std::streamsize(garbage.size()));
+}
+
 std::vector<BadShard> bad_shards() {
   const SmallPipeline& p = small_pipeline();
   auto truncated = [&](const TempDir& d, const std::string& name) {
@@ -56,6 +74,27 @@ std::vector<BadShard> bad_shards() {
          Edit(copy).root().create_group("notes");
          return copy;
        }, {"/notes: is not an object haptex writes", "merge the copy"}},
+      // Issue 32, class 12: merge reads what it copies as strictly as qa does.
+      {"a soft link inside a material", [&](const TempDir& d) {
+         const std::string copy = second_material_of(d, p.recordings, "soft.h5");
+         const std::string material = "materials/" + material_ids(copy).front();
+         Edit edit(copy);
+         H5Lcreate_soft(("/" + material + "/recordings").c_str(), edit.root().id(), (material + "/alias").c_str(), H5P_DEFAULT,
+                        H5P_DEFAULT);
+         return copy;
+       }, {"/alias", "is a soft link"}},
+      {"an external link to /etc/passwd", [&](const TempDir& d) {
+         const std::string copy = second_material_of(d, p.recordings, "external.h5");
+         const std::string material = "materials/" + material_ids(copy).front();
+         Edit edit(copy);
+         H5Lcreate_external("/etc/passwd", "/", edit.root().id(), (material + "/passwd").c_str(), H5P_DEFAULT, H5P_DEFAULT);
+         return copy;
+       }, {"/passwd", "is an external link"}},
+      {"a chunk that does not inflate", [&](const TempDir& d) {
+         const std::string copy = second_material_of(d, p.recordings, "garbled.h5");
+         corrupt_first_chunk(copy, "materials/" + material_ids(copy).front() + "/recordings/0/accel");
+         return copy;
+       }, {"/recordings/0/accel", "could not read"}},
   };
 }
 

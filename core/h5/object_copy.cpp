@@ -1,0 +1,141 @@
+// Group::copy_from: a member of one file copied into another by reading every attribute and every
+// dataset's values and writing them again, instead of H5Ocopy. Two reasons (issue 32): the copy reads
+// its source as strictly as any reader (a chunk that does not inflate, a soft or external link, an
+// object that is neither group nor dataset is an error naming the source file and object, never
+// copied on), and a failed write (a full disk) comes back as an error: HDF5 1.10's H5Ocopy crashes on
+// one. Datasets keep their type, shape, chunking and filters (the source's creation properties).
+#include <hdf5.h>
+
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/h5/node.hpp"
+
+namespace haptex::h5 {
+namespace {
+
+std::string joined(const std::string& path, const std::string& name) { return path == "/" ? "/" + name : path + "/" + name; }
+
+// Holds a buffer read with `type` over `space` and frees what variable-length values allocated in it.
+class Values {
+ public:
+  Values(hid_t type, hid_t space) : type_(type), space_(space) {
+    const hssize_t points = H5Sget_simple_extent_npoints(space);
+    bytes_.resize(std::size_t(points > 0 ? points : 0) * H5Tget_size(type));
+  }
+  ~Values() {
+    if (read_ && H5Tdetect_class(type_, H5T_VLEN) > 0) H5Dvlen_reclaim(type_, space_, H5P_DEFAULT, bytes_.data());
+    else if (read_ && H5Tget_class(type_) == H5T_STRING && H5Tis_variable_str(type_) > 0)
+      H5Dvlen_reclaim(type_, space_, H5P_DEFAULT, bytes_.data());
+  }
+  Values(const Values&) = delete;
+  Values& operator=(const Values&) = delete;
+  void* data() { return bytes_.data(); }
+  bool empty() const { return bytes_.empty(); }
+  void mark_read() { read_ = true; }
+
+ private:
+  hid_t type_, space_;
+  std::vector<unsigned char> bytes_;
+  bool read_ = false;
+};
+
+struct Copy {
+  std::string source_file, target_file;
+
+  std::string member_name(hid_t group, hsize_t i, const std::string& group_path) const {
+    const ssize_t length = H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+    std::string name(std::size_t(length > 0 ? length : 0), '\0');
+    if (length < 0 || H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size() + 1, H5P_DEFAULT) < 0)
+      check_input_status(-1, "list " + group_path, source_file);
+    return name;
+  }
+
+  void attributes(hid_t from, hid_t to, const std::string& source_path, const std::string& target_path) const {
+    H5O_info_t info;
+    check_input_status(H5Oget_info2(from, &info, H5O_INFO_NUM_ATTRS), "read the attributes of " + source_path, source_file);
+    for (hsize_t i = 0; i < info.num_attrs; ++i) {
+      Handle attr(check_input(H5Aopen_by_idx(from, ".", H5_INDEX_NAME, H5_ITER_INC, i, H5P_DEFAULT, H5P_DEFAULT),
+                              "open an attribute of " + source_path, source_file));
+      const ssize_t length = H5Aget_name(attr.get(), 0, nullptr);
+      std::string name(std::size_t(length > 0 ? length : 0), '\0');
+      H5Aget_name(attr.get(), name.size() + 1, name.data());
+      const std::string where = source_path + "@" + name;
+      Handle type(check_input(H5Aget_type(attr.get()), "read the type of " + where, source_file));
+      Handle space(check_input(H5Aget_space(attr.get()), "read the shape of " + where, source_file));
+      Values values(type.get(), space.get());
+      if (!values.empty()) {
+        check_input_status(H5Aread(attr.get(), type.get(), values.data()), "read " + where, source_file);
+        values.mark_read();
+      }
+      Handle copy(check(H5Acreate2(to, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                        "create attribute " + name, target_file + ":" + target_path));
+      if (!values.empty())
+        check_status(H5Awrite(copy.get(), type.get(), values.data()), "write attribute " + name, target_file + ":" + target_path);
+    }
+  }
+
+  void dataset(hid_t from_parent, const std::string& name, hid_t to_parent, const std::string& new_name,
+               const std::string& source_path, const std::string& target_path) const {
+    Handle from(check_input(H5Dopen2(from_parent, name.c_str(), H5P_DEFAULT), "open " + source_path, source_file));
+    Handle type(check_input(H5Dget_type(from.get()), "read the type of " + source_path, source_file));
+    Handle space(check_input(H5Dget_space(from.get()), "read the shape of " + source_path, source_file));
+    Handle creation(check_input(H5Dget_create_plist(from.get()), "read the layout of " + source_path, source_file));
+    Values values(type.get(), space.get());
+    if (!values.empty()) {
+      check_input_status(H5Dread(from.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + source_path,
+                         source_file);
+      values.mark_read();
+    }
+    Handle to(check(H5Dcreate2(to_parent, new_name.c_str(), type.get(), space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT),
+                    "create dataset", target_file + ":" + target_path));
+    if (!values.empty())
+      check_status(H5Dwrite(to.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write dataset",
+                   target_file + ":" + target_path);
+    attributes(from.get(), to.get(), source_path, target_path);
+  }
+
+  void group(hid_t from_parent, const std::string& name, hid_t to_parent, const std::string& new_name,
+             const std::string& source_path, const std::string& target_path) const {
+    Handle from(check_input(H5Gopen2(from_parent, name.c_str(), H5P_DEFAULT), "open " + source_path, source_file));
+    Handle creation(check_input(H5Gget_create_plist(from.get()), "read the layout of " + source_path, source_file));
+    Handle to(check(H5Gcreate2(to_parent, new_name.c_str(), H5P_DEFAULT, creation.get(), H5P_DEFAULT), "create group",
+                    target_file + ":" + target_path));
+    attributes(from.get(), to.get(), source_path, target_path);
+    H5G_info_t info;
+    check_input_status(H5Gget_info(from.get(), &info), "list " + source_path, source_file);
+    for (hsize_t i = 0; i < info.nlinks; ++i) {
+      const std::string member = member_name(from.get(), i, source_path);
+      object(from.get(), member, to.get(), member, joined(source_path, member), joined(target_path, member));
+    }
+  }
+
+  void object(hid_t from_parent, const std::string& name, hid_t to_parent, const std::string& new_name,
+              const std::string& source_path, const std::string& target_path) const {
+    H5L_info_t link;
+    check_input_status(H5Lget_info(from_parent, name.c_str(), &link, H5P_DEFAULT), "read the link " + source_path, source_file);
+    if (link.type != H5L_TYPE_HARD)
+      throw input_error(source_file, source_path,
+                        std::string("is ") + (link.type == H5L_TYPE_SOFT ? "a soft" : "an external") +
+                            " link, which no haptex file holds and which is not copied",
+                        "Remove the link (h5py: del f[path]), or make the file again with the haptex command that wrote it");
+    H5O_info_t info;
+    check_input_status(H5Oget_info_by_name2(from_parent, name.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT),
+                       "read " + source_path, source_file);
+    if (info.type == H5O_TYPE_GROUP) group(from_parent, name, to_parent, new_name, source_path, target_path);
+    else if (info.type == H5O_TYPE_DATASET) dataset(from_parent, name, to_parent, new_name, source_path, target_path);
+    else
+      throw input_error(source_file, source_path, "is neither a group nor a dataset (a named datatype?), which no haptex file holds",
+                        "Make the file again with the haptex command that wrote it");
+  }
+};
+
+}  // namespace
+
+void Group::copy_from(const Group& source, std::string_view name, std::string_view new_name) {
+  const Copy copy{source.file(), file_};
+  copy.object(source.id(), std::string(name), id(), std::string(new_name), joined(source.object_path(), std::string(name)),
+              child_path(new_name));
+}
+
+}  // namespace haptex::h5
