@@ -13,6 +13,7 @@
 #include "convert/recordings_writer.hpp"
 #include "convert/texture_names.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
@@ -60,10 +61,9 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
         throw input_error(input, "", "the directory holds no .xml, .xml.gz or .csv recordings", "Point at the recordings' folder");
       std::sort(found.begin(), found.end());
       for (const auto& file : found) add(file);
-    } else if (fs::is_regular_file(input, ec)) {
-      add(input);
     } else {
-      throw input_error(input, "", "no such file or directory", "Check the path");
+      require_regular_file(input);
+      add(input);
     }
   }
   if (files.empty()) throw input_error("(command line)", "", "no input files given", "Name files or directories to convert");

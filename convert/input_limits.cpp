@@ -4,12 +4,14 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/gzip.hpp"
 #include "core/sha256.hpp"
 
 namespace haptex::convert {
 
 std::vector<char> read_whole_file(const std::string& path, std::uintmax_t max_bytes) {
+  require_regular_file(path);
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec) throw input_error(path, "", "cannot open the file (" + ec.message() + ")", "Check the path and permissions");

@@ -2,11 +2,12 @@
 
 #include <charconv>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
 
+#include "convert/input_limits.hpp"
 #include "core/error.hpp"
-#include "core/json/schema.hpp"
 #include "core/text/parse_number.hpp"
 #include "core/text/utf8.hpp"
 
@@ -31,8 +32,28 @@ void add(std::map<int, std::string>& names, int id, std::string name, const std:
     throw input_error(path, where, "texture " + std::to_string(id) + " is named twice", "Name each texture once");
 }
 
+// Names files are small; a bigger one (or /dev/zero) is no names file.
+constexpr std::uintmax_t kMaxNamesBytes = 1 << 20;
+
+std::string names_text(const std::string& path) {
+  const std::vector<char> bytes = read_whole_file(path, kMaxNamesBytes);
+  return std::string(bytes.begin(), bytes.end());
+}
+
 std::map<int, std::string> from_json(const std::string& path) {
-  const nlohmann::json doc = json::read_file(path);
+  // A key given twice is refused, as the CSV form refuses an id given twice (a JSON parser keeps the last).
+  std::set<std::string> keys;
+  const auto unique_keys = [&](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    if (event == nlohmann::json::parse_event_t::key && depth == 1 && !keys.insert(parsed.get<std::string>()).second)
+      throw input_error(path, "/" + parsed.get<std::string>(), "the key is given twice", "Name each texture once");
+    return true;
+  };
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(names_text(path), unique_keys);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw input_error(path, "byte " + std::to_string(e.byte), "not valid JSON (" + std::string(e.what()) + ")", kFix);
+  }
   if (!doc.is_object()) throw input_error(path, "/", "the file is not a JSON object", kFix);
   std::map<int, std::string> names;
   for (const auto& [key, value] : doc.items()) {
@@ -45,8 +66,7 @@ std::map<int, std::string> from_json(const std::string& path) {
 
 // id,name per line; the name is the rest of the line (it may hold commas), quotes around it dropped.
 std::map<int, std::string> from_csv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw input_error(path, "", "cannot be read", "Check the path and its permissions");
+  std::istringstream in(names_text(path));
   std::map<int, std::string> names;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
@@ -71,9 +91,12 @@ std::map<int, std::string> from_csv(const std::string& path) {
 
 std::map<int, std::string> read_texture_names(const std::string& path) {
   const std::string extension = std::filesystem::path(path).extension().string();
-  if (extension == ".json" || extension == ".JSON") return from_json(path);
-  if (extension == ".csv" || extension == ".CSV") return from_csv(path);
-  throw input_error(path, "", "the names file is neither .json nor .csv", kFix);
+  std::map<int, std::string> names;
+  if (extension == ".json" || extension == ".JSON") names = from_json(path);
+  else if (extension == ".csv" || extension == ".CSV") names = from_csv(path);
+  else throw input_error(path, "", "the names file is neither .json nor .csv", kFix);
+  if (names.empty()) throw input_error(path, "", "names no texture", kFix);
+  return names;
 }
 
 }  // namespace haptex::convert

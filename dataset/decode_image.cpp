@@ -12,6 +12,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/image_header.hpp"
+#include "core/input_file.hpp"
 
 namespace haptex::dataset {
 namespace {
@@ -99,6 +100,7 @@ cv::Mat decode_image(std::span<const std::uint8_t> bytes, DecodedColour colour) 
 }
 
 cv::Mat read_image_file(const std::string& path) {
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   std::vector<std::uint8_t> head(8);
   if (!in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()))) return {};

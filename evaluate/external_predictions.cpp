@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
+#include "core/input_file.hpp"
 #include "core/sha256.hpp"
 #include "core/text/format.hpp"
 #include "dataset/window.hpp"
@@ -183,6 +184,7 @@ std::string ExternalPredictions::description() const { return one_line(source.em
 ExternalPredictions read_external_predictions(const PredictionsInput& input, const split::DatasetSplit& split,
                                               const std::vector<GridSection>& grid) {
   const Reader r{input.path};
+  require_regular_file(input.path);  // a FIFO or a device is named as such
   const h5::File file = r.attribute("", "an HDF5 file haptex can read", [&] { return h5::File::open(input.path); });
   const h5::Group root = file.root();
   const std::string format = "/@" + std::string(kPredictionsFormatAttribute);

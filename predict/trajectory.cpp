@@ -7,6 +7,7 @@
 
 #include "core/text/parse_number.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "dataset/window.hpp"
 
 namespace haptex::predict {
@@ -38,6 +39,7 @@ int column(const std::vector<std::string>& header, std::initializer_list<const c
 }  // namespace
 
 Trajectory read_trajectory(const std::string& path) {
+  require_regular_file(path);
   std::ifstream in(path);
   if (!in) throw input_error(path, "", "cannot open the trajectory", "Check the path");
   std::string line;

@@ -5,6 +5,7 @@
 
 #include "dataset/format.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/h5/file.hpp"
 #include "qa/checkers.hpp"
 #include "qa/layout_spec.hpp"
@@ -53,8 +54,7 @@ Report check_hdf5(const QaOptions& options) {
 
 Report run_qa(const QaOptions& options) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(options.file, ec))
-    throw input_error(options.file, "", "no such file", "Check the path");
+  require_regular_file(options.file);
   if (looks_like_hdf5(options.file)) return check_hdf5(options);
   if (options.split)
     throw input_error(options.file, "", "is not an HDF5 file; --split goes with a dataset file",

@@ -6,6 +6,7 @@
 
 #include "capture/storage/press_file_frames.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 
 namespace haptex::capture {
 namespace fs = std::filesystem;
@@ -121,8 +122,7 @@ std::vector<CaptureInput> expand_capture_inputs(const std::vector<std::string>& 
       out.push_back(input_for(argument, directory_name(p.parent_path().string()), material));
       continue;
     }
-    if (!fs::is_directory(argument, ec))
-      throw input_error(argument, "", "no such file or directory", "Check the path");
+    if (!fs::is_directory(argument, ec)) require_regular_file(argument);  // says why it is neither
     const std::vector<std::string> sources = sources_in(argument);
     if (!sources.empty()) {  // one material
       for (const auto& s : sources) out.push_back(input_for(s, directory_name(argument), material));

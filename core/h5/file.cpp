@@ -6,14 +6,14 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/version.hpp"
 
 namespace haptex::h5 {
 
 File File::open(const std::string& path, bool writable) {
   silence_library_errors();
-  if (!std::filesystem::exists(path))
-    throw input_error(path, "", "no such file", "Check the path");
+  require_regular_file(path);
   if (H5Fis_hdf5(path.c_str()) <= 0)
     throw input_error(path, "", "not an HDF5 file", "Give a file written by haptex (recordings, gelsight, dataset or model)");
   Handle file(check_input(H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT), "open the file",

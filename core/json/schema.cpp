@@ -16,6 +16,7 @@
 #include "core/durable_file.hpp"
 #include "core/embedded.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 
 namespace haptex::json {
 namespace {
@@ -37,9 +38,7 @@ const valijson::Schema& compiled_schema(std::string_view name) {
 }  // namespace
 
 nlohmann::json read_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw input_error(path, "", "not a readable file", "Give the path of a JSON file");
+  require_regular_file(path);
   std::ifstream in(path);
   if (!in) throw input_error(path, "", "cannot open the JSON file", "Check the path and permissions");
   try {

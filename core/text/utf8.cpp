@@ -60,6 +60,9 @@ std::size_t invalid_utf8_offset(std::string_view text) {
 }
 
 void require_utf8(std::string_view text, const std::string& file, const std::string& what) {
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos)
+    throw input_error(file, what, "holds a NUL character (byte " + std::to_string(nul) + "), which no name may hold",
+                      "Remove it: HDF5 and C strings end at a NUL, so the name would be cut there");
   const std::size_t offset = invalid_utf8_offset(text);
   if (offset == std::string_view::npos) return;
   throw input_error(file, what, "is not valid UTF-8 (byte " + std::to_string(offset) + " of \"" + printable(text) + "\")",

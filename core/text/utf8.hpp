@@ -20,7 +20,7 @@ std::vector<Utf8Character> utf8_characters(std::string_view text);
 std::size_t invalid_utf8_offset(std::string_view text);
 
 // Throws haptex::Error (bad input) naming file, what (e.g. "the material name") and the byte
-// offset when text is not UTF-8.
+// offset when text is not UTF-8, or holds a NUL (which HDF5 and C strings would cut the name at).
 void require_utf8(std::string_view text, const std::string& file, const std::string& what);
 
 }  // namespace haptex::text

@@ -168,6 +168,23 @@ TEST_F(Cluster, TextureNamesComeFromJsonOrCsv) {
   refused("d.json", "[1, 2]", "not a JSON object");
   refused("e.csv", "id,name\n3,\xff\xfe\n", "UTF-8");
   refused("f.txt", "3,Cork", "neither .json nor .csv");
+  // Issue 32, classes 15 and 17.
+  refused("g.json", R"({"3": "Cork", "3": "Cork again"})", "/3: the key is given twice");
+  refused("h.csv", "", "names no texture");
+  refused("i.csv", "id,name\n", "names no texture");
+  refused("j.json", "{}", "names no texture");
+  refused("k.json", std::string("{\"3\": \"Co\\u0000rk\"}"), "NUL");
+  refused("l.csv", std::string(2 << 20, 'x'), "over the limit");
+}
+
+TEST_F(Cluster, ANamesFileThatNeverEndsIsRefused) {
+  fs::create_symlink("/dev/zero", dir_.file("zero.csv"));
+  try {
+    read_texture_names(dir_.file("zero.csv"));
+    ADD_FAILURE() << "/dev/zero was read as names";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -1,0 +1,84 @@
+// Issue 32, class 7: a FIFO, a device or a folder where a command reads a file is refused by name at
+// once (core/input_file.hpp), never read until the end of time. A watchdog opens each FIFO for writing
+// after 20 s, so that a command that does block fails this test instead of hanging it.
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/quick_models.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+class Watchdog {
+ public:
+  explicit Watchdog(std::string fifo) : fifo_(std::move(fifo)), thread_([this] { watch(); }) {}
+  ~Watchdog() {
+    done_ = true;
+    thread_.join();
+  }
+
+ private:
+  void watch() {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (!done_) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      if (std::chrono::steady_clock::now() < deadline) continue;
+      const int fd = ::open(fifo_.c_str(), O_WRONLY | O_NONBLOCK);  // succeeds only while a reader waits
+      if (fd >= 0) ::close(fd);
+    }
+  }
+  std::string fifo_;
+  std::atomic<bool> done_{false};
+  std::thread thread_;
+};
+
+TEST(SpecialFiles, AFifoAsInputIsRefusedAtOnce) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string fifo = d.file("pipe.h5"), csv = d.file("pipe.csv"), json = d.file("pipe.json");
+  for (const std::string& f : {fifo, csv, json}) ASSERT_EQ(::mkfifo(f.c_str(), 0600), 0);
+  const std::string out = d.file("out");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"info", fifo}, fifo},
+      {{"qa", fifo}, fifo},
+      {{"split", fifo, "-o", out + ".json"}, fifo},
+      {{"merge", fifo, "-o", out + ".h5"}, fifo},
+      {{"convert", "hatt", csv, "-o", out + ".h5"}, csv},
+      {{"capture", "extract", fifo, "-o", out + ".h5"}, fifo},
+      {{"windows", p.dataset, "--split", json, "-o", out + ".h5"}, json},
+      {{"evaluate", p.dataset, "--split", p.split, "--model", quick_model(), "--truth", fifo, "-o", out}, fifo},
+      {{"evaluate", p.dataset, "--split", p.split, "--predictions", "x=" + fifo, "-o", out}, fifo},
+      {{"predict", quick_model(), "--material", small_material(), "--csv", csv}, csv},
+      {{"render", quick_model(), "--material", small_material(), "--trajectory", csv, "-o", out + ".wav"}, csv},
+  };
+  for (const auto& [args, named] : cases) {
+    SCOPED_TRACE(args.front() + " " + args[1]);
+    const Watchdog watchdog(named);
+    const auto start = std::chrono::steady_clock::now();
+    expect_refusal(run_haptex(args), {named, "FIFO"});
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15)) << "it waited on the FIFO";
+  }
+  EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
+}
+
+TEST(SpecialFiles, ADeviceOrAFolderAsInputIsRefused) {
+  const TempDir d;
+  expect_refusal(run_haptex({"info", "/dev/zero"}), {"/dev/zero", "a device"});
+  expect_refusal(run_haptex({"qa", d.path().string()}), {d.path().string(), "folder"});
+  fs::create_symlink("/dev/zero", d.file("zero.csv"));
+  expect_refusal(run_haptex({"convert", "hatt", d.file("zero.csv"), "-o", d.file("r.h5")}), {"zero.csv", "a device"});
+}
+
+}  // namespace
+}  // namespace haptex::test
