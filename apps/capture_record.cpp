@@ -26,7 +26,8 @@ std::atomic<bool> g_stop{false};
 
 extern "C" void request_stop(int) { g_stop = true; }
 
-// SIGINT and SIGTERM set the stop flag for the duration of the take; a second Ctrl-C kills as usual.
+// SIGINT, SIGTERM and SIGHUP (the terminal or the ssh session closed) set the stop flag for the
+// duration of the take, which then ends "interrupted" with every frame kept; a second Ctrl-C kills as usual.
 class StopOnSignal {
  public:
   StopOnSignal() {
@@ -37,14 +38,16 @@ class StopOnSignal {
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, &old_int_);
     sigaction(SIGTERM, &action, &old_term_);
+    sigaction(SIGHUP, &action, &old_hup_);
   }
   ~StopOnSignal() {
     sigaction(SIGINT, &old_int_, nullptr);
     sigaction(SIGTERM, &old_term_, nullptr);
+    sigaction(SIGHUP, &old_hup_, nullptr);
   }
 
  private:
-  struct sigaction old_int_ {}, old_term_ {};
+  struct sigaction old_int_ {}, old_term_ {}, old_hup_ {};
 };
 
 class CaptureRecord : public CaptureSubcommand {

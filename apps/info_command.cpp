@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.hpp"
+#include "core/text/utf8.hpp"
 #include "info/file_summary.hpp"
 
 namespace haptex::apps {
@@ -33,36 +34,38 @@ class InfoCommand : public Command {
 
  private:
   static void print(const info::FileSummary& s, bool every_dataset) {
-    std::cout << s.path << " (" << s.bytes << " bytes)\n"
-              << "  format   " << s.format << ", written by haptex " << s.version << " at " << s.created_utc << "\n"
-              << "  source   " << s.source << "\n"
+    // Every string in the file is shown escaped: a name's control characters never reach the terminal.
+    const auto shown = [](const std::string& t) { return text::printable(t); };
+    std::cout << shown(s.path) << " (" << s.bytes << " bytes)\n"
+              << "  format   " << shown(s.format) << ", written by haptex " << shown(s.version) << " at " << shown(s.created_utc) << "\n"
+              << "  source   " << shown(s.source) << "\n"
               << "  materials " << s.materials.size() << "\n";
     for (const auto& m : s.materials) {
-      std::cout << "  " << m.id << " (" << m.name << ")\n";
+      std::cout << "  " << shown(m.id) << " (" << shown(m.name) << ")\n";
       for (const auto& c : m.collections) {
-        std::cout << "    " << c.name << ": " << c.items.size() << "\n";
+        std::cout << "    " << shown(c.name) << ": " << c.items.size() << "\n";
         for (const auto& item : c.items) print_item(item, every_dataset);
       }
     }
     for (const auto& d : s.other_datasets)
-      std::cout << "  " << d.name << "  " << d.dtype << " [" << shape_text(d.shape) << "]\n";
+      std::cout << "  " << shown(d.name) << "  " << d.dtype << " [" << shape_text(d.shape) << "]\n";
   }
 
   // One line per item; with -v, every dataset with its dtype, shape and units.
   static void print_item(const info::ItemSummary& item, bool every_dataset) {
-    std::cout << "      " << item.key << ":";
+    std::cout << "      " << text::printable(item.key) << ":";
     if (item.duration_s) std::cout << " " << std::fixed << std::setprecision(2) << *item.duration_s << " s";
     if (item.sample_rate_hz) std::cout << " at " << std::setprecision(0) << *item.sample_rate_hz << " Hz";
     std::cout << std::defaultfloat;
     if (!every_dataset) {
       std::string names;
-      for (const auto& d : item.datasets) names += (names.empty() ? "" : ", ") + d.name;
+      for (const auto& d : item.datasets) names += (names.empty() ? "" : ", ") + text::printable(d.name);
       std::cout << "  [" << names << "]\n";
       return;
     }
     std::cout << "\n";
     for (const auto& d : item.datasets)
-      std::cout << "        " << std::left << std::setw(18) << d.name << std::setw(9) << d.dtype << std::setw(14)
+      std::cout << "        " << std::left << std::setw(18) << text::printable(d.name) << std::setw(9) << d.dtype << std::setw(14)
                 << "[" + shape_text(d.shape) + "]" << d.units << std::right << "\n";
   }
 

@@ -1,6 +1,7 @@
 #include "apps/provenance.hpp"
 
 #include <array>
+#include <span>
 #include <string_view>
 
 #include "core/text/shell_quote.hpp"
@@ -8,14 +9,16 @@
 namespace haptex::apps {
 namespace {
 
-constexpr std::array<std::string_view, 9> kLeftOut{"--help", "--output", "--sheets", "--log", "--csv", "--force",
-                                                    "--json", "--quiet", "--verbose"};
+constexpr std::array<std::string_view, 4> kOutputs{"--output", "--sheets", "--log", "--csv"};
+constexpr std::array<std::string_view, 5> kShared{"--help", "--force", "--json", "--quiet", "--verbose"};
 
-bool left_out(const CLI::Option& option) {
-  for (std::string_view name : kLeftOut)
+bool named(const CLI::Option& option, std::span<const std::string_view> names) {
+  for (std::string_view name : names)
     if (option.check_lname(std::string(name.substr(2)))) return true;
   return false;
 }
+
+bool left_out(const CLI::Option& option) { return named(option, kOutputs) || named(option, kShared); }
 
 void append_options(const CLI::App& app, std::string& line) {
   for (const CLI::Option* option : app.get_options()) {
@@ -32,6 +35,8 @@ void append_options(const CLI::App& app, std::string& line) {
 }
 
 }  // namespace
+
+bool is_output_option(const CLI::Option& option) { return named(option, kOutputs); }
 
 std::string command_line(const CLI::App& subcommand) {
   std::string line = "haptex " + subcommand.get_name();

@@ -13,4 +13,7 @@ namespace haptex::apps {
 // enough to make the same output again, and the same run written elsewhere records the same line.
 std::string command_line(const CLI::App& subcommand);
 
+// Whether the option names where an output goes: -o/--output, --sheets, --log, --csv.
+bool is_output_option(const CLI::Option& option);
+
 }  // namespace haptex::apps

@@ -6,6 +6,7 @@
 #include "apps/provenance.hpp"
 #include "core/error.hpp"
 #include "core/freed_memory.hpp"
+#include "core/text/utf8.hpp"
 #include "core/version.hpp"
 
 namespace haptex::apps {
@@ -16,6 +17,23 @@ void require_finite_numbers(CLI::App& app) {
   for (CLI::Option* option : app.get_options())
     if (option->get_type_name().find("FLOAT") != std::string::npos) option->check(finite_number());
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) require_finite_numbers(*sub);
+}
+
+// What every command's options must hold, checked before any work: one rule for every name and path
+// given on the command line (issue 32), valid UTF-8 without NUL as names inside files must be
+// (core/text/utf8.hpp), naming the option and the first bad byte (a file name that is not UTF-8 would
+// reach JSON and HDF5 attributes that must be); and an output option given as "" names no file
+// (apps/provenance.hpp lists them).
+void check_option_values(const CLI::App& app) {
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->count() == 0) continue;
+    for (const std::string& value : option->results()) {
+      text::require_utf8(value, "command line", option->get_name());
+      if (value.empty() && is_output_option(*option))
+        throw input_error(option->get_name(), "", "is empty, which names no file", "Name the output with " + option->get_name());
+    }
+  }
+  for (const CLI::App* sub : app.get_subcommands()) check_option_values(*sub);
 }
 
 }  // namespace
@@ -58,9 +76,10 @@ int run_main(int argc, char** argv) {
     if (!sub->parsed()) continue;
     global.command_line = command_line(*sub);
     try {
+      check_option_values(*sub);
       return command->run(global);
     } catch (const Error& e) {
-      std::cerr << "haptex " << command->name() << ": error: " << e.what() << "\n";
+      std::cerr << "haptex " << command->name() << ": error: " << text::printable(e.what(), true) << "\n";
       return e.kind() == Error::Kind::bad_input ? 2 : 1;
     } catch (const std::filesystem::filesystem_error& e) {
       std::cerr << "haptex " << command->name() << ": error: " << e.path1().string() << ": " << e.code().message()

@@ -10,6 +10,7 @@
 #include "convert/recording_checks.hpp"
 #include "convert/resampling.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/signal/butterworth.hpp"
 #include "core/signal/resample.hpp"
 #include "core/signal/sosfilt.hpp"
@@ -121,7 +122,8 @@ std::vector<ClusterTake> find_cluster_takes(const std::string& root) {
   std::vector<ClusterTake> takes;
   for (const auto& entry : fs::directory_iterator(sensor / "accel", ec)) {
     const std::string file = entry.path().filename().string();
-    if (!entry.is_regular_file() || entry.path().extension() != ".csv") continue;
+    if (entry.path().extension() != ".csv") continue;
+    require_regular_file(entry.path().string());  // a dangling link or a FIFO is refused, not skipped
     std::smatch m;
     if (!std::regex_match(file, m, name))
       throw input_error(entry.path().string(), "", "is not named TEXTURE_DIRECTION_VELOCITY_FORCE_REPEAT.csv",

@@ -13,6 +13,7 @@
 #include "convert/recordings_writer.hpp"
 #include "convert/texture_names.hpp"
 #include "core/error.hpp"
+#include "core/text/utf8.hpp"
 #include "core/input_file.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "dataset/format.hpp"
@@ -43,6 +44,7 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
   std::vector<std::string> files;
   std::set<fs::path> seen;  // a file named twice (or inside a named directory too) is one recording
   auto add = [&](const fs::path& file) {
+    text::require_utf8(file.string(), file.string(), "the file's name");  // it is stored as the recording's source
     std::error_code ec;
     if (seen.insert(fs::weakly_canonical(file, ec)).second) files.push_back(file.string());
   };
@@ -61,8 +63,10 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
         throw input_error(input, "", "the directory holds no .xml, .xml.gz or .csv recordings", "Point at the recordings' folder");
       std::sort(found.begin(), found.end());
       for (const auto& file : found) add(file);
+    } else if (!fs::exists(fs::symlink_status(input, ec))) {
+      throw input_error(input, "", "no such file or directory", "Check the path");
     } else {
-      require_regular_file(input);
+      require_regular_file(input);  // a FIFO, a device, a dangling link: said so
       add(input);
     }
   }

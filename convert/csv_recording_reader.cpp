@@ -16,6 +16,21 @@ namespace haptex::convert {
 
 namespace {
 
+// A channel's values and its time column's stamps in the same rows: a value without its time, or a time
+// without its value, would pair every later sample with the wrong stamp.
+void require_same_rows(const std::string& path, const CsvTable& table, const std::string& column, const std::string& time) {
+  const auto& values = table.lines.at(column);
+  const auto& stamps = table.lines.at(time);
+  const auto [v, t] = std::mismatch(values.begin(), values.end(), stamps.begin(), stamps.end());
+  if (v == values.end() && t == stamps.end()) return;
+  const bool value_alone = t == stamps.end() || (v != values.end() && *v < *t);
+  const std::size_t line = value_alone ? *v : *t;
+  throw input_error(path, "line " + std::to_string(line),
+                    value_alone ? "column '" + column + "' has a value but its time column '" + time + "' is empty"
+                                : "time column '" + time + "' has a time but column '" + column + "' is empty",
+                    "Give each sample its time in the same row, and leave both cells empty where there is none");
+}
+
 // The time column of each channel present, with its channels and stamps.
 std::vector<StampedChannels> group_by_time(const std::string& path, const FieldMap& map, const Recording& recording,
                                            CsvTable& table) {
@@ -34,12 +49,14 @@ std::vector<StampedChannels> group_by_time(const std::string& path, const FieldM
       throw input_error(path, "line 1", "the header has no '" + time + "' column",
                         "Add a time column in seconds named " + time + " (the field map's csv_time_column or csv_channel_times)");
     g.times = std::move(column->second);
-    for (const auto& channel : g.channels)
+    for (const auto& channel : g.channels) {
+      require_same_rows(path, table, map.channels.at(channel), time);
       if (recording.channels.at(channel).size() != g.times.size())
         throw input_error(path, "column '" + map.channels.at(channel) + "'",
                           "has " + std::to_string(recording.channels.at(channel).size()) + " values but its time column '" +
                               time + "' has " + std::to_string(g.times.size()),
                           "Give each sample its time in the same row, and leave both cells empty where there is none");
+    }
     out.push_back(std::move(g));
   }
   return out;

@@ -85,10 +85,9 @@ CsvTable read_csv_table(const std::string& path, std::uintmax_t max_bytes,
                         "Every row needs one value per header column");
     for (std::size_t c = 0; c < fields.size(); ++c) {
       if (!kept[c] || (may_be_empty[c] && text::trim(fields[c]).empty())) continue;
-      const std::optional<double> value = text::parse_number(fields[c]);
-      if (!value || !std::isfinite(*value))
-        throw input_error(path, where + ", column '" + table.header[c] + "'",
-                          text::describe_bad_number(fields[c], value.has_value()),
+      const std::optional<double> value = text::parse_stored_number(fields[c]);
+      if (!value)
+        throw input_error(path, where + ", column '" + table.header[c] + "'", text::describe_bad_number(fields[c]),
                           "Remove or interpolate bad samples in the source before converting");
       kept[c]->push_back(*value);
       kept_lines[c]->push_back(lines.number());

@@ -4,6 +4,8 @@
 
 #include "convert/units.hpp"
 #include "core/error.hpp"
+#include "core/text/format.hpp"
+#include "core/text/parse_number.hpp"
 
 namespace haptex::convert {
 void apply_units(Recording& recording, const std::string& quantity, const std::string& unit,
@@ -33,6 +35,14 @@ void check_channels(const Recording& recording, const std::function<std::string(
   if (n < kMinimumSamples)
     throw input_error(file, where(first), "only " + std::to_string(n) + " samples",
                       "A recording needs at least 1000 samples (0.1 s at 10 kHz)");
+  // After the units are applied, every sample must still fit the float32 the recordings file stores.
+  for (const auto& [channel, samples] : recording.channels)
+    for (std::size_t i = 0; i < samples.size(); ++i)
+      if (!std::isfinite(samples[i]) || std::abs(samples[i]) > text::kLargestStored)
+        throw input_error(file, where(channel) + ", sample " + std::to_string(i + 1),
+                          text::format("%g is beyond 3.4e38, the largest magnitude of the 32-bit floats the recordings file stores",
+                                       samples[i]),
+                          "Check the column's unit, or remove the bad samples");
   const int positions = int(recording.has("position_x")) + recording.has("position_y") + recording.has("position_z");
   if (positions != 0 && positions != 3)
     throw input_error(file, where("position_x"), "only some of position x, y, z are present",

@@ -22,6 +22,9 @@ std::string rate_text(const std::vector<StampedChannels>& groups) {
 }  // namespace
 
 int whole_source_rate(const std::string& file, const std::string& where, double rate_hz, double lowest_hz) {
+  if (rate_hz > kHighestRateHz)
+    throw input_error(file, where, text::format("the sample rate is %.4g Hz, over the %.0f Hz haptex takes", rate_hz, kHighestRateHz),
+                      "Give the rate in Hz (and times in seconds)");
   const double whole = std::round(rate_hz);
   if (!(rate_hz >= lowest_hz) || std::abs(rate_hz - whole) > 1e-6 * whole)
     throw input_error(file, where,
@@ -58,6 +61,11 @@ double check_stamps(const std::string& file, const std::string& column, const st
                         "Convert the parts before and after the gap as separate recordings");
     if (uniform) *uniform = *uniform && std::abs(steps[i] - mean) <= 0.01 * mean;
   }
+  if (1.0 / mean > kHighestRateHz)
+    throw input_error(file, where,
+                      text::format("the time stamps are %.3g s apart on average (%.4g Hz), over the %.0f Hz haptex takes", mean,
+                                   1.0 / mean, kHighestRateHz),
+                      "Give the times in seconds");
   return 1.0 / mean;
 }
 

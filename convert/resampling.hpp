@@ -13,15 +13,18 @@ namespace haptex::convert {
 // Acceleration: Nyquist at 1000 Hz, where the model's spectrum ends; slower, it holds none of its top
 // bins. Force, speed and position change slowly (the recordings file low-passes them at 20 Hz).
 inline constexpr double kLowestAccelRateHz = 2000.0, kLowestRateHz = 1.0;
+// Above this, no sensor's rate: the times are likely in another unit than seconds.
+inline constexpr double kHighestRateHz = 1e6;
 
 // The rate as a whole number of Hz. Throws haptex::Error (bad_input) naming `file` and `where` for a
-// rate under `lowest_hz`, or one that is no whole number of Hz.
+// rate under `lowest_hz` or over kHighestRateHz, or one that is no whole number of Hz.
 int whole_source_rate(const std::string& file, const std::string& where, double rate_hz, double lowest_hz);
 
 // The mean rate of time stamps (seconds) read from `column` of `file`, lines[i] the line of stamp i.
 // Throws haptex::Error (bad_input) naming the line: fewer than two stamps, a stamp that does not
 // come after the one before, a step over three times the median step (samples dropped: stamps may
-// wander, but no interpolation fills a gap). uniform, when given: every step within 1 % of the mean.
+// wander, but no interpolation fills a gap), a mean rate over kHighestRateHz. uniform, when given:
+// every step within 1 % of the mean.
 double check_stamps(const std::string& file, const std::string& column, const std::vector<double>& times,
                     const std::vector<std::size_t>& lines, bool* uniform = nullptr);
 

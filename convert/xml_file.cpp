@@ -13,7 +13,7 @@
 
 namespace haptex::convert {
 
-using text::describe_bad_number, text::parse_number, text::trim;
+using text::describe_bad_number, text::parse_stored_number, text::trim;
 
 namespace {
 
@@ -82,9 +82,8 @@ pugi::xml_node XmlFile::require(const pugi::xml_node& parent, const std::string&
 
 double XmlFile::number(const pugi::xml_node& node) const {
   const std::string_view text = trim(node.child_value());
-  const std::optional<double> value = parse_number(text);
-  if (!value || !std::isfinite(*value))
-    throw error(node, describe_bad_number(text, value.has_value()), "Write a finite decimal number");
+  const std::optional<double> value = parse_stored_number(text);
+  if (!value) throw error(node, describe_bad_number(text), "Write a finite decimal number");
   return *value;
 }
 
@@ -116,11 +115,11 @@ std::vector<double> XmlFile::values(const pugi::xml_node& array, const std::stri
   const char* name = value_name.c_str();
   for (pugi::xml_node value = array.child(name); value; value = value.next_sibling(name)) {
     const char* text = value.child_value();
-    const std::optional<double> number = parse_number(text);
-    if (!number || !std::isfinite(*number))
+    const std::optional<double> number = parse_stored_number(text);
+    if (!number)
       throw input_error(source_, where(value) + " (value " + std::to_string(samples.size() + 1) + " of <" +
                                      array.name() + ">)",
-                        describe_bad_number(text, number.has_value()),
+                        describe_bad_number(text),
                         "Remove or interpolate bad values in the source before converting");
     samples.push_back(*number);
   }

@@ -12,6 +12,9 @@ namespace haptex {
 void require_regular_file(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) {
+    struct stat link {};
+    if (errno == ENOENT && ::lstat(path.c_str(), &link) == 0)
+      throw input_error(path, "", "is a symbolic link to a file that does not exist", "Point the link at the file, or give the file");
     if (errno == ENOENT || errno == ENOTDIR) throw input_error(path, "", "no such file", "Check the path");
     throw input_error(path, "", std::string("cannot look at the file: ") + std::strerror(errno), "Check the path and permissions");
   }

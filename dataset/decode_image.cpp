@@ -100,7 +100,9 @@ cv::Mat decode_image(std::span<const std::uint8_t> bytes, DecodedColour colour) 
 }
 
 cv::Mat read_image_file(const std::string& path) {
-  require_regular_file(path);
+  std::error_code ec;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec))) return {};  // the caller says "cannot read"
+  require_regular_file(path);  // a FIFO or a device would block: refused by name
   std::ifstream in(path, std::ios::binary);
   std::vector<std::uint8_t> head(8);
   if (!in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()))) return {};

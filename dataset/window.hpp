@@ -18,6 +18,10 @@
 namespace haptex::dataset {
 
 inline constexpr double kSampleRateHz = 10000.0;  // every signal haptex keeps
+// The largest acceleration or spectrum amplitude haptex accepts from a file it did not compute itself
+// (predictions, truth): beyond any texture vibration (100,000 g), and far enough below float
+// overflow that the statistics stay finite.
+inline constexpr double kLargestAccelerationMs2 = 1e6;
 inline constexpr std::size_t kWindowSamples = 1000;  // 100 ms
 inline constexpr std::size_t kTargetBins = 100;      // bins 1..100: 10..1000 Hz
 inline constexpr double kBinHz = kSampleRateHz / double(kWindowSamples);  // bin k is k * 10 Hz

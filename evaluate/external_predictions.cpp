@@ -16,8 +16,7 @@ namespace {
 constexpr std::size_t kLongestName = 40;
 constexpr const char* kRemake = "Predict again on the grid of `haptex windows DATASET --split SPLIT` (docs/benchmark.md)";
 constexpr const char* kLayout = "Write the file as schemas/hdf5-layout.md (\"Predictions file\") lays it out; python/haptex_data.py's write_predictions does";
-// Beyond any texture vibration (100,000 g), and far enough below float overflow that the statistics stay finite.
-constexpr double kLargestAcceleration = 1e6;
+constexpr double kLargestAcceleration = dataset::kLargestAccelerationMs2;
 
 struct Reader {
   const std::string& path;

@@ -12,7 +12,7 @@
 
 namespace haptex::predict {
 
-using text::describe_bad_number, text::parse_number;
+using text::describe_bad_number, text::parse_stored_number;
 namespace {
 
 constexpr double kSamplePeriod = 1e-4;  // 10 kHz
@@ -29,11 +29,19 @@ std::vector<std::string> fields(const std::string& line) {
   return out;
 }
 
-int column(const std::vector<std::string>& header, std::initializer_list<const char*> names) {
+// The one column named by any of `names`; two such columns are refused (which would be meant?).
+int column(const std::string& path, const std::vector<std::string>& header, std::initializer_list<const char*> names) {
+  int found = -1;
   for (std::size_t i = 0; i < header.size(); ++i)
     for (const char* n : names)
-      if (header[i] == n) return int(i);
-  return -1;
+      if (header[i] == n) {
+        if (found >= 0)
+          throw input_error(path, "line 1", "columns " + std::to_string(found + 1) + " and " + std::to_string(i + 1) + " are both " +
+                                                header[std::size_t(found)] + (header[std::size_t(found)] == header[i] ? "" : " and " + header[i]),
+                            "Keep one of them");
+        found = int(i);
+      }
+  return found;
 }
 
 }  // namespace
@@ -45,7 +53,8 @@ Trajectory read_trajectory(const std::string& path) {
   std::string line;
   if (!std::getline(in, line)) throw input_error(path, "line 1", "the file is empty", "Write a header: time_s,force,speed");
   const std::vector<std::string> header = fields(line);
-  const int f = column(header, {"force", "force_n"}), s = column(header, {"speed", "speed_mm_s"}), t = column(header, {"time_s"});
+  const int f = column(path, header, {"force", "force_n"}), s = column(path, header, {"speed", "speed_mm_s"}),
+            t = column(path, header, {"time_s"});
   if (f < 0 || s < 0)
     throw input_error(path, "line 1", "the header names no force or no speed column", "Name the columns force (N) and speed (mm/s)");
   Trajectory out;
@@ -54,11 +63,14 @@ Trajectory read_trajectory(const std::string& path) {
     if (line.empty() || line == "\r") continue;
     const std::vector<std::string> v = fields(line);
     const std::string where = "line " + std::to_string(number);
+    if (v.size() > header.size())
+      throw input_error(path, where, "has " + std::to_string(v.size()) + " fields but the header names " + std::to_string(header.size()),
+                        "Give each row one value per header column");
     auto value = [&](int c, const char* what) {
       if (std::size_t(c) >= v.size()) throw input_error(path, where, std::string("the ") + what + " column is missing", "Fix or remove the line");
-      const std::optional<double> x = parse_number(v[std::size_t(c)]);
-      if (!x || !std::isfinite(*x))
-        throw input_error(path, where + ", column " + what, describe_bad_number(v[std::size_t(c)], x.has_value()),
+      const std::optional<double> x = parse_stored_number(v[std::size_t(c)]);
+      if (!x)
+        throw input_error(path, where + ", column " + what, describe_bad_number(v[std::size_t(c)]),
                           "Fix or remove the line");
       return *x;
     };

@@ -119,13 +119,15 @@ struct Reader {
     return node.attr_string(name);
   }
 
-  // Rates, noise levels, speeds, forces and amplitudes: none can be negative.
-  double magnitude(const h5::Node& node, const char* name, bool positive = false) const {
+  // Rates, noise levels, speeds, forces and amplitudes: none can be negative, and accelerations
+  // (noise, spectra) stay within dataset::kLargestAccelerationMs2.
+  double magnitude(const h5::Node& node, const char* name, bool positive = false, double largest = INFINITY) const {
     const std::string where = child(node, std::string("@") + name);
     if (!node.has_attr(name)) throw error(where, "is missing");
     const double v = node.attr_double(name);
-    if (!std::isfinite(v) || v < 0 || (positive && v == 0))
-      throw error(where, "is " + number_text(v) + ", expected a finite number " + (positive ? "above 0" : "of 0 or more"));
+    if (!std::isfinite(v) || v < 0 || (positive && v == 0) || v > largest)
+      throw error(where, "is " + number_text(v) + ", expected a finite number " + (positive ? "above 0" : "of 0 or more") +
+                             (std::isfinite(largest) ? " up to " + number_text(largest) : std::string()));
     return v;
   }
 
@@ -137,11 +139,12 @@ struct Reader {
   }
 
   template <typename T>
-  std::vector<double> magnitudes(const h5::Dataset& d) const {
+  std::vector<double> magnitudes(const h5::Dataset& d, double largest = INFINITY) const {
     const std::vector<T> v = d.read<T>();
     for (std::size_t i = 0; i < v.size(); ++i)
-      if (!std::isfinite(v[i]) || v[i] < 0)
-        throw error(d.object_path(), "value " + std::to_string(i) + " is " + number_text(v[i]) + ", expected a finite number of 0 or more");
+      if (!std::isfinite(v[i]) || v[i] < 0 || v[i] > largest)
+        throw error(d.object_path(), "value " + std::to_string(i) + " is " + number_text(v[i]) + ", expected a finite number of 0 or more" +
+                                         (std::isfinite(largest) ? " up to " + number_text(largest) : std::string()));
     return {v.begin(), v.end()};
   }
 
@@ -176,7 +179,7 @@ struct Reader {
     if (d.shape() != expected)
       throw error(d.object_path(), "has shape " + h5::shape_text(d.shape()) + ", expected " + h5::shape_text(expected) +
                                        " (speeds, forces, 100 bins)");
-    grid.spectra = magnitudes<double>(d);
+    grid.spectra = magnitudes<double>(d, dataset::kLargestAccelerationMs2);
     return grid;
   }
 
@@ -255,7 +258,7 @@ Truth read_truth_file(const std::string& path) {
   const Reader r{path};
   Truth truth;
   truth.sample_rate_hz = r.magnitude(root, "sample_rate_hz", true);
-  truth.accel_noise_m_s2 = r.magnitude(root, "accel_noise_m_s2");
+  truth.accel_noise_m_s2 = r.magnitude(root, "accel_noise_m_s2", false, dataset::kLargestAccelerationMs2);
   const h5::Group materials = r.group(root, dataset::layout::kMaterials);
   for (const std::string& id : materials.children()) truth.materials.push_back(r.material(materials, id));
   if (truth.materials.empty()) throw r.error("/materials", "holds no material");

@@ -59,13 +59,19 @@ double DeviceKeys::number(const std::string& key, const std::string& text) const
   refuse(key, "'" + text + "' is not a number from 0 to 1e12");
 }
 
+double DeviceKeys::percent(const std::string& key, const std::string& text) const {
+  const double value = number(key, text);
+  if (value > 100) refuse(key, "'" + text + "' is not a percentage from 0 to 100");
+  return value;
+}
+
 bool DeviceKeys::apply_stream_key(FakeCameraConfig& c, const std::string& key, const std::string& value) const {
   if (key == "drop") {
-    c.drop_percent = number(key, value);
+    c.drop_percent = percent(key, value);
   } else if (key == "error") {
-    c.error_percent = number(key, value);
+    c.error_percent = percent(key, value);
   } else if (key == "corrupt") {
-    c.corrupt_percent = number(key, value);
+    c.corrupt_percent = percent(key, value);
   } else if (key == "disconnect") {
     c.disconnect_after = std::uint64_t(number(key, value));
   } else if (key == "stall") {

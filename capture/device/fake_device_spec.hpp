@@ -36,6 +36,7 @@ class DeviceKeys {
   const std::string& device() const { return device_; }
   [[noreturn]] void refuse(const std::string& key, const std::string& what) const;
   double number(const std::string& key, const std::string& text) const;  // 0 or more
+  double percent(const std::string& key, const std::string& text) const;  // 0 to 100
   // The stream's timing and faults: drop, error, corrupt, disconnect, stall, speed, lockstep, seed.
   // Returns false when `key` is none of them.
   bool apply_stream_key(FakeCameraConfig& config, const std::string& key, const std::string& value) const;

@@ -7,6 +7,7 @@
 #include "capture/storage/press_file_frames.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "core/text/utf8.hpp"
 
 namespace haptex::capture {
 namespace fs = std::filesystem;
@@ -49,6 +50,7 @@ std::vector<std::string> subfolders(const std::string& dir) {
 
 CaptureInput input_for(const std::string& path, const std::string& material_name,
                        const std::optional<std::string>& material) {
+  text::require_utf8(path, path, "the file's name");  // it is stored as the press's source
   std::error_code ec;
   const bool press = is_press_file_name(path);
   const auto kind = press ? CaptureInput::Kind::press_file
@@ -122,6 +124,8 @@ std::vector<CaptureInput> expand_capture_inputs(const std::vector<std::string>& 
       out.push_back(input_for(argument, directory_name(p.parent_path().string()), material));
       continue;
     }
+    if (!fs::exists(fs::symlink_status(argument, ec)))
+      throw input_error(argument, "", "no such file or directory", "Check the path");
     if (!fs::is_directory(argument, ec)) require_regular_file(argument);  // says why it is neither
     const std::vector<std::string> sources = sources_in(argument);
     if (!sources.empty()) {  // one material

@@ -116,6 +116,11 @@ void check_recorder_options(const RecorderOptions& o) {
   require_reference_frames(o.reference_frames);
   if (o.warmup_frames < 0 || o.pre_frames < 0 || o.post_frames < 0)
     refuse("--warmup/--pre-frames/--post-frames", "must not be negative", "Give 0 or more frames");
+  // Frames before a contact wait in memory (a GelSight Mini's are 1 MB each): a bound keeps that sane.
+  constexpr int kMostFrames = 1000;
+  if (o.warmup_frames > kMostFrames || o.pre_frames > kMostFrames || o.post_frames > kMostFrames)
+    refuse("--warmup/--pre-frames/--post-frames", "must be at most " + std::to_string(kMostFrames) + " frames",
+           "Give fewer frames (1000 is 40 s at 25 fps)");
   if (o.seconds < 0) refuse("--seconds", "must not be negative", "Give a time limit in seconds, or 0 for none");
 }
 

@@ -14,6 +14,7 @@
 #include "capture/storage/video_file.hpp"
 #include "capture/storage/press_file_frames.hpp"
 #include "core/error.hpp"
+#include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
 
 namespace haptex::capture {
@@ -87,10 +88,12 @@ FakeDevice parse_replay_device(const std::string& device) {
     if (keys.apply_stream_key(c, key, value)) continue;
     if (key != "fps") keys.refuse(key, "unknown key");
     mode.fps = {keys.number(key, value)};
-    if (mode.fps.front() <= 0 || mode.fps.front() > 1000) keys.refuse(key, "expected a rate above 0 and at most 1000 frames per second");
+    if (!(mode.fps.front() >= kLowestFps && mode.fps.front() <= kHighestFps))
+      keys.refuse(key, text::format("expected a rate of %g to %g frames per second", kLowestFps, kHighestFps));
   }
-  if (mode.fps.front() <= 0)
-    throw input_error(file, "frame rate", "the file does not say its frame rate", "Give it: replay:" + file + ",fps=N");
+  if (!(mode.fps.front() >= kLowestFps && mode.fps.front() <= kHighestFps))
+    throw input_error(file, "frame rate", text::format("the file does not say its frame rate (or says one outside %g to %g frames per second)", kLowestFps, kHighestFps),
+                      "Give it: replay:" + file + ",fps=N");
   if (mode.width > kMaxSide || mode.height > kMaxSide)
     throw input_error(file, "frame size", std::to_string(mode.width) + "x" + std::to_string(mode.height) +
                       " is larger than the replay plays (" + std::to_string(kMaxSide) + "x" + std::to_string(kMaxSide) + ")",

@@ -6,6 +6,7 @@
 
 #include "dataset/vlen_bytes.hpp"
 #include "core/error.hpp"
+#include "core/text/format.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 
@@ -33,6 +34,10 @@ PressFileFrames::PressFileFrames(std::string path)
                       "Record the press again");
   size_ = cv::Size(int(width), int(height));
   fps_ = root.attr_double("fps");
+  if (fps_ != 0 && !(fps_ >= kLowestFps && fps_ <= kHighestFps))  // 0: not known (replay then needs fps=)
+    throw input_error(path_, "/@fps", text::format("is %g, neither 0 (not known) nor a frame rate of %g to %g frames per second",
+                                                   fps_, kLowestFps, kHighestFps),
+                      "Record the press again, or replay it with replay:FILE,fps=N");
   count_ = frames_.shape().at(0);
 }
 

@@ -13,6 +13,9 @@
 
 namespace haptex::capture {
 
+// The frame rates haptex takes from a file or a replay's fps= key: every tactile sensor's lies between.
+inline constexpr double kLowestFps = 1, kHighestFps = 1000;
+
 // A name ending in .h5 or .hdf5 (any case): how `capture extract` and replay tell press files from videos.
 bool is_press_file_name(const std::string& path);
 
@@ -25,7 +28,7 @@ class PressFileFrames {
   h5::Group root() const { return file_.root(); }  // for the attributes beyond the frames
   const std::string& encoding() const { return encoding_; }  // "jpeg" or "png"
   cv::Size size() const { return size_; }
-  double fps() const { return fps_; }
+  double fps() const { return fps_; }  // 0 when the file does not know it
   std::size_t count() const { return count_; }
   // Frame `index`'s bytes as stored. Throws haptex::Error (bad_input) naming the dataset when unreadable.
   std::vector<std::uint8_t> bytes(std::size_t index) const;

@@ -1,6 +1,7 @@
 #include "core/text/parse_number.hpp"
 
 #include <charconv>
+#include <cmath>
 
 namespace haptex::text {
 
@@ -21,9 +22,18 @@ std::optional<double> parse_number(std::string_view text) {
   return value;
 }
 
-std::string describe_bad_number(std::string_view text, bool parsed) {
+std::optional<double> parse_stored_number(std::string_view text) {
+  const std::optional<double> value = parse_number(text);
+  if (!value || !std::isfinite(*value) || std::abs(*value) > kLargestStored) return std::nullopt;
+  return value;
+}
+
+std::string describe_bad_number(std::string_view text, bool) {
   const std::string quoted = "'" + std::string(text.substr(0, 40)) + (text.size() > 40 ? "...'" : "'");
-  if (parsed) return quoted + " is not a finite number (NaN or Inf)";
+  if (const std::optional<double> value = parse_number(text)) {
+    if (!std::isfinite(*value)) return quoted + " is not a finite number (NaN or Inf)";
+    return quoted + " is beyond 3.4e38, the largest magnitude of the 32-bit floats haptex stores";
+  }
   std::string_view t = trim(text);
   if (!t.empty() && t.front() == '+') t.remove_prefix(1);
   double ignored = 0;

@@ -11,8 +11,14 @@ std::string_view trim(std::string_view text);
 // The number in text (surrounding white space and a leading '+' allowed), nullopt when the
 // text is not exactly one number. NaN and Inf parse; callers reject them with their own message.
 std::optional<double> parse_number(std::string_view text);
-// Why text is no finite number, for messages: "'abc' is not a number", "'1e-400' is out of range for
-// a 64-bit float ...", "'nan' is not a finite number (NaN or Inf)". parsed: parse_number gave a value.
-std::string describe_bad_number(std::string_view text, bool parsed);
+// Values haptex stores become 32-bit floats (recordings, datasets, models): a magnitude over the
+// largest one would be stored as inf, so readers refuse it.
+inline constexpr double kLargestStored = 3.4028234663852886e38;
+// parse_number, for a finite value of at most kLargestStored in magnitude only.
+std::optional<double> parse_stored_number(std::string_view text);
+// Why text is no number parse_stored_number takes, for messages: "'abc' is not a number", "'1e-400' is
+// out of range for a 64-bit float ...", "'nan' is not a finite number (NaN or Inf)", "'1e39' is beyond
+// ...". parsed: unused (the text is parsed again).
+std::string describe_bad_number(std::string_view text, bool parsed = false);
 
 }  // namespace haptex::text

@@ -24,21 +24,6 @@ Utf8Character decode(std::string_view text, std::size_t i) {
   return {code, text.substr(i, std::size_t(length)), true};
 }
 
-// text with each byte that is not UTF-8 shown as \xHH, so the message itself is UTF-8.
-std::string printable(std::string_view text) {
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string out;
-  for (const Utf8Character& c : utf8_characters(text)) {
-    if (c.valid) {
-      out += c.bytes;
-    } else {
-      const auto b = static_cast<unsigned char>(c.bytes[0]);
-      out += {'\\', 'x', kHex[b >> 4], kHex[b & 15]};
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 std::vector<Utf8Character> utf8_characters(std::string_view text) {
@@ -57,6 +42,27 @@ std::size_t invalid_utf8_offset(std::string_view text) {
     i += c.bytes.size();
   }
   return std::string_view::npos;
+}
+
+std::string printable(std::string_view text, bool keep_newlines) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (const Utf8Character& c : utf8_characters(text)) {
+    const char32_t u = c.code_point;
+    const bool control = c.valid && (u < 0x20 || u == 0x7f || (u >= 0x80 && u <= 0x9f)) && !(keep_newlines && (u == '\n' || u == '\t'));
+    if (c.valid && !control) {
+      out += c.bytes;
+    } else if (control && u < 0x80) {
+      out += {'\\', 'x', kHex[u >> 4], kHex[u & 15]};
+    } else if (control) {
+      out += "\\u00";
+      out += {kHex[u >> 4], kHex[u & 15]};
+    } else {
+      const auto b = static_cast<unsigned char>(c.bytes[0]);
+      out += {'\\', 'x', kHex[b >> 4], kHex[b & 15]};
+    }
+  }
+  return out;
 }
 
 void require_utf8(std::string_view text, const std::string& file, const std::string& what) {

@@ -19,6 +19,11 @@ std::vector<Utf8Character> utf8_characters(std::string_view text);
 // Byte offset of the first byte that starts no valid UTF-8 character; npos when text is all UTF-8.
 std::size_t invalid_utf8_offset(std::string_view text);
 
+// text as a terminal may show it: each byte that is not UTF-8 as \xHH, and each control character
+// (C0, DEL, C1: a terminal's escape sequences start with one) as \xHH or \u00HH, newlines and tabs
+// too unless keep_newlines. Names and paths pass through it before they are printed.
+std::string printable(std::string_view text, bool keep_newlines = false);
+
 // Throws haptex::Error (bad input) naming file, what (e.g. "the material name") and the byte
 // offset when text is not UTF-8, or holds a NUL (which HDF5 and C strings would cut the name at).
 void require_utf8(std::string_view text, const std::string& file, const std::string& what);

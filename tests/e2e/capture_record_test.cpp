@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstring>
 #include <cstdio>
 #include <fstream>
 #include <filesystem>
@@ -127,32 +128,37 @@ TEST_F(RecordCli, AnUnpluggedSensorKeepsWhatWasTakenAndExitsOne) {
   for (const auto& p : m["presses"]) EXPECT_TRUE(fs::exists(session_ + "/" + p["file"].get<std::string>()));
 }
 
-TEST_F(RecordCli, CtrlCClosesTheCurrentPressFileCleanly) {
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    freopen("/dev/null", "w", stdout);
-    freopen("/dev/null", "w", stderr);
-    execl(HAPTEX_BINARY, HAPTEX_BINARY, "capture", "record", "--device", "fake:size=320x240,speed=2", "--material", "Cork",
-          "--presses", "100", "-o", session_.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
+// Ctrl-C, kill (TERM) and a closed terminal or ssh session (HUP, issue 32) end the take alike.
+TEST_F(RecordCli, ASignalClosesTheCurrentPressFileCleanly) {
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    SCOPED_TRACE(strsignal(signal));
+    fs::remove_all(session_);
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      freopen("/dev/null", "w", stdout);
+      freopen("/dev/null", "w", stderr);
+      execl(HAPTEX_BINARY, HAPTEX_BINARY, "capture", "record", "--device", "fake:size=320x240,speed=2", "--material", "Cork",
+            "--presses", "100", "-o", session_.c_str(), static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    // In (twice) real time, as from a sensor; interrupt during the second press.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (temporaries_of(session_ + "/press_1.h5").empty() && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ASSERT_FALSE(temporaries_of(session_ + "/press_1.h5").empty()) << "the second press never started";
+    kill(child, signal);
+    int status = 0;
+    waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    EXPECT_TRUE(temporaries_of(session_ + "/press_1.h5").empty());
+    ASSERT_TRUE(fs::exists(session_ + "/press_1.h5"));
+    EXPECT_EQ(h5::File::open(session_ + "/press_1.h5").root().attr_string("ended_by"), "interrupted");
+    const nlohmann::json m = manifest();
+    EXPECT_EQ(m["ended_by"], "interrupted");
+    EXPECT_EQ(m["presses"].size(), 2u);
   }
-  // In (twice) real time, as from a sensor; interrupt during the second press.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (temporaries_of(session_ + "/press_1.h5").empty() && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  ASSERT_FALSE(temporaries_of(session_ + "/press_1.h5").empty()) << "the second press never started";
-  kill(child, SIGINT);
-  int status = 0;
-  waitpid(child, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0);
-  EXPECT_TRUE(temporaries_of(session_ + "/press_1.h5").empty());
-  ASSERT_TRUE(fs::exists(session_ + "/press_1.h5"));
-  EXPECT_EQ(h5::File::open(session_ + "/press_1.h5").root().attr_string("ended_by"), "interrupted");
-  const nlohmann::json m = manifest();
-  EXPECT_EQ(m["ended_by"], "interrupted");
-  EXPECT_EQ(m["presses"].size(), 2u);
 }
 
 TEST_F(RecordCli, RefusesTheMetadataNode) {

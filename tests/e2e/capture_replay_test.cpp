@@ -229,7 +229,7 @@ TEST_F(ReplayCli, BadSpecsAreRefusedBeforeAnythingIsWritten) {
       {"replay:" + dir_.file("absent.avi"), {dir_.file("absent.avi") + ": no such file", "replay:FILE"}},
       {"replay:" + video + ",fsp=25", {"fsp", "unknown key", "replay:FILE[,fps=N"}},
       {"replay:" + video + ",lockstep,size=64x48", {"size: unknown key"}},
-      {"replay:" + video + ",fps=0", {"fps", "above 0"}},
+      {"replay:" + video + ",fps=0", {"fps", "1 to 1000"}},
       {"replay:" + video + ",drop=many", {"drop", "'many' is not a number"}},
       {"replay:", {"no file given"}},
   };

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "core/gzip.hpp"
+#include "core/text/utf8.hpp"
 #include "dataset/press_images.hpp"
 #include "dataset/vlen_bytes.hpp"
 #include "tests/hostile/hostile_support.hpp"
@@ -146,6 +147,19 @@ std::vector<HostileCase> cluster_cases() {
       cluster("over --max-bytes", [=](const TempDir& d) { return in_db(d, "accel"); }, "max-bytes", {"--max-bytes", "1000"}),
       cluster("names file not UTF-8", [=](const TempDir& d) { return write(d, "names.csv", "id,name\n3,Caf\xe9\n"); }, "UTF-8",
               {"--names", "FILE"}),
+      // Issue 32, classes 15 and 17.
+      cluster("accel file a dangling link", [=](const TempDir& d) {
+        fs::remove(in_db(d, "accel"));
+        fs::create_symlink(d.file("nowhere.csv"), in_db(d, "accel"));
+        return in_db(d, "accel");
+      }, "link to a file that does not exist"),
+      cluster("names JSON key twice", [=](const TempDir& d) { return write(d, "names.json", R"({"3": "a", "3": "b"})"); }, "given twice",
+              {"--names", "FILE"}),
+      cluster("names file empty", [=](const TempDir& d) { return write(d, "names.csv", ""); }, "names no texture", {"--names", "FILE"}),
+      cluster("names file /dev/zero", [=](const TempDir& d) {
+        fs::create_symlink("/dev/zero", d.file("names.csv"));
+        return d.file("names.csv");
+      }, "not a regular file", {"--names", "FILE"}),
   };
 }
 
@@ -365,7 +379,7 @@ TEST(HostileCorpus, EveryReaderRefusesEveryCaseCleanly) {
     const std::string file = c.make(dir);
     const std::set<std::string> before = names_in(dir);
     const CommandResult r = run_haptex(c.command(dir, file));
-    expect_refusal(r, {fs::path(file).filename().string(), c.says});
+    expect_refusal(r, {text::printable(fs::path(file).filename().string()), c.says});  // named as a terminal shows it
     EXPECT_LT(std::count(r.err.begin(), r.err.end(), '\n'), 3) << "one message, not a cascade: " << r.err;
     EXPECT_EQ(names_in(dir), before) << "the command left a file behind";
   }

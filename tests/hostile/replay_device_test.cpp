@@ -56,7 +56,7 @@ TEST(HostileReplay, FilesThatAreNoVideoAreRefused) {
     expect_refusal(record("replay:" + file, session), {file, why});
     EXPECT_FALSE(fs::exists(session)) << file << ": nothing written";
   }
-  expect_refusal(record("replay:caf\xe9.avi", dir.file("s")), {"not valid UTF-8", "byte 3"});
+  expect_refusal(record("replay:caf\xe9.avi", dir.file("s")), {"--device", "not valid UTF-8", "byte 10"});
 }
 
 }  // namespace

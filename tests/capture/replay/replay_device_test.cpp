@@ -134,7 +134,7 @@ TEST_F(ReplayDevice, RefusesUnknownKeysAndBadValuesNamingThem) {
   expect_refused("replay:" + path + ",lockstep,fsp=30", {"fsp: unknown key", usage});
   // The fake camera's own keys: a replay's size, format and presses are the file's.
   expect_refused("replay:" + path + ",lockstep,size=64x48", {"size: unknown key"});
-  expect_refused("replay:" + path + ",fps=0", {"fps", "above 0"});
+  expect_refused("replay:" + path + ",fps=0", {"fps", "1 to 1000"});
   expect_refused("replay:" + path + ",fps=fast", {"fps", "'fast' is not a number"});
   expect_refused("replay:" + path + ",drop=-5", {"drop", "'-5' is not a number from 0 to 1e12"});
   expect_refused("replay:" + path + ",disconnect=", {"disconnect", "'' is not a number"});

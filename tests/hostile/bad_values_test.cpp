@@ -1,0 +1,148 @@
+// Issue 32, classes 10, 11, 13, 14, 16 and 17: values a reader must refuse, naming the file, the place
+// and the fix, with exit code 2 and nothing written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/mutations.hpp"
+#include "tests/support/quick_models.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+// A CSV recording in the built-in map's columns, `rows` rows at 10 kHz, each row made by `row`.
+std::string csv_recording(const TempDir& d, const std::string& name, int rows,
+                          const std::function<std::string(int)>& row, const std::string& header = "time_s,accelX,accelY,accelZ,forceNormal,speed") {
+  std::ofstream out(d.file(name));
+  out << header << "\n";
+  for (int i = 0; i < rows; ++i) out << row(i) << "\n";
+  return d.file(name);
+}
+
+std::string t(int i, double step = 1e-4) { return std::to_string(i * step); }
+
+CommandResult convert(const TempDir& d, const std::string& csv, const std::vector<std::string>& more = {}) {
+  std::vector<std::string> args{"convert", "hatt", csv, "-o", d.file("r.h5")};
+  args.insert(args.end(), more.begin(), more.end());
+  return run_haptex(args);
+}
+
+TEST(BadValues, StampsTooCloseTogetherNameTheColumn) {
+  const TempDir d;
+  const std::string csv = csv_recording(d, "rig_0.csv", 2000, [](int i) {
+    char time[32];
+    std::snprintf(time, sizeof time, "%.12e", i * 1e-10);
+    return std::string(time) + ",0.1,0.2,0.3,1,40";
+  });
+  expect_refusal(convert(d, csv), {csv, "column 'time_s'", "Give the times in seconds"});
+  EXPECT_FALSE(fs::exists(d.file("r.h5")));
+}
+
+TEST(BadValues, AFiniteValueBeyondFloat32IsRefused) {
+  const TempDir d;
+  const std::string csv = csv_recording(d, "rig_0.csv", 2000, [](int i) { return t(i) + (i == 7 ? ",1e39" : ",0.1") + ",0.2,0.3,1,40"; });
+  expect_refusal(convert(d, csv), {csv, "line 9", "accelX", "32-bit floats"});
+  std::ofstream(d.file("traj.csv")) << "force,speed\n1,100\n1e39,100\n";
+  expect_refusal(run_haptex({"predict", quick_model(), "--material", small_material(), "--csv", d.file("traj.csv")}),
+                 {d.file("traj.csv"), "line 3", "32-bit floats"});
+  expect_refusal(run_haptex({"render", quick_model(), "--material", small_material(), "--trajectory", d.file("traj.csv"), "-o",
+                             d.file("v.wav")}),
+                 {d.file("traj.csv"), "line 3", "32-bit floats"});
+  EXPECT_FALSE(fs::exists(d.file("r.h5")));
+  EXPECT_FALSE(fs::exists(d.file("v.wav")));
+}
+
+TEST(BadValues, AValueAndATimeInDifferentRowsAreRefused) {
+  const TempDir d;
+  nlohmann::json map = nlohmann::json::parse(std::ifstream(std::string(HAPTEX_SCHEMA_DIR) + "/hatt-recording-map.json"));
+  map["csv_channel_times"] = {{"force_normal", "t_force"}};
+  std::ofstream(d.file("map.json")) << map.dump();
+  // Row 10 has a force without its time, row 11 a time without its force: the counts agree.
+  const std::string csv = csv_recording(
+      d, "rig_0.csv", 2000,
+      [](int i) {
+        const std::string force = i == 10 ? ",,2" : i == 11 ? "," + t(i) + "," : i % 2 ? ",," : "," + t(i) + ",1";
+        return t(i) + ",0.1,0.2,0.3" + force + ",40";
+      },
+      "time_s,accelX,accelY,accelZ,t_force,forceNormal,speed");
+  expect_refusal(convert(d, csv, {"--map", d.file("map.json")}), {csv, "line 12", "forceNormal", "t_force"});
+}
+
+TEST(BadValues, EvaluateRefusesATruthBeyondAnyVibration) {
+  const SmallPipeline& p = small_pipeline();
+  for (const std::string what : {"noise", "spectrum"}) {
+    SCOPED_TRACE(what);
+    const TempDir d;
+    const std::string truth = d.file("truth.h5");
+    fs::copy_file(p.truth, truth);
+    {
+      Edit edit(truth);
+      if (what == "noise") {
+        edit.root().set_attr("accel_noise_m_s2", 1e300);
+      } else {
+        const std::string material = material_ids(truth).front();
+        edit.change_floats("materials/" + material + "/spectrum", [](std::vector<float>& v) { v[5] = 1e30f; });
+      }
+    }
+    expect_refusal(run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", quick_model(), "--truth", truth, "-o",
+                               d.file("rep")}),
+                   {truth, what == "noise" ? "/@accel_noise_m_s2" : "/spectrum", "up to"});
+    EXPECT_FALSE(fs::exists(d.file("rep")));
+  }
+}
+
+TEST(BadValues, ReplayRefusesAPressFileWithoutAFrameRate) {
+  const TempDir d;
+  ASSERT_EQ(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "--presses", "1", "-o",
+                        d.file("s")})
+                .exit_code,
+            0);
+  for (const double fps : {std::nan(""), double(INFINITY), 1e-300}) {
+    SCOPED_TRACE(fps);
+    const std::string press = d.file("p.h5");
+    fs::copy_file(d.file("s/press_0.h5"), press, fs::copy_options::overwrite_existing);
+    Edit(press).root().set_attr("fps", fps);
+    expect_refusal(run_haptex({"capture", "record", "--device", "replay:" + press, "--material", "Cork", "-o", d.file("r")}),
+                   {press, "/@fps"});
+    EXPECT_FALSE(fs::exists(d.file("r")));
+  }
+}
+
+TEST(BadValues, APredictCsvWithExtraFieldsOrTwoForceColumnsIsRefused) {
+  const TempDir d;
+  std::ofstream(d.file("extra.csv")) << "force,speed\n1,100\n1,100,7\n";
+  std::ofstream(d.file("twice.csv")) << "force,speed,force_n\n1,100,2\n";
+  expect_refusal(run_haptex({"predict", quick_model(), "--material", small_material(), "--csv", d.file("extra.csv")}),
+                 {"extra.csv", "line 3", "3 fields"});
+  expect_refusal(run_haptex({"predict", quick_model(), "--material", small_material(), "--csv", d.file("twice.csv")}),
+                 {"twice.csv", "line 1", "force and force_n"});
+}
+
+TEST(BadValues, AFileOfANewerFormatIsCalledNewer) {
+  const TempDir d;
+  const std::string dataset = d.file("d.h5");
+  fs::copy_file(small_pipeline().dataset, dataset);
+  Edit(dataset).root().set_attr("haptex_format", "dataset/5");
+  expect_refusal(run_haptex({"split", dataset, "-o", d.file("s.json")}), {dataset, "dataset/5", "newer haptex"});
+}
+
+TEST(BadValues, InfoShowsControlCharactersEscaped) {
+  const TempDir d;
+  const std::string dataset = d.file("d.h5");
+  fs::copy_file(small_pipeline().dataset, dataset);
+  const std::string material = material_ids(dataset).front();
+  Edit(dataset).group("materials/" + material).set_attr("name", "felt\x1b]0;pwned\x07\x1b[2J");
+  const CommandResult r = run_haptex({"info", dataset});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << "an escape sequence reached the terminal";
+  EXPECT_NE(r.out.find("felt\\x1b]0;pwned\\x07"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace haptex::test

@@ -1,0 +1,84 @@
+// Issue 32, classes 8, 9 and 17: what the command line itself may carry. One rule for names and paths
+// (valid UTF-8, the first bad byte named, before any work); an output named "" refused before any work;
+// fault percentages and frame counts within their range.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/quick_models.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kLatin1 = "caf\xe9";  // "café" in Latin-1: byte 3 is no UTF-8
+
+TEST(CommandLine, APathThatIsNotUtf8IsRefusedBeforeAnyWork) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string dataset = d.file(kLatin1 + ".h5");
+  fs::copy_file(p.dataset, dataset);
+  const std::vector<std::vector<std::string>> commands = {
+      {"split", dataset, "-o", d.file("s.json")},
+      {"split", p.dataset, "-o", d.file(kLatin1 + ".json")},
+      {"train", dataset, "--split", p.split, "-o", d.file("m.h5")},
+      {"align", "--recordings", p.recordings, "--gelsight", p.gelsight, "-o", d.file(kLatin1 + "_aligned.h5")},
+      {"evaluate", dataset, "--split", p.split, "--model", quick_model(), "-o", d.file("rep")},
+  };
+  for (const auto& args : commands) {
+    SCOPED_TRACE(args.front());
+    expect_refusal(run_haptex(args), {"not valid UTF-8", "byte", "caf\\xe9"});
+    EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
+  }
+  EXPECT_EQ(files_named(d.path().string(), {"s.json", "m.h5", kLatin1 + ".json", kLatin1 + "_aligned.h5", "rep"}),
+            std::vector<std::string>{});
+}
+
+TEST(CommandLine, AFileNameThatIsNotUtf8InAFolderIsRefused) {
+  const TempDir d;
+  fs::create_directory(d.file("recordings"));
+  fs::copy_file(*fs::directory_iterator(fs::path(small_pipeline().recordings).parent_path() / "synth" / "recordings"),
+                d.file("recordings/" + kLatin1 + "_0.xml.gz"));
+  expect_refusal(run_haptex({"convert", "hatt", d.file("recordings"), "-o", d.file("r.h5")}), {"not valid UTF-8", "byte"});
+  EXPECT_FALSE(fs::exists(d.file("r.h5")));
+}
+
+TEST(CommandLine, AnEmptyOutputNameIsRefusedBeforeAnyWork) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  std::ofstream(d.file("traj.csv")) << "force,speed\n1,100\n";
+  const std::vector<std::vector<std::string>> commands = {
+      {"convert", "hatt", (fs::path(p.recordings).parent_path() / "synth" / "recordings").string(), "-o", ""},
+      {"align", "--recordings", p.recordings, "--gelsight", p.gelsight, "-o", ""},
+      {"merge", p.gelsight, "-o", ""},
+      {"train", p.dataset, "--split", p.split, "-o", ""},
+      {"train", p.dataset, "--split", p.split, "-o", d.file("m.h5"), "--log", ""},
+      {"windows", p.dataset, "--split", p.split, "-o", ""},
+      {"render", quick_model(), "--material", small_material(), "--trajectory", d.file("traj.csv"), "-o", ""},
+      {"split", p.dataset, "-o", ""},
+  };
+  for (const auto& args : commands) {
+    SCOPED_TRACE(args.front());
+    const auto start = std::chrono::steady_clock::now();
+    expect_refusal(run_haptex(args), {"is empty, which names no file"});
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5)) << "refused before the work";
+  }
+  EXPECT_FALSE(fs::exists(d.file("m.h5")));
+}
+
+TEST(CommandLine, FaultPercentagesAndFrameCountsStayInRange) {
+  const TempDir d;
+  expect_refusal(run_haptex({"capture", "record", "--device", "fake:lockstep,drop=101", "--material", "Cork", "-o", d.file("s")}),
+                 {"drop", "percentage from 0 to 100"});
+  expect_refusal(run_haptex({"capture", "record", "--device", "fake:lockstep", "--material", "Cork", "--pre-frames", "2000000000",
+                             "-o", d.file("s")}),
+                 {"--pre-frames", "at most 1000"});
+  EXPECT_FALSE(fs::exists(d.file("s")));
+}
+
+}  // namespace
+}  // namespace haptex::test
