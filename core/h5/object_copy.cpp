@@ -6,6 +6,7 @@
 // one. Datasets keep their type, shape, chunking and filters (the source's creation properties).
 #include <hdf5.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "core/error.hpp"
@@ -89,10 +90,37 @@ struct Copy {
     }
     Handle to(check(H5Dcreate2(to_parent, new_name.c_str(), type.get(), space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT),
                     "create dataset", target_file + ":" + target_path));
-    if (!values.empty())
+    if (values.empty()) {
+    } else if (H5Pget_layout(creation.get()) == H5D_CHUNKED && H5Tdetect_class(type.get(), H5T_VLEN) <= 0 &&
+               !(H5Tget_class(type.get()) == H5T_STRING && H5Tis_variable_str(type.get()) > 0)) {
+      chunks(from.get(), to.get(), source_path, target_path);  // read above, so each one inflates
+    } else {
       check_status(H5Dwrite(to.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write dataset",
                    target_file + ":" + target_path);
+    }
     attributes(from.get(), to.get(), source_path, target_path);
+  }
+
+  // A chunked dataset's chunks copied as stored (compressed), once the whole dataset has been read: as
+  // fast as H5Ocopy, without compressing again.
+  void chunks(hid_t from, hid_t to, const std::string& source_path, const std::string& target_path) const {
+    Handle space(check_input(H5Dget_space(from), "read the shape of " + source_path, source_file));
+    hsize_t count = 0;
+    check_input_status(H5Dget_num_chunks(from, space.get(), &count), "list the chunks of " + source_path, source_file);
+    std::vector<hsize_t> offset(std::size_t(std::max(1, H5Sget_simple_extent_ndims(space.get()))));
+    std::vector<unsigned char> bytes;
+    for (hsize_t i = 0; i < count; ++i) {
+      unsigned mask = 0;
+      haddr_t address = 0;
+      hsize_t size = 0;
+      check_input_status(H5Dget_chunk_info(from, space.get(), i, offset.data(), &mask, &address, &size),
+                         "read chunk " + std::to_string(i) + " of " + source_path, source_file);
+      bytes.resize(std::size_t(size));
+      check_input_status(H5Dread_chunk(from, H5P_DEFAULT, offset.data(), &mask, bytes.data()),
+                         "read chunk " + std::to_string(i) + " of " + source_path, source_file);
+      check_status(H5Dwrite_chunk(to, H5P_DEFAULT, mask, offset.data(), std::size_t(size), bytes.data()), "write dataset",
+                   target_file + ":" + target_path);
+    }
   }
 
   void group(hid_t from_parent, const std::string& name, hid_t to_parent, const std::string& new_name,
