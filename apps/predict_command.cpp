@@ -1,4 +1,4 @@
-// haptex predict model.h5 (--image IMG [--reference REF] | --material ID) (--force F --speed V | --csv FILE) [--json]
+// haptex predict model.h5 (--image IMG [--reference REF] | --material ID) (--normal-force F --speed V | --csv FILE) [--json]
 #include <cstdio>
 #include <iostream>
 
@@ -30,20 +30,25 @@ class PredictCommand : public Command {
     auto* image = app.add_option("--image", image_, "GelSight press image (PNG/JPEG), unified models")->check(CLI::ExistingFile);
     app.add_option("--reference", reference_, "The sensor's no-contact frame for --image")->check(CLI::ExistingFile)->needs(image);
     auto* material = app.add_option("--material", material_, "A training material's id instead of an image")->excludes(image);
-    auto* force = app.add_option("--force", force_, "Normal force, N")->check(CLI::Range(0.0, 1e6));
+    auto* force = app.add_option("--normal-force", force_, "Normal force, N")->check(CLI::Range(0.0, 1e6));
+    // --force means "replace the output" in every other command: here it is refused, naming the new option.
+    app.add_option("--force", old_force_)->group("");
     auto* speed = app.add_option("--speed", speed_, "Tangential speed, mm/s")->check(CLI::Range(0.0, 1e9));
     auto* csv = app.add_option("--csv", csv_, "Force/speed trajectory at 10 kHz: columns force, speed (time_s optional)")
                     ->check(CLI::ExistingFile)->excludes(force)->excludes(speed);
     app.add_option("--hop", hop_, "Samples between predictions along --csv (the model's window step)")->capture_default_str()->check(CLI::Range(1, 100000));
-    force->needs(speed);
-    speed->needs(force);
+    // --normal-force and --speed go together: checked in run(), after the old --force spelling is named.
     (void)material;
     (void)csv;
   }
 
   int run(const GlobalOptions& global) override {
+    if (!old_force_.empty())
+      throw input_error("--force", "", "predict takes the normal force as --normal-force (N); --force means \"replace the output\" in "
+                                       "every other command",
+                        "Write --normal-force " + old_force_);
     if (csv_.empty() && (force_ < 0 || speed_ < 0))
-      throw Error(Error::Kind::bad_input, "predict: give --force and --speed, or a trajectory with --csv");
+      throw Error(Error::Kind::bad_input, "predict: give --normal-force and --speed, or a trajectory with --csv");
     if (image_.empty() && material_.empty()) throw Error(Error::Kind::bad_input, "predict: give --image (and --reference) or --material");
     const predict::Model model = predict::read_model(model_path_);
     predict::Predictor predictor(model);
@@ -122,6 +127,7 @@ class PredictCommand : public Command {
 
   std::string model_path_, image_, reference_, material_, csv_;
   double force_ = -1, speed_ = -1;
+  std::string old_force_;
   int hop_ = 100;
   std::vector<float> descriptor_;
 };

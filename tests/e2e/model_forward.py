@@ -7,7 +7,7 @@ Reads the file with h5py and numpy only, nothing from haptex. For the unified mo
 recomputed from the JSON's descriptor (an --image query: the encoder's output, compared with the JSON's
 image_latent, then recognised through the classifier) or taken from /material_latents (a --material
 query) and compared with the JSON's latent; every query's spectrum is recomputed from its force and
-speed (held for the 10 samples, as `haptex predict --force F --speed V` does) and compared with the
+speed (held for the 10 samples, as `haptex predict --normal-force F --speed V` does) and compared with the
 JSON's, as max |numpy - haptex| / max |haptex| <= 1e-4; the saturation flag must agree too.
 Prints "model forward ok" and exits 0 when everything agrees, prints "mismatch: ..." and exits 1 when
 not, exits 2 when the file does not follow the layout.

@@ -131,7 +131,7 @@ TEST_F(ModelFile, NumpyRecomputesTheLatentAndSpectrumOfAnImage) {
   expect_agrees(model, dir_.file("image.json"));
 
   // Far outside the training range: the saturation step of the forward pass.
-  args.insert(args.end(), {"--force", "1000", "--speed", "100000"});
+  args.insert(args.end(), {"--normal-force", "1000", "--speed", "100000"});
   const nlohmann::json far = predict_json(model, args, "far.json");
   EXPECT_TRUE(far["queries"][0]["out_of_range"].get<bool>());
   expect_agrees(model, dir_.file("far.json"));

@@ -104,17 +104,28 @@ std::string first_material() { return json::read_file(small_pipeline().split)["m
 
 TEST(PredictCli, PrintsOneHundredBinsAndFlagsOutOfRangeQueries) {
   const std::string material = first_material();
-  const CommandResult r = run_haptex({"predict", trained_model(), "--material", material, "--force", "1", "--speed", "100", "--json"});
+  const CommandResult r = run_haptex({"predict", trained_model(), "--material", material, "--normal-force", "1", "--speed", "100", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json out = nlohmann::json::parse(r.out);
   ASSERT_EQ(out["queries"].size(), 1u);
   ASSERT_EQ(out["queries"][0]["spectrum"].size(), 100u);
   for (double a : out["queries"][0]["spectrum"]) EXPECT_GE(a, 0.0);
 
-  const CommandResult far = run_haptex({"predict", trained_model(), "--material", material, "--force", "900", "--speed", "90000"});
+  const CommandResult far = run_haptex({"predict", trained_model(), "--material", material, "--normal-force", "900", "--speed", "90000"});
   ASSERT_EQ(far.exit_code, 0) << far.err;
   EXPECT_NE(far.err.find("outside the training range"), std::string::npos) << far.err;
   EXPECT_EQ(std::count(far.out.begin(), far.out.end(), '\n'), 101);  // header + 100 bins
+}
+
+// Issue 33: --force means "replace the output" everywhere; predict's force is --normal-force, and the
+// old spelling is refused naming the new one.
+TEST(PredictCli, TheNormalForceIsNotCalledForce) {
+  const CommandResult old = run_haptex({"predict", trained_model(), "--material", first_material(), "--force", "1.5", "--speed", "100"});
+  EXPECT_EQ(old.exit_code, 2);
+  EXPECT_NE(old.err.find("Write --normal-force 1.5"), std::string::npos) << old.err;
+  const CommandResult alone = run_haptex({"predict", trained_model(), "--material", first_material(), "--speed", "100"});
+  EXPECT_EQ(alone.exit_code, 2);
+  EXPECT_NE(alone.err.find("give --normal-force and --speed"), std::string::npos) << alone.err;
 }
 
 TEST(PredictCli, FollowsATrajectoryAndRefusesABadOne) {

@@ -278,7 +278,7 @@ std::vector<HostileCase> hdf5_cases() {
                          return file;
                        },
                        [](const TempDir&, const std::string& file) {
-                         return std::vector<std::string>{"predict", file, "--material", small_material(), "--force", "1", "--speed", "100"};
+                         return std::vector<std::string>{"predict", file, "--material", small_material(), "--normal-force", "1", "--speed", "100"};
                        },
                        says};
   };
@@ -328,7 +328,7 @@ std::vector<HostileCase> hdf5_cases() {
 
 std::vector<HostileCase> image_cases() {
   auto predict_image = [](const TempDir&, const std::string& file) {
-    return std::vector<std::string>{"predict", quick_model(), "--image", file, "--force", "1", "--speed", "100"};
+    return std::vector<std::string>{"predict", quick_model(), "--image", file, "--normal-force", "1", "--speed", "100"};
   };
   auto image = [=](std::string name, std::string bytes, std::string file, std::string says) {
     return HostileCase{"press image", name, [=](const TempDir& d) { return write(d, file, bytes); }, predict_image, says};

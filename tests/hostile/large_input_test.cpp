@@ -34,7 +34,7 @@ std::string png_header_only(std::uint32_t width, std::uint32_t height) {
 TEST(LargeInput, APressImageOverTheLimitIsRefusedFromItsHeader) {
   const TempDir dir;
   std::ofstream(dir.file("huge.png"), std::ios::binary) << png_header_only(12000, 12000);
-  const CommandResult r = run_haptex({"predict", quick_model(), "--image", dir.file("huge.png"), "--force", "1", "--speed", "100"});
+  const CommandResult r = run_haptex({"predict", quick_model(), "--image", dir.file("huge.png"), "--normal-force", "1", "--speed", "100"});
   expect_refusal(r, {dir.file("huge.png"), "12000 x 12000", "64 megapixels"});
 }
 
@@ -59,7 +59,7 @@ TEST(LargeInput, ASensorSizedFrameWithoutAReferenceStillWorks) {
   cv::Mat frame(2464, 3280, CV_8UC3);
   cv::randu(frame, 0, 255);
   ASSERT_TRUE(cv::imwrite(dir.file("mini.png"), frame));
-  const CommandResult r = run_haptex({"predict", quick_model(), "--image", dir.file("mini.png"), "--force", "1", "--speed", "100"});
+  const CommandResult r = run_haptex({"predict", quick_model(), "--image", dir.file("mini.png"), "--normal-force", "1", "--speed", "100"});
   EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 

@@ -42,7 +42,7 @@ TEST(Messages, ATruncatedHdf5FileIsBadInputWithAFixEverywhere) {
       {d, {"info", d, "--json"}},
       {d, {"train", d, "--split", p.split, "-o", dir.file("o3.h5")}},
       {d, {"evaluate", d, "--split", p.split, "--model", quick_model(), "-o", dir.file("rep")}},
-      {m, {"predict", m, "--material", small_material(), "--force", "1", "--speed", "100"}},
+      {m, {"predict", m, "--material", small_material(), "--normal-force", "1", "--speed", "100"}},
       {m, {"render", m, "--material", small_material(), "--trajectory", dir.file("t.csv"), "-o", dir.file("o.wav")}},
       {d, {"qa", d}},
   };

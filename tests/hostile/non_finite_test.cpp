@@ -138,8 +138,8 @@ TEST(NonFinite, EveryCommandRefusesAModelWithNaNInfinityOrAZeroScale) {
     trajectory.close();
     const std::string material = read_json(p.split)["materials"][0]["id"];
     const std::vector<std::string> mentions = {model, "/" + damage.array, damage.says};
-    expect_refusal(run_haptex({"predict", model, "--material", material, "--force", "1", "--speed", "100"}), mentions);
-    expect_refusal(run_haptex({"predict", model, "--material", material, "--force", "1", "--speed", "100", "--json"}), mentions);
+    expect_refusal(run_haptex({"predict", model, "--material", material, "--normal-force", "1", "--speed", "100"}), mentions);
+    expect_refusal(run_haptex({"predict", model, "--material", material, "--normal-force", "1", "--speed", "100", "--json"}), mentions);
     expect_refusal(run_haptex({"render", model, "--material", material, "--trajectory", dir.file("t.csv"), "-o", dir.file("o.wav")}),
                    mentions);
     EXPECT_FALSE(fs::exists(dir.file("o.wav")));
