@@ -46,6 +46,15 @@ TEST(Catalog, EveryCheckIsDocumentedWithItsSeverityAndFix) {
     EXPECT_TRUE(ids.count((*it)[1])) << (*it)[1] << " is documented but not in the catalog";
 }
 
+// README's command table says how many checks there are (issue 33: numbers in docs are tested).
+TEST(Catalog, TheReadmeCountsTheChecks) {
+  std::ifstream in(std::string(HAPTEX_SCHEMA_DIR) + "/../README.md");
+  const std::string readme(std::istreambuf_iterator<char>(in), {});
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(readme, m, std::regex("\\| ([0-9]+) checks with stable IDs"))) << "README names no count of checks";
+  EXPECT_EQ(std::stoul(m[1]), qa::all_checks().size());
+}
+
 // docs/qa.md, "The checks": the catalog and the code read side by side.
 TEST(Catalog, EveryCheckIsOneFunctionNamedAfterIt) {
   std::string sources;
