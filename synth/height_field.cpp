@@ -123,14 +123,6 @@ double HeightField::sample(double x_mm, double y_mm) const {
   return sum;
 }
 
-double HeightField::rms_mm() const {
-  double mean = 0, square = 0;
-  for (float h : height_mm) mean += h;
-  mean /= double(height_mm.size());
-  for (float h : height_mm) square += (h - mean) * (h - mean);
-  return std::sqrt(square / double(height_mm.size()));
-}
-
 HeightField make_height_field(const SurfaceRecipe& recipe, std::uint64_t seed, int n, double period_mm) {
   if (n < 8 || (n & (n - 1)) != 0) throw failure("make_height_field: n must be a power of two >= 8, not " + std::to_string(n));
   cv::Mat field = random_roughness(recipe, seed, n, period_mm);

@@ -16,7 +16,6 @@ struct HeightField {
   double pixel_mm() const { return period_mm / n; }
   float at(int ix, int iy) const;                 // wraps around
   double sample(double x_mm, double y_mm) const;  // cubic B-spline (C2-smooth), periodic
-  double rms_mm() const;                          // about the mean
 };
 
 // Periodic structure on top of the random roughness.
