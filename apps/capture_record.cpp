@@ -34,11 +34,13 @@ class StopOnSignal {
     g_stop = false;
     struct sigaction action {};
     action.sa_handler = request_stop;
-    action.sa_flags = SA_RESETHAND;
     sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &old_int_);
+    // TERM and HUP may come twice (timeout forwards them, a closing terminal repeats them): they keep
+    // asking to stop. Only a second Ctrl-C kills, as a user expects.
     sigaction(SIGTERM, &action, &old_term_);
     sigaction(SIGHUP, &action, &old_hup_);
+    action.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &action, &old_int_);
   }
   ~StopOnSignal() {
     sigaction(SIGINT, &old_int_, nullptr);

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/output_is_input.hpp"
 #include "core/text/format.hpp"
+#include "dataset/window.hpp"
 #include "predict/model_file.hpp"
 #include "predict/texture_choice.hpp"
 #include "render/vibration_render.hpp"
@@ -47,7 +48,8 @@ class RenderCommand : public Command {
     app.add_flag("--live", live_, "Render as a live haptic loop plays it: one frame per 10 ms (online, or noise with "
                                   "--reconstruct noise), output delayed as played");
     app.add_option("--full-scale", full_scale_, "m/s^2 at WAV full scale (default: the peak, rounded up to 3 digits)")
-        ->check(positive_number());
+        ->check(positive_number())
+        ->check(CLI::Range(0.0, dataset::kLargestAccelerationMs2));
     app.add_flag("--steady", steady_, "online: play the predicted spectra as they are, without drawing each frame's magnitudes "
                                       "around them (steadier than any surface; docs/render.md)");
     app.add_option("--seed", seed_, "fgla: seed of the random initial phase; online: of the frames' scatter; noise: of the noise")

@@ -3,6 +3,7 @@
 
 #include "apps/command.hpp"
 #include "apps/number_checks.hpp"
+#include "apps/printable_stream.hpp"
 #include "apps/provenance.hpp"
 #include "core/error.hpp"
 #include "core/freed_memory.hpp"
@@ -40,6 +41,7 @@ void check_option_values(const CLI::App& app) {
 
 int run_main(int argc, char** argv) {
   keep_freed_memory();
+  const PrintableStream out(std::cout), err(std::cerr);
   CLI::App app{"haptex: build, check and model haptic texture data (GelSight images + vibrations)", "haptex"};
   app.set_version_flag("--version", std::string("haptex ") + kVersion);
   app.require_subcommand(1);
@@ -85,6 +87,9 @@ int run_main(int argc, char** argv) {
       std::cerr << "haptex " << command->name() << ": error: " << e.path1().string() << ": " << e.code().message()
                 << ". Check the path and its permissions\n";
       return 2;
+    } catch (const std::bad_alloc&) {
+      std::cerr << "haptex " << command->name() << ": error: out of memory. Give smaller inputs, or run it on a machine with more memory\n";
+      return 1;
     } catch (const std::exception& e) {
       std::cerr << "haptex " << command->name() << ": unexpected error: " << e.what() << "\n";
       return 1;

@@ -7,6 +7,7 @@
 
 #include "apps/command.hpp"
 #include "core/durable_file.hpp"
+#include "core/error.hpp"
 #include "core/partial_directory.hpp"
 #include "core/output_is_input.hpp"
 #include "core/json/schema.hpp"
@@ -37,6 +38,8 @@ class SplitCommand : public Command {
   }
 
   int run(const GlobalOptions& global) override {
+    if (!no_plots_ && std::filesystem::absolute(output_).lexically_normal() == std::filesystem::absolute(plots_folder()).lexically_normal())
+      throw input_error(output_, "", "names the plot folder (<output>.plots) itself", "Give the manifest a name ending in .json");
     refuse_output_among_inputs(output_, {dataset_});
     refuse_output_among_inputs(plots_folder(), {dataset_});
     check_replaceable_output(output_, force_, "a split manifest (format split/1)",

@@ -13,10 +13,15 @@ class Error : public std::runtime_error {
     failed,     // the work itself failed (or a check found errors): exit code 1
   };
 
-  Error(Kind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+  // A NUL quoted from an input would cut what() short: it is written \x00.
+  Error(Kind kind, const std::string& message) : std::runtime_error(without_nul(message)), kind_(kind) {}
   Kind kind() const { return kind_; }
 
  private:
+  static std::string without_nul(std::string text) {
+    for (std::size_t at = text.find('\0'); at != std::string::npos; at = text.find('\0', at)) text.replace(at, 1, "\\x00");
+    return text;
+  }
   Kind kind_;
 };
 

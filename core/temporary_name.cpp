@@ -46,7 +46,10 @@ bool is_temporary_of(const std::string& entry, const std::string& final_name) {
 // follows a link nor blocks on a FIFO, and changes nothing.
 bool another_run_writes(const std::string& final_path, const std::string& own) {
   for (const std::string& other : temporaries_of(final_path)) {
-    if (other == own) continue;
+    struct stat kind {};
+    // Only a file or folder can be a run's temporary: a FIFO of that name is not opened (that would
+    // release a writer blocked on it), nor is anything else.
+    if (other == own || ::lstat(other.c_str(), &kind) != 0 || !(S_ISREG(kind.st_mode) || S_ISDIR(kind.st_mode))) continue;
     const int fd = ::open(other.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) continue;
     struct stat st {};

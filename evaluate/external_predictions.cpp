@@ -51,8 +51,9 @@ struct Reader {
   double seconds(const h5::Node& node, std::string_view name, const std::string& where) const {
     if (!node.has_attr(name)) return kNotMeasured;
     const double v = attribute(where, "one number", [&] { return node.attr_double(name); });
-    if (!std::isfinite(v) || v <= 0)
-      throw error(where, "is " + text::format("%g", v) + ", expected a compute time in seconds above 0",
+    constexpr double kLongest = 1e6;  // seconds: 11 days for one query is no measured time
+    if (!std::isfinite(v) || v <= 0 || v > kLongest)
+      throw error(where, "is " + text::format("%g", v) + ", expected a compute time in seconds above 0 and at most 1e6",
                   "Write the measured time, or leave the attribute out (the method then has no point in the speed chart)");
     return v;
   }

@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/image_header.hpp"
 #include "dataset/decode_image.hpp"
 
@@ -18,6 +19,7 @@ void check_pixels(const std::string& path, std::uint64_t width, std::uint64_t he
 
 // RGB, the order texture_descriptor takes (OpenCV decodes PNG and JPEG as BGR).
 cv::Mat read_rgb(const std::string& path) {
+  require_regular_file(path);  // a FIFO would block the header read below
   if (const auto size = image_header_size(path)) check_pixels(path, size->width, size->height);
   cv::Mat image = dataset::read_image_file(path);
   if (image.empty()) throw input_error(path, "", "not an image haptex can read", "Give a PNG or JPEG frame of the sensor");

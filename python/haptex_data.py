@@ -6,10 +6,12 @@ Needs python3, numpy and h5py. `WindowDataset` (a torch.utils.data.Dataset) exis
 imports. The file layouts are schemas/hdf5-layout.md ("Dataset file", "Windows file"); the split
 manifest is schemas/split.schema.json.
 """
+import errno
 import hashlib
 import io
 import json
 import os
+import sys
 from dataclasses import dataclass
 
 import h5py
@@ -27,10 +29,24 @@ class HaptexFileError(ValueError):
 
 def sha256_file(path):
     digest = hashlib.sha256()
-    with open(path, "rb") as f:
+    with open(_regular_file(path), "rb") as f:
         for block in iter(lambda: f.read(1 << 20), b""):
             digest.update(block)
     return digest.hexdigest()
+
+
+def _regular_file(path):
+    """path, after refusing what haptex refuses (core/input_file.hpp): a missing file, a folder, a FIFO,
+    a socket, a device or a dangling link (a FIFO would block the reader forever)."""
+    import stat
+    try:
+        mode = os.stat(path).st_mode
+    except FileNotFoundError:
+        kind = "a symbolic link to a file that does not exist" if os.path.islink(path) else "missing"
+        raise HaptexFileError(f"{path}: is {kind}: check the path") from None
+    if not stat.S_ISREG(mode):
+        raise HaptexFileError(f"{path}: is not a regular file (a folder, FIFO or device): give a regular file")
+    return path
 
 
 def _text(value):
@@ -89,7 +105,7 @@ def _read_table(group, path):
 
 def read_windows(path):
     """The evaluation's grid written by `haptex windows` (windows/2), in the order evaluate scores it."""
-    with h5py.File(path, "r") as f:
+    with h5py.File(_regular_file(path), "r") as f:
         _check_format(f, path, "windows/2")
         w = _read_table(f["windows"], path)
         w.dataset_sha256 = _text(f.attrs["dataset_sha256"])
@@ -109,7 +125,7 @@ class Split:
 
 
 def read_split(path):
-    with open(path, "rb") as f:
+    with open(_regular_file(path), "rb") as f:
         raw = f.read()
     try:
         doc = json.loads(raw.decode("utf-8"))
@@ -145,7 +161,7 @@ def read_set_windows(dataset_path, split, sets=("train",)):
     with their section numbers. Refuses a split made from another dataset file."""
     if sha256_file(dataset_path) != split.dataset_sha256:
         raise HaptexFileError(f"{split.path}: was made from another dataset than {dataset_path} (dataset.sha256)")
-    with h5py.File(dataset_path, "r") as f:
+    with h5py.File(_regular_file(dataset_path), "r") as f:
         _check_format(f, dataset_path, "dataset/4")
         w = _read_table(f["windows"], dataset_path)
         keep = np.zeros(len(w), dtype=bool)
@@ -185,7 +201,7 @@ def read_presses(dataset_path, split, material_id, sets=("train",)):
         raise HaptexFileError(f"{split.path}: was made from another dataset than {dataset_path} (dataset.sha256)")
     numbers = [p for name in sets for p in split.material_presses[material_id][name]]
     out = []
-    with h5py.File(dataset_path, "r") as f:
+    with h5py.File(_regular_file(dataset_path), "r") as f:
         _check_format(f, dataset_path, "dataset/4")
         for j in numbers:
             g = f[f"materials/{material_id}/presses/{j}"]
@@ -204,6 +220,20 @@ def read_split_and_grid(split_path, windows_path):
     if (grid.dataset_sha256, grid.split_sha256) != (split.dataset_sha256, split.sha256):
         raise HaptexFileError(f"{windows_path} was made from another dataset or split than {split_path}")
     return split, grid
+
+
+def leave(code):
+    """Exits with code without running exit handlers: after a failed write (a full disk) HDF5's own
+    handler crashes closing the file h5py left open (exit 139 instead of the error). Everything the
+    examples wrote is flushed or already removed by then."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(code)
+
+
+def exit_code_for(error):
+    """1 when the work failed (a write: a full disk, a read-only folder), 2 for bad input."""
+    return 1 if isinstance(error, OSError) and error.errno in (errno.ENOSPC, errno.EDQUOT, errno.EROFS, errno.EIO) else 2
 
 
 def example_arguments(description):
@@ -273,6 +303,14 @@ def write_predictions(path, grid, spectra, source, query_seconds=None, signals=N
                     g.attrs["seconds"] = float(signal_seconds)
         with open(partial, "rb") as f:
             os.fsync(f.fileno())
+        # h5py reports a failed flush at close (a full disk) only on stderr: read the file back.
+        try:
+            with h5py.File(partial, "r") as f:
+                whole = f["spectra"].shape == spectra.shape and f.attrs["predictions_format"] == PREDICTIONS_FORMAT
+        except (OSError, KeyError):
+            whole = False
+        if not whole:
+            raise OSError(errno.ENOSPC, f"{path}: could not be written completely (the disk is full?)")
         os.replace(partial, path)
         partial = None
     finally:
@@ -284,15 +322,21 @@ def check_output(path, inputs=(), overwrite=False):
     """Raises HaptexFileError when write_predictions would refuse path (call it before the work)."""
     if not path:
         raise HaptexFileError("the output name is empty: name a file with -o")
+    try:
+        path.encode("utf-8")
+    except UnicodeEncodeError:
+        raise HaptexFileError(f"{path!r}: the output name is not valid UTF-8: name it in UTF-8") from None
     for given in inputs:
         if os.path.exists(path) and os.path.exists(given) and os.path.samefile(path, given):
             raise HaptexFileError(f"{path}: is also an input ({given}): choose another output name")
     if not os.path.lexists(path):
         return
+    if os.path.islink(path) or not os.path.isfile(path):
+        raise HaptexFileError(f"{path}: the output path is a link, a folder, a FIFO or a device: choose another -o")
     if not overwrite:
         raise HaptexFileError(f"{path}: the output file already exists: remove it, choose another -o, or pass --force")
     try:
-        with h5py.File(path, "r") as f:
+        with h5py.File(_regular_file(path), "r") as f:
             ours = f.attrs.get("predictions_format") is not None
     except OSError:
         ours = False

@@ -163,6 +163,10 @@ struct Reader {
 
   std::vector<double> axis(const h5::Group& g, const char* name) const {
     std::vector<double> v = series<double>(g, name, "float64", kMostGridPoints, std::nullopt);
+    constexpr double kLargest = 1e6;  // mm/s or N: no stroke comes near
+    if (v.back() > kLargest)
+      throw error(child(g, name), "value " + std::to_string(v.size() - 1) + " is " + number_text(v.back()) + ", over " +
+                                      number_text(kLargest) + ", beyond any speed or force of a stroke");
     const auto low = std::adjacent_find(v.begin(), v.end(), std::greater_equal<>());
     if (low != v.end()) {
       const auto i = std::size_t(low - v.begin()) + 1;

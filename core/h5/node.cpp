@@ -173,6 +173,21 @@ std::size_t Dataset::elements() const {
   return n;
 }
 
+void require_readable_size(double count, std::size_t element_size, const std::string& file, const std::string& where) {
+  if (count * double(element_size) <= double(kMostBytesRead)) return;
+  throw input_error(file, where,
+                    "declares " + std::to_string(count) + " values of " + std::to_string(element_size) + " bytes, more than haptex reads at once (" +
+                        std::to_string(kMostBytesRead >> 30) + " GiB)",
+                    "The file is damaged or not what haptex wrote: make it again with the haptex command that wrote it");
+}
+
+std::size_t Dataset::elements_to_read(std::size_t element_size) const {
+  double count = 1;
+  for (auto d : shape()) count *= double(d);
+  require_readable_size(count, element_size, file_, object_path_);
+  return elements();
+}
+
 std::string Dataset::dtype() const {
   Handle type(H5Dget_type(id()));
   const std::size_t bytes = H5Tget_size(type.get());
@@ -192,7 +207,7 @@ void Dataset::read_raw(hid_t memory_type, void* out) const {
 
 std::vector<std::string> Dataset::read_strings() const {
   Handle memory = utf8_string_type();
-  std::vector<char*> pointers(elements(), nullptr);
+  std::vector<char*> pointers(elements_to_read(sizeof(char*)), nullptr);
   check_input_status(H5Dread(id(), memory.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "read strings", where());
   std::vector<std::string> values;
   for (const char* p : pointers) values.emplace_back(p ? p : "");

@@ -13,6 +13,11 @@
 namespace haptex::h5 {
 
 using Shape = std::vector<hsize_t>;
+// The most bytes one dataset or attribute may hold to be read at once: far beyond any haptex file's
+// (a file declaring more, in a few bytes of chunks, is refused instead of exhausting memory).
+inline constexpr std::uint64_t kMostBytesRead = std::uint64_t(4) << 30;
+// Throws haptex::Error (bad_input) naming `where` in `file` when count values of `element_size` bytes exceed it.
+void require_readable_size(double count, std::size_t element_size, const std::string& file, const std::string& where);
 // "(3, 4)": a shape in messages.
 std::string shape_text(const Shape& shape);
 
@@ -65,13 +70,15 @@ class Dataset : public Node {
 
   template <typename T>
   std::vector<T> read() const {
-    std::vector<T> out(elements());
+    std::vector<T> out(elements_to_read(sizeof(T)));
     read_raw(native_type<T>(), out.data());
     return out;
   }
   std::vector<std::string> read_strings() const;
 
  private:
+  // elements(), after a refusal (bad_input) of a dataset too large to read at once (kMostBytesRead).
+  std::size_t elements_to_read(std::size_t element_size) const;
   void read_raw(hid_t memory_type, void* out) const;
 };
 

@@ -7,6 +7,7 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <map>
 #include <vector>
 
 #include "core/error.hpp"
@@ -43,6 +44,11 @@ class Values {
 
 struct Copy {
   std::string source_file, target_file;
+  std::map<haddr_t, std::string> seen = {};  // every object copied, by address: a second link to one is refused
+
+  void require_size(hid_t type, hid_t space, const std::string& where) const {
+    require_readable_size(double(std::max<hssize_t>(0, H5Sget_simple_extent_npoints(space))), H5Tget_size(type), source_file, where);
+  }
 
   std::string member_name(hid_t group, hsize_t i, const std::string& group_path) const {
     const ssize_t length = H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
@@ -64,6 +70,7 @@ struct Copy {
       const std::string where = source_path + "@" + name;
       Handle type(check_input(H5Aget_type(attr.get()), "read the type of " + where, source_file));
       Handle space(check_input(H5Aget_space(attr.get()), "read the shape of " + where, source_file));
+      require_size(type.get(), space.get(), where);
       Values values(type.get(), space.get());
       if (!values.empty()) {
         check_input_status(H5Aread(attr.get(), type.get(), values.data()), "read " + where, source_file);
@@ -82,6 +89,7 @@ struct Copy {
     Handle type(check_input(H5Dget_type(from.get()), "read the type of " + source_path, source_file));
     Handle space(check_input(H5Dget_space(from.get()), "read the shape of " + source_path, source_file));
     Handle creation(check_input(H5Dget_create_plist(from.get()), "read the layout of " + source_path, source_file));
+    require_size(type.get(), space.get(), source_path);
     Values values(type.get(), space.get());
     if (!values.empty()) {
       check_input_status(H5Dread(from.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + source_path,
@@ -124,7 +132,7 @@ struct Copy {
   }
 
   void group(hid_t from_parent, const std::string& name, hid_t to_parent, const std::string& new_name,
-             const std::string& source_path, const std::string& target_path) const {
+             const std::string& source_path, const std::string& target_path) {
     Handle from(check_input(H5Gopen2(from_parent, name.c_str(), H5P_DEFAULT), "open " + source_path, source_file));
     Handle creation(check_input(H5Gget_create_plist(from.get()), "read the layout of " + source_path, source_file));
     Handle to(check(H5Gcreate2(to_parent, new_name.c_str(), H5P_DEFAULT, creation.get(), H5P_DEFAULT), "create group",
@@ -139,7 +147,7 @@ struct Copy {
   }
 
   void object(hid_t from_parent, const std::string& name, hid_t to_parent, const std::string& new_name,
-              const std::string& source_path, const std::string& target_path) const {
+              const std::string& source_path, const std::string& target_path) {
     H5L_info_t link;
     check_input_status(H5Lget_info(from_parent, name.c_str(), &link, H5P_DEFAULT), "read the link " + source_path, source_file);
     if (link.type != H5L_TYPE_HARD)
@@ -150,6 +158,10 @@ struct Copy {
     H5O_info_t info;
     check_input_status(H5Oget_info_by_name2(from_parent, name.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT),
                        "read " + source_path, source_file);
+    // A hard link back to a group above would copy forever; haptex files link each object once.
+    if (const auto [first, added] = seen.emplace(info.addr, source_path); !added)
+      throw input_error(source_file, source_path, "is a second link to " + first->second + ", which no haptex file holds",
+                        "Remove the extra link, or make the file again with the haptex command that wrote it");
     if (info.type == H5O_TYPE_GROUP) group(from_parent, name, to_parent, new_name, source_path, target_path);
     else if (info.type == H5O_TYPE_DATASET) dataset(from_parent, name, to_parent, new_name, source_path, target_path);
     else
@@ -161,7 +173,7 @@ struct Copy {
 }  // namespace
 
 void Group::copy_from(const Group& source, std::string_view name, std::string_view new_name) {
-  const Copy copy{source.file(), file_};
+  Copy copy{source.file(), file_};
   copy.object(source.id(), std::string(name), id(), std::string(new_name), joined(source.object_path(), std::string(name)),
               child_path(new_name));
 }

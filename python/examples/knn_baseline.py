@@ -88,10 +88,10 @@ def main():
                                       overwrite=args.force)
     except (haptex_data.HaptexFileError, OSError, KeyError) as e:
         print(f"knn_baseline: {e}", file=sys.stderr)
-        return 2
+        return haptex_data.exit_code_for(e)
     print(f"wrote {args.output} ({len(grid)} windows, k = {args.k})")
     return 0
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    haptex_data.leave(main())

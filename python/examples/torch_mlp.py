@@ -141,7 +141,7 @@ def main():
                                       overwrite=args.force)
     except (haptex_data.HaptexFileError, OSError, KeyError) as e:
         print(f"torch_mlp: {e}", file=sys.stderr)
-        return 2
+        return haptex_data.exit_code_for(e)
     best = int(np.argmin([v for _, v in history]))
     print(f"losses (training, validation): epoch 1 {history[0][0]:.6g} {history[0][1]:.6g}; "
           f"best epoch {best + 1} {history[best][0]:.6g} {history[best][1]:.6g}")
@@ -150,4 +150,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    haptex_data.leave(main())

@@ -144,5 +144,19 @@ TEST(BadValues, InfoShowsControlCharactersEscaped) {
   EXPECT_NE(r.out.find("felt\\x1b]0;pwned\\x07"), std::string::npos) << r.out;
 }
 
+// Whatever a command prints, a name's control characters are escaped (apps/printable_stream.hpp), and
+// a NUL quoted from an input does not cut the message short.
+TEST(BadValues, NoCommandPrintsATerminalEscapeOrStopsAtANul) {
+  const TempDir d;
+  const CommandResult r = run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "felt\x1b]0;pwned\x07",
+                                      "--presses", "1", "-o", d.file("s")});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("felt\\x1b]0;pwned\\x07"), std::string::npos) << r.out;
+  std::ofstream(d.file("nul.csv"), std::ios::binary) << std::string("force,speed\n1,1\0" "00\n", 19);
+  expect_refusal(run_haptex({"predict", quick_model(), "--material", small_material(), "--csv", d.file("nul.csv")}),
+                 {"line 2", "\\x00", "Fix or remove the line"});
+}
+
 }  // namespace
 }  // namespace haptex::test

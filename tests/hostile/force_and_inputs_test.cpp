@@ -252,5 +252,18 @@ TEST(Force, SplitKeepsAPlotOfTheUsers) {
   EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
 }
 
+// A dangling link at the output path is refused, with --force or without: it is not haptex's.
+TEST(Force, ADanglingLinkAtTheOutputIsRefused) {
+  const TempDir d;
+  fs::create_symlink(d.file("nowhere.json"), d.file("s.json"));
+  for (const bool force : {false, true}) {
+    std::vector<std::string> args{"split", small_pipeline().dataset, "-o", d.file("s.json"), "--no-plots"};
+    if (force) args.push_back("--force");
+    expect_refusal(run_haptex(args), {d.file("s.json"), "symbolic link to nothing"});
+    EXPECT_TRUE(fs::is_symlink(d.file("s.json")));
+  }
+  expect_refusal(run_haptex({"split", small_pipeline().dataset, "-o", d.file("x.plots")}), {"names the plot folder"});
+}
+
 }  // namespace
 }  // namespace haptex::test

@@ -142,5 +142,32 @@ TEST(MergeInput, ForceReplacesOnlyAFileHaptexWrote) {
   EXPECT_EQ(run_haptex({"merge", a, b, "-o", dir.file("m.h5"), "--force"}).exit_code, 0);
 }
 
+// A hard link back to a group above (a loop) and a dataset declaring 1e11 values in a few bytes are
+// refused naming the shard, never copied until the disk or the memory runs out.
+TEST(MergeInput, ALinkLoopOrAnAbsurdSizeIsRefused) {
+  const TempDir dir;
+  const std::string loop = second_material_of(dir, small_pipeline().recordings, "loop.h5");
+  {
+    const std::string material = "materials/" + material_ids(loop).front();
+    Edit edit(loop);
+    H5Lcreate_hard(edit.root().id(), material.c_str(), edit.root().id(), (material + "/recordings/loop").c_str(), H5P_DEFAULT,
+                   H5P_DEFAULT);
+  }
+  expect_refusal(run_haptex({"merge", good_shard(dir), loop, "-o", dir.file("out.h5")}), {loop, "second link to"});
+  const std::string huge = second_material_of(dir, small_pipeline().recordings, "huge.h5");
+  {
+    const std::string material = "materials/" + material_ids(huge).front();
+    Edit edit(huge);
+    const hsize_t size[1] = {hsize_t(1e11)}, chunk[1] = {1 << 20};
+    const hid_t space = H5Screate_simple(1, size, nullptr), list = H5Pcreate(H5P_DATASET_CREATE);
+    H5Pset_chunk(list, 1, chunk);
+    H5Pset_deflate(list, 1);
+    const hid_t d = H5Dcreate2(edit.root().id(), (material + "/huge").c_str(), H5T_NATIVE_FLOAT, space, H5P_DEFAULT, list, H5P_DEFAULT);
+    H5Dclose(d), H5Pclose(list), H5Sclose(space);
+  }
+  expect_refusal(run_haptex({"merge", good_shard(dir), huge, "-o", dir.file("out.h5")}), {huge, "/huge", "more than haptex reads at once"});
+  EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+}
+
 }  // namespace
 }  // namespace haptex::test

@@ -80,5 +80,13 @@ TEST(SpecialFiles, ADeviceOrAFolderAsInputIsRefused) {
   expect_refusal(run_haptex({"convert", "hatt", d.file("zero.csv"), "-o", d.file("r.h5")}), {"zero.csv", "a device"});
 }
 
+TEST(SpecialFiles, AFifoAsImageIsRefusedAtOnce) {
+  const TempDir d;
+  const std::string fifo = d.file("press.png");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const Watchdog watchdog(fifo);
+  expect_refusal(run_haptex({"predict", quick_model(), "--image", fifo, "--normal-force", "1", "--speed", "100"}), {fifo, "FIFO"});
+}
+
 }  // namespace
 }  // namespace haptex::test

@@ -1,8 +1,13 @@
 // Issue 32, class 1: a name beside the output that looks like haptex's old temporary name (OUT.partial)
 // is never trusted: not followed when it is a link, not emptied when it is a folder, not deleted when it
 // is a user's file or one of the inputs (core/temporary_name.hpp).
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <atomic>
+#include <thread>
 
 #include <filesystem>
 #include <fstream>
@@ -123,6 +128,26 @@ TEST(TemporaryNames, AnotherRunWritingTheSameOutputIsRefused) {
   EXPECT_EQ(temporaries_of(out), std::vector<std::string>{other.path});
   ::close(other.fd);
   EXPECT_EQ(run_haptex({"merge", small_pipeline().gelsight, "-o", out}).exit_code, 0) << "once that run has ended";
+}
+
+// A FIFO of the user's named like a temporary is never opened: opening it would release a writer
+// blocked on it, whose data would then be lost.
+TEST(TemporaryNames, AFifoNamedLikeATemporaryIsNotOpened) {
+  const TempDir d;
+  const std::string out = d.file("s.json"), fifo = out + ".ABCDEFGH.partial";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::atomic<bool> released{false};
+  std::thread writer([&] {
+    const int fd = ::open(fifo.c_str(), O_WRONLY);  // blocks until a reader opens the FIFO
+    released = true;
+    if (fd >= 0) ::close(fd);
+  });
+  const CommandResult r = run_haptex({"split", small_pipeline().dataset, "-o", out, "--no-plots"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(released) << "split opened the user's FIFO";
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);  // let the writer go
+  writer.join();
+  ::close(reader);
 }
 
 }  // namespace
