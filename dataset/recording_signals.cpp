@@ -17,7 +17,13 @@ std::vector<float> read_signal(const h5::Group& recording, const char* name, con
   const std::string found = d.has_attr("units") ? d.attr_string("units") : "";
   if (found != units) throw input_error(d.file(), d.object_path(), "units are '" + found + "', expected '" + units + "'", kConvertAgain);
   if (d.shape().size() != 1) throw input_error(d.file(), d.object_path(), "is not a 1-D signal", kConvertAgain);
-  return d.read<float>();
+  // float32 as the layout says (schemas/hdf5-layout.md): a float64 value beyond its range would be read as inf.
+  if (d.dtype() != "float32") throw input_error(d.file(), d.object_path(), "holds " + d.dtype() + ", expected float32", kConvertAgain);
+  std::vector<float> values = d.read<float>();
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]))
+      throw input_error(d.file(), d.object_path() + "[" + std::to_string(i) + "]", "is not a finite number", kConvertAgain);
+  return values;
 }
 
 }  // namespace

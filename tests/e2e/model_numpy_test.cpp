@@ -106,7 +106,7 @@ class ModelFile : public ::testing::Test {
   }
 
   static std::vector<std::string> in_range() {
-    return {"--force", std::to_string(trained().force), "--speed", std::to_string(trained().speed)};
+    return {"--normal-force", std::to_string(trained().force), "--speed", std::to_string(trained().speed)};
   }
 
   static void expect_agrees(const std::string& model, const std::string& json_file) {

@@ -158,5 +158,24 @@ TEST(BadValues, NoCommandPrintsATerminalEscapeOrStopsAtANul) {
                  {"line 2", "\\x00", "Fix or remove the line"});
 }
 
+// A recordings file whose accel is float64 holding 1e39 (beyond float32, which the layout says) is
+// refused by align naming the dataset, instead of becoming NaN windows.
+TEST(BadValues, AlignRefusesASignalOfTheWrongType) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string recordings = d.file("r.h5");
+  fs::copy_file(p.recordings, recordings);
+  const std::string accel = "materials/" + material_ids(recordings).front() + "/recordings/0/accel";
+  {
+    Edit edit(recordings);
+    std::vector<double> values(20000, 0.5);
+    values[7] = 1e39;
+    edit.replace<double>(accel, values, {values.size()});
+  }
+  expect_refusal(run_haptex({"align", "--recordings", recordings, "--gelsight", p.gelsight, "-o", d.file("d.h5")}),
+                 {recordings, "/accel", "float64, expected float32"});
+  EXPECT_FALSE(fs::exists(d.file("d.h5")));
+}
+
 }  // namespace
 }  // namespace haptex::test

@@ -142,8 +142,9 @@ TEST(MergeInput, ForceReplacesOnlyAFileHaptexWrote) {
   EXPECT_EQ(run_haptex({"merge", a, b, "-o", dir.file("m.h5"), "--force"}).exit_code, 0);
 }
 
-// A hard link back to a group above (a loop) and a dataset declaring 1e11 values in a few bytes are
-// refused naming the shard, never copied until the disk or the memory runs out.
+// A hard link back to a group above (a loop), a dataset declaring 1e11 values in a few bytes and one
+// stored outside the file (on /dev/zero) are refused naming the shard, never copied until the disk or
+// the memory runs out.
 TEST(MergeInput, ALinkLoopOrAnAbsurdSizeIsRefused) {
   const TempDir dir;
   const std::string loop = second_material_of(dir, small_pipeline().recordings, "loop.h5");
@@ -166,6 +167,17 @@ TEST(MergeInput, ALinkLoopOrAnAbsurdSizeIsRefused) {
     H5Dclose(d), H5Pclose(list), H5Sclose(space);
   }
   expect_refusal(run_haptex({"merge", good_shard(dir), huge, "-o", dir.file("out.h5")}), {huge, "/huge", "more than haptex reads at once"});
+  const std::string external = second_material_of(dir, small_pipeline().recordings, "external_storage.h5");
+  {
+    const std::string material = "materials/" + material_ids(external).front();
+    Edit edit(external);
+    const hsize_t size[1] = {1000};
+    const hid_t space = H5Screate_simple(1, size, nullptr), list = H5Pcreate(H5P_DATASET_CREATE);
+    H5Pset_external(list, "/dev/zero", 0, 4000);  // a device read as if it were the file's
+    const hid_t d = H5Dcreate2(edit.root().id(), (material + "/zeros").c_str(), H5T_NATIVE_FLOAT, space, H5P_DEFAULT, list, H5P_DEFAULT);
+    H5Dclose(d), H5Pclose(list), H5Sclose(space);
+  }
+  expect_refusal(run_haptex({"merge", good_shard(dir), external, "-o", dir.file("out.h5")}), {external, "/zeros", "outside the file"});
   EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
 }
 
