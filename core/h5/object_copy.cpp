@@ -18,6 +18,11 @@ namespace {
 
 std::string joined(const std::string& path, const std::string& name) { return path == "/" ? "/" + name : path + "/" + name; }
 
+// Whether values of the type hold pointers to memory HDF5 allocates (variable-length sequences or strings).
+bool variable_length(hid_t type) {
+  return H5Tdetect_class(type, H5T_VLEN) > 0 || (H5Tget_class(type) == H5T_STRING && H5Tis_variable_str(type) > 0);
+}
+
 // Holds a buffer read with `type` over `space` and frees what variable-length values allocated in it.
 class Values {
  public:
@@ -26,9 +31,7 @@ class Values {
     bytes_.resize(std::size_t(points > 0 ? points : 0) * H5Tget_size(type));
   }
   ~Values() {
-    if (read_ && H5Tdetect_class(type_, H5T_VLEN) > 0) H5Dvlen_reclaim(type_, space_, H5P_DEFAULT, bytes_.data());
-    else if (read_ && H5Tget_class(type_) == H5T_STRING && H5Tis_variable_str(type_) > 0)
-      H5Dvlen_reclaim(type_, space_, H5P_DEFAULT, bytes_.data());
+    if (read_ && variable_length(type_)) H5Dvlen_reclaim(type_, space_, H5P_DEFAULT, bytes_.data());
   }
   Values(const Values&) = delete;
   Values& operator=(const Values&) = delete;
@@ -104,8 +107,7 @@ struct Copy {
     Handle to(check(H5Dcreate2(to_parent, new_name.c_str(), type.get(), space.get(), H5P_DEFAULT, creation.get(), H5P_DEFAULT),
                     "create dataset", target_file + ":" + target_path));
     if (values.empty()) {
-    } else if (H5Pget_layout(creation.get()) == H5D_CHUNKED && H5Tdetect_class(type.get(), H5T_VLEN) <= 0 &&
-               !(H5Tget_class(type.get()) == H5T_STRING && H5Tis_variable_str(type.get()) > 0)) {
+    } else if (H5Pget_layout(creation.get()) == H5D_CHUNKED && !variable_length(type.get())) {
       chunks(from.get(), to.get(), source_path, target_path);  // read above, so each one inflates
     } else {
       check_status(H5Dwrite(to.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write dataset",
