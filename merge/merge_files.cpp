@@ -9,16 +9,20 @@
 #include "merge/shard.hpp"
 #include "merge/shard_provenance.hpp"
 #include "merge/window_merge.hpp"
+#include "qa/integrity.hpp"
 
 namespace haptex::merge {
 namespace {
 
 using namespace dataset::layout;
 
-std::vector<Shard> open_shards(const std::vector<std::string>& paths) {
+std::vector<Shard> open_shards(const std::vector<std::string>& paths, bool check_integrity) {
   if (paths.empty()) throw input_error("(command line)", "", "no shard given", "Name the files to merge");
   std::vector<Shard> shards;
-  for (const std::string& path : paths) shards.push_back(open_shard(path));
+  for (const std::string& path : paths) {
+    shards.push_back(open_shard(path));
+    if (check_integrity) qa::require_integrity(shards.back().file.root(), dataset::format_name(shards.back().kind));
+  }
   require_joinable(shards);
   return shards;
 }
@@ -54,7 +58,7 @@ void copy_materials(h5::Group root, const std::vector<Shard>& shards, const Mate
 
 MergeResult merge_files(const MergeOptions& o, const Progress& progress) {
   text::require_utf8(o.output, "(command line)", "the output file name");
-  const std::vector<Shard> shards = open_shards(o.shards);
+  const std::vector<Shard> shards = open_shards(o.shards, o.check_integrity);
   MergeResult result{shards.front().kind, plan_for(shards, o.keep_first), 0};
   const std::optional<dataset::WindowTable> windows = windows_for(shards, result.plan);
   h5::AtomicFile out(o.output, o.overwrite);

@@ -18,6 +18,9 @@ struct MergeOptions {
   bool overwrite = false;   // replaces only a file haptex wrote
   bool keep_first = false;  // a material in several shards is taken from the first, not refused
   std::string provenance;   // the command line, stored as the output's `source`
+  // qa's integrity checks on every shard (qa/integrity.hpp). Off only where the shards' layout is
+  // beside the point: the tests of the joining rules use skeleton shards.
+  bool check_integrity = true;
 };
 
 struct MergeResult {
@@ -26,7 +29,8 @@ struct MergeResult {
   std::size_t windows = 0;  // dataset files only
 };
 
-// Every shard is opened and checked, and every material placed, before the output is created, so
+// Every shard is opened and checked (its integrity as qa checks it, then whether it can be joined),
+// and every material placed, before the output is created, so
 // bad input (haptex::Error, bad_input, naming the file, the object and the fix) leaves nothing
 // written. Materials are copied whole (HDF5 object copy); a dataset's windows are concatenated and
 // renumbered (merge/window_merge.hpp). Writes atomically.

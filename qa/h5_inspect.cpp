@@ -79,12 +79,16 @@ PatternMatch match_pattern(const h5::Group& root, const std::string& pattern) {
       if (object_type(root, base) != ObjectType::group) continue;
       if (part.front() == '{') {
         const h5::Group group = base == "/" ? root : root.open_group(base.substr(1));
-        for (const auto& child : group.children())
+        for (const auto& child : group.children()) {
           if (last || group.has_group(child)) next.push_back(join(base, child));
+          else match.not_groups.push_back(join(base, child));
+        }
       } else {
         const std::string path = join(base, part);
-        if (object_type(root, path) != ObjectType::missing) next.push_back(path);
-        else match.missing.push_back(path);
+        const ObjectType type = object_type(root, path);
+        if (type == ObjectType::missing) match.missing.push_back(path);
+        else if (last || type == ObjectType::group) next.push_back(path);
+        else match.not_groups.push_back(path);
       }
     }
     found = std::move(next);

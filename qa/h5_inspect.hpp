@@ -23,6 +23,7 @@ h5::Dataset open_dataset_at(const h5::Group& root, const std::string& path);
 struct PatternMatch {
   std::vector<std::string> paths;    // existing objects the pattern stands for
   std::vector<std::string> missing;  // literal segments missing where their parent exists
+  std::vector<std::string> not_groups;  // objects on the way that are datasets (or other) where the pattern needs a group
 };
 // Segments written {name} stand for every child group; other segments are literal.
 PatternMatch match_pattern(const h5::Group& root, const std::string& pattern);

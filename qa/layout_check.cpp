@@ -38,11 +38,13 @@ struct FoundObject {
   bool scalar = true;  // an attribute holding one value (datasets: always)
   h5::Shape shape;     // datasets
   std::optional<std::string> units;  // datasets whose row names units: their `units` attribute, when they have one
+  bool readable_text = true;  // string attributes: UTF-8 without a NUL inside, as haptex reads names
 };
 
 struct RowFindings {
   const LayoutRow* row;
   std::vector<std::string> missing;  // missing groups on the row's path (rows required `always`; each path once)
+  std::vector<std::string> not_groups;  // objects on the row's path that are not groups (each path once)
   std::vector<FoundObject> found;
 };
 
@@ -57,6 +59,13 @@ FoundObject find_attribute(const h5::Group& root, const LayoutRow& row, const st
   f.present = true;
   f.dtype = info.dtype;
   f.scalar = info.scalar;
+  if (f.dtype == "string" && f.scalar) {
+    try {
+      node.attr_string(row.attribute);
+    } catch (const Error&) {
+      f.readable_text = false;
+    }
+  }
   return f;
 }
 
@@ -82,10 +91,12 @@ std::vector<RowFindings> find_rows(const h5::Group& root, const std::vector<Layo
   std::vector<RowFindings> out;
   std::set<std::string> reported_missing;
   for (const auto& row : rows) {
-    RowFindings& r = out.emplace_back(RowFindings{&row, {}, {}});
+    RowFindings& r = out.emplace_back(RowFindings{&row, {}, {}, {}});
     const PatternMatch match = match_pattern(root, row.owner);
     for (const auto& missing : match.missing)
       if (row.always && reported_missing.insert(missing).second) r.missing.push_back(missing);
+    for (const auto& wrong : match.not_groups)
+      if (reported_missing.insert(wrong).second) r.not_groups.push_back(wrong);
     for (const auto& path : match.paths)
       r.found.push_back(is_attribute_row(row) ? find_attribute(root, row, path) : find_dataset(root, row, path));
   }
@@ -167,9 +178,10 @@ void judge_shape(const h5::Group& root, const LayoutRow& row, const FoundObject&
 
 CheckResult check_layout_required(const std::vector<RowFindings>& rows) {
   CheckTally tally("layout.required", "objects and attributes");
-  for (const auto& [row, missing, found] : rows) {
-    for (const auto& path : missing)
-      tally.fail(path, "missing (schemas/hdf5-layout.md line " + std::to_string(row->line) + ": " + row->path + ")");
+  for (const auto& [row, missing, not_groups, found] : rows) {
+    const std::string line = "schemas/hdf5-layout.md line " + std::to_string(row->line) + ": " + row->path;
+    for (const auto& path : missing) tally.fail(path, "missing (" + line + ")");
+    for (const auto& path : not_groups) tally.fail(path, "is not a group, the layout needs one here (" + line + ")");
     for (const auto& f : found)
       if (f.present) tally.pass();
       else if (!is_attribute_row(*row)) tally.fail(f.where, "is a group, expected a " + row->dtype + " dataset");
@@ -185,6 +197,7 @@ CheckResult check_layout_dtype(const std::vector<RowFindings>& rows) {
       if (!f.present) continue;
       if (f.dtype != r.row->dtype) tally.fail(f.where, "dtype " + f.dtype + ", expected " + r.row->dtype);
       else if (r.row->shape.empty() && !f.scalar) tally.fail(f.where, "holds several values, expected one " + r.row->dtype);
+      else if (!f.readable_text) tally.fail(f.where, "is not UTF-8 text, or holds a NUL byte inside its text");
       else tally.pass();
     }
   return tally.result();

@@ -144,7 +144,12 @@ std::string Node::attr_string(std::string_view name) const {
   }
   std::string value(H5Tget_size(type.get()), '\0');  // fixed-length strings, as other tools write them
   check_input_status(H5Aread(attr.get(), type.get(), value.data()), "read attribute", where());
-  value.resize(std::min(value.size(), value.find('\0')));
+  // Padding is NULs to the end; text after a NUL would be cut off unseen (issue 32), so it is refused.
+  const std::size_t end = std::min(value.size(), value.find('\0'));
+  if (value.find_first_not_of('\0', end) != std::string::npos)
+    throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' holds a NUL byte inside its text",
+                      "Write the attribute without NUL bytes (haptex writes names as UTF-8 text)");
+  value.resize(end);
   text::require_utf8(value, file_, object_path_ + " attribute '" + std::string(name) + "'");
   return value;
 }

@@ -49,7 +49,16 @@ struct Copy {
   std::string source_file, target_file;
   std::map<haddr_t, std::string> seen = {};  // every object copied, by address: a second link to one is refused
 
-  void require_size(hid_t type, hid_t space, const std::string& where) const {
+  // References point at objects of the file they were written in: copied, they would point nowhere
+  // (or anywhere) in the output. No haptex file holds them.
+  void require_plain_type(hid_t type, const std::string& where) const {
+    if (H5Tdetect_class(type, H5T_REFERENCE) > 0)
+      throw input_error(source_file, where, "holds HDF5 object references, which no haptex file holds",
+                        "Remove it, or make the file again with the haptex command that wrote it");
+  }
+
+  void require_readable(hid_t type, hid_t space, const std::string& where) const {
+    require_plain_type(type, where);
     require_readable_size(double(std::max<hssize_t>(0, H5Sget_simple_extent_npoints(space))), H5Tget_size(type), source_file, where);
   }
 
@@ -73,7 +82,7 @@ struct Copy {
       const std::string where = source_path + "@" + name;
       Handle type(check_input(H5Aget_type(attr.get()), "read the type of " + where, source_file));
       Handle space(check_input(H5Aget_space(attr.get()), "read the shape of " + where, source_file));
-      require_size(type.get(), space.get(), where);
+      require_readable(type.get(), space.get(), where);
       Values values(type.get(), space.get());
       if (!values.empty()) {
         check_input_status(H5Aread(attr.get(), type.get(), values.data()), "read " + where, source_file);
@@ -97,7 +106,7 @@ struct Copy {
     if (H5Pget_external_count(creation.get()) > 0 || H5Pget_layout(creation.get()) == H5D_VIRTUAL)
       throw input_error(source_file, source_path, "keeps its values outside the file (external or virtual storage), which no haptex file does",
                         "Make the file again with the haptex command that wrote it");
-    require_size(type.get(), space.get(), source_path);
+    require_readable(type.get(), space.get(), source_path);
     Values values(type.get(), space.get());
     if (!values.empty()) {
       check_input_status(H5Dread(from.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + source_path,

@@ -151,7 +151,7 @@ TEST(MergeInput, ALinkLoopOrAnAbsurdSizeIsRefused) {
   {
     const std::string material = "materials/" + material_ids(loop).front();
     Edit edit(loop);
-    H5Lcreate_hard(edit.root().id(), material.c_str(), edit.root().id(), (material + "/recordings/loop").c_str(), H5P_DEFAULT,
+    H5Lcreate_hard(edit.root().id(), material.c_str(), edit.root().id(), (material + "/recordings/0/loop").c_str(), H5P_DEFAULT,
                    H5P_DEFAULT);
   }
   expect_refusal(run_haptex({"merge", good_shard(dir), loop, "-o", dir.file("out.h5")}), {loop, "second link to"});
@@ -179,6 +179,85 @@ TEST(MergeInput, ALinkLoopOrAnAbsurdSizeIsRefused) {
   }
   expect_refusal(run_haptex({"merge", good_shard(dir), external, "-o", dir.file("out.h5")}), {external, "/zeros", "outside the file"});
   EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+}
+
+// Issue 32, class 12: what qa calls broken (qa/integrity.hpp) merge does not copy. Each shard is
+// merged alone, so nothing but its own defect can stop it.
+struct BrokenShard {
+  std::string name;
+  std::string from;  // the file it is a copy of
+  std::function<void(Edit&, const std::string& material)> damage;
+  std::vector<std::string> says;
+};
+
+// A fixed-length string attribute as other tools write one, holding exactly `text` (NULs included).
+void set_fixed_string(Edit& edit, const std::string& object, const std::string& name, const std::string& text) {
+  edit.remove(object + "@" + name);
+  const hid_t type = H5Tcopy(H5T_C_S1), space = H5Screate(H5S_SCALAR);
+  H5Tset_size(type, text.size());
+  H5Tset_strpad(type, H5T_STR_NULLPAD);
+  const hid_t owner = H5Oopen(edit.root().id(), object.c_str(), H5P_DEFAULT);
+  const hid_t attr = H5Acreate2(owner, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
+  H5Awrite(attr, type, text.data());
+  H5Aclose(attr), H5Oclose(owner), H5Sclose(space), H5Tclose(type);
+}
+
+void add_reference_attribute(Edit& edit, const std::string& object, const std::string& target) {
+  hobj_ref_t ref;
+  H5Rcreate(&ref, edit.root().id(), target.c_str(), H5R_OBJECT, -1);
+  const hid_t space = H5Screate(H5S_SCALAR), owner = H5Oopen(edit.root().id(), object.c_str(), H5P_DEFAULT);
+  const hid_t attr = H5Acreate2(owner, "odd", H5T_STD_REF_OBJ, space, H5P_DEFAULT, H5P_DEFAULT);
+  H5Awrite(attr, H5T_STD_REF_OBJ, &ref);
+  H5Aclose(attr), H5Oclose(owner), H5Sclose(space);
+}
+
+std::vector<BrokenShard> broken_shards() {
+  const SmallPipeline& p = small_pipeline();
+  return {
+      {"a float64 signal holding 1e39", p.recordings, [](Edit& e, const std::string& m) {
+         const std::string accel = m + "/recordings/0/accel";
+         const std::vector<float> stored = e.dataset(accel).read<float>();
+         std::vector<double> values(stored.begin(), stored.end());
+         values[7] = 1e39;
+         e.replace<double>(accel, values, e.dataset(accel).shape());
+       }, {"/recordings/0/accel", "dtype float64, expected float32", "layout.dtype"}},
+      {"a sample rate of 1e39", p.recordings, [](Edit& e, const std::string& m) { e.group(m + "/recordings/0").set_attr("sample_rate_hz", 1e39); },
+       {"sample_rate_hz is 1e+39", "signal.sample_rate"}},
+      {"a dataset where the recordings group belongs", p.recordings, [](Edit& e, const std::string& m) {
+         e.remove(m + "/recordings");
+         e.group(m).write<float>("recordings", {0, 0, 0});
+       }, {"/recordings: is not a group", "layout.required"}},
+      {"a name with a NUL inside", p.recordings, [](Edit& e, const std::string& m) { set_fixed_string(e, m, "name", std::string("Sand\0paper", 10)); },
+       {"/@name", "NUL byte", "layout.dtype"}},
+      {"an object reference", p.recordings, [](Edit& e, const std::string& m) { add_reference_attribute(e, m + "/recordings/0", m + "/recordings/0/speed"); },
+       {"/recordings/0@odd", "object references"}},
+      {"a window start moved by 1e12", p.dataset, [](Edit& e, const std::string&) {
+         std::vector<std::int64_t> start = e.dataset("windows/start").read<std::int64_t>();
+         start[0] += 1000000000000;
+         e.replace<std::int64_t>("windows/start", start, e.dataset("windows/start").shape());
+       }, {"/windows[0]", "starts at sample 1000000000000", "dataset.windows"}},
+      {"a cached action of NaN", p.dataset, [](Edit& e, const std::string&) { e.change_floats("windows/action", [](auto& v) { v[0] = NAN; }); },
+       {"action[0] is nan", "dataset.cache"}},
+      {"a negative cached target", p.dataset, [](Edit& e, const std::string&) { e.change_floats("windows/target", [](auto& v) { v[0] = -v[0]; }); },
+       {"target[0]", "dataset.cache"}},
+  };
+}
+
+TEST(MergeInput, AShardQaCallsBrokenIsRefused) {
+  for (const BrokenShard& c : broken_shards()) {
+    SCOPED_TRACE(c.name);
+    const TempDir dir;
+    const std::string bad = copy_into(dir, c.from, "broken.h5");
+    {
+      Edit edit(bad);
+      c.damage(edit, "materials/" + material_ids(bad).front());
+    }
+    std::vector<std::string> says = c.says;
+    says.push_back(bad);
+    expect_refusal(run_haptex({"merge", bad, "-o", dir.file("out.h5")}), says);
+    EXPECT_FALSE(fs::exists(dir.file("out.h5")));
+    EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+  }
 }
 
 }  // namespace

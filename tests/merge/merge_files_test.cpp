@@ -68,6 +68,7 @@ MergeOptions options(const std::vector<std::string>& shards, const std::string& 
   o.shards = shards;
   o.output = output;
   o.provenance = "haptex merge (test)";
+  o.check_integrity = false;  // skeleton shards: these tests are about the joining rules
   return o;
 }
 
@@ -186,6 +187,18 @@ TEST(MergeFiles, RefusesDatasetsWhoseWindowsCannotBeJoined) {
   }
   const std::string missing = refusal(options({a, lost}, out));
   EXPECT_NE(missing.find("lost.h5: /windows/recording[1]: is 1, but material felt has no such recording"), std::string::npos) << missing;
+}
+
+// With the integrity checks on (the default), a skeleton shard is refused by qa's layout check,
+// naming the shard and the check.
+TEST(MergeFiles, RefusesAShardThatFailsQasIntegrityChecks) {
+  const TempDir dir;
+  const std::string a = shard(dir, "a.h5", Kind::gelsight, {{"cork"}});
+  MergeOptions o = options({a}, dir.file("m.h5"));
+  o.check_integrity = true;
+  const std::string message = refusal(o);
+  EXPECT_NE(message.find(a + ": /materials/cork/presses: missing"), std::string::npos) << message;
+  EXPECT_NE(message.find("(qa check layout.required)"), std::string::npos) << message;
 }
 
 TEST(MergeFiles, ForceReplacesOnlyAFileHaptexWrote) {

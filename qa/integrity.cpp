@@ -1,0 +1,41 @@
+#include "qa/integrity.hpp"
+
+#include "core/error.hpp"
+#include "dataset/format.hpp"
+#include "qa/checkers.hpp"
+#include "qa/recording_checks.hpp"
+
+namespace haptex::qa {
+namespace {
+
+std::vector<CheckResult> recording_integrity(const h5::Group& root) {
+  CheckTally nan{"signal.nan", "recordings"}, rate{"signal.sample_rate", "recordings"};
+  for (const auto& path : recording_paths(root)) {
+    const LoadedRecording r = load_recording(root, path);
+    check_signal_nan(r, nan);
+    check_signal_sample_rate(r, rate);
+  }
+  return {nan.result(), rate.result()};
+}
+
+void append(std::vector<CheckResult>& out, std::vector<CheckResult> more) {
+  for (auto& r : more) out.push_back(std::move(r));
+}
+
+}  // namespace
+
+std::vector<CheckResult> check_integrity(const h5::Group& root, const std::string& format) {
+  std::vector<CheckResult> results = check_layout(root, format);
+  if (format != dataset::format_name(dataset::Kind::gelsight)) append(results, recording_integrity(root));
+  if (format == dataset::format_name(dataset::Kind::dataset)) append(results, check_dataset(root));
+  return results;
+}
+
+void require_integrity(const h5::Group& root, const std::string& format) {
+  for (const CheckResult& r : check_integrity(root, format))
+    if (r.status == Status::fail)
+      throw input_error(root.file(), "", r.message + " (qa check " + r.id + ")",
+                        r.hint + "; `haptex qa " + root.file() + "` lists every finding");
+}
+
+}  // namespace haptex::qa

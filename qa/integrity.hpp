@@ -1,0 +1,22 @@
+#pragma once
+// The checks that say whether a file holds what its haptex_format promises, as opposed to whether
+// its data is good enough to train on: the layout (layout.*), finite signals at the format's rate
+// (signal.nan, signal.sample_rate) and a window table that matches its recordings (dataset.windows,
+// dataset.cache). `haptex merge` refuses a shard that fails any of them (docs/merge.md): it reads
+// what it copies as strictly as qa does. The quality checks stay qa's, run on the merged file.
+#include <string>
+#include <vector>
+
+#include "core/h5/node.hpp"
+#include "qa/check.hpp"
+
+namespace haptex::qa {
+
+// The integrity checks of a recordings, gelsight or dataset file, in catalog order.
+std::vector<CheckResult> check_integrity(const h5::Group& root, const std::string& format);
+
+// Throws haptex::Error (bad_input) naming the file, the first failed place, the check and the fix
+// when check_integrity finds anything.
+void require_integrity(const h5::Group& root, const std::string& format);
+
+}  // namespace haptex::qa
