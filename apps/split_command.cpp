@@ -52,9 +52,16 @@ class SplitCommand : public Command {
     const nlohmann::json manifest = split::manifest_json(dataset_, options_, splits, global.command_line);
     qa::require_sound_split({output_, manifest}, dataset_);
     split::PlotResult plots;
-    if (plots_dir) plots = split::write_split_plots(dataset_, windows, splits, options_.sections, plots_dir->path(), plots_folder());
-    json::write_file(manifest, "split.schema.json", output_);
-    if (plots_dir) plots_dir->commit();  // a manifest without its plots, never plots without their manifest
+    if (plots_dir)
+      plots_dir->fill([&](const std::string& dir) {
+        plots = split::write_split_plots(dataset_, windows, splits, options_.sections, dir, plots_folder());
+      });
+    // The manifest and its plots appear together or not at all (a full disk while writing either).
+    PartialFile manifest_file(output_);
+    json::write_file(manifest, "split.schema.json", manifest_file);
+    if (plots_dir) plots_dir->finish();
+    manifest_file.commit();
+    if (plots_dir) plots_dir->commit();
     if (global.json) {
       std::cout << json::read_file(output_).dump(2) << "\n";
       return 0;

@@ -92,7 +92,9 @@ class TrainCommand : public Command {
       epochs.push_back(epoch_json(r));
       if (show) print_epoch(r);
     });
-    predict::write_model(model, output_, force_, global.command_line);
+    // The model and its log appear together or not at all (a full disk while writing either).
+    h5::AtomicFile model_file(output_, force_);
+    predict::write_model(model, model_file, global.command_line);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const nlohmann::json log = {{"format", "training-log/1"}, {"haptex_version", kVersion}, {"created_utc", h5::utc_now_iso8601()},
                                 {"source", global.command_line}, {"model", output_},
@@ -100,7 +102,12 @@ class TrainCommand : public Command {
                                 {"split", {{"path", split_}, {"sha256", split.manifest_sha256}}},
                                 {"options", options_.to_json()}, {"epochs", epochs}, {"metrics", model.metrics},
                                 {"parameters", parameters(model)}, {"seconds", seconds}};
-    json::write_file(log, "training-log.schema.json", log_);
+    PartialFile log_file(log_);
+    json::write_file(log, "training-log.schema.json", log_file);
+    model_file.finish();
+    log_file.finish();
+    model_file.commit();
+    log_file.commit();
     if (global.json)
       std::cout << log.dump(2) << "\n";
     else if (!global.quiet)

@@ -23,13 +23,17 @@ std::string directory_of(const std::string& path) {
 
 }  // namespace
 
+std::string why_not_written(int error) {
+  return error == ENOSPC || error == EDQUOT ? "the disk is full" : std::strerror(error);
+}
+
 void fsync_path(const std::string& path, int flags) {
   int fd = ::open(path.c_str(), flags | O_CLOEXEC);
   if (fd < 0) throw failure(path + ": cannot open to sync it to disk: " + std::strerror(errno));
   const int status = ::fsync(fd);
   const int saved = errno;
   ::close(fd);
-  if (status != 0) throw failure(path + ": fsync failed: " + std::strerror(saved));
+  if (status != 0) throw failure(path + ": cannot write it: " + why_not_written(saved));
 }
 
 void check_output_path(const std::string& path, bool overwrite) {
@@ -77,21 +81,39 @@ PartialFile::~PartialFile() {
   if (fd_ >= 0) ::close(fd_);  // releases the lock
 }
 
+void PartialFile::finish() {
+  if (finished_) return;
+  try {
+    fsync_path(path_, O_RDONLY);
+  } catch (const Error& e) {
+    throw renamed_in(e, path_, final_path_);
+  }
+  finished_ = true;
+}
+
 void PartialFile::commit() {
+  finish();
   durable_rename(path_, final_path_);
   committed_ = true;
   ::close(fd_);  // readers may lock the finished file now
   fd_ = -1;
 }
 
-void write_text(PartialFile& out, std::string_view text) {
-  std::FILE* file = std::fopen(out.path().c_str(), "wb");
-  if (!file) throw failure(out.final_path() + ": cannot open " + out.path() + " for writing: " + std::strerror(errno));
-  const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+void write_whole_file(const std::string& path, std::string_view bytes) {
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (!file) throw failure(path + ": cannot create it: " + std::strerror(errno));
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
   const int saved = errno;
   const bool closed = std::fclose(file) == 0;
-  if (!written || !closed)
-    throw failure(out.final_path() + ": cannot write it: " + (saved == ENOSPC || errno == ENOSPC ? std::string("the disk is full") : std::strerror(written ? errno : saved)));
+  if (!written || !closed) throw failure(path + ": cannot write it: " + why_not_written(written ? errno : saved));
+}
+
+void write_text(PartialFile& out, std::string_view text) {
+  try {
+    write_whole_file(out.path(), text);
+  } catch (const Error& e) {
+    throw renamed_in(e, out.path(), out.final_path());
+  }
 }
 
 void write_file_durably(const std::string& path, std::string_view text) {

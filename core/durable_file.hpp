@@ -16,6 +16,9 @@ void check_output_path(const std::string& path, bool overwrite);
 // rendered") in the message.
 void check_replaceable_output(const std::string& path, bool overwrite, const std::string& what,
                               bool (*haptex_wrote)(const std::string& path));
+// Why a write failed, as a user reads it: "the disk is full" for ENOSPC and EDQUOT (a quota is a
+// full disk to the user), else strerror(error).
+std::string why_not_written(int error);
 // fsync one file or (with O_DIRECTORY in flags) directory; throws haptex::Error (failed) naming it.
 void fsync_path(const std::string& path, int flags);
 // fsync `from`, rename it to `to`, fsync the directory.
@@ -32,14 +35,22 @@ class PartialFile {
 
   const std::string& path() const { return path_; }
   const std::string& final_path() const { return final_path_; }
-  // fsync, rename to the final path, fsync the directory; afterwards nothing is removed.
+  // fsync (failed: a full disk), without renaming: outputs that appear together finish every one of
+  // them before the first is renamed (docs/architecture.md, "Outputs are atomic").
+  void finish();
+  // finish() when not done, rename to the final path, fsync the directory; afterwards nothing is removed.
   void commit();
 
  private:
   std::string final_path_, path_;
   int fd_ = -1;
-  bool committed_ = false;
+  bool finished_ = false, committed_ = false;
 };
+
+// The whole of `bytes` as the file at path (created or truncated), for a file inside a folder being
+// built (core/partial_directory.hpp syncs and renames it with the folder). Throws haptex::Error
+// (failed) naming path and why_not_written when a write fails.
+void write_whole_file(const std::string& path, std::string_view bytes);
 
 // The whole of `text` into out's temporary file (the commit is the caller's: several outputs can
 // appear together). Throws haptex::Error (failed) naming the output when writing fails (a full disk).

@@ -13,4 +13,12 @@ Error input_error(const std::string& file, const std::string& where, const std::
 
 Error failure(const std::string& what) { return Error(Error::Kind::failed, what); }
 
+Error renamed_in(const Error& error, const std::string& from, const std::string& to) {
+  std::string message = error.what();
+  if (!from.empty())
+    for (std::size_t at = message.find(from); at != std::string::npos; at = message.find(from, at + to.size()))
+      message.replace(at, from.size(), to);
+  return Error(error.kind(), message);
+}
+
 }  // namespace haptex

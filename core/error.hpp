@@ -29,5 +29,8 @@ class Error : public std::runtime_error {
 [[nodiscard]] Error input_error(const std::string& file, const std::string& where, const std::string& what,
                                 const std::string& fix);
 [[nodiscard]] Error failure(const std::string& what);
+// The same error with every `from` in its message written `to`: a temporary name replaced by the
+// output's final name, which is the one the user knows.
+[[nodiscard]] Error renamed_in(const Error& error, const std::string& from, const std::string& to);
 
 }  // namespace haptex

@@ -81,9 +81,25 @@ PartialDirectory::~PartialDirectory() {
   if (fd_ >= 0) ::close(fd_);
 }
 
+void PartialDirectory::fill(const std::function<void(const std::string& dir)>& write) const {
+  try {
+    write(path_);
+  } catch (const Error& e) {
+    throw renamed_in(e, path_, final_);
+  }
+}
+
+void PartialDirectory::finish() {
+  if (finished_) return;
+  fill([&](const std::string& dir) {
+    write_file_list(dir, options_.written_by);
+    fsync_tree(dir);
+  });
+  finished_ = true;
+}
+
 void PartialDirectory::commit() {
-  write_file_list(path_, options_.written_by);
-  fsync_tree(path_);
+  finish();
   std::error_code ec;
   const bool replace = fs::exists(fs::symlink_status(final_, ec));
   if (replace) check_destination(final_, options_);  // it appeared, or got a file of the user's, while we wrote

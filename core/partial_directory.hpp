@@ -10,6 +10,7 @@
 //   new one under DIR, never neither and never a mixture;
 // - without commit() (an error, an exception) the temporary folder is removed and DIR is untouched.
 // A DIR that holds anything its haptex-files.json does not list is never replaced.
+#include <functional>
 #include <string>
 
 namespace haptex {
@@ -33,6 +34,13 @@ class PartialDirectory {
 
   const std::string& path() const { return path_; }         // where to write until commit()
   const std::string& final_path() const { return final_; }  // where it will be
+  // Runs `write` on path() to put the folder's files there. A haptex::Error it throws is rethrown
+  // naming DIR, not the temporary folder: the user asked for DIR ("REPORT/report.md: cannot write
+  // it: the disk is full").
+  void fill(const std::function<void(const std::string& dir)>& write) const;
+  // Lists the files and syncs them all (failed: a full disk), without renaming: outputs that appear
+  // together finish every one of them before the first is renamed. commit() finishes when not done.
+  void finish();
   // Throws haptex::Error (bad_input) when DIR changed meanwhile so that it may no longer be
   // replaced, (failed) when a sync or the rename fails.
   void commit();
@@ -41,7 +49,7 @@ class PartialDirectory {
   std::string final_, path_;
   FolderOptions options_;
   int fd_ = -1;
-  bool committed_ = false;
+  bool finished_ = false, committed_ = false;
 };
 
 }  // namespace haptex

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/durable_file.hpp"
 #include "core/plot/gnuplot.hpp"
 #include "evaluate/results_json.hpp"
 
@@ -228,7 +229,7 @@ ChartResult write_report_charts(const Evaluation& e, const ReportLayout& layout,
   ChartResult result;
   std::string failed;
   for (const auto& [stem, script] : charts) {
-    write_text_file((fs::path(directory) / (stem + ".gnuplot")).string(), script);
+    write_whole_file((fs::path(directory) / (stem + ".gnuplot")).string(), script);
     result.scripts.push_back(stem + ".gnuplot");
     if (found.empty()) continue;
     if (gnuplot::draw(directory, stem + ".gnuplot", stem + ".png")) result.images.push_back(stem + ".png");

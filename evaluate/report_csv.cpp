@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
 #include "dataset/window.hpp"
@@ -43,7 +44,7 @@ class CsvFile {
     out_ << '\n';
   }
   const std::string& close() {
-    write_text_file(path_, out_.str());
+    write_whole_file(path_, out_.str());
     return path_;
   }
 
@@ -126,14 +127,6 @@ ReportLayout report_layout(const Evaluation& e) {
   for (const Experiment& x : e.experiments) layout.experiments.push_back(unique_name("experiment-" + safe_stem(x.id), used));
   for (const Example& x : e.examples) layout.examples.push_back(unique_name("example-" + safe_stem(x.id), used));
   return layout;
-}
-
-void write_text_file(const std::string& path, std::string_view text) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw failure(path + ": cannot create the file");
-  out << text;
-  out.close();
-  if (!out) throw failure(path + ": write failed (disk full?)");
 }
 
 std::string csv_field(std::string_view text) {

@@ -44,10 +44,6 @@ inline constexpr std::string_view kLatentColumns = "material_id,name,kind,x,y";
 inline constexpr std::string_view kSpectraColumns = "frequency_hz,truth,model,baseline";
 inline constexpr std::string_view kSignalColumns = "time_s,truth,model,baseline";
 
-// Writes text to path; throws haptex::Error (failed) naming it when it cannot (the report's files
-// are made atomic by their folder: see evaluate/report_writer.hpp).
-void write_text_file(const std::string& path, std::string_view text);
-
 std::string csv_field(std::string_view text);  // quoted when it has to be
 std::string csv_number(double x);              // shortest round-trip form; inf, -inf, nan
 std::string csv_measured(double x);            // csv_number, but empty for NaN (not measured)

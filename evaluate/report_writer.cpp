@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
@@ -36,11 +37,14 @@ ReportFiles write_report(const Evaluation& e, const std::string& directory, bool
   const ReportLayout layout = report_layout(e);
   const std::string created = h5::utc_now_iso8601();
 
-  write_report_csvs(e, layout, work.string());
   const nlohmann::json results = results_json(e, layout, created);
-  json::write_file(results, "results.schema.json", (work / "results.json").string());
-  const ChartResult charts = write_report_charts(e, layout, work.string());
-  write_text_file((work / "report.md").string(), report_markdown(e, layout, charts, created));
+  ChartResult charts;
+  partial.fill([&](const std::string& work_dir) {
+    write_report_csvs(e, layout, work_dir);
+    json::write_file(results, "results.schema.json", (fs::path(work_dir) / "results.json").string());
+    charts = write_report_charts(e, layout, work_dir);
+    write_whole_file((fs::path(work_dir) / "report.md").string(), report_markdown(e, layout, charts, created));
+  });
 
   ReportFiles result{dir, (fs::path(dir) / "report.md").string(), results.dump(2), {}, {}, charts.note};
   for (const std::string& name : listed(work.string())) result.files.push_back((fs::path(dir) / name).string());

@@ -172,6 +172,11 @@ void check_nets(const Model& m, const std::string& path) {
 
 void write_model(const Model& model, const std::string& path, bool overwrite, const std::string& source) {
   h5::AtomicFile out(path, overwrite);
+  write_model(model, out, source);
+  out.commit();
+}
+
+void write_model(const Model& model, h5::AtomicFile& out, const std::string& source) {
   h5::Group root = out.root();
   dataset::stamp(root, dataset::Kind::model, source);
   root.set_attr("variant", variant_name(model.variant));
@@ -195,7 +200,6 @@ void write_model(const Model& model, const std::string& path, bool overwrite, co
     write_mlp(g, "action_encoder", model.nets[k].action);
     write_mlp(g, "predictor", model.nets[k].predictor);
   }
-  out.commit();
 }
 
 Model read_model(const std::string& path) {

@@ -5,15 +5,18 @@
 // the network from it.
 #include <string>
 
+#include "core/h5/atomic_file.hpp"
 #include "predict/model.hpp"
 
 namespace haptex::predict {
 
 // 2: the action at the window's middle, a new press recognised (1: the action before the window).
 
-// Written to PATH.partial and renamed (core/h5/atomic_file.hpp). Throws haptex::Error (bad_input)
+// Written to a temporary name and renamed (core/h5/atomic_file.hpp). Throws haptex::Error (bad_input)
 // when the output exists and overwrite is false.
 void write_model(const Model& model, const std::string& path, bool overwrite, const std::string& source);
+// The model into `out`, not committed: for a command whose outputs appear together.
+void write_model(const Model& model, h5::AtomicFile& out, const std::string& source);
 
 // Throws haptex::Error (bad_input) naming the file and the object when it is not a model file or
 // its arrays disagree in size.

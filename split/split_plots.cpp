@@ -6,6 +6,7 @@
 
 #include "dataset/layout.hpp"
 #include "dataset/window.hpp"
+#include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/plot/gnuplot.hpp"
@@ -20,7 +21,7 @@ constexpr const char* kSetNames[] = {"train", "val", "test"};
 constexpr int kTraceStep = 10;  // plot every 10th acceleration sample: 1 kHz is plenty for a trace
 
 void write_points(const fs::path& path, const MaterialWindows& m, const MaterialSplit& s, std::size_t sections) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "set,speed_mm_s,force_n\n";
   for (std::size_t i = 0; i < m.start.size(); ++i) {
     const std::int64_t n = m.recording_samples.at(std::size_t(m.recording[i]));
@@ -28,21 +29,24 @@ void write_points(const fs::path& path, const MaterialWindows& m, const Material
     const int set = section < 0 ? -1 : set_of_section(s.sections, section);
     if (set >= 0) out << kSetNames[set] << "," << m.speed[i] << "," << m.force[i] << "\n";
   }
+  write_whole_file(path.string(), out.str());
 }
 
 void write_trace(const fs::path& path, const std::vector<float>& accel) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "time_s,accel_m_s2\n";
   for (std::size_t i = 0; i < accel.size(); i += kTraceStep) out << double(i) / dataset::kSampleRateHz << "," << accel[i] << "\n";
+  write_whole_file(path.string(), out.str());
 }
 
 void write_sections(const fs::path& path, const MaterialSplit& s, std::int64_t samples, std::size_t sections) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "begin_s,end_s,set\n";
   for (std::size_t k = 0; k < sections; ++k)
     out << double(section_begin(k, samples, sections)) / dataset::kSampleRateHz << ","
         << double(section_begin(k + 1, samples, sections)) / dataset::kSampleRateHz << ","
         << kSetNames[set_of_section(s.sections, int(k))] << "\n";
+  write_whole_file(path.string(), out.str());
 }
 
 constexpr const char* kSetColours[] = {"#9400d3", "#009e73", "#56b4e9"};
@@ -92,9 +96,9 @@ PlotResult write_split_plots(const std::string& dataset_path, const std::vector<
     write_trace(base.string() + "_trace.csv", accel);
     write_sections(base.string() + "_sections.csv", splits[m], std::int64_t(accel.size()), sections);
     const std::string& id = windows[m].id;
-    std::ofstream(base.string() + ".gnuplot")
-        << script_text(id, windows[m].name + ": train, validation and test (recording 0)",
-                           terminal.empty() ? "pngcairo" : terminal, splits[m], std::int64_t(accel.size()), sections);
+    write_whole_file(base.string() + ".gnuplot",
+                     script_text(id, windows[m].name + ": train, validation and test (recording 0)",
+                                 terminal.empty() ? "pngcairo" : terminal, splits[m], std::int64_t(accel.size()), sections));
     if (!terminal.empty() && gnuplot::draw(directory, id + ".gnuplot", id + ".png"))
       result.images.push_back((fs::path(named) / (id + ".png")).string());
   }

@@ -27,24 +27,6 @@ constexpr const char* kSchema = "press-sidecar.schema.json";
 // bytes), JPEG quality 95: a tenth of a PNG sequence's size, and what a real sensor sends.
 constexpr int kJpegQuality = 95;
 
-void write_file(const std::string& path, const void* data, std::size_t size) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw failure(path + ": cannot create: " + std::strerror(errno));
-  const auto* bytes = static_cast<const char*>(data);
-  std::size_t done = 0;
-  while (done < size) {
-    const ssize_t n = ::write(fd, bytes + done, size - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int saved = errno;
-      ::close(fd);
-      throw failure(path + ": write failed (disk full?): " + std::strerror(saved));
-    }
-    done += std::size_t(n);
-  }
-  if (::close(fd) != 0) throw failure(path + ": write failed: " + std::strerror(errno));
-}
-
 double rounded(double value, double step) { return std::round(value / step) * step; }
 
 nlohmann::ordered_json to_json(const PressSidecar& s) {
@@ -136,7 +118,7 @@ PressSidecar PressVideoWriter::finish(PressSidecar sidecar) {
   validate(sidecar, sidecar_path);
 
   const std::string text = to_json(sidecar).dump(2) + "\n";
-  write_file(sidecar_->path(), text.data(), text.size());
+  write_text(*sidecar_, text);
 
   // The video on disk before it gets its final name; an older press goes, sidecar first (a folder of
   // PNG frames, as haptex wrote presses until this round, too).

@@ -102,19 +102,21 @@ SynthSummary synth_hatt(const SynthHattOptions& o, const Progress& progress) {
   Truth truth{kSampleRateHz, kAccelNoise, std::vector<MaterialTruth>(models.size())};
   std::mutex mutex;
   std::size_t done = 0;
-  parallel_for(models.size(), [&](std::size_t i) {
-    const std::string& material = models[i].model.set().material;
-    truth.materials[i] = write_recordings(out, models[i], o);
-    const fs::path image = fs::path(o.images_dir) / (material + "_square.jpg");
-    const bool has_image = !o.images_dir.empty() && fs::is_regular_file(image);
-    if (has_image)
-      write_photo_presses(image.string(), gelsight_directory(out, material), material,
-                          derive_seed(o.seed, name_seed(material_id(material)), 1000), o.provenance, photo);
-    std::lock_guard lock(mutex);
-    if (!o.images_dir.empty() && !has_image) summary.materials_without_images.push_back(material);
-    if (progress) progress(++done, models.size(), material);
+  folder.fill([&](const std::string&) {
+    parallel_for(models.size(), [&](std::size_t i) {
+      const std::string& material = models[i].model.set().material;
+      truth.materials[i] = write_recordings(out, models[i], o);
+      const fs::path image = fs::path(o.images_dir) / (material + "_square.jpg");
+      const bool has_image = !o.images_dir.empty() && fs::is_regular_file(image);
+      if (has_image)
+        write_photo_presses(image.string(), gelsight_directory(out, material), material,
+                            derive_seed(o.seed, name_seed(material_id(material)), 1000), o.provenance, photo);
+      std::lock_guard lock(mutex);
+      if (!o.images_dir.empty() && !has_image) summary.materials_without_images.push_back(material);
+      if (progress) progress(++done, models.size(), material);
+    });
+    write_truth_file((fs::path(out) / "truth.h5").string(), truth, o.provenance);
   });
-  write_truth_file((fs::path(out) / "truth.h5").string(), truth, o.provenance);
   for (const auto& m : models) summary.materials.push_back(m.model.set().material);
   std::sort(summary.materials_without_images.begin(), summary.materials_without_images.end());
   summary.recordings = models.size() * std::size_t(o.recordings);

@@ -85,13 +85,15 @@ SynthSummary synth_materials(const SynthMaterialsOptions& o, const Progress& pro
   Truth truth{kSampleRateHz, kAccelNoise, std::vector<MaterialTruth>(specs.size())};
   std::mutex mutex;
   std::size_t done = 0;
-  parallel_for(specs.size(), [&](std::size_t i) {
-    truth.materials[i] = synthesize_material(specs[i], staged);
-    std::lock_guard lock(mutex);
-    if (progress) progress(++done, specs.size(), specs[i].name);
+  folder.fill([&](const std::string&) {
+    parallel_for(specs.size(), [&](std::size_t i) {
+      truth.materials[i] = synthesize_material(specs[i], staged);
+      std::lock_guard lock(mutex);
+      if (progress) progress(++done, specs.size(), specs[i].name);
+    });
+    write_truth_file((std::filesystem::path(staged.out) / "truth.h5").string(), truth, o.provenance);
+    write_manifest(staged.out, o, specs);
   });
-  write_truth_file((std::filesystem::path(staged.out) / "truth.h5").string(), truth, o.provenance);
-  write_manifest(staged.out, o, specs);
   folder.commit();
 
   SynthSummary summary;

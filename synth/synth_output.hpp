@@ -20,6 +20,8 @@ class OutputFolder {
   OutputFolder(const std::string& out, bool overwrite);
 
   const std::string& path() const { return partial_.path(); }  // where to write until commit()
+  // PartialDirectory::fill: errors name the output folder, not its temporary name.
+  void fill(const std::function<void(const std::string& dir)>& write) const { partial_.fill(write); }
   void commit() { partial_.commit(); }
 
  private:

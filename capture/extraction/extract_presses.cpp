@@ -29,11 +29,10 @@ namespace fs = std::filesystem;
 namespace {
 
 // One PNG (a contact sheet, a score chart) into a folder being built.
-void write_png(const PartialDirectory& folder, const std::string& name, const std::vector<std::uint8_t>& png,
-               const std::string& what) {
-  std::ofstream out(fs::path(folder.path()) / name, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
-  if (!out) throw failure(folder.path() + "/" + name + ": cannot write the " + what);
+void write_png(const PartialDirectory& folder, const std::string& name, const std::vector<std::uint8_t>& png) {
+  folder.fill([&](const std::string& dir) {
+    write_whole_file((fs::path(dir) / name).string(), {reinterpret_cast<const char*>(png.data()), png.size()});
+  });
 }
 
 // A source's chart name: its file's (or folder's) name as an id, ASCII and at most 100 characters, so
@@ -148,6 +147,10 @@ class Extraction {
       commit_explain();  // the charts say why no press was found
       throw NoPressFound(no_press_message(), result_);
     }
+    // The file and its folders appear together or not at all (a full disk while writing any of them).
+    writer_.finish();
+    if (explain_) explain_->finish();
+    if (sheets_) sheets_->finish();
     writer_.commit();
     commit_explain();
     if (sheets_) {
@@ -173,8 +176,7 @@ class Extraction {
     SourceDetection& d = result_.detections.back();
     d.chart = (fs::path(explain_->final_path()) / name).string();
     write_png(*explain_, name, score_chart_png(a.input->path + ": " + std::to_string(a.plans.size()) + " press(es)",
-                                               chart_of(a.scores, a.plans, d)),
-              "score chart");
+                                               chart_of(a.scores, a.plans, d)));
   }
 
   std::string no_press_message() const {
@@ -225,8 +227,7 @@ class Extraction {
     }
     const int j = writer_.add_press(material, p);
     if (sheets_)
-      write_png(*sheets_, sheet_name, contact_sheet_png(sheet_input(material, j, source, scores, plan, peak, result_.detections.back())),
-                "contact sheet");
+      write_png(*sheets_, sheet_name, contact_sheet_png(sheet_input(material, j, source, scores, plan, peak, result_.detections.back())));
     result_.presses.push_back({material, id, source.path(), j, plan.press_in_source, p.frame_start, p.frame_end,
                                p.contact_first, p.contact_last, p.peak_index, p.peak_score, p.contact_sheet});
   }

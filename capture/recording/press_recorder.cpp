@@ -204,9 +204,17 @@ RecordingResult record_session(KernelInterface& kernel, const SessionRequest& re
   session.post_frames = options.post_frames;
   V4l2Stream stream(device, format, request.buffers);
   session.buffers = stream.buffer_count();
+  std::error_code ec;
+  const bool made_folder = !std::filesystem::exists(std::filesystem::symlink_status(request.output_dir, ec));
   prepare_session_dir(request.output_dir, request.overwrite, request.inputs);  // only now, so a refused device leaves nothing
   if (warn && !session.link_warning.empty()) warn(session.link_warning);  // before the user starts pressing
-  return record_take(stream, session, request.output_dir, options, stop, progress);
+  try {
+    return record_take(stream, session, request.output_dir, options, stop, progress);
+  } catch (...) {
+    // A take that saved nothing (not even its session.json: a full disk) leaves no empty folder it made.
+    if (made_folder) std::filesystem::remove(request.output_dir, ec);  // removes only an empty folder
+    throw;
+  }
 }
 
 }  // namespace haptex::capture

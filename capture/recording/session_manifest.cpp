@@ -108,14 +108,7 @@ nlohmann::json session_manifest(const SessionDescription& s, const ReferenceSumm
 }
 
 void write_session_manifest(const std::string& path, const nlohmann::json& manifest) {
-  json::validate(manifest, "capture-session.schema.json", path);
-  PartialFile partial(path);
-  {
-    std::ofstream out(partial.path());
-    out << manifest.dump(2) << "\n";
-    if (!out.flush()) throw failure(partial.path() + ": cannot write the session manifest");
-  }
-  partial.commit();
+  json::write_file(manifest, "capture-session.schema.json", path);
 }
 
 }  // namespace haptex::capture

@@ -42,9 +42,16 @@ AtomicFile::~AtomicFile() {
   }
 }
 
+void AtomicFile::finish() {
+  if (file_.is_open()) {
+    file_.flush();
+    file_.close();
+  }
+  partial_.finish();
+}
+
 void AtomicFile::commit() {
-  file_.flush();
-  file_.close();
+  finish();
   partial_.commit();
 }
 

@@ -28,8 +28,10 @@ class AtomicFile {
   File& file() { return file_; }
   const std::string& final_path() const { return final_path_; }
   const std::string& partial_path() const { return partial_.path(); }
-  // Flushes and closes the file (every group and dataset handle of it is invalid afterwards),
-  // then syncs and renames it.
+  // Flushes, closes (every group and dataset handle of the file is invalid afterwards) and syncs
+  // the file, without renaming it: outputs that appear together finish all before renaming any.
+  void finish();
+  // finish() when not done, then renames the file to its final name.
   void commit();
 
  private:

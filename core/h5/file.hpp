@@ -20,6 +20,7 @@ class File {
   Group root() const;
   void flush();
   void close();  // closes every object of the file; throws when HDF5 reports a failure
+  bool is_open() const { return handle_.valid(); }
 
  private:
   File(Handle handle, std::string path) : handle_(std::move(handle)), path_(std::move(path)) {}

@@ -79,12 +79,18 @@ void validate(const nlohmann::json& doc, std::string_view schema_name, const std
 }
 
 void write_file(const nlohmann::json& doc, std::string_view schema_name, const std::string& path) {
+  PartialFile out(path);
+  write_file(doc, schema_name, out);
+  out.commit();
+}
+
+void write_file(const nlohmann::json& doc, std::string_view schema_name, PartialFile& out) {
   try {
-    validate(doc, schema_name, path);
+    validate(doc, schema_name, out.final_path());
   } catch (const Error& e) {
     throw failure(std::string("internal: the document to write does not follow its schema: ") + e.what());
   }
-  write_file_durably(path, doc.dump(2) + "\n");
+  write_text(out, doc.dump(2) + "\n");
 }
 
 }  // namespace haptex::json

@@ -5,6 +5,8 @@
 #include <string>
 #include <string_view>
 
+#include "core/durable_file.hpp"
+
 namespace haptex::json {
 
 // Parses a JSON file; a syntax error becomes haptex::Error (bad_input) naming the file and byte.
@@ -19,7 +21,9 @@ bool has_format(const std::string& path, std::string_view format);
 void validate(const nlohmann::json& doc, std::string_view schema_name, const std::string& file);
 
 // Validates doc against schemas/<schema_name> (a failure there is a bug: Kind::failed), then writes
-// it indented, atomically (NAME.partial, fsync, rename).
+// it indented, atomically (a temporary name, fsync, rename).
 void write_file(const nlohmann::json& doc, std::string_view schema_name, const std::string& path);
+// The same into out's temporary file, not committed: for a command whose outputs appear together.
+void write_file(const nlohmann::json& doc, std::string_view schema_name, PartialFile& out);
 
 }  // namespace haptex::json

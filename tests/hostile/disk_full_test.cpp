@@ -53,6 +53,15 @@ void expect_disk_full(const CommandResult& r, const std::string& output) {
   EXPECT_NE(r.err.find(output), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("disk is full"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("HDF5-DIAG"), std::string::npos) << "HDF5's own error report leaked out";
+  EXPECT_EQ(r.err.find(".partial"), std::string::npos) << "the message names a temporary, not the output: " << r.err;
+}
+
+std::uintmax_t bytes_under(const std::string& path) {
+  if (!fs::is_directory(path)) return fs::file_size(path);
+  std::uintmax_t total = 0;
+  for (const auto& e : fs::recursive_directory_iterator(path))
+    if (e.is_regular_file()) total += e.file_size();
+  return total;
 }
 
 TEST(DiskFull, EveryCommandSaysSoAndLeavesNothing) {
@@ -79,6 +88,7 @@ TEST(DiskFull, EveryCommandSaysSoAndLeavesNothing) {
       {"split", "s.json", {"split", p.dataset, "--no-plots"}},
       {"windows", "w.h5", {"windows", p.dataset, "--split", p.split}},
       {"render", "v.wav", {"render", quick_model(), "--material", small_material(), "--trajectory", inputs.file("traj.csv")}},
+      {"evaluate", "rep", {"evaluate", p.dataset, "--split", p.split, "--model", quick_model(), "--repeats", "2", "--reconstruct", "none"}},
   };
   // A disk full from the start, and one that fills part-way through the larger outputs.
   for (const std::string size : {"full", "200k"}) {
@@ -124,6 +134,70 @@ TEST(DiskFull, CaptureKeepsThePressesAlreadyWritten) {
   EXPECT_TRUE(temporaries_of(session + "/press_1.h5").empty());
   const CommandResult info = run_haptex({"info", session + "/press_0.h5"});
   EXPECT_EQ(info.exit_code, 0) << "the press already taken is whole: " << info.err;
+}
+
+// A command whose outputs belong together (a model and its log, a manifest and its plot folder, a
+// gelsight file and its two folders, a report's files) leaves all of them or none, whatever output
+// the disk fills up in, and names the output, never a temporary. Each case first runs on a roomy
+// disk to weigh its outputs, then on disks that hold all but half of one output, and half of all.
+TEST(DiskFull, OutputsThatBelongTogetherAppearTogetherOrNotAtAll) {
+  {
+    const SmallDisk probe("64k");
+    if (!probe.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (needs root with CAP_SYS_ADMIN)";
+  }
+  const SmallPipeline& p = small_pipeline();
+  const std::string videos = (fs::path(p.recordings).parent_path() / "synth" / "gelsight").string();
+  struct Case {
+    std::string name;
+    std::vector<std::string> args;  // -o and the first output's name follow
+    std::vector<std::string> outputs;
+  };
+  const std::vector<Case> cases = {
+      {"train", {"train", p.dataset, "--split", p.split, "--per-material", "--epochs", "1", "--hidden", "4", "--action-hidden", "4"},
+       {"m.h5", "m.training.json"}},
+      {"split", {"split", p.dataset}, {"s.json", "s.plots"}},
+      {"capture extract", {"capture", "extract", videos, "--explain"}, {"g.h5", "g_sheets", "g_explain"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const TempDir roomy;
+    std::vector<std::string> args = c.args;
+    args.insert(args.end(), {"-o", roomy.file(c.outputs.front())});
+    ASSERT_EQ(run_haptex(args).exit_code, 0);
+    std::vector<std::uintmax_t> sizes;
+    for (const std::string& out : c.outputs) sizes.push_back(bytes_under(roomy.file(out)));
+    std::uintmax_t total = 0;
+    for (const std::uintmax_t s : sizes) total += s;
+    std::vector<std::uintmax_t> rooms = {total / 2};
+    for (const std::uintmax_t s : sizes) rooms.push_back(total - s / 2);
+    int full = 0;
+    for (const std::uintmax_t room : rooms) {
+      SCOPED_TRACE("a disk of " + std::to_string(room) + " bytes");
+      const SmallDisk disk(std::to_string(room));
+      ASSERT_TRUE(disk.mounted());
+      args = c.args;
+      args.insert(args.end(), {"-o", disk.file(c.outputs.front())});
+      const CommandResult r = run_haptex(args);
+      if (r.exit_code == 0) {  // it fitted after all (a tmpfs counts whole pages)
+        for (const std::string& out : c.outputs) EXPECT_TRUE(fs::exists(disk.file(out))) << out;
+        continue;
+      }
+      ++full;
+      expect_disk_full(r, disk.file(""));
+      EXPECT_EQ(disk.listing(), std::vector<std::string>{});
+    }
+    EXPECT_GE(full, 2) << "the disks were too large to test anything";
+  }
+}
+
+// A take whose first press does not fit leaves no empty session folder behind.
+TEST(DiskFull, CaptureThatSavedNothingLeavesNoFolder) {
+  const SmallDisk disk("200k");
+  if (!disk.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (needs root with CAP_SYS_ADMIN)";
+  const CommandResult r = run_haptex({"capture", "record", "--device", "fake:size=320x240,lockstep", "--material", "Cork",
+                                      "--presses", "3", "-o", disk.file("s")});
+  expect_disk_full(r, disk.file("s"));
+  EXPECT_EQ(disk.listing(), std::vector<std::string>{});
 }
 
 }  // namespace
