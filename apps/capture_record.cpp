@@ -1,7 +1,9 @@
 // haptex capture record (--device NODE | --serial S) --material NAME [--presses 5] -o DIR
 // One take from a sensor into one press file per press and a session manifest. Ctrl-C ends the take
 // cleanly: the press being recorded is closed with every frame taken.
+#include <climits>
 #include <csignal>
+#include <optional>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -15,6 +17,7 @@
 #include "capture/device/system_kernel.hpp"
 #include "capture/recording/press_recorder.hpp"
 #include "capture/replay/replay_device.hpp"
+#include "core/text/parse_number.hpp"
 #include "core/error.hpp"
 #include "core/text/shell_quote.hpp"
 #include "core/text/utf8.hpp"
@@ -88,7 +91,7 @@ class CaptureRecord : public CaptureSubcommand {
     text::require_utf8(options_.material, "--material", "the material name");
     // A replayed file holds no stream start-up: its first frame is the take's first (docs/capture.md, "Replay").
     if (capture::is_replay_device(device_) && warmup_->count() == 0) options_.warmup_frames = 0;
-    build_request();
+    build_request(global);
     StopOnSignal stop_on_signal;
     const capture::RecordingResult result = record(global);
     print(result, global);
@@ -125,10 +128,9 @@ class CaptureRecord : public CaptureSubcommand {
     return capture::record_session(kernel, request_, options_, &g_stop, progress, warn);
   }
 
-  void build_request() {
-    request_.command = "haptex capture record " +
-                       (device_.empty() ? "--serial " + text::shell_quoted(serial_) : "--device " + text::shell_quoted(device_)) +
-                       " --material " + text::shell_quoted(options_.material) + " -o " + text::shell_quoted(request_.output_dir);
+  void build_request(const GlobalOptions& global) {
+    // Every option given (apps/provenance.hpp), and the folder: pasted into a shell, it records such a take again.
+    request_.command = global.command_line + " -o " + text::shell_quoted(request_.output_dir);
     if (!serial_.empty()) {
       capture::SensorCatalog catalog = capture::SensorCatalog::builtin();
       if (!sensors_.empty()) catalog.prepend(capture::SensorCatalog::from_file(sensors_));
@@ -149,23 +151,26 @@ class CaptureRecord : public CaptureSubcommand {
       const auto eq = c.find('=');
       if (eq == std::string::npos)
         throw input_error("--control " + c, "", "expected NAME=VALUE", "e.g. --control exposure_time_absolute=150");
-      try {
-        request_.controls[capture::control_id(c.substr(0, eq))] = std::stoll(c.substr(eq + 1));
-      } catch (const std::logic_error&) {
-        throw input_error("--control " + c, "", "the value is not an integer", "e.g. --control gain=10");
-      }
+      const std::optional<long long> value = text::parse_whole_number(c.substr(eq + 1));
+      // V4L2 integer controls are 32-bit: a larger value would be cut to another one.
+      if (!value || *value < INT32_MIN || *value > INT32_MAX)
+        throw input_error("--control " + c, "", "the value is not a whole decimal number of 32 bits", "e.g. --control gain=10");
+      const std::uint32_t id = capture::control_id(c.substr(0, eq));
+      if (request_.controls.count(id))
+        throw input_error("--control " + c, "", "the control is given twice", "Give each control once");
+      request_.controls[id] = *value;
     }
   }
 
   void parse_size() {
     const auto x = size_.find('x');
-    try {
-      if (x == std::string::npos) throw std::invalid_argument("no x");
-      request_.format.width = std::uint32_t(std::stoul(size_.substr(0, x)));
-      request_.format.height = std::uint32_t(std::stoul(size_.substr(x + 1)));
-    } catch (const std::logic_error&) {
-      throw input_error("--size " + size_, "", "expected WIDTHxHEIGHT", "e.g. --size 3280x2464");
-    }
+    const std::optional<long long> width = text::parse_whole_number(size_.substr(0, x));
+    const std::optional<long long> height = x == std::string::npos ? std::nullopt : text::parse_whole_number(size_.substr(x + 1));
+    constexpr long long kLargestSide = 65535;  // V4L2 and every sensor haptex knows stay far below
+    if (!width || !height || *width < 1 || *height < 1 || *width > kLargestSide || *height > kLargestSide)
+      throw input_error("--size " + size_, "", "expected WIDTHxHEIGHT, two whole numbers from 1 to 65535", "e.g. --size 3280x2464");
+    request_.format.width = std::uint32_t(*width);
+    request_.format.height = std::uint32_t(*height);
   }
 
   void print(const capture::RecordingResult& r, const GlobalOptions& global) const {

@@ -132,10 +132,12 @@ std::vector<ClusterTake> find_cluster_takes(const std::string& root) {
                   entry.path().string(), (sensor / "force" / file).string(), (sensor / "position" / file).string()};
     if (t.velocity_mm_s == 0 || t.force_mn == 0)
       throw input_error(t.accel, "file name", "names a velocity or force of 0", "Keep the database's file names");
-    for (const std::string* partner : {&t.force, &t.position})
+    for (const std::string* partner : {&t.force, &t.position}) {
+      if (fs::exists(fs::symlink_status(*partner, ec))) require_regular_file(*partner);  // a FIFO or dangling link, by name
       if (!fs::is_regular_file(*partner, ec))
         throw input_error(*partner, "", "is missing: the take " + file + " needs its accel, force and position files",
                           "Copy the database's sensor_data folder whole");
+    }
     takes.push_back(std::move(t));
   }
   if (ec) throw input_error((sensor / "accel").string(), "", "cannot list the folder (" + ec.message() + ")", "Check its permissions");

@@ -56,7 +56,10 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
       for (auto it = fs::recursive_directory_iterator(input, ec); !ec && it != fs::recursive_directory_iterator();
            it.increment(ec)) {
         listing = it->path();
-        if (it->is_regular_file() && is_recording_file(it->path())) found.push_back(it->path());
+        if (is_recording_file(it->path()) && !it->is_directory()) {
+          require_regular_file(it->path().string());  // a FIFO or a dangling link is refused by name, not skipped
+          found.push_back(it->path());
+        }
       }
       if (ec) throw input_error(listing.string(), "", "cannot list the folder (" + ec.message() + ")", "Check its permissions");
       if (found.empty())

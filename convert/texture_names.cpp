@@ -8,6 +8,7 @@
 
 #include "convert/input_limits.hpp"
 #include "core/error.hpp"
+#include "core/naming.hpp"
 #include "core/text/parse_number.hpp"
 #include "core/text/utf8.hpp"
 
@@ -22,6 +23,8 @@ int texture_id(std::string_view text, const std::string& path, const std::string
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), id);
   if (error != std::errc() || end != text.data() + text.size() || id < 0)
     throw input_error(path, where, "'" + std::string(text) + "' is not a texture id (a whole number of 0 or more)", kFix);
+  if (text != std::to_string(id))  // "03" and "3" would both name texture 3
+    throw input_error(path, where, "'" + std::string(text) + "' is written with a leading zero", "Write the texture id as " + std::to_string(id));
   return id;
 }
 
@@ -81,7 +84,9 @@ std::map<int, std::string> from_csv(const std::string& path) {
     if (text::trim(line).empty()) continue;
     if (comma == std::string::npos) throw input_error(path, where, "has no comma between the id and the name", kFix);
     std::string_view name = text::trim(std::string_view(line).substr(comma + 1));
-    if (name.size() >= 2 && name.front() == '"' && name.back() == '"') name = name.substr(1, name.size() - 2);
+    const bool opens = !name.empty() && name.front() == '"', closes = name.size() >= 2 && name.back() == '"';
+    if (opens != closes) throw input_error(path, where, "the name's quotes are not closed", "Put the name in two quotes or none");
+    if (opens) name = name.substr(1, name.size() - 2);
     add(names, texture_id(std::string_view(line).substr(0, comma), path, where), std::string(name), path, where);
   }
   return names;
@@ -96,6 +101,16 @@ std::map<int, std::string> read_texture_names(const std::string& path) {
   else if (extension == ".csv" || extension == ".CSV") names = from_csv(path);
   else throw input_error(path, "", "the names file is neither .json nor .csv", kFix);
   if (names.empty()) throw input_error(path, "", "names no texture", kFix);
+  // Two names that make one material id would join two textures' takes into one material.
+  std::map<std::string, int> by_id;
+  for (const auto& [texture, name] : names) {
+    const auto [at, added] = by_id.emplace(material_id(name), texture);
+    if (!added)
+      throw input_error(path, "texture " + std::to_string(texture),
+                        "'" + name + "' and texture " + std::to_string(at->second) + "'s '" + names.at(at->second) +
+                            "' make one material id, '" + at->first + "'",
+                        "Give each texture a name of its own (ids ignore case, spaces and punctuation)");
+  }
   return names;
 }
 

@@ -1,11 +1,10 @@
 #include "dataset/format.hpp"
 
 #include <array>
-#include <charconv>
 #include <filesystem>
 
 #include "core/error.hpp"
-#include "core/version.hpp"
+#include "core/format_version.hpp"
 
 namespace haptex::dataset {
 namespace {
@@ -67,14 +66,7 @@ h5::File open_checked(const std::string& path, Kind kind) {
   const std::string found = read_format(file);
   if (found == wanted) return file;
   if (family_of(found) == want.family) {
-    // The version after the slash: a newer one than this haptex reads is no older file.
-    const std::string_view number = std::string_view(found).substr(family_of(found).size() + 1);
-    int version = 0;
-    const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), version);
-    if (error == std::errc() && end == number.data() + number.size() && version > want.version)
-      throw input_error(path, "/@haptex_format", "is " + found + ", written by a newer haptex than this one (" + kVersion +
-                                                     "), which reads " + wanted,
-                        "Read it with the haptex that wrote it, or update this one");
+    if (is_newer_version(found, wanted)) throw newer_version_error(path, "/@haptex_format", found, wanted);
     if (!want.older.empty())
       throw input_error(path, "/@haptex_format", "is " + found + ", written by an older haptex: " + std::string(want.older),
                         "Run " + std::string(want.written_by) + " again to write " + wanted);

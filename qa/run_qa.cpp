@@ -5,6 +5,7 @@
 
 #include "dataset/format.hpp"
 #include "core/error.hpp"
+#include "core/format_version.hpp"
 #include "core/input_file.hpp"
 #include "core/h5/file.hpp"
 #include "qa/checkers.hpp"
@@ -35,6 +36,8 @@ Report check_hdf5(const QaOptions& options) {
   const h5::Group root = file.root();
   const std::string format = dataset::read_format(file);
   const auto known = std::find_if(kFormats.begin(), kFormats.end(), [&](const auto& f) { return f.first == format; });
+  for (const auto& [name, kind] : kFormats)
+    if (is_newer_version(format, name)) throw newer_version_error(options.file, "/@haptex_format", format, name);
   if (known == kFormats.end())
     throw input_error(options.file, "/@haptex_format", "'" + format + "' is not a format qa checks",
                       "qa checks " + kFormats[0].first + ", " + kFormats[1].first + " and " + kFormats[2].first + " files and split manifests");

@@ -5,6 +5,7 @@
 
 #include "convert/hatt_model_reader.hpp"
 #include "convert/input_limits.hpp"
+#include "core/input_file.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"
 #include "core/parallel.hpp"
@@ -28,8 +29,9 @@ std::vector<fs::path> model_files(const std::string& dir) {
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
-    if (entry.is_regular_file() && name.rfind("Models_", 0) == 0 && entry.path().extension() == ".xml")
-      files.push_back(entry.path());
+    if (name.rfind("Models_", 0) != 0 || entry.path().extension() != ".xml" || entry.is_directory()) continue;
+    require_regular_file(entry.path().string());  // a FIFO or a dangling link is refused by name, not skipped
+    files.push_back(entry.path());
   }
   if (files.empty())
     throw input_error(dir, "", "no Models_<Material>.xml files", "Point --models at the HaTT toolkit's models folder");

@@ -2,10 +2,12 @@
 
 #include <linux/videodev2.h>
 
+#include <optional>
 #include <sstream>
 
 #include "capture/device/fourcc.hpp"
 #include "core/error.hpp"
+#include "core/text/parse_number.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -48,14 +50,26 @@ void DeviceKeys::refuse(const std::string& key, const std::string& what) const {
   throw input_error("--device " + device_, key, what, usage_);
 }
 
-double DeviceKeys::number(const std::string& key, const std::string& text) const {
-  try {
-    std::size_t used = 0;
-    const double value = std::stod(text, &used);
-    // At most 1e12: frame counts and rates are cast to integers, and no take runs that long.
-    if (used == text.size() && value >= 0 && value <= 1e12) return value;
-  } catch (...) {
+std::vector<std::pair<std::string, std::string>> DeviceKeys::items(const std::string& list) const {
+  std::vector<std::pair<std::string, std::string>> out;
+  std::stringstream in(list);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    if (item.empty()) continue;
+    const auto eq = item.find('=');
+    const std::string key = item.substr(0, eq);
+    for (const auto& [seen, value] : out)
+      if (seen == key && key != "stall") refuse(key, "given twice");
+    out.emplace_back(key, eq == std::string::npos ? "" : item.substr(eq + 1));
   }
+  return out;
+}
+
+double DeviceKeys::number(const std::string& key, const std::string& text) const {
+  // Decimal only ("0x1e" is no rate), at most 1e12: frame counts and rates are cast to integers, and
+  // no take runs that long.
+  const std::optional<double> value = text::parse_number(text);
+  if (value && text == text::trim(text) && *value >= 0 && *value <= 1e12) return *value;
   refuse(key, "'" + text + "' is not a number from 0 to 1e12");
 }
 
@@ -101,13 +115,7 @@ FakeDevice parse_fake_device(const std::string& device) {
   FakeMode mode = gelsight_mini_mode();
   bool fps_given = false;
   if (device.size() > 5) {
-    std::stringstream items(device.substr(5));
-    std::string item;
-    while (std::getline(items, item, ',')) {
-      if (item.empty()) continue;
-      const auto eq = item.find('=');
-      apply(fake, mode, fps_given, keys, item.substr(0, eq), eq == std::string::npos ? "" : item.substr(eq + 1));
-    }
+    for (const auto& [key, value] : keys.items(device.substr(5))) apply(fake, mode, fps_given, keys, key, value);
   }
   if (!fps_given && (mode.width != 3280 || mode.height != 2464)) mode.fps = {30.0};
   if (mode.fps.front() <= 0) keys.refuse("fps", "must be more than 0");

@@ -35,7 +35,10 @@ class DeviceKeys {
   DeviceKeys(std::string device, std::string usage) : device_(std::move(device)), usage_(std::move(usage)) {}
   const std::string& device() const { return device_; }
   [[noreturn]] void refuse(const std::string& key, const std::string& what) const;
-  double number(const std::string& key, const std::string& text) const;  // 0 or more
+  // The KEY=VALUE items of a comma-separated list, in order. A key given twice is refused (the last
+  // would silently win), except `stall`, which adds a stall each time.
+  std::vector<std::pair<std::string, std::string>> items(const std::string& list) const;
+  double number(const std::string& key, const std::string& text) const;  // decimal, 0 to 1e12
   double percent(const std::string& key, const std::string& text) const;  // 0 to 100
   // The stream's timing and faults: drop, error, corrupt, disconnect, stall, speed, lockstep, seed.
   // Returns false when `key` is none of them.

@@ -25,9 +25,13 @@ void sort_by_name(std::vector<std::string>& paths) {
   });
 }
 
+// A file named like a video or press file; one that is not a regular file (a FIFO, a dangling link)
+// is refused by name rather than skipped.
 bool is_source_file(const fs::directory_entry& entry) {
   const std::string p = entry.path().string();
-  return entry.is_regular_file() && (is_video_name(p) || is_press_file_name(p));
+  if (!(is_video_name(p) || is_press_file_name(p)) || entry.is_directory()) return false;
+  require_regular_file(p);
+  return true;
 }
 
 // The sources directly in a folder: video and press files, and image-sequence folders.

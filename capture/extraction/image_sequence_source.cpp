@@ -10,6 +10,7 @@
 #include "capture/extraction/capture_inputs.hpp"
 #include "capture/extraction/frame_source.hpp"
 #include "capture/scoring/scoring_image.hpp"
+#include "core/input_file.hpp"
 #include "core/error.hpp"
 #include "core/image_header.hpp"
 #include "core/sha256.hpp"
@@ -24,7 +25,10 @@ class ImageSequenceSource : public FrameSource {
  public:
   explicit ImageSequenceSource(std::string folder) : path_(std::move(folder)) {
     for (const auto& entry : fs::directory_iterator(path_))
-      if (entry.is_regular_file() && is_image_name(entry.path().string())) files_.push_back(entry.path().string());
+      if (is_image_name(entry.path().string()) && !entry.is_directory()) {
+        require_regular_file(entry.path().string());  // a FIFO frame would block the reader: refused by name
+        files_.push_back(entry.path().string());
+      }
     std::sort(files_.begin(), files_.end(), [](const std::string& a, const std::string& b) {
       return natural_less(fs::path(a).filename().string(), fs::path(b).filename().string());
     });

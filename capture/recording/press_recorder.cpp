@@ -122,6 +122,8 @@ void check_recorder_options(const RecorderOptions& o) {
     refuse("--warmup/--pre-frames/--post-frames", "must be at most " + std::to_string(kMostFrames) + " frames",
            "Give fewer frames (1000 is 40 s at 25 fps)");
   if (o.seconds < 0) refuse("--seconds", "must not be negative", "Give a time limit in seconds, or 0 for none");
+  constexpr double kLongestTake = 1e6;  // 11.6 days; a limit far beyond it would overflow the clock's count
+  if (o.seconds > kLongestTake) refuse("--seconds", "must be at most 1e6 (11.6 days)", "Give a shorter limit, or 0 for none");
 }
 
 RecordingResult record_take(V4l2Stream& stream, const SessionDescription& session, const std::string& output_dir,

@@ -79,12 +79,7 @@ FakeDevice parse_replay_device(const std::string& device) {
   FakeCameraConfig& c = replay.config;
   c.realtime = true;
   FakeMode mode = is_press_file_name(file) ? press_file_replay_mode(file) : video_replay_mode(file);
-  std::stringstream list(items);
-  std::string item;
-  while (std::getline(list, item, ',')) {
-    if (item.empty()) continue;
-    const auto eq = item.find('=');
-    const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+  for (const auto& [key, value] : keys.items(items)) {
     if (keys.apply_stream_key(c, key, value)) continue;
     if (key != "fps") keys.refuse(key, "unknown key");
     mode.fps = {keys.number(key, value)};

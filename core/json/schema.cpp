@@ -16,6 +16,7 @@
 #include "core/durable_file.hpp"
 #include "core/embedded.hpp"
 #include "core/error.hpp"
+#include "core/format_version.hpp"
 #include "core/input_file.hpp"
 
 namespace haptex::json {
@@ -35,18 +36,48 @@ const valijson::Schema& compiled_schema(std::string_view name) {
   return *cache.emplace(std::string(name), std::move(schema)).first->second;
 }
 
+// A document of a later version of the schema's format ("split/2" where split.schema.json says
+// "split/1") came from a newer haptex: said so, not as a schema failure.
+void refuse_newer_format(const nlohmann::json& doc, std::string_view schema_name, const std::string& file) {
+  if (!doc.is_object() || !doc.contains("format") || !doc["format"].is_string()) return;
+  const nlohmann::json schema_doc = nlohmann::json::parse(embedded::schema(schema_name));
+  const nlohmann::json::json_pointer wanted_at("/properties/format/const");
+  if (!schema_doc.contains(wanted_at) || !schema_doc[wanted_at].is_string()) return;
+  const std::string found = doc["format"].get<std::string>(), wanted = schema_doc[wanted_at].get<std::string>();
+  if (is_newer_version(found, wanted)) throw newer_version_error(file, "/format", found, wanted);
+}
+
+// The JSON pointer of the first key or string value holding a NUL (\u0000), "" when none does: no
+// name, path or hash haptex reads has one, and C strings downstream would cut it off there.
+std::string nul_at(const nlohmann::json& doc, const std::string& pointer) {
+  if (doc.is_string()) return doc.get_ref<const std::string&>().find('\0') == std::string::npos ? "" : pointer.empty() ? "/" : pointer;
+  if (doc.is_array())
+    for (std::size_t i = 0; i < doc.size(); ++i)
+      if (std::string at = nul_at(doc[i], pointer + "/" + std::to_string(i)); !at.empty()) return at;
+  if (doc.is_object())
+    for (const auto& [key, value] : doc.items()) {
+      if (key.find('\0') != std::string::npos) return pointer + "/" + key;
+      if (std::string at = nul_at(value, pointer + "/" + key); !at.empty()) return at;
+    }
+  return "";
+}
+
 }  // namespace
 
 nlohmann::json read_file(const std::string& path) {
   require_regular_file(path);
   std::ifstream in(path);
   if (!in) throw input_error(path, "", "cannot open the JSON file", "Check the path and permissions");
+  nlohmann::json doc;
   try {
-    return nlohmann::json::parse(in);
+    doc = nlohmann::json::parse(in);
   } catch (const nlohmann::json::parse_error& e) {
     throw input_error(path, "byte " + std::to_string(e.byte), "not valid JSON (" + std::string(e.what()) + ")",
                       "Fix the syntax; a JSON linter shows the exact spot");
   }
+  if (const std::string at = nul_at(doc, ""); !at.empty())
+    throw input_error(path, at, "holds a NUL character (\\u0000)", "Remove it: no name, path or hash has one");
+  return doc;
 }
 
 bool has_format(const std::string& path, std::string_view format) {
@@ -59,6 +90,7 @@ bool has_format(const std::string& path, std::string_view format) {
 }
 
 void validate(const nlohmann::json& doc, std::string_view schema_name, const std::string& file) {
+  refuse_newer_format(doc, schema_name, file);
   valijson::Validator validator;
   valijson::ValidationResults results;
   valijson::adapters::NlohmannJsonAdapter adapter(doc);

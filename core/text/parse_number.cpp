@@ -22,6 +22,15 @@ std::optional<double> parse_number(std::string_view text) {
   return value;
 }
 
+std::optional<long long> parse_whole_number(std::string_view text) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  if (text.empty() || text.front() == '+') return std::nullopt;
+  long long value = 0;
+  auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value, 10);
+  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
 std::optional<double> parse_stored_number(std::string_view text) {
   const std::optional<double> value = parse_number(text);
   if (!value || !std::isfinite(*value) || std::abs(*value) > kLargestStored) return std::nullopt;

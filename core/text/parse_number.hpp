@@ -11,6 +11,9 @@ std::string_view trim(std::string_view text);
 // The number in text (surrounding white space and a leading '+' allowed), nullopt when the
 // text is not exactly one number. NaN and Inf parse; callers reject them with their own message.
 std::optional<double> parse_number(std::string_view text);
+// The decimal integer that is all of text (a leading '-' or '+' allowed; no spaces, no 0x, no
+// exponent, no fraction), nullopt otherwise or when it does not fit in 64 bits.
+std::optional<long long> parse_whole_number(std::string_view text);
 // Values haptex stores become 32-bit floats (recordings, datasets, models): a magnitude over the
 // largest one would be stored as inf, so readers refuse it.
 inline constexpr double kLargestStored = 3.4028234663852886e38;

@@ -23,8 +23,10 @@ import numpy as np
 try:
     import torch
     from torch import nn
-except ImportError:
-    sys.exit("torch_mlp: needs PyTorch, which this Python cannot import (on Debian: apt-get install python3-torch)")
+except ImportError:  # said in main(), once the arguments are read: --help and bad arguments work without torch
+    torch = nn = None
+
+NO_TORCH = "torch_mlp: needs PyTorch, which this Python cannot import (on Debian: apt-get install python3-torch)"
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 import haptex_data  # noqa: E402
@@ -32,7 +34,7 @@ import haptex_data  # noqa: E402
 LATENT, ACTION_HIDDEN, HIDDEN = 64, 32, 256
 
 
-class Mlp(nn.Module):
+class Mlp(nn.Module if nn is not None else object):
     def __init__(self, materials, action_mean, action_scale, target_scale):
         super().__init__()
         self.latents = nn.Embedding(materials, LATENT)
@@ -127,9 +129,12 @@ def main():
     p.add_argument("--patience", type=int, default=20)
     p.add_argument("--seed", type=int, default=0)
     args = p.parse_args()
-    torch.set_num_threads(1)
     try:
         haptex_data.check_output(args.output, (args.dataset, args.split, args.windows), args.force)
+        if torch is None:
+            print(NO_TORCH, file=sys.stderr)
+            return 1
+        torch.set_num_threads(1)
         split, grid = haptex_data.read_split_and_grid(args.split, args.windows)
         train_windows = haptex_data.read_set_windows(args.dataset, split, ("train",))
         val_windows = haptex_data.read_set_windows(args.dataset, split, ("val",))

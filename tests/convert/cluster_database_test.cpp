@@ -175,6 +175,10 @@ TEST_F(Cluster, TextureNamesComeFromJsonOrCsv) {
   refused("j.json", "{}", "names no texture");
   refused("k.json", std::string("{\"3\": \"Co\\u0000rk\"}"), "NUL");
   refused("l.csv", std::string(2 << 20, 'x'), "over the limit");
+  // Issue 32, class 15 (second review): two names of one material id, an open quote, a leading zero.
+  refused("m.json", R"({"3": "Cork", "5": "cork"})", "make one material id, 'cork'");
+  refused("n.csv", "id,name\n3,\"Cork\n", "line 2: the name's quotes are not closed");
+  refused("o.json", R"({"03": "Cork"})", "/03: '03' is written with a leading zero");
 }
 
 TEST_F(Cluster, ANamesFileThatNeverEndsIsRefused) {

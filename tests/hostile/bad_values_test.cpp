@@ -130,6 +130,27 @@ TEST(BadValues, AFileOfANewerFormatIsCalledNewer) {
   fs::copy_file(small_pipeline().dataset, dataset);
   Edit(dataset).root().set_attr("haptex_format", "dataset/5");
   expect_refusal(run_haptex({"split", dataset, "-o", d.file("s.json")}), {dataset, "dataset/5", "newer haptex"});
+  expect_refusal(run_haptex({"qa", dataset}), {dataset, "dataset/5", "newer haptex"});
+  // JSON formats too (issue 32, second review): a split/2 manifest is newer, not a schema failure.
+  nlohmann::json manifest = read_json(small_pipeline().split);
+  manifest["format"] = "split/2";
+  write_json(d.file("s2.json"), manifest);
+  const CommandResult qa = run_haptex({"qa", d.file("s2.json")});  // qa reports it as its failed split.schema check
+  EXPECT_EQ(qa.exit_code, 1) << qa.err;
+  EXPECT_NE(qa.out.find("/format: is split/2, written by a newer haptex"), std::string::npos) << qa.out;
+  expect_refusal(run_haptex({"windows", small_pipeline().dataset, "--split", d.file("s2.json"), "-o", d.file("w.h5")}),
+                 {"split/2", "newer haptex"});
+}
+
+// A NUL inside a JSON string is refused where it is, not cut off downstream (issue 32, second review).
+TEST(BadValues, ANulInAManifestNameIsRefused) {
+  const TempDir d;
+  nlohmann::json manifest = read_json(small_pipeline().split);
+  manifest["materials"][0]["name"] = std::string("Sand\0paper", 10);
+  write_json(d.file("nul.json"), manifest);
+  expect_refusal(run_haptex({"qa", d.file("nul.json")}), {d.file("nul.json"), "/materials/0/name", "NUL"});
+  expect_refusal(run_haptex({"windows", small_pipeline().dataset, "--split", d.file("nul.json"), "-o", d.file("w.h5")}),
+                 {"/materials/0/name", "NUL"});
 }
 
 TEST(BadValues, InfoShowsControlCharactersEscaped) {

@@ -80,5 +80,26 @@ TEST(CommandLine, FaultPercentagesAndFrameCountsStayInRange) {
   EXPECT_FALSE(fs::exists(d.file("s")));
 }
 
+// Issue 32, class 17 (second review): a value is all of its text, in decimal, within its range, once.
+TEST(CommandLine, CaptureValuesAreReadWholeAndOnce) {
+  const TempDir d;
+  const auto record = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args{"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "-o", d.file("s")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_haptex(args);
+  };
+  expect_refusal(record({"--control", "gain=1e39"}), {"--control gain=1e39", "whole decimal number"});
+  expect_refusal(record({"--control", "gain=0x10"}), {"--control gain=0x10", "whole decimal number"});
+  expect_refusal(record({"--control", "gain=3", "--control", "gain=4"}), {"--control gain=4", "given twice"});
+  expect_refusal(record({"--size", "160x120x3"}), {"--size 160x120x3", "WIDTHxHEIGHT"});
+  expect_refusal(record({"--seconds", "1e39"}), {"--seconds", "at most 1e6"});
+  const auto device = [&](const std::string& spec) {
+    return run_haptex({"capture", "record", "--device", spec, "--material", "Cork", "-o", d.file("s")});
+  };
+  expect_refusal(device("fake:lockstep,fps=0x1e"), {"fps", "'0x1e' is not a number"});
+  expect_refusal(device("fake:lockstep,fps=30,fps=40"), {"fps", "given twice"});
+  EXPECT_FALSE(fs::exists(d.file("s")));
+}
+
 }  // namespace
 }  // namespace haptex::test

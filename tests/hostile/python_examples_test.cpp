@@ -84,6 +84,11 @@ TEST(PythonExamples, TorchMissingIsASentence) {
   EXPECT_NE(r.exit_code, 0);
   EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("python3-torch"), std::string::npos) << r.err;
+  // Help and bad arguments do not need torch (issue 32, second review).
+  EXPECT_EQ(run_python({kExamples + "torch_mlp.py", "--help"}).exit_code, 0);
+  const CommandResult empty = run_python({kExamples + "torch_mlp.py", "d.h5", "s.json", "w.h5", "-o", ""});
+  EXPECT_EQ(empty.exit_code, 2) << empty.err;
+  EXPECT_NE(empty.err.find("empty"), std::string::npos) << empty.err;
 }
 
 }  // namespace

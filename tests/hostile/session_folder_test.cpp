@@ -80,12 +80,16 @@ TEST(SessionFolder, TheRecordedCommandPastesAsTheSameCommand) {
   if (!python_has("json")) GTEST_SKIP() << "python3 is not installed";
   const TempDir d;
   const std::string material = "Bob's `touch pwned` $(id) \"felt\"", o = d.file("it's $HOME");
-  ASSERT_EQ(record(kFake, o, false, material).exit_code, 0);
+  const CommandResult r = run_haptex({"capture", "record", "--device", kFake, "--material", material, "--presses", "1", "--seconds", "100",
+                                      "--pre-frames", "5", "--control", "gain=3", "-o", o});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string command = nlohmann::json::parse(file_bytes(o + "/session.json"))["command"];
   const CommandResult split = run_python({"-c", "import json, shlex, sys; print(json.dumps(shlex.split(sys.argv[1])))", command});
   ASSERT_EQ(split.exit_code, 0) << split.err;
   const nlohmann::json words = nlohmann::json::parse(split.out);
-  const std::vector<std::string> expected{"haptex", "capture", "record", "--device", kFake, "--material", material, "-o", o};
+  // Every option given, in the order the command declares them, and the folder.
+  const std::vector<std::string> expected{"haptex", "capture", "record", "--device", kFake, "--material", material, "--presses", "1",
+                                          "--control", "gain=3", "--seconds", "100", "--pre-frames", "5", "-o", o};
   EXPECT_EQ(words.get<std::vector<std::string>>(), expected) << command;
 }
 

@@ -88,5 +88,35 @@ TEST(SpecialFiles, AFifoAsImageIsRefusedAtOnce) {
   expect_refusal(run_haptex({"predict", quick_model(), "--image", fifo, "--normal-force", "1", "--speed", "100"}), {fifo, "FIFO"});
 }
 
+// A FIFO or a dangling link carrying an input's name inside an input folder is refused by name, not
+// skipped (issue 32, class 7, second review).
+TEST(SpecialFiles, AFifoOrADanglingLinkInsideAnInputFolderIsRefused) {
+  const fs::path synth = fs::path(small_pipeline().recordings).parent_path() / "synth";
+  const TempDir d;
+  fs::create_directories(d.file("hd"));
+  fs::create_directories(d.file("ed"));
+  fs::create_directories(d.file("md"));
+  for (const auto& e : fs::directory_iterator(synth / "recordings")) {
+    fs::copy_file(e.path(), d.file("hd/" + e.path().filename().string()));
+    break;
+  }
+  fs::copy_file(synth / "gelsight" / "Woven 1" / "press_0.avi", d.file("ed/press_0.avi"));
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {d.file("hd/zz.xml.gz"), {"convert", "hatt", d.file("hd"), "-o", d.file("r.h5")}},
+      {d.file("ed/p9.avi"), {"capture", "extract", d.file("ed"), "-o", d.file("g.h5")}},
+      {d.file("md/Models_Foo.xml"), {"synth", "hatt", "--models", d.file("md"), "-o", d.file("syn")}},
+  };
+  for (const auto& [fifo, args] : cases) {
+    SCOPED_TRACE(fifo);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const Watchdog watchdog(fifo);
+    expect_refusal(run_haptex(args), {fifo, "FIFO"});
+  }
+  fs::remove(d.file("hd/zz.xml.gz"));
+  fs::create_symlink(d.file("nowhere.xml"), d.file("hd/gone.xml"));
+  expect_refusal(run_haptex({"convert", "hatt", d.file("hd"), "-o", d.file("r.h5")}), {d.file("hd/gone.xml")});
+  EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
+}
+
 }  // namespace
 }  // namespace haptex::test

@@ -25,7 +25,7 @@ std::vector<cv::Mat> still_sequence(const cv::Mat& no_contact, int frames);
 
 struct Degradation {
   double contrast = 1;  // the press's change from the no-contact image, scaled
-  double noise = 1.5;   // grey levels per pixel and channel, Gaussian
+  double noise = 1.5;   // grey levels per full-size pixel and channel, Gaussian
   // Brightness added by the last frame, growing linearly over the clip: half of it on the image's
   // left edge, one and a half on its right (a light warming unevenly).
   double drift = 4;

@@ -1,0 +1,33 @@
+#include "core/format_version.hpp"
+
+#include <charconv>
+#include <optional>
+
+#include "core/version.hpp"
+
+namespace haptex {
+namespace {
+
+std::optional<int> version_of(std::string_view name, std::string_view family) {
+  if (name.size() <= family.size() + 1 || name.substr(0, family.size()) != family || name[family.size()] != '/') return std::nullopt;
+  const std::string_view number = name.substr(family.size() + 1);
+  int version = 0;
+  const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), version);
+  if (error != std::errc() || end != number.data() + number.size()) return std::nullopt;
+  return version;
+}
+
+}  // namespace
+
+bool is_newer_version(std::string_view found, std::string_view wanted) {
+  const std::string_view family = wanted.substr(0, wanted.find('/'));
+  const std::optional<int> have = version_of(found, family), want = version_of(wanted, family);
+  return have && want && *have > *want;
+}
+
+Error newer_version_error(const std::string& file, const std::string& where, const std::string& found, const std::string& wanted) {
+  return input_error(file, where, "is " + found + ", written by a newer haptex than this one (" + std::string(kVersion) + "), which reads " + wanted,
+                     "Read it with the haptex that wrote it, or update this one");
+}
+
+}  // namespace haptex

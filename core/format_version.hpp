@@ -1,0 +1,18 @@
+#pragma once
+// Format names are FAMILY/VERSION ("dataset/4", "split/1": docs/architecture.md, "Formats"), in HDF5
+// root attributes and JSON "format" fields alike. A file of a later version than this haptex reads
+// came from a newer haptex, and is refused saying so, whatever kind of file it is.
+#include <string>
+#include <string_view>
+
+#include "core/error.hpp"
+
+namespace haptex {
+
+// True when `found` names wanted's family with a higher version ("split/2" for "split/1").
+bool is_newer_version(std::string_view found, std::string_view wanted);
+// The refusal (bad_input) for such a file: "FILE: WHERE: is split/2, written by a newer haptex ...".
+[[nodiscard]] Error newer_version_error(const std::string& file, const std::string& where, const std::string& found,
+                                        const std::string& wanted);
+
+}  // namespace haptex
