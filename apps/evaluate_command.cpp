@@ -20,7 +20,7 @@
 #include "predict/model_file.hpp"
 #include "qa/sound_split.hpp"
 #include "render/reconstruction.hpp"
-#include "synth/truth_file.hpp"
+#include "dataset/truth_file.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -77,7 +77,7 @@ class EvaluateCommand : public Command {
     for (const std::string& path : models_)
       models.push_back({path, std::filesystem::path(path).filename().string(), predict::read_model(path)});
     evaluate::Evaluation e = evaluate::run_evaluation(split, models, options_, terminal_progress(global, "evaluate"));
-    if (!options_.truth.empty() && has_grid(synth::read_truth_file(options_.truth)))
+    if (!options_.truth.empty() && has_grid(dataset::read_truth_file(options_.truth)))
       for (const evaluate::ModelInput& m : models) e.notes.push_back(truth_note(m));
     const evaluate::ReportFiles files = evaluate::write_report(e, output_, force_);
     if (global.json) {
@@ -101,8 +101,8 @@ class EvaluateCommand : public Command {
   }
 
  private:
-  static bool has_grid(const synth::Truth& truth) {
-    return std::any_of(truth.materials.begin(), truth.materials.end(), [](const synth::MaterialTruth& m) { return m.grid.has_value(); });
+  static bool has_grid(const dataset::Truth& truth) {
+    return std::any_of(truth.materials.begin(), truth.materials.end(), [](const dataset::MaterialTruth& m) { return m.grid.has_value(); });
   }
 
   std::string truth_note(const evaluate::ModelInput& m) const {

@@ -17,10 +17,10 @@ namespace {
 constexpr std::size_t kGridPoints = 10;  // action points per window for the grid oracle, every 100 samples
 
 // DFT321 keeps the summed power of the three axes: their noise adds as one channel of 3 sigma^2.
-double dft321_noise_power(const synth::Truth& truth) { return 3 * truth.accel_noise_m_s2 * truth.accel_noise_m_s2; }
+double dft321_noise_power(const dataset::Truth& truth) { return 3 * truth.accel_noise_m_s2 * truth.accel_noise_m_s2; }
 
-const synth::TruthRecording* find_recording(const synth::MaterialTruth& t, const std::string& sha) {
-  for (const synth::TruthRecording& r : t.recordings)
+const dataset::TruthRecording* find_recording(const dataset::MaterialTruth& t, const std::string& sha) {
+  for (const dataset::TruthRecording& r : t.recordings)
     if (!sha.empty() && r.source_sha256 == sha) return &r;
   return nullptr;
 }
@@ -41,13 +41,13 @@ Neighbours locate(const std::vector<double>& axis, double x) {
 }
 
 // Power of grid point (s, f) on the extended grid: index 0 is the silent row or column.
-double extended_power(const synth::TruthGrid& g, std::size_t s, std::size_t f, std::size_t k) {
+double extended_power(const dataset::TruthGrid& g, std::size_t s, std::size_t f, std::size_t k) {
   if (s == 0 || f == 0) return 0.0;
   const double a = g.spectrum(s - 1, f - 1)[k];
   return a * a;
 }
 
-std::vector<std::vector<double>> grid_section(const synth::TruthGrid& grid, const synth::TruthRecording& r, std::int64_t begin,
+std::vector<std::vector<double>> grid_section(const dataset::TruthGrid& grid, const dataset::TruthRecording& r, std::int64_t begin,
                                               const std::vector<std::size_t>& windows, double noise_power) {
   std::vector<std::vector<double>> out;
   for (std::size_t t : windows) {
@@ -69,7 +69,7 @@ std::vector<std::vector<double>> grid_section(const synth::TruthGrid& grid, cons
 std::size_t known_action_sample(std::size_t t, std::size_t i) { return std::min(i, t + dataset::kActionEnd); }
 
 // The grid's spectrum along that action, at the oracle's ten points.
-std::vector<std::vector<double>> grid_input_section(const synth::TruthGrid& grid, const SectionSignals& s,
+std::vector<std::vector<double>> grid_input_section(const dataset::TruthGrid& grid, const SectionSignals& s,
                                                     const std::vector<std::size_t>& windows, double noise_power) {
   std::vector<std::vector<double>> out;
   for (std::size_t t : windows) {
@@ -104,7 +104,7 @@ std::vector<std::vector<double>> ar_input_section(const ar::PiecewiseArModel& mo
   return out;
 }
 
-void check_length(const synth::TruthRecording& r, const SectionSignals& s, const std::string& path, const std::string& material) {
+void check_length(const dataset::TruthRecording& r, const SectionSignals& s, const std::string& path, const std::string& material) {
   if (std::size_t(s.begin) + s.accel.size() > r.speed_mm_s.size())
     throw input_error(path, "/materials/" + material + "/recordings/" + std::to_string(r.index),
                       "the true action has " + std::to_string(r.speed_mm_s.size()) + " samples but the dataset's recording has at least " +
@@ -112,7 +112,7 @@ void check_length(const synth::TruthRecording& r, const SectionSignals& s, const
                       "Give the truth.h5 written with the recordings this dataset was converted from");
 }
 
-ArSection true_action_section(const synth::TruthRecording& r, const SectionSignals& s, std::vector<std::vector<double>> recorded) {
+ArSection true_action_section(const dataset::TruthRecording& r, const SectionSignals& s, std::vector<std::vector<double>> recorded) {
   ArSection a;
   a.lead = std::min<std::size_t>(std::size_t(s.begin), kArLeadSamples);
   const auto from = std::ptrdiff_t(std::size_t(s.begin) - a.lead), to = std::ptrdiff_t(std::size_t(s.begin) + s.accel.size());
@@ -140,7 +140,7 @@ void add_sensor_noise(std::vector<double>& amplitude, double noise_power) {
   for (double& a : amplitude) a = std::sqrt(a * a + add);
 }
 
-std::vector<double> grid_power_at(const synth::TruthGrid& grid, double speed, double force) {
+std::vector<double> grid_power_at(const dataset::TruthGrid& grid, double speed, double force) {
   const Neighbours s = locate(grid.speeds_mm_s, speed), f = locate(grid.forces_n, force);
   std::vector<double> out(dataset::kTargetBins);
   for (std::size_t k = 0; k < out.size(); ++k)
@@ -149,13 +149,13 @@ std::vector<double> grid_power_at(const synth::TruthGrid& grid, double speed, do
   return out;
 }
 
-std::optional<MaterialOracle> material_oracle(const synth::Truth& truth, const std::string& truth_path, const MaterialSignals& m,
+std::optional<MaterialOracle> material_oracle(const dataset::Truth& truth, const std::string& truth_path, const MaterialSignals& m,
                                               const std::vector<std::vector<std::vector<double>>>& recorded, std::uint64_t seed) {
-  const synth::MaterialTruth* t = truth.find(m.id);
+  const dataset::MaterialTruth* t = truth.find(m.id);
   if (!t) return std::nullopt;
-  std::vector<const synth::TruthRecording*> recordings;
+  std::vector<const dataset::TruthRecording*> recordings;
   for (const SectionSignals& s : m.test) {
-    const synth::TruthRecording* r = find_recording(*t, s.source_sha256);
+    const dataset::TruthRecording* r = find_recording(*t, s.source_sha256);
     if (!r) return std::nullopt;
     check_length(*r, s, truth_path, m.id);
     recordings.push_back(r);

@@ -1,6 +1,6 @@
 #pragma once
 // The oracle: the expected spectrum of each test window under the process that generated the
-// recording, where truth.h5 (synth/truth_file.hpp) says what that was. No predictor can do better
+// recording, where truth.h5 (dataset/truth_file.hpp) says what that was. No predictor can do better
 // on average; a model that does beyond its sampling error means the oracle is wrong
 // (docs/evaluate.md, "The noise floor").
 // - "hatt-model": the generating piecewise AR model along the true, noise-free action with its
@@ -14,7 +14,7 @@
 
 #include "evaluate/ar_expectation.hpp"
 #include "evaluate/section_signals.hpp"
-#include "synth/truth_file.hpp"
+#include "dataset/truth_file.hpp"
 
 namespace haptex::evaluate {
 
@@ -33,7 +33,7 @@ struct MaterialOracle {
 // @source_sha256). recorded: per test section, the recording's spectra on section_grid.
 // Throws haptex::Error (bad_input) naming truth_path when the truth's action is shorter than a
 // section or its model file does not parse.
-std::optional<MaterialOracle> material_oracle(const synth::Truth& truth, const std::string& truth_path, const MaterialSignals& m,
+std::optional<MaterialOracle> material_oracle(const dataset::Truth& truth, const std::string& truth_path, const MaterialSignals& m,
                                               const std::vector<std::vector<std::vector<double>>>& recorded, std::uint64_t seed);
 
 // Does a predictor beat the oracle beyond sampling error? Per-window distances of each on the same
@@ -48,6 +48,6 @@ void add_sensor_noise(std::vector<double>& amplitude, double noise_power);
 
 // The truth grid's spectrum at one action: bilinear in power over the grid extended by silent
 // rows at speed 0 and force 0, held at the grid's edge beyond its maxima.
-std::vector<double> grid_power_at(const synth::TruthGrid& grid, double speed, double force);
+std::vector<double> grid_power_at(const dataset::TruthGrid& grid, double speed, double force);
 
 }  // namespace haptex::evaluate

@@ -214,7 +214,7 @@ struct Context {
   std::vector<std::size_t> first_row, first_section;  // per material: its first window and section in the grid
   const std::vector<std::vector<Codes>>& codes;  // [model][material]; empty for per-material models
   const EvaluationOptions& options;
-  const std::optional<synth::Truth>& truth;  // --truth: the oracle where it knows a material
+  const std::optional<dataset::Truth>& truth;  // --truth: the oracle where it knows a material
   std::vector<MethodKey> stitched_keys;    // every reconstruction scored (speed-vs-accuracy points)
   std::optional<MethodKey> stitched_key;   // the one the stitched-signal experiment reports
   int stitched_model = -1;                 // the first unified model, whose new-press spectra are stitched
@@ -638,8 +638,8 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
       codes[i] = unified_codes(models[i], split);
       if (stitched < 0) stitched = int(i), e.latents = latent_map(codes[i], split);
     }
-  std::optional<synth::Truth> truth;
-  if (!o.truth.empty()) truth = synth::read_truth_file(o.truth);
+  std::optional<dataset::Truth> truth;
+  if (!o.truth.empty()) truth = dataset::read_truth_file(o.truth);
   if (truth && truth->sample_rate_hz != dataset::kSampleRateHz)  // the oracle's windows and action points count 10 kHz samples
     throw input_error(o.truth, "/@sample_rate_hz", "is " + std::to_string(truth->sample_rate_hz) + " Hz, not the evaluation's 10 kHz",
                       "Give the truth.h5 written with the recordings of this dataset");

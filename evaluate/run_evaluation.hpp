@@ -40,7 +40,7 @@ struct ModelInput {
 
 // Throws haptex::Error (bad_input) when there is neither a model nor predictions; when a model was
 // trained on another dataset or split (hashes), or does not know a material of the split; as
-// read_external_predictions throws, or when two predictions share a name; as synth::read_truth_file throws; and as the baselines throw (a material whose training
+// read_external_predictions throws, or when two predictions share a name; as dataset::read_truth_file throws; and as the baselines throw (a material whose training
 // sections are too short for the AR fit; no published model for a material).
 Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<ModelInput>& models,
                           const EvaluationOptions& options, const Progress& progress = {});

@@ -4,12 +4,12 @@
 #include "core/naming.hpp"
 #include "dataset/window.hpp"
 #include "predict/predictor.hpp"
-#include "synth/truth_file.hpp"
+#include "dataset/truth_file.hpp"
 
 namespace haptex::evaluate {
 namespace {
 
-TruthComparison compare_material(predict::Predictor& p, int material, const synth::TruthGrid& grid) {
+TruthComparison compare_material(predict::Predictor& p, int material, const dataset::TruthGrid& grid) {
   const std::vector<double>& speeds = grid.speeds_mm_s;
   const std::vector<double>& forces = grid.forces_n;
   const predict::Normalisation& n = p.model().normalisation;
@@ -45,11 +45,11 @@ TruthComparison compare_material(predict::Predictor& p, int material, const synt
 }  // namespace
 
 std::vector<TruthComparison> compare_with_truth(const predict::Model& model, const std::string& truth_path) {
-  const synth::Truth truth = synth::read_truth_file(truth_path);
+  const dataset::Truth truth = dataset::read_truth_file(truth_path);
   predict::Predictor p(model);
   std::vector<TruthComparison> out;
   bool known = false;
-  for (const synth::MaterialTruth& m : truth.materials) {
+  for (const dataset::MaterialTruth& m : truth.materials) {
     const std::string id = material_id(m.name);
     const int index = model.material_index(id);
     known = known || index >= 0;

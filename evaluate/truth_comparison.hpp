@@ -1,6 +1,6 @@
 #pragma once
 // For synthetic materials (haptex synth materials), the expected spectra are known: truth.h5
-// (synth/truth_file.hpp) holds each material's noise-free spectrum on a speed x force grid
+// (dataset/truth_file.hpp) holds each material's noise-free spectrum on a speed x force grid
 // (HaTT-model materials have none and are skipped). This compares a model's predictions
 // there with them, and, for scale, a constant spectrum per material (the truth's own mean over the
 // grid: the best any action-blind predictor can do).

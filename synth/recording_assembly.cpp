@@ -53,7 +53,7 @@ convert::Recording assemble_recording(const RecordingIdentity& identity, const S
   return r;
 }
 
-TruthRecording write_recording(const std::string& path, int index, const convert::Recording& recording, Strokes&& strokes) {
+dataset::TruthRecording write_recording(const std::string& path, int index, const convert::Recording& recording, Strokes&& strokes) {
   const std::string sha = write_recorded_data_xml(path, recording);
   return {index, sha, std::move(strokes.speed), std::move(strokes.force)};
 }

@@ -11,7 +11,7 @@
 #include "convert/recording.hpp"
 #include "dataset/window.hpp"
 #include "synth/stroke_generator.hpp"
-#include "synth/truth_file.hpp"
+#include "dataset/truth_file.hpp"
 
 namespace haptex::synth {
 
@@ -34,6 +34,6 @@ convert::Recording assemble_recording(const RecordingIdentity& identity, const S
 // returns what truth.h5 keeps of it: the noise-free action it was made from (strokes' speed and
 // force, moved out) and the SHA-256 of the file as written, which convert stamps as @source_sha256,
 // so the evaluation can find a converted recording's truth.
-TruthRecording write_recording(const std::string& path, int index, const convert::Recording& recording, Strokes&& strokes);
+dataset::TruthRecording write_recording(const std::string& path, int index, const convert::Recording& recording, Strokes&& strokes);
 
 }  // namespace haptex::synth

@@ -16,7 +16,7 @@
 #include "core/random_seeds.hpp"
 #include "synth/synth_output.hpp"
 #include "synth/synth_runs.hpp"
-#include "synth/truth_file.hpp"
+#include "dataset/truth_file.hpp"
 
 namespace haptex::synth {
 namespace fs = std::filesystem;
@@ -75,9 +75,9 @@ void check_unique_materials(const std::vector<ModelFile>& models, const std::vec
 }
 
 // The material's recordings, written to OUT/recordings, and what generated them.
-MaterialTruth write_recordings(const std::string& out, const ModelFile& file, const SynthHattOptions& o) {
+dataset::MaterialTruth write_recordings(const std::string& out, const ModelFile& file, const SynthHattOptions& o) {
   const std::string& material = file.model.set().material;
-  MaterialTruth truth{material, "hatt-model", file.xml, "", std::nullopt, {}};
+  dataset::MaterialTruth truth{material, "hatt-model", file.xml, "", std::nullopt, {}};
   for (int k = 0; k < o.recordings; ++k) {
     HattRecording r = render_hatt_recording(file.model, o.seconds, hatt_recording_seed(o.seed, material, k));
     truth.recordings.push_back(write_recording(recording_path(out, material, k), k, r.recording, std::move(r.strokes)));
@@ -101,7 +101,7 @@ SynthSummary synth_hatt(const SynthHattOptions& o, const Progress& progress) {
 
   SynthSummary summary;
   // In the order of the model files; each material's slot is filled by the thread that renders it.
-  Truth truth{kSampleRateHz, kAccelNoise, std::vector<MaterialTruth>(models.size())};
+  dataset::Truth truth{kSampleRateHz, kAccelNoise, std::vector<dataset::MaterialTruth>(models.size())};
   std::mutex mutex;
   std::size_t done = 0;
   folder.fill([&](const std::string&) {
@@ -117,7 +117,7 @@ SynthSummary synth_hatt(const SynthHattOptions& o, const Progress& progress) {
       if (!o.images_dir.empty() && !has_image) summary.materials_without_images.push_back(material);
       if (progress) progress(++done, models.size(), material);
     });
-    write_truth_file((fs::path(out) / "truth.h5").string(), truth, o.provenance);
+    dataset::write_truth_file((fs::path(out) / "truth.h5").string(), truth, o.provenance);
   });
   for (const auto& m : models) summary.materials.push_back(m.model.set().material);
   std::sort(summary.materials_without_images.begin(), summary.materials_without_images.end());

@@ -51,7 +51,7 @@ void write_manifest(const std::string& out, const SynthMaterialsOptions& o, cons
 }
 
 // One material: surface, presses, recordings; returns its truth (recipe, spectra, the recordings' actions).
-MaterialTruth synthesize_material(const MaterialSpec& spec, const SynthMaterialsOptions& o) {
+dataset::MaterialTruth synthesize_material(const MaterialSpec& spec, const SynthMaterialsOptions& o) {
   const HeightField surface = make_height_field(spec.surface, spec.seed);
   const HeightField tip = smoothed_for_tip(surface, kTipRadiusMm);
   RendererOptions optics;
@@ -62,7 +62,7 @@ MaterialTruth synthesize_material(const MaterialSpec& spec, const SynthMaterials
   write_material_presses(GelSightRenderer(surface, optics), gelsight_directory(o.out, spec.name), spec.name,
                          derive_seed(spec.seed, 1), o.provenance, presses);
   const ProbeVibration probe(tip, spec);
-  MaterialTruth truth{spec.name, "synth-material", "", recipe_json(spec).dump(), std::nullopt, {}};
+  dataset::MaterialTruth truth{spec.name, "synth-material", "", recipe_json(spec).dump(), std::nullopt, {}};
   for (int k = 0; k < o.recordings; ++k) {
     Strokes strokes = generate_strokes(kLimits, {o.seconds, kSampleRateHz}, derive_seed(spec.seed, 10, std::uint64_t(k)));
     const std::vector<double> accel = probe.along_path(strokes.position_x, strokes.position_y, strokes.force, kSampleRateHz);
@@ -82,7 +82,7 @@ SynthSummary synth_materials(const SynthMaterialsOptions& o, const Progress& pro
   SynthMaterialsOptions staged = o;
   staged.out = folder.path();
   const std::vector<MaterialSpec> specs = material_specs(o.count, o.seed);
-  Truth truth{kSampleRateHz, kAccelNoise, std::vector<MaterialTruth>(specs.size())};
+  dataset::Truth truth{kSampleRateHz, kAccelNoise, std::vector<dataset::MaterialTruth>(specs.size())};
   std::mutex mutex;
   std::size_t done = 0;
   folder.fill([&](const std::string&) {
@@ -91,7 +91,7 @@ SynthSummary synth_materials(const SynthMaterialsOptions& o, const Progress& pro
       std::lock_guard lock(mutex);
       if (progress) progress(++done, specs.size(), specs[i].name);
     });
-    write_truth_file((std::filesystem::path(staged.out) / "truth.h5").string(), truth, o.provenance);
+    dataset::write_truth_file((std::filesystem::path(staged.out) / "truth.h5").string(), truth, o.provenance);
     write_manifest(staged.out, o, specs);
   });
   folder.commit();

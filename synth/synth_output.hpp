@@ -3,7 +3,7 @@
 //   OUT/recordings/<material_id>_<k>.xml.gz       HaTT recorded-data XML, gzip (haptex convert hatt OUT/recordings)
 //   OUT/gelsight/<Material name>/press_<j>.avi     press videos, MJPG (haptex capture extract OUT/gelsight)
 //   OUT/gelsight/<Material name>/press_<j>.json   the true peak frame and contact interval
-//   OUT/truth.h5                                  what generated each recording (synth/truth_file.hpp)
+//   OUT/truth.h5                                  what generated each recording (dataset/truth_file.hpp)
 //   OUT/materials.json                            (synth materials) the recipes
 #include <string>
 

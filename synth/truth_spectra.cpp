@@ -43,9 +43,9 @@ void mean_spectrum(const ProbeVibration& probe, double speed, double force, int 
 
 }  // namespace
 
-TruthGrid expected_spectra(const ProbeVibration& probe, const StrokeLimits& limits, std::uint64_t seed,
+dataset::TruthGrid expected_spectra(const ProbeVibration& probe, const StrokeLimits& limits, std::uint64_t seed,
                            const TruthOptions& options) {
-  TruthGrid grid;
+  dataset::TruthGrid grid;
   grid.speeds_mm_s = linear_grid(0.1 * limits.max_speed_mm_s, limits.max_speed_mm_s, options.speeds);
   grid.forces_n = linear_grid(0.1 * limits.max_force_n, limits.max_force_n, options.forces);
   grid.spectra.resize(grid.speeds_mm_s.size() * grid.forces_n.size() * dataset::kTargetBins);

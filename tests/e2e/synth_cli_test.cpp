@@ -12,7 +12,7 @@
 #include "core/naming.hpp"
 #include "core/sha256.hpp"
 #include "core/temporary_name.hpp"
-#include "synth/truth_file.hpp"
+#include "dataset/truth_file.hpp"
 #include "tests/support/npy.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/sample_recording.hpp"
@@ -31,10 +31,10 @@ const std::vector<std::string> kSmall = {"--size", "160x120", "--presses", "2", 
 
 // truth.h5 knows every recording by the SHA-256 convert stamps on it (the evaluation's noise floor
 // finds a recording's truth that way): checks that link through the converted recordings file.
-void expect_truth_of_each_recording(const synth::Truth& truth, const std::string& recordings_file, std::size_t samples) {
+void expect_truth_of_each_recording(const dataset::Truth& truth, const std::string& recordings_file, std::size_t samples) {
   const h5::File converted = h5::File::open(recordings_file);
-  for (const synth::MaterialTruth& m : truth.materials)
-    for (const synth::TruthRecording& r : m.recordings) {
+  for (const dataset::MaterialTruth& m : truth.materials)
+    for (const dataset::TruthRecording& r : m.recordings) {
       SCOPED_TRACE(m.name + " recording " + std::to_string(r.index));
       const std::string k = "materials/" + material_id(m.name) + "/recordings/" + std::to_string(r.index);
       EXPECT_EQ(converted.root().open_group(k).attr_string("source_sha256"), r.source_sha256);
@@ -94,10 +94,10 @@ TEST(SynthCli, MaterialsReadBackThroughConvertOpenCvAndH5py) {
     }
 
   EXPECT_NO_THROW(json::validate(json::read_file(out + "/materials.json"), "synth-materials.schema.json", "materials.json"));
-  const synth::Truth truth = synth::read_truth_file(out + "/truth.h5");
+  const dataset::Truth truth = dataset::read_truth_file(out + "/truth.h5");
   EXPECT_EQ(truth.accel_noise_m_s2, 0.02);
   ASSERT_EQ(truth.materials.size(), 2u);
-  for (const synth::MaterialTruth& m : truth.materials) {
+  for (const dataset::MaterialTruth& m : truth.materials) {
     EXPECT_EQ(m.generator, "synth-material");
     EXPECT_EQ(nlohmann::json::parse(m.recipe_json)["name"], m.name);
     ASSERT_TRUE(m.grid.has_value()) << m.name;
@@ -184,10 +184,10 @@ TEST(SynthCli, HattModelsAndPhotographsBecomeRecordingsAndPresses) {
   ASSERT_EQ(converted.exit_code, 0) << converted.err;
 
   // truth.h5: each model byte for byte, and the noise-free action of each recording.
-  const synth::Truth truth = synth::read_truth_file(out + "/truth.h5");
+  const dataset::Truth truth = dataset::read_truth_file(out + "/truth.h5");
   EXPECT_EQ(truth.accel_noise_m_s2, 0.02);
   ASSERT_EQ(truth.materials.size(), 2u);
-  for (const synth::MaterialTruth& m : truth.materials) {
+  for (const dataset::MaterialTruth& m : truth.materials) {
     EXPECT_EQ(m.generator, "hatt-model");
     EXPECT_EQ(m.model_xml, slurp(dir.file("models/Models_" + m.name + ".xml"))) << m.name;
     EXPECT_FALSE(m.grid.has_value());

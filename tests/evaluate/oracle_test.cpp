@@ -18,8 +18,8 @@
 namespace haptex::evaluate {
 namespace {
 
-synth::TruthGrid two_by_two() {
-  synth::TruthGrid g{{10, 20}, {1, 2}, std::vector<double>(4 * 100)};
+dataset::TruthGrid two_by_two() {
+  dataset::TruthGrid g{{10, 20}, {1, 2}, std::vector<double>(4 * 100)};
   for (std::size_t s = 0; s < 2; ++s)
     for (std::size_t f = 0; f < 2; ++f)
       for (std::size_t k = 0; k < 100; ++k) g.spectra[(s * 2 + f) * 100 + k] = double(1 + s + 2 * f);
@@ -27,7 +27,7 @@ synth::TruthGrid two_by_two() {
 }
 
 TEST(TruthGridOracle, InterpolatesPowerAndFallsSilentAtRest) {
-  const synth::TruthGrid g = two_by_two();
+  const dataset::TruthGrid g = two_by_two();
   EXPECT_DOUBLE_EQ(grid_power_at(g, 10, 1)[0], 1.0);
   EXPECT_DOUBLE_EQ(grid_power_at(g, 20, 2)[7], 16.0);
   EXPECT_DOUBLE_EQ(grid_power_at(g, 15, 1)[3], 0.5 * (1 + 4));        // between (10, 1) and (20, 1), in power
@@ -61,7 +61,7 @@ TEST(BeatsOracle, FlagsAWrongOracleNotChance) {
 // A recording of the fixture model along a slow speed ramp at 2 N, with the sensor noise of three
 // axes as DFT321 keeps it, cut into one test section.
 struct HattCase {
-  synth::Truth truth;
+  dataset::Truth truth;
   MaterialSignals signals;
   std::vector<std::vector<std::vector<double>>> recorded;
 };

@@ -48,7 +48,7 @@ std::vector<double> image_features(const GelSightRenderer& renderer) {
 
 // The material's feel: its mean log amplitude spectrum over a force-speed grid.
 std::vector<double> spectrum_features(const ProbeVibration& probe) {
-  const TruthGrid grid = expected_spectra(probe, {200, 4}, 5, {3, 2, 4});
+  const dataset::TruthGrid grid = expected_spectra(probe, {200, 4}, 5, {3, 2, 4});
   std::vector<double> mean(100, 0.0);
   const std::size_t points = grid.speeds_mm_s.size() * grid.forces_n.size();
   for (std::size_t p = 0; p < points; ++p)

@@ -62,7 +62,7 @@ TEST(SynthRecordings, MaterialSpectraMoveUpWithSpeed) {
     const MaterialSpec spec = material_spec(index, 0);
     const HeightField tip = smoothed_for_tip(make_height_field(spec.surface, spec.seed, 512, 8.0), kTipRadiusMm);
     const ProbeVibration probe(tip, spec);
-    const TruthGrid grid = expected_spectra(probe, {200, 4}, 3, {4, 2, 8});
+    const dataset::TruthGrid grid = expected_spectra(probe, {200, 4}, 3, {4, 2, 8});
     EXPECT_GT(centroid_hz(grid.spectrum(3, 1)), 1.3 * centroid_hz(grid.spectrum(0, 1))) << spec.name;
     EXPECT_GT(centroid_hz(grid.spectrum(2, 1)), centroid_hz(grid.spectrum(1, 1))) << spec.name;
   }

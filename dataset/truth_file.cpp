@@ -1,4 +1,4 @@
-#include "synth/truth_file.hpp"
+#include "dataset/truth_file.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include "dataset/layout.hpp"
 #include "dataset/window.hpp"
 
-namespace haptex::synth {
+namespace haptex::dataset {
 namespace {
 
 constexpr const char* kHattModel = "hatt-model";
@@ -269,4 +269,4 @@ Truth read_truth_file(const std::string& path) {
   return truth;
 }
 
-}  // namespace haptex::synth
+}  // namespace haptex::dataset

@@ -1,6 +1,6 @@
 // truth.h5 (truth/2): what generated each synthetic recording, written and read back, and every
 // damaged or foreign file refused with a message naming the file, the object and the fix.
-#include "synth/truth_file.hpp"
+#include "dataset/truth_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,15 +15,15 @@
 #include "tests/support/mutations.hpp"
 #include "tests/support/temp_dir.hpp"
 
-namespace haptex::synth {
+namespace haptex::dataset {
 namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kRerun = ". Run haptex synth again to write a new truth.h5";
 
 // Values exact in float32, so the actions survive the file unchanged.
-TruthRecording recording(int index, std::size_t samples) {
-  TruthRecording r{index, std::string(64, char('a' + index)), {}, {}};
+dataset::TruthRecording recording(int index, std::size_t samples) {
+  dataset::TruthRecording r{index, std::string(64, char('a' + index)), {}, {}};
   for (std::size_t i = 0; i < samples; ++i) {
     r.speed_mm_s.push_back(0.25 * double(i));
     r.force_n.push_back(1 + 0.125 * double(i));
@@ -33,29 +33,29 @@ TruthRecording recording(int index, std::size_t samples) {
 
 // One material of each generator. The model text is over 64 KiB, as the published models are
 // (70 to 80 KB): more than an HDF5 attribute stored in its object header could hold.
-Truth sample_truth() {
+dataset::Truth sample_truth() {
   const std::string xml = "<?xml version=\"1.0\"?>\n<model>\n  <!-- " + std::string(100'000, '.') + " -->\n  <mu>0.4</mu>\n</model>\n";
-  MaterialTruth book{"Book", "hatt-model", xml, "", std::nullopt, {recording(0, 6), recording(1, 4)}};
+  dataset::MaterialTruth book{"Book", "hatt-model", xml, "", std::nullopt, {recording(0, 6), recording(1, 4)}};
   std::vector<double> spectra(3 * 2 * 100);
   for (std::size_t i = 0; i < spectra.size(); ++i) spectra[i] = 0.001 * double(i);
-  MaterialTruth woven{"Woven 1", "synth-material", "", R"({"name":"Woven 1","family":"Woven"})",
-                      TruthGrid{{10, 20, 40}, {0.5, 1}, spectra}, {recording(0, 5)}};
+  dataset::MaterialTruth woven{"Woven 1", "synth-material", "", R"({"name":"Woven 1","family":"Woven"})",
+                      dataset::TruthGrid{{10, 20, 40}, {0.5, 1}, spectra}, {recording(0, 5)}};
   return {10000, 0.02, {book, woven}};
 }
 
-void expect_same(const TruthRecording& a, const TruthRecording& b) {
+void expect_same(const dataset::TruthRecording& a, const dataset::TruthRecording& b) {
   EXPECT_EQ(a.index, b.index);
   EXPECT_EQ(a.source_sha256, b.source_sha256);
   EXPECT_EQ(a.speed_mm_s, b.speed_mm_s);
   EXPECT_EQ(a.force_n, b.force_n);
 }
 
-void expect_same(const Truth& a, const Truth& b) {
+void expect_same(const dataset::Truth& a, const dataset::Truth& b) {
   EXPECT_EQ(a.sample_rate_hz, b.sample_rate_hz);
   EXPECT_EQ(a.accel_noise_m_s2, b.accel_noise_m_s2);
   ASSERT_EQ(a.materials.size(), b.materials.size());
   for (std::size_t m = 0; m < a.materials.size(); ++m) {
-    const MaterialTruth &x = a.materials[m], &y = b.materials[m];
+    const dataset::MaterialTruth &x = a.materials[m], &y = b.materials[m];
     SCOPED_TRACE(x.name);
     EXPECT_EQ(x.name, y.name);
     EXPECT_EQ(x.generator, y.generator);
@@ -72,10 +72,10 @@ void expect_same(const Truth& a, const Truth& b) {
   }
 }
 
-// read_truth_file's refusal: always bad input (exit code 2); the message, to compare exactly.
+// dataset::read_truth_file's refusal: always bad input (exit code 2); the message, to compare exactly.
 std::string refusal(const std::string& path) {
   try {
-    read_truth_file(path);
+    dataset::read_truth_file(path);
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), Error::Kind::bad_input) << e.what();
     return e.what();
@@ -87,8 +87,8 @@ std::string refusal(const std::string& path) {
 class TruthFile : public ::testing::Test {
  protected:
   // The sample truth, written, then changed by `change` (through core/h5, as a damaged copy would be).
-  std::string written(const std::function<void(test::Edit&)>& change = {}, const Truth& truth = sample_truth()) {
-    write_truth_file(path_, truth, "test");
+  std::string written(const std::function<void(test::Edit&)>& change = {}, const dataset::Truth& truth = sample_truth()) {
+    dataset::write_truth_file(path_, truth, "test");
     if (change) {
       test::Edit edit(path_);
       change(edit);
@@ -101,8 +101,8 @@ class TruthFile : public ::testing::Test {
 };
 
 TEST_F(TruthFile, BothGeneratorsRoundTrip) {
-  const Truth truth = sample_truth();
-  const Truth read = read_truth_file(written());
+  const dataset::Truth truth = sample_truth();
+  const dataset::Truth read = dataset::read_truth_file(written());
   expect_same(read, truth);
   ASSERT_NE(read.find("woven_1"), nullptr);
   EXPECT_EQ(read.find("woven_1")->name, "Woven 1");
@@ -121,7 +121,7 @@ TEST_F(TruthFile, BothGeneratorsRoundTrip) {
 
 TEST_F(TruthFile, APathWithQuotesBackQuotesSpacesAndNonUtf8BytesRoundTrips) {
   path_ = dir_.file("truth \"of\" 'it' `all` $(x) \xff\xfe.h5");
-  expect_same(read_truth_file(written()), sample_truth());
+  expect_same(dataset::read_truth_file(written()), sample_truth());
   written([](test::Edit& e) { e.root().set_attr("haptex_format", "truth/1"); });
   EXPECT_EQ(refusal(path_), path_ + ": /@haptex_format: is truth/1, written by an older haptex: it does not record what "
                                     "generated each recording. Run haptex synth again to write truth/2");
@@ -163,7 +163,7 @@ TEST_F(TruthFile, RefusesSpeedAndForceOfDifferentLengths) {
 }
 
 TEST_F(TruthFile, RefusesNaNInSpeed) {
-  Truth truth = sample_truth();
+  dataset::Truth truth = sample_truth();
   truth.materials[1].recordings[0].speed_mm_s[2] = std::numeric_limits<double>::quiet_NaN();
   written({}, truth);
   EXPECT_EQ(refusal(path_), path_ + ": /materials/woven_1/recordings/0/speed: value 2 is nan, expected a finite number of 0 or more" +
@@ -171,7 +171,7 @@ TEST_F(TruthFile, RefusesNaNInSpeed) {
 }
 
 TEST_F(TruthFile, RefusesNegativeAccelNoise) {
-  Truth truth = sample_truth();
+  dataset::Truth truth = sample_truth();
   truth.accel_noise_m_s2 = -0.02;
   written({}, truth);
   EXPECT_EQ(refusal(path_), path_ + ": /@accel_noise_m_s2: is -0.02, expected a finite number of 0 or more up to 1e+06" + kRerun);
@@ -184,7 +184,7 @@ TEST_F(TruthFile, RefusesASpectrumOfTheWrongShape) {
 }
 
 TEST_F(TruthFile, RefusesAGridThatDoesNotAscend) {
-  Truth truth = sample_truth();
+  dataset::Truth truth = sample_truth();
   truth.materials[1].grid->speeds_mm_s = {10, 40, 20};
   written({}, truth);
   EXPECT_EQ(refusal(path_), path_ + ": /materials/woven_1/speeds: value 2 is 20, not above the one before it (40): the grid's axes "
@@ -205,4 +205,4 @@ TEST_F(TruthFile, RefusesAMistypedAction) {
 }
 
 }  // namespace
-}  // namespace haptex::synth
+}  // namespace haptex::dataset

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace haptex::synth {
+namespace haptex::dataset {
 
 
 // A material's noise-free expected amplitude spectrum (100 bins, 10..1000 Hz, of 1000-sample
@@ -53,4 +53,4 @@ void write_truth_file(const std::string& path, const Truth& truth, const std::st
 // shapes that disagree, non-finite or negative values, an unknown generator.
 Truth read_truth_file(const std::string& path);
 
-}  // namespace haptex::synth
+}  // namespace haptex::dataset
