@@ -5,6 +5,7 @@
 
 #include "align/align_dataset.hpp"
 #include "apps/command.hpp"
+#include "apps/output_options.hpp"
 #include "core/output_is_input.hpp"
 #include "apps/terminal_progress.hpp"
 
@@ -25,10 +26,9 @@ class AlignCommand : public Command {
   void declare(CLI::App& app) override {
     app.add_option("--recordings", options_.recordings, "Recordings file (haptex convert)")->required();
     app.add_option("--gelsight", options_.gelsight, "GelSight file (haptex capture extract)")->required();
-    app.add_option("-o,--output", options_.output, "Dataset file to write")->required();
+    add_output_options(app, options_.output, options_.overwrite, "Dataset file to write (HDF5)");
     app.add_option("--stride", options_.stride, "Samples between window starts")->capture_default_str()->check(CLI::Range(1, 100000));
     app.add_option("--names", options_.names_file, "JSON map {\"gelsight name\": \"recordings name\"} for names that differ");
-    app.add_flag("--force", options_.overwrite, "Replace the output file if it exists");
   }
 
   int run(const GlobalOptions& global) override {

@@ -7,6 +7,7 @@
 #include <optional>
 #include <set>
 
+#include "apps/output_options.hpp"
 #include "apps/capture_subcommands.hpp"
 #include "apps/number_checks.hpp"
 #include "core/output_is_input.hpp"
@@ -21,7 +22,7 @@ class CaptureExtract : public CaptureSubcommand {
   CLI::App* declare(CLI::App& capture) override {
     CLI::App* app = capture.add_subcommand("extract", "Press files or videos -> gelsight.h5 (peak frames) and contact sheets");
     app->add_option("inputs", inputs_, "Press files, videos, a folder per material, or a folder of such folders")->required();
-    app->add_option("-o,--output", output_, "GelSight file to write (HDF5)")->required();
+    add_output_options(*app, output_, options_.overwrite, "GelSight file to write (HDF5)");
     app->add_option("--reference", reference_, "A no-contact image of the sensor, instead of each video's leading frames");
     app->add_option("--material", material_, "Material name for every input (default: the folder's name)");
     app->add_option("--reference-frames", options_.settings.reference_frames, "Leading no-contact frames averaged (10 to 250)")
@@ -42,7 +43,6 @@ class CaptureExtract : public CaptureSubcommand {
     app->add_flag("--explain", options_.explain,
                   "Chart each source's score over time (reference frames, thresholds, presses) in <output>_explain/, "
                   "also when no press is found");
-    app->add_flag("--force", options_.overwrite, "Replace the output file, and the sheets folder while it holds only the sheets its haptex-files.json lists");
     return app;
   }
 

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "apps/output_options.hpp"
 #include "apps/capture_subcommands.hpp"
 #include "apps/terminal_progress.hpp"
 #include "capture/device/camera_controls.hpp"
@@ -65,7 +66,7 @@ class CaptureRecord : public CaptureSubcommand {
     serial->excludes(device);
     app->add_option("--material", options_.material, "Name of the material pressed (e.g. \"Brick 2\")")->required();
     app->add_option("--presses", options_.presses, "Presses to record before the take ends")->capture_default_str();
-    app->add_option("-o,--output", request_.output_dir, "Session folder for the press files and session.json")->required();
+    add_output_options(*app, request_.output_dir, request_.overwrite, "Session folder for the press files and session.json");
     app->add_option("--format", format_, "Pixel format (default: MJPG when offered)");
     app->add_option("--size", size_, "Frame size WIDTHxHEIGHT (default: the largest)");
     app->add_option("--fps", fps_, "Frame rate (default: the highest at that size)");
@@ -81,7 +82,6 @@ class CaptureRecord : public CaptureSubcommand {
     app->add_option("--post-frames", options_.post_frames, "Frames kept after each release")->capture_default_str();
     app->add_option("--buffers", request_.buffers, "Driver buffers, 4 to 8")->capture_default_str()->check(CLI::Range(4, 8));
     app->add_option("--sensors", sensors_, "JSON list of more sensors for --serial (the form of schemas/tactile-sensors.json)");
-    app->add_flag("--force", request_.overwrite, "Replace a session already in the folder");
     return app;
   }
 

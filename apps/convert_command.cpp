@@ -4,6 +4,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "apps/output_options.hpp"
 #include "apps/command.hpp"
 #include "apps/number_checks.hpp"
 #include "core/output_is_input.hpp"
@@ -23,13 +24,13 @@ class ConvertCommand : public Command {
     hatt_ = app.add_subcommand("hatt", "HaTT recorded-data XML and CSV recordings -> recordings.h5");
     hatt_->add_option("inputs", inputs_, "Recording files, or directories searched for *.xml, *.xml.gz and *.csv")->required();
     hatt_->add_option("--map", map_, "Field map JSON naming your files' elements (default: schemas/hatt-recording-map.json)");
-    add_output_options(*hatt_);
+    add_shared_options(*hatt_);
 
     cluster_ = app.add_subcommand("cluster", "Cluster Haptic Texture Database (sensor_data/ CSV takes) -> recordings.h5");
     cluster_->add_option("database", database_, "The database's folder (holding sensor_data/), or sensor_data itself")
         ->required();
     cluster_->add_option("--names", names_, "Texture names: JSON {\"0\": \"name\", ...} or CSV id,name (default: cluster N)");
-    add_output_options(*cluster_);
+    add_shared_options(*cluster_);
   }
 
   int run(const GlobalOptions& global) override {
@@ -51,13 +52,12 @@ class ConvertCommand : public Command {
   }
 
  private:
-  // What every reader shares: the output, the input size limit and --force.
-  void add_output_options(CLI::App& sub) {
-    sub.add_option("-o,--output", output_, "Recordings file to write (HDF5)")->required();
+  // What every reader shares: the output, --force and the input size limit.
+  void add_shared_options(CLI::App& sub) {
+    add_output_options(sub, output_, options_.overwrite, "Recordings file to write (HDF5)");
     sub.add_option("--max-bytes", options_.max_bytes, "Refuse input files larger than this, or gzip files that expand to more")
         ->capture_default_str()
         ->check(positive_number());
-    sub.add_flag("--force", options_.overwrite, "Replace the output file if it exists");
   }
 
   void print(const convert::ConvertResult& result, double seconds, const GlobalOptions& global) const {

@@ -9,6 +9,8 @@
 #include <iostream>
 #include <map>
 
+#include "apps/dataset_split_input.hpp"
+#include "apps/output_options.hpp"
 #include "apps/command.hpp"
 #include "apps/terminal_progress.hpp"
 #include "core/error.hpp"
@@ -18,7 +20,6 @@
 #include "evaluate/run_evaluation.hpp"
 #include "evaluate/truth_comparison.hpp"
 #include "predict/model_file.hpp"
-#include "qa/sound_split.hpp"
 #include "render/reconstruction.hpp"
 #include "dataset/truth_file.hpp"
 
@@ -31,8 +32,7 @@ class EvaluateCommand : public Command {
   std::string summary() const override { return "Compare trained models with an AR baseline on the test sections; write a report"; }
 
   void declare(CLI::App& app) override {
-    app.add_option("dataset", dataset_, "Dataset file (haptex align)")->required();
-    app.add_option("--split", split_, "Split manifest the models were trained with")->required();
+    input_.declare(app, "Split manifest the models were trained with");
     app.add_option("--model", models_, "Model file (haptex train); repeat for several (unified sizes, per-material)");
     app.add_option("--predictions", predictions_,
                    "NAME=FILE: predictions of a model trained elsewhere on the grid of `haptex windows` (docs/benchmark.md); "
@@ -51,9 +51,7 @@ class EvaluateCommand : public Command {
                    "truth.h5 of haptex synth hatt or synth materials: the oracle noise floor (and, for synth materials, "
                    "the models against the noise-free spectra grid)")
         ->check(CLI::ExistingFile);
-    app.add_option("-o,--output", output_, "Report folder to write")->required();
-    app.add_flag("--force", force_, "Replace an earlier report folder: only while it holds nothing but the files its haptex-files.json lists "
-                                "(a folder with a file of yours is refused, never emptied)");
+    add_output_options(app, output_, force_, "Report folder to write");
   }
 
   int run(const GlobalOptions& global) override {
@@ -67,12 +65,11 @@ class EvaluateCommand : public Command {
     for (const std::string& argument : predictions_) options_.predictions.push_back(evaluate::parse_predictions_argument(argument));
     std::vector<std::string> inputs = models_;
     for (const evaluate::PredictionsInput& p : options_.predictions) inputs.push_back(p.path);
-    inputs.insert(inputs.end(), {dataset_, split_, options_.truth, options_.hatt_models});
+    inputs.insert(inputs.end(), {input_.dataset, input_.split, options_.truth, options_.hatt_models});
     refuse_output_among_inputs(output_, inputs);
     if (std::filesystem::exists(output_) && !force_)
       throw input_error(output_, "", "the report folder exists", "Choose another -o or add --force");
-    const split::DatasetSplit split = split::read_dataset_split(dataset_, split_);
-    qa::require_sound_split(split::read_split_manifest(split_), dataset_);
+    const split::DatasetSplit split = input_.read();
     std::vector<evaluate::ModelInput> models;
     for (const std::string& path : models_)
       models.push_back({path, std::filesystem::path(path).filename().string(), predict::read_model(path)});
@@ -116,7 +113,8 @@ class EvaluateCommand : public Command {
                   m.label.c_str(), truth_.c_str(), found.size(), all.points, all.model, all.constant, all.truth_norm);
   }
 
-  std::string dataset_, split_, output_, reconstruct_ = "fgla";
+  DatasetSplitInput input_;
+  std::string output_, reconstruct_ = "fgla";
   std::vector<std::string> models_, predictions_;
   evaluate::EvaluationOptions options_;
   bool force_ = false;

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "apps/output_options.hpp"
 #include "apps/command.hpp"
 #include "apps/terminal_progress.hpp"
 #include "core/output_is_input.hpp"
@@ -24,12 +25,11 @@ class MergeCommand : public Command {
   std::string summary() const override { return "Join recordings, gelsight or dataset files made on several machines into one"; }
 
   void declare(CLI::App& app) override {
-    app.add_option("-o,--output", options_.output, "File to write, of the shards' format")->required();
+    add_output_options(app, options_.output, options_.overwrite, "File to write, of the shards' format (HDF5)");
     app.add_option("shards", options_.shards, "Files of one format (recordings, gelsight or dataset), each with its own materials")
         ->required();
     app.add_flag("--keep-first", options_.keep_first,
                  "A material in several shards is taken from the first that has it (in the order given) instead of refused");
-    app.add_flag("--force", options_.overwrite, "Replace the output file if it exists and haptex wrote it");
   }
 
   int run(const GlobalOptions& global) override {

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <optional>
 
+#include "apps/output_options.hpp"
 #include "apps/command.hpp"
 #include "apps/number_checks.hpp"
 #include "core/durable_file.hpp"
@@ -36,7 +37,7 @@ class RenderCommand : public Command {
     app.add_option("--material", texture_.material, "A training material's id instead of an image")->excludes(image);
     app.add_option("--trajectory", trajectory_path_, "Force/speed trajectory at 10 kHz: columns force, speed (time_s optional)")
         ->required()->check(CLI::ExistingFile);
-    app.add_option("-o,--output", output_, "WAV file to write (mono, 10 kHz, 24-bit PCM)")->required();
+    add_output_options(app, output_, force_, "WAV file to write (mono, 10 kHz, 24-bit PCM)");
     app.add_option("--csv", csv_, "Also write the vibration as CSV: time_s, force_n, speed_mm_s, accel_m_s2");
     reconstruct_option_ = app.add_option("--reconstruct", reconstruction_,
                                        "Phase reconstruction: fgla (offline fast Griffin-Lim), online (RTISI-LA) or noise "
@@ -54,7 +55,6 @@ class RenderCommand : public Command {
                                       "around them (steadier than any surface; docs/render.md)");
     app.add_option("--seed", seed_, "fgla: seed of the random initial phase; online: of the frames' scatter; noise: of the noise")
         ->capture_default_str();
-    app.add_flag("--force", force_, "Replace the output files if they exist");
   }
 
   int run(const GlobalOptions& global) override {

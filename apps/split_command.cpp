@@ -5,6 +5,7 @@
 #include <iostream>
 #include <optional>
 
+#include "apps/output_options.hpp"
 #include "apps/command.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
@@ -25,7 +26,7 @@ class SplitCommand : public Command {
 
   void declare(CLI::App& app) override {
     app.add_option("dataset", dataset_, "Dataset file (haptex align)")->required();
-    app.add_option("-o,--output", output_, "Split manifest to write (JSON)")->required();
+    add_output_options(app, output_, force_, "Split manifest to write (JSON)");
     app.add_option("--sections", options_.sections, "Sections per recording")->capture_default_str()->check(CLI::Range(3, 10000));
     app.add_option("--val", options_.val, "Validation sections")->capture_default_str()->check(CLI::Range(1, 10000));
     app.add_option("--test", options_.test, "Test sections")->capture_default_str()->check(CLI::Range(1, 10000));
@@ -34,7 +35,6 @@ class SplitCommand : public Command {
         ->capture_default_str()->check(CLI::Range(0.0, 1.0));
     app.add_option("--tries", options_.tries, "Assignments tried per material")->capture_default_str()->check(CLI::Range(1, 1000000));
     app.add_flag("--no-plots", no_plots_, "Do not write the per-material plots");
-    app.add_flag("--force", force_, "Replace the output file if it exists");
   }
 
   int run(const GlobalOptions& global) override {

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "apps/output_options.hpp"
 #include "apps/command.hpp"
 #include "apps/terminal_progress.hpp"
 #include "core/error.hpp"
@@ -12,10 +13,6 @@ namespace haptex::apps {
 namespace {
 
 // What --force may replace (core/owned_folder.hpp).
-constexpr const char* kForceHelp =
-    "Replace an earlier synth output folder: only while it holds nothing but the files its haptex-files.json lists "
-    "(a folder with a file of yours is refused, never emptied)";
-
 std::pair<int, int> parse_size(const std::string& text) {
   int width = 0, height = 0, used = 0;
   char x = 0;
@@ -36,22 +33,20 @@ class SynthCommand : public Command {
     hatt_ = app.add_subcommand("hatt", "Render recordings from published HaTT model files (and presses from their photographs)");
     hatt_->add_option("--models", hatt_options_.models_dir, "Folder of Models_<Material>.xml")->required();
     hatt_->add_option("--images", hatt_options_.images_dir, "Folder of <Material>_square.jpg photographs (optional)");
-    hatt_->add_option("-o,--output", hatt_options_.out, "Output folder")->required();
+    add_output_options(*hatt_, hatt_options_.out, hatt_options_.overwrite, "Output folder");
     hatt_->add_option("--recordings", hatt_options_.recordings, "Recordings per material")->capture_default_str()->check(CLI::Range(1, 100));
     hatt_->add_option("--seconds", hatt_options_.seconds, "Seconds per recording")->capture_default_str()->check(CLI::Range(0.2, 600.0));
     hatt_->add_option("--seed", hatt_options_.seed, "Random seed")->capture_default_str();
-    hatt_->add_flag("--force", hatt_options_.overwrite, kForceHelp);
 
     materials_ = app.add_subcommand("materials", "Procedural materials: height fields -> presses, recordings, truth spectra");
     materials_->add_option("-n", materials_options_.count, "Number of materials (default: the 8-material demo set)")
         ->capture_default_str()->check(CLI::Range(1, 10000));
-    materials_->add_option("-o,--output", materials_options_.out, "Output folder")->required();
+    add_output_options(*materials_, materials_options_.out, materials_options_.overwrite, "Output folder");
     materials_->add_option("--recordings", materials_options_.recordings, "Recordings per material")->capture_default_str()->check(CLI::Range(1, 100));
     materials_->add_option("--presses", materials_options_.presses, "Presses per material")->capture_default_str()->check(CLI::Range(1, 100));
     materials_->add_option("--seconds", materials_options_.seconds, "Seconds per recording")->capture_default_str()->check(CLI::Range(0.2, 600.0));
     materials_->add_option("--size", size_, "GelSight frame size WIDTHxHEIGHT")->capture_default_str();
     materials_->add_option("--seed", materials_options_.seed, "Random seed")->capture_default_str();
-    materials_->add_flag("--force", materials_options_.overwrite, kForceHelp);
   }
 
   int run(const GlobalOptions& global) override {

@@ -7,6 +7,8 @@
 #include <iomanip>
 #include <iostream>
 
+#include "apps/dataset_split_input.hpp"
+#include "apps/output_options.hpp"
 #include "apps/command.hpp"
 #include "apps/number_checks.hpp"
 #include "apps/terminal_progress.hpp"
@@ -19,7 +21,6 @@
 #include "core/version.hpp"
 #include "predict/model_file.hpp"
 #include "predict/train.hpp"
-#include "qa/sound_split.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -44,9 +45,8 @@ class TrainCommand : public Command {
   std::string summary() const override { return "Train the action-conditional spectrum model on a dataset and its split"; }
 
   void declare(CLI::App& app) override {
-    app.add_option("dataset", dataset_, "Dataset file (haptex align)")->required();
-    app.add_option("--split", split_, "Split manifest (haptex split) made from this dataset")->required();
-    app.add_option("-o,--output", output_, "Model file to write (HDF5)")->required();
+    input_.declare(app);
+    add_output_options(app, output_, force_, "Model file to write (HDF5)");
     app.add_option("--log", log_, "Training log to write (JSON); default: the model's name with .training.json");
     app.add_flag("--per-material", per_material_, "One action encoder and predictor per material, no texture encoder");
     app.add_option("--latent", options_.latent, "Texture latent size")->capture_default_str()->check(CLI::Range(1, 4096));
@@ -66,22 +66,20 @@ class TrainCommand : public Command {
         ->capture_default_str()->check(CLI::Range(1, 99) & odd_number());
     app.add_option("--seed", options_.seed, "Random seed (same seed, same weights)")->capture_default_str();
     app.add_option("--threads", options_.threads, "Threads (0: every core); the weights do not depend on it")->capture_default_str();
-    app.add_flag("--force", force_, "Replace the output files if they exist");
   }
 
   int run(const GlobalOptions& global) override {
     if (log_.empty()) log_ = std::filesystem::path(output_).replace_extension(".training.json").string();
     if (std::filesystem::weakly_canonical(log_) == std::filesystem::weakly_canonical(output_))
       throw input_error(log_, "", "--log names the model file itself", "Give the training log another name, or leave --log out");
-    refuse_output_among_inputs(output_, {dataset_, split_});
-    refuse_output_among_inputs(log_, {dataset_, split_});
+    refuse_output_among_inputs(output_, input_.files());
+    refuse_output_among_inputs(log_, input_.files());
     check_output_path(output_, force_);
     check_replaceable_output(log_, force_, "a training log (format training-log/1)",
                              [](const std::string& p) { return json::has_format(p, "training-log/1"); });
     options_.variant = per_material_ ? predict::Variant::per_material : predict::Variant::unified;
     const auto start = std::chrono::steady_clock::now();
-    const split::DatasetSplit split = split::read_dataset_split(dataset_, split_);
-    qa::require_sound_split(split::read_split_manifest(split_), dataset_);
+    const split::DatasetSplit split = input_.read();
     const Progress loading = terminal_progress(global, "texture descriptors");
     const predict::TrainingData data = predict::load_training_data(
         split, {}, [&](std::size_t done, std::size_t total) { if (loading) loading(done, total, "presses"); },
@@ -98,8 +96,8 @@ class TrainCommand : public Command {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const nlohmann::json log = {{"format", "training-log/1"}, {"haptex_version", kVersion}, {"created_utc", h5::utc_now_iso8601()},
                                 {"source", global.command_line}, {"model", output_},
-                                {"dataset", {{"path", dataset_}, {"sha256", split.dataset_sha256}}},
-                                {"split", {{"path", split_}, {"sha256", split.manifest_sha256}}},
+                                {"dataset", {{"path", input_.dataset}, {"sha256", split.dataset_sha256}}},
+                                {"split", {{"path", input_.split}, {"sha256", split.manifest_sha256}}},
                                 {"options", options_.to_json()}, {"epochs", epochs}, {"metrics", model.metrics},
                                 {"parameters", parameters(model)}, {"seconds", seconds}};
     PartialFile log_file(log_);
@@ -141,7 +139,8 @@ class TrainCommand : public Command {
     std::cout << "; mean-spectrum baseline " << std::setprecision(5) << base["val_distance"].get<double>() << " m/s^2\n";
   }
 
-  std::string dataset_, split_, output_, log_;
+  DatasetSplitInput input_;
+  std::string output_, log_;
   predict::TrainOptions options_;
   bool per_material_ = false, force_ = false;
 };

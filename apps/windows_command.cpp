@@ -3,12 +3,12 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "apps/dataset_split_input.hpp"
+#include "apps/output_options.hpp"
 #include "apps/command.hpp"
 #include "core/durable_file.hpp"
 #include "core/output_is_input.hpp"
 #include "evaluate/evaluation_grid.hpp"
-#include "qa/sound_split.hpp"
-#include "split/manifest_reader.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -19,17 +19,14 @@ class WindowsCommand : public Command {
   std::string summary() const override { return "Write the evaluation's test windows (actions, presses, spectra) for models trained elsewhere"; }
 
   void declare(CLI::App& app) override {
-    app.add_option("dataset", dataset_, "Dataset file (haptex align)")->required();
-    app.add_option("--split", split_, "Split manifest (haptex split) made from this dataset")->required();
-    app.add_option("-o,--output", output_, "Windows file to write (HDF5)")->required();
-    app.add_flag("--force", force_, "Replace the output file if it exists");
+    input_.declare(app);
+    add_output_options(app, output_, force_, "Windows file to write (HDF5)");
   }
 
   int run(const GlobalOptions& global) override {
-    refuse_output_among_inputs(output_, {dataset_, split_});
+    refuse_output_among_inputs(output_, input_.files());
     check_output_path(output_, force_);
-    const split::DatasetSplit split = split::read_dataset_split(dataset_, split_);
-    qa::require_sound_split(split::read_split_manifest(split_), dataset_);
+    const split::DatasetSplit split = input_.read();
     const evaluate::EvaluationGrid grid = evaluate::evaluation_grid(split, evaluate::read_section_signals(split));
     evaluate::write_windows_file(grid, split, output_, force_, global.command_line);
     print(grid, global);
@@ -47,7 +44,8 @@ class WindowsCommand : public Command {
       std::cout << "wrote " << output_ << " (" << grid.windows.size() << " test windows of " << materials << " materials)\n";
   }
 
-  std::string dataset_, split_, output_;
+  DatasetSplitInput input_;
+  std::string output_;
   bool force_ = false;
 };
 

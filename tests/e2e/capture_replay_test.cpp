@@ -130,9 +130,13 @@ TEST_F(ReplayCli, AWeakMpeg4PressIsCutLiveAsOffline) {
   ASSERT_EQ(x["presses"].size(), 1u) << offline.out;
   const nlohmann::json &l = m["presses"][0], &o = x["presses"][0];
   EXPECT_LE(std::abs(l["contact_first"].get<int>() - o["contact_first"].get<int>()), 1);
-  EXPECT_LE(std::abs(l["peak_frame"].get<int>() - o["peak_index"].get<int>()), 2);
-  EXPECT_GE(o["peak_index"].get<int>(), timing.first_contact());
-  EXPECT_LE(o["peak_index"].get<int>(), timing.last_contact());
+  // The 20 held frames are one picture under fresh noise: its peak is any of them, and live (frames
+  // re-encoded as JPEG) and offline (MPEG-4 decoded) may pick different ones.
+  const int hold_first = timing.first_contact() + timing.ramp, hold_last = hold_first + timing.hold - 1;
+  for (const int peak : {l["peak_frame"].get<int>(), o["peak_index"].get<int>()}) {
+    EXPECT_GE(peak, hold_first);
+    EXPECT_LE(peak, hold_last);
+  }
   // The same no-contact level, from the same frames scored alike (a JPEG re-encoding apart).
   const double live_level = m["recorder"]["no_contact_level"], offline_level = x["detection"][0]["no_contact_level"];
   EXPECT_NEAR(live_level, offline_level, 0.1 * offline_level);
