@@ -8,6 +8,7 @@
 #include "apps/command.hpp"
 #include "core/durable_file.hpp"
 #include "core/output_is_input.hpp"
+#include "dataset/windows_file.hpp"
 #include "evaluate/evaluation_grid.hpp"
 
 namespace haptex::apps {
@@ -28,7 +29,9 @@ class WindowsCommand : public Command {
     check_output_path(output_, force_);
     const split::DatasetSplit split = input_.read();
     const evaluate::EvaluationGrid grid = evaluate::evaluation_grid(split, evaluate::read_section_signals(split));
-    evaluate::write_windows_file(grid, split, output_, force_, global.command_line);
+    dataset::write_windows_file({grid.windows, grid.section, grid.press, split.dataset_path, grid.dataset_sha256, split.manifest_path,
+                                 grid.split_sha256},
+                                output_, force_, global.command_line);
     print(grid, global);
     return 0;
   }

@@ -1,8 +1,5 @@
 #include "evaluate/evaluation_grid.hpp"
 
-#include "core/h5/atomic_file.hpp"
-#include "dataset/format.hpp"
-#include "dataset/layout.hpp"
 
 namespace haptex::evaluate {
 namespace {
@@ -40,25 +37,6 @@ EvaluationGrid evaluation_grid(const split::DatasetSplit& split, const std::vect
     for (const SectionSignals& s : signals[m].test) append_section(g, std::int32_t(m), press, s);
   }
   return g;
-}
-
-void write_windows_file(const EvaluationGrid& grid, const split::DatasetSplit& split, const std::string& path, bool overwrite,
-                        const std::string& source) {
-  namespace layout = dataset::layout;
-  h5::AtomicFile out(path, overwrite);
-  h5::Group root = out.root();
-  dataset::stamp(root, dataset::Kind::windows, source);
-  root.set_attr(layout::kDatasetFile, split.dataset_path);
-  root.set_attr(layout::kDatasetSha256, grid.dataset_sha256);
-  root.set_attr(layout::kSplitFile, split.manifest_path);
-  root.set_attr(layout::kSplitSha256, grid.split_sha256);
-  dataset::write_window_table(root, grid.windows);
-  h5::Group windows = root.open_group(layout::kWindows);
-  windows.write(layout::kWindowSection, grid.section)
-      .set_attr("description", "the window's test section of its recording (the split's section number)");
-  windows.write(layout::kWindowPress, grid.press)
-      .set_attr("description", "the material's test press: /materials/{material}/presses/{press} of the dataset file");
-  out.commit();
 }
 
 }  // namespace haptex::evaluate

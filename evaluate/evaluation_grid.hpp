@@ -26,9 +26,4 @@ struct EvaluationGrid {
 // order, then their test sections as read_section_signals lists them, windows by start.
 EvaluationGrid evaluation_grid(const split::DatasetSplit& split, const std::vector<MaterialSignals>& signals);
 
-// Writes the windows file (schemas/hdf5-layout.md, "Windows file") atomically; throws haptex::Error
-// (bad_input) when `path` exists and `overwrite` is false.
-void write_windows_file(const EvaluationGrid& grid, const split::DatasetSplit& split, const std::string& path, bool overwrite,
-                        const std::string& source);
-
 }  // namespace haptex::evaluate
