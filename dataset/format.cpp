@@ -38,10 +38,11 @@ std::string format_name(Kind kind) {
   return std::string(f.family) + "/" + std::to_string(f.version);
 }
 
-std::optional<Kind> kind_named(std::string_view name) {
-  for (const Format& f : kFormats)
-    if (format_name(f.kind) == name) return f.kind;
-  return std::nullopt;
+std::string format_list(std::span<const Kind> kinds, std::string_view last_joint) {
+  std::string list;
+  for (std::size_t i = 0; i < kinds.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == kinds.size() ? std::string(last_joint) : ", ") + format_name(kinds[i]);
+  return list;
 }
 
 std::string read_format(const h5::File& file) {
@@ -72,6 +73,13 @@ h5::File open_checked(const std::string& path, Kind kind) {
                         "Run " + std::string(want.written_by) + " again to write " + wanted);
   }
   throw input_error(path, "/@haptex_format", "is '" + found + "', not " + wanted, give);
+}
+
+OpenedFile open_any(const std::string& path, std::span<const Kind> kinds, const std::string& who, const std::string& fix) {
+  const std::string found = read_format(h5::File::open(path));
+  for (const Kind kind : kinds)
+    if (family_of(found) == format_of(kind).family) return {open_checked(path, kind), kind};
+  throw input_error(path, "/@" + std::string(h5::kFormatAttribute), "is '" + found + "': " + who + " " + format_list(kinds) + " files", fix);
 }
 
 void stamp(h5::Group root, Kind kind, const std::string& source) { h5::stamp_root(root, format_name(kind), source); }

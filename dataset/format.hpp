@@ -3,7 +3,7 @@
 // version ("dataset/4"), and every reader opens a file through open_checked, so a file of another
 // kind or an older version is refused in one place, with the file and the fix
 // (schemas/hdf5-layout.md; docs/architecture.md, "Formats").
-#include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -23,8 +23,8 @@ struct Format {
 
 const Format& format_of(Kind kind);
 std::string format_name(Kind kind);  // "dataset/4"
-// The kind whose current format is `name` exactly; nullopt for anything else.
-std::optional<Kind> kind_named(std::string_view name);
+// "recordings/1, gelsight/2 or dataset/4": the current formats of `kinds`, for messages.
+std::string format_list(std::span<const Kind> kinds, std::string_view last_joint = " or ");
 
 // The file's /@haptex_format. Throws haptex::Error (bad_input) naming the file when the attribute
 // is missing (not a haptex file) or not a string.
@@ -34,6 +34,15 @@ std::string read_format(const h5::File& file);
 // (bad_input) naming the file and /@haptex_format: not HDF5, not a haptex file, another kind, or
 // an older version (saying what changed and which command writes the current one).
 h5::File open_checked(const std::string& path, Kind kind);
+
+struct OpenedFile {
+  h5::File file;
+  Kind kind;
+};
+// Opens path as a file of any of `kinds` (the one its family names), through open_checked, so an
+// older or newer version is refused as every reader refuses it. A file of another kind is refused
+// (bad_input) as "is 'model/3': <who> recordings/1, gelsight/2 or dataset/4 files. <fix>".
+OpenedFile open_any(const std::string& path, std::span<const Kind> kinds, const std::string& who, const std::string& fix);
 
 
 // The root attributes every haptex file carries (core/h5/file.hpp, stamp_root) for `kind`.

@@ -18,23 +18,6 @@ using namespace dataset::layout;
 constexpr std::array kMergeable{dataset::Kind::recordings, dataset::Kind::gelsight, dataset::Kind::dataset};
 constexpr const char* kWriteAgain = "Write the file again with the haptex command that made it";
 
-std::string mergeable_formats() {
-  std::string list;
-  for (std::size_t i = 0; i < kMergeable.size(); ++i)
-    list += (i == 0 ? "" : i + 1 == kMergeable.size() ? " or " : ", ") + dataset::format_name(kMergeable[i]);
-  return list;
-}
-
-// The file opened through open_checked for the mergeable format of its family, so an older version
-// gets the message every reader gives; any other format is refused here.
-std::pair<h5::File, dataset::Kind> open_mergeable(const std::string& path) {
-  const std::string found = dataset::read_format(h5::File::open(path));
-  for (dataset::Kind kind : kMergeable)
-    if (found.rfind(std::string(dataset::format_of(kind).family) + "/", 0) == 0) return {dataset::open_checked(path, kind), kind};
-  throw input_error(path, "/@" + std::string(h5::kFormatAttribute), "is '" + found + "': haptex merge joins " + mergeable_formats() + " files",
-                    "Give shards of one of those formats");
-}
-
 bool is_known_attribute(dataset::Kind kind, const std::string& name) {
   for (const char* stamp : h5::kStampAttributes)
     if (name == stamp) return true;
@@ -82,7 +65,7 @@ bool mergeable(dataset::Kind kind) { return std::find(kMergeable.begin(), kMerge
 
 Shard open_shard(const std::string& path) {
   text::require_utf8(path, "(command line)", "a shard's file name");
-  auto [file, kind] = open_mergeable(path);
+  auto [file, kind] = dataset::open_any(path, kMergeable, "haptex merge joins", "Give shards of one of those formats");
   const h5::Group root = file.root();
   refuse_unknown_root_content(path, root, kind);
   Shard shard{path, std::move(file), kind, material_ids(path, root), {}};

@@ -1,11 +1,11 @@
 #include "qa/run_qa.hpp"
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 
 #include "dataset/format.hpp"
 #include "core/error.hpp"
-#include "core/format_version.hpp"
 #include "core/input_file.hpp"
 #include "core/h5/file.hpp"
 #include "qa/checkers.hpp"
@@ -15,10 +15,12 @@
 namespace haptex::qa {
 namespace {
 
-// The formats qa checks, by root attribute haptex_format.
-const std::vector<std::pair<std::string, FileKind>> kFormats = {{dataset::format_name(dataset::Kind::recordings), FileKind::recordings},
-                                                               {dataset::format_name(dataset::Kind::gelsight), FileKind::gelsight},
-                                                               {dataset::format_name(dataset::Kind::dataset), FileKind::dataset}};
+// The formats qa checks.
+constexpr std::array kChecked{dataset::Kind::recordings, dataset::Kind::gelsight, dataset::Kind::dataset};
+
+FileKind file_kind(dataset::Kind kind) {
+  return kind == dataset::Kind::recordings ? FileKind::recordings : kind == dataset::Kind::gelsight ? FileKind::gelsight : FileKind::dataset;
+}
 
 bool looks_like_hdf5(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -32,16 +34,11 @@ void append(std::vector<CheckResult>& out, std::vector<CheckResult> more) {
 }
 
 Report check_hdf5(const QaOptions& options) {
-  const h5::File file = h5::File::open(options.file);
-  const h5::Group root = file.root();
-  const std::string format = dataset::read_format(file);
-  const auto known = std::find_if(kFormats.begin(), kFormats.end(), [&](const auto& f) { return f.first == format; });
-  for (const auto& [name, kind] : kFormats)
-    if (is_newer_version(format, name)) throw newer_version_error(options.file, "/@haptex_format", format, name);
-  if (known == kFormats.end())
-    throw input_error(options.file, "/@haptex_format", "'" + format + "' is not a format qa checks",
-                      "qa checks " + kFormats[0].first + ", " + kFormats[1].first + " and " + kFormats[2].first + " files and split manifests");
-  Report report{options.file, known->second, options.split, {}};
+  const dataset::OpenedFile opened =
+      dataset::open_any(options.file, kChecked, "qa checks", "Give one of those, or a split manifest (haptex info FILE tells what a file is)");
+  const h5::Group root = opened.file.root();
+  const std::string format = dataset::format_name(opened.kind);
+  Report report{options.file, file_kind(opened.kind), options.split, {}};
   if (options.split && report.kind != FileKind::dataset)
     throw input_error(options.file, "", "--split goes with a dataset file, this is a " + format + " file",
                       "Run: haptex qa DATASET.h5 --split " + *options.split);

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <fstream>
 #include <string>
 
@@ -22,9 +24,9 @@ std::string file_with_format(const test::TempDir& dir, const std::string& name, 
   return path;
 }
 
-std::string refusal(const std::string& path, Kind kind) {
+std::string refusal(const std::function<void()>& open) {
   try {
-    open_checked(path, kind);
+    open();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), Error::Kind::bad_input);
     return e.what();
@@ -32,15 +34,30 @@ std::string refusal(const std::string& path, Kind kind) {
   return "";
 }
 
+std::string refusal(const std::string& path, Kind kind) {
+  return refusal([&] { open_checked(path, kind); });
+}
+
 TEST(Format, NamesAndKindsAgree) {
   EXPECT_EQ(format_name(Kind::dataset), "dataset/4");
   EXPECT_EQ(format_name(Kind::recordings), "recordings/1");
   EXPECT_EQ(format_name(Kind::model), "model/3");
   EXPECT_EQ(format_name(Kind::windows), "windows/2");
-  for (Kind k : {Kind::recordings, Kind::gelsight, Kind::dataset, Kind::model, Kind::truth, Kind::press, Kind::windows})
-    EXPECT_EQ(kind_named(format_name(k)), k);
-  EXPECT_FALSE(kind_named("dataset/1"));
-  EXPECT_FALSE(kind_named("dataset"));
+  const std::vector<Kind> merged = {Kind::recordings, Kind::gelsight, Kind::dataset};
+  EXPECT_EQ(format_list(merged), "recordings/1, gelsight/2 or dataset/4");
+  EXPECT_EQ(format_list(merged, " and "), "recordings/1, gelsight/2 and dataset/4");
+}
+
+TEST(Format, OpenAnyTakesEachKindItNamesAndNamesThemForAnother) {
+  const test::TempDir dir;
+  const std::vector<Kind> kinds = {Kind::recordings, Kind::dataset};
+  EXPECT_EQ(open_any(file_with_format(dir, "d.h5", "dataset/4"), kinds, "x reads", "fix").kind, Kind::dataset);
+  EXPECT_EQ(open_any(file_with_format(dir, "r.h5", "recordings/1"), kinds, "x reads", "fix").kind, Kind::recordings);
+  const std::string path = file_with_format(dir, "m.h5", "model/3");
+  EXPECT_EQ(refusal([&] { open_any(path, kinds, "x reads", "Give one of those"); }),
+            path + ": /@haptex_format: is 'model/3': x reads recordings/1 or dataset/4 files. Give one of those");
+  EXPECT_NE(refusal([&] { open_any(file_with_format(dir, "d3.h5", "dataset/3"), kinds, "x reads", "fix"); }).find("older haptex"),
+            std::string::npos);
 }
 
 TEST(Format, OpensTheRightKindAndRefusesEveryOtherWithTheFix) {

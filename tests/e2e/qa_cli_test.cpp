@@ -140,7 +140,7 @@ TEST_F(QaCli, BadInputExitsTwoNamingFileAndFix) {
   }
   const CommandResult r = run_haptex({"qa", dir_.file("truth.h5")});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("'truth/2' is not a format qa checks"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("is 'truth/2': qa checks recordings/1, gelsight/2 or dataset/4 files"), std::string::npos) << r.err;
 }
 
 }  // namespace
