@@ -114,13 +114,8 @@ const char* attribute_for(const std::string& symbol) {
 }
 
 std::optional<hsize_t> int_attribute(const h5::Group& root, const std::string& group, const char* name) {
-  const h5::Node node = open_node(root, group);
-  if (!node.has_attr(name)) return std::nullopt;
-  try {
-    const std::int64_t n = node.attr_int(name);
-    if (n >= 0) return hsize_t(n);
-  } catch (const Error&) {
-  }
+  const std::optional<std::int64_t> n = open_node(root, group).try_attr<std::int64_t>(name);
+  if (n && *n >= 0) return hsize_t(*n);
   return std::nullopt;
 }
 

@@ -9,18 +9,6 @@ namespace haptex::qa {
 namespace layout = dataset::layout;
 namespace {
 
-template <typename T>
-std::optional<T> optional_attr(const h5::Node& node, const char* name) {
-  if (!node.has_attr(name)) return std::nullopt;
-  try {
-    if constexpr (std::is_same_v<T, double>) return node.attr_double(name);
-    else if constexpr (std::is_same_v<T, std::int64_t>) return node.attr_int(name);
-    else return node.attr_string(name);
-  } catch (const Error&) {
-    return std::nullopt;  // wrong type: layout.dtype reports it
-  }
-}
-
 Signal read_signal(const h5::Group& group, const std::string& name, std::size_t columns,
                    std::optional<std::size_t> rows) {
   Signal s;
@@ -84,10 +72,10 @@ LoadedRecording load_recording(const h5::Group& root, const std::string& path) {
   LoadedRecording r;
   r.path = path;
   r.material = path.substr(11, path.find('/', 11) - 11);
-  r.sample_rate_hz = optional_attr<double>(group, "sample_rate_hz");
-  r.duration_s = optional_attr<double>(group, "duration_s");
-  r.samples = optional_attr<std::int64_t>(group, "samples");
-  r.source_sha256 = optional_attr<std::string>(group, "source_sha256");
+  r.sample_rate_hz = group.try_attr<double>("sample_rate_hz");
+  r.duration_s = group.try_attr<double>("duration_s");
+  r.samples = group.try_attr<std::int64_t>("samples");
+  r.source_sha256 = group.try_attr<std::string>("source_sha256");
   // Rows: the recording's `samples`; without it, whatever `accel` has (layout.required reports it).
   std::optional<std::size_t> rows;
   if (r.samples && *r.samples >= 0) rows = std::size_t(*r.samples);

@@ -31,15 +31,6 @@ std::string pointer(std::size_t material, const std::string& rest) {
   return "#/materials/" + std::to_string(material) + (rest.empty() ? "" : "/" + rest);
 }
 
-std::optional<std::string> string_attr(const h5::Group& root, const char* name) {
-  if (!root.has_attr(name)) return std::nullopt;
-  try {
-    return root.attr_string(name);
-  } catch (const Error&) {
-    return std::nullopt;
-  }
-}
-
 MaterialSections section_sets(const SplitMaterial& m, std::int64_t sections) {
   std::vector<int> set_of(std::size_t(std::max<std::int64_t>(sections, 0)), -1);
   for (int s = 0; s < 3; ++s)
@@ -212,7 +203,7 @@ CheckResult check_split_hashes(const SplitManifest& m, const SplitDataset& d) {
   for (const auto& [attr, expected, where] :
        {std::tuple{"recordings_sha256", m.recordings_sha256, "#/dataset/recordings_sha256"},
         std::tuple{"gelsight_sha256", m.gelsight_sha256, "#/dataset/gelsight_sha256"}}) {
-    const auto stored = string_attr(root, attr);
+    const auto stored = root.try_attr<std::string>(attr);
     if (!stored) tally.skip(std::string("the dataset has no ") + attr + " attribute");
     else if (*stored != expected)
       tally.fail(where, "the manifest names " + expected.substr(0, 12) + "..., the dataset's /@" + attr + " is " +

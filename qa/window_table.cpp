@@ -34,15 +34,6 @@ bool read_matrix(const h5::Group& windows, const char* name, std::size_t rows, s
   return true;
 }
 
-std::optional<std::int64_t> int_attr(const h5::Node& node, const char* name) {
-  if (!node.has_attr(name)) return std::nullopt;
-  try {
-    return node.attr_int(name);
-  } catch (const Error&) {
-    return std::nullopt;
-  }
-}
-
 }  // namespace
 
 std::optional<WindowTable> load_window_table(const h5::Group& root, std::string& problem) {
@@ -64,9 +55,9 @@ std::optional<WindowTable> load_window_table(const h5::Group& root, std::string&
     problem = "/windows/material, recording and start differ in length";
     return std::nullopt;
   }
-  const auto stride = int_attr(windows, "stride"), action = int_attr(windows, "action_samples"),
-             window = int_attr(windows, "window_samples"), action_end = int_attr(windows, "action_end"),
-             action_step = int_attr(windows, "action_step");
+  const auto stride = windows.try_attr<std::int64_t>("stride"), action = windows.try_attr<std::int64_t>("action_samples"),
+             window = windows.try_attr<std::int64_t>("window_samples"), action_end = windows.try_attr<std::int64_t>("action_end"),
+             action_step = windows.try_attr<std::int64_t>("action_step");
   if (!stride || !action || !window || !action_end || !action_step || *stride <= 0 || *action <= 0 || *window <= 0 ||
       *action_step <= 0 || *action > *window || *action_step > *window || (*action - 1) > *action_end / *action_step ||
       *action_end >= *window) {
@@ -90,7 +81,7 @@ std::optional<std::int64_t> recording_samples(const h5::Group& root, const std::
     return std::nullopt;
   const h5::Group m = root.open_group(layout::kMaterials).open_group(material);
   if (!m.has_group(layout::kRecordings) || !m.open_group(layout::kRecordings).has_group(std::to_string(recording))) return std::nullopt;
-  return int_attr(m.open_group(layout::kRecordings).open_group(std::to_string(recording)), "samples");
+  return m.open_group(layout::kRecordings).open_group(std::to_string(recording)).try_attr<std::int64_t>("samples");
 }
 
 }  // namespace haptex::qa

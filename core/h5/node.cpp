@@ -1,5 +1,7 @@
 #include "core/h5/node.hpp"
 
+#include <type_traits>
+
 #include <algorithm>
 #include <cctype>
 
@@ -153,6 +155,21 @@ std::string Node::attr_string(std::string_view name) const {
   text::require_utf8(value, file_, object_path_ + " attribute '" + std::string(name) + "'");
   return value;
 }
+
+template <typename T>
+std::optional<T> Node::try_attr(std::string_view name) const {
+  if (!has_attr(name)) return std::nullopt;
+  try {
+    if constexpr (std::is_same_v<T, double>) return attr_double(name);
+    else if constexpr (std::is_same_v<T, std::int64_t>) return attr_int(name);
+    else return attr_string(name);
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+template std::optional<double> Node::try_attr<double>(std::string_view) const;
+template std::optional<std::int64_t> Node::try_attr<std::int64_t>(std::string_view) const;
+template std::optional<std::string> Node::try_attr<std::string>(std::string_view) const;
 
 std::vector<double> Node::attr_doubles(std::string_view name) const {
   Handle attr = open_attr(name);

@@ -2,6 +2,7 @@
 // Groups and datasets of an HDF5 file, with their attributes. Paths in error messages read
 // "FILE:/group/dataset" so a user can find the object with h5ls or h5py.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -48,6 +49,10 @@ class Node {
   std::int64_t attr_int(std::string_view name) const;
   std::string attr_string(std::string_view name) const;
   std::vector<double> attr_doubles(std::string_view name) const;
+  // The attribute as T (double, std::int64_t or std::string), or nullopt when it is missing or does
+  // not read as T: for checks and summaries that report such an attribute themselves.
+  template <typename T>
+  std::optional<T> try_attr(std::string_view name) const;
 
  protected:
   Handle handle_;
