@@ -57,7 +57,7 @@ class SplitCommand : public Command {
         plots = split::write_split_plots(dataset_, windows, splits, options_.sections, dir, plots_folder());
       });
     // The manifest and its plots appear together or not at all (a full disk while writing either).
-    PartialFile manifest_file(output_);
+    PartialFile manifest_file(output_, force_);
     json::write_file(manifest, "split.schema.json", manifest_file);
     if (plots_dir) plots_dir->finish();
     manifest_file.commit();

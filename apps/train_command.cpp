@@ -100,7 +100,7 @@ class TrainCommand : public Command {
                                 {"split", {{"path", input_.split}, {"sha256", split.manifest_sha256}}},
                                 {"options", options_.to_json()}, {"epochs", epochs}, {"metrics", model.metrics},
                                 {"parameters", parameters(model)}, {"seconds", seconds}};
-    PartialFile log_file(log_);
+    PartialFile log_file(log_, force_);
     json::write_file(log, "training-log.schema.json", log_file);
     model_file.finish();
     log_file.finish();

@@ -63,14 +63,21 @@ void check_replaceable_output(const std::string& path, bool overwrite, const std
                     "Choose another output name, or move the file away yourself");
 }
 
-void durable_rename(const std::string& from, const std::string& to) {
+void durable_rename(const std::string& from, const std::string& to, bool replace) {
   fsync_path(from, O_RDONLY);
-  if (std::rename(from.c_str(), to.c_str()) != 0)
-    throw failure(from + ": cannot rename to " + to + ": " + std::strerror(errno));
+  int status = replace ? std::rename(from.c_str(), to.c_str()) : ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE);
+  if (status != 0 && !replace && errno == EINVAL) {  // a file system without RENAME_NOREPLACE: a hard link never replaces either
+    status = ::link(from.c_str(), to.c_str());
+    if (status == 0) ::unlink(from.c_str());
+  }
+  if (status != 0 && errno == EEXIST)
+    throw input_error(to, "", "appeared while this run was writing it, and is kept: nothing of yours is replaced without --force",
+                      "Move it away and run again, or choose another output name");
+  if (status != 0) throw failure(from + ": cannot rename to " + to + ": " + std::strerror(errno));
   fsync_path(directory_of(to), O_RDONLY | O_DIRECTORY);
 }
 
-PartialFile::PartialFile(const std::string& final_path) : final_path_(final_path) {
+PartialFile::PartialFile(const std::string& final_path, bool replace) : final_path_(final_path), replace_(replace) {
   Temporary t = create_temporary_file(final_path);
   path_ = std::move(t.path);
   fd_ = t.fd;
@@ -93,7 +100,7 @@ void PartialFile::finish() {
 
 void PartialFile::commit() {
   finish();
-  durable_rename(path_, final_path_);
+  durable_rename(path_, final_path_, replace_);
   committed_ = true;
   ::close(fd_);  // readers may lock the finished file now
   fd_ = -1;
@@ -116,8 +123,8 @@ void write_text(PartialFile& out, std::string_view text) {
   }
 }
 
-void write_file_durably(const std::string& path, std::string_view text) {
-  PartialFile partial(path);
+void write_file_durably(const std::string& path, std::string_view text, bool replace) {
+  PartialFile partial(path, replace);
   write_text(partial, text);
   partial.commit();
 }

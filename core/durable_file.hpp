@@ -21,14 +21,19 @@ void check_replaceable_output(const std::string& path, bool overwrite, const std
 std::string why_not_written(int error);
 // fsync one file or (with O_DIRECTORY in flags) directory; throws haptex::Error (failed) naming it.
 void fsync_path(const std::string& path, int flags);
-// fsync `from`, rename it to `to`, fsync the directory.
-void durable_rename(const std::string& from, const std::string& to);
+// fsync `from`, rename it to `to`, fsync the directory. Without `replace`, a `to` that exists by then
+// (it appeared while the run wrote: a user's file, another run's output) is kept and refused
+// (bad_input), atomically (RENAME_NOREPLACE).
+void durable_rename(const std::string& from, const std::string& to, bool replace);
 
 // A new temporary file for NAME (core/temporary_name.hpp), locked (flock) for as long as this object
 // lives, so two haptex runs writing the same output refuse instead of corrupting each other.
 class PartialFile {
  public:
-  explicit PartialFile(const std::string& final_path);  // throws bad_input: unwritable, or locked by another run
+  // Throws bad_input: unwritable, or locked by another run. `replace`: --force was given, so a file at
+  // the final name (checked as haptex's before the work) is replaced; without it nothing that exists
+  // there when the file is renamed is ever replaced.
+  PartialFile(const std::string& final_path, bool replace);
   ~PartialFile();                                        // removes the file unless kept
   PartialFile(const PartialFile&) = delete;
   PartialFile& operator=(const PartialFile&) = delete;
@@ -44,7 +49,7 @@ class PartialFile {
  private:
   std::string final_path_, path_;
   int fd_ = -1;
-  bool finished_ = false, committed_ = false;
+  bool replace_ = false, finished_ = false, committed_ = false;
 };
 
 // The whole of `bytes` as the file at path (created or truncated), for a file inside a folder being
@@ -58,6 +63,6 @@ void write_text(PartialFile& out, std::string_view text);
 
 // The whole of `text` as a new file at path, through PartialFile: the final name appears only once
 // everything is written and synced. Throws haptex::Error (failed) naming the file when writing fails.
-void write_file_durably(const std::string& path, std::string_view text);
+void write_file_durably(const std::string& path, std::string_view text, bool replace);
 
 }  // namespace haptex

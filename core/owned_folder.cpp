@@ -34,7 +34,7 @@ void write_file_list(const std::string& dir, std::string_view written_by) {
                 "nothing else; add a file of your own and it refuses."},
       {"written_by", written_by},
       {"files", files}};
-  write_file_durably((fs::path(dir) / kFileListName).string(), list.dump(1) + "\n");
+  write_file_durably((fs::path(dir) / kFileListName).string(), list.dump(1) + "\n", false);
 }
 
 void check_only_haptex_files(const std::string& folder) {

@@ -129,7 +129,7 @@ std::string vibration_csv_text(const predict::Trajectory& trajectory, std::span<
 void write_vibration_csv(const std::string& path, const predict::Trajectory& trajectory, std::span<const double> signal,
                          bool overwrite) {
   check_vibration_csv_output(path, overwrite);
-  write_file_durably(path, vibration_csv_text(trajectory, signal));
+  write_file_durably(path, vibration_csv_text(trajectory, signal), overwrite);
 }
 
 bool is_vibration_csv(const std::string& path) {

@@ -80,7 +80,7 @@ PressVideoWriter::PressVideoWriter(const std::string& directory, int press, doub
   if (ec) throw input_error(directory, "", "cannot create the output directory: " + ec.message(), "Choose another -o");
   const std::string sidecar = press_sidecar_path(directory, press);
   check_output_path(sidecar, true);
-  sidecar_ = std::make_unique<PartialFile>(sidecar);  // locked from here on
+  sidecar_ = std::make_unique<PartialFile>(sidecar, false);  // locked from here on
   fs::remove(partial_video_, ec);                     // the leftover of a killed run
 }
 

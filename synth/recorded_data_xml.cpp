@@ -62,7 +62,7 @@ std::string recorded_data_xml(const convert::Recording& r) {
 std::string write_recorded_data_xml(const std::string& path, const convert::Recording& r) {
   check_output_path(path, true);
   const std::string xml = recorded_data_xml(r);
-  write_file_durably(path, gzip::compress(xml, kGzipLevel));
+  write_file_durably(path, gzip::compress(xml, kGzipLevel), false);
   return sha256_hex(xml);
 }
 

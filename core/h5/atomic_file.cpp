@@ -32,7 +32,7 @@ const std::string& checked(const std::string& final_path, bool overwrite) {
 
 AtomicFile::AtomicFile(std::string final_path, bool overwrite)
     : final_path_((checked(final_path, overwrite), std::move(final_path))),
-      partial_(final_path_),
+      partial_(final_path_, overwrite),
       file_(File::create(partial_.path(), final_path_)) {}
 
 AtomicFile::~AtomicFile() {

@@ -111,7 +111,7 @@ void validate(const nlohmann::json& doc, std::string_view schema_name, const std
 }
 
 void write_file(const nlohmann::json& doc, std::string_view schema_name, const std::string& path) {
-  PartialFile out(path);
+  PartialFile out(path, false);  // a new file: JSON outputs that may replace one go through the PartialFile overload
   write_file(doc, schema_name, out);
   out.commit();
 }

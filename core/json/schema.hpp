@@ -21,7 +21,7 @@ bool has_format(const std::string& path, std::string_view format);
 void validate(const nlohmann::json& doc, std::string_view schema_name, const std::string& file);
 
 // Validates doc against schemas/<schema_name> (a failure there is a bug: Kind::failed), then writes
-// it indented, atomically (a temporary name, fsync, rename).
+// it indented, atomically (a temporary name, fsync, rename), as a new file: one at path is never replaced.
 void write_file(const nlohmann::json& doc, std::string_view schema_name, const std::string& path);
 // The same into out's temporary file, not committed: for a command whose outputs appear together.
 void write_file(const nlohmann::json& doc, std::string_view schema_name, PartialFile& out);

@@ -1,0 +1,59 @@
+// One output file written whole (core/durable_file.hpp): a file that appears at the final name while
+// the run writes (a user's, another run's) is never replaced without --force (issue 32, review 2).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/durable_file.hpp"
+#include "core/error.hpp"
+#include "core/temporary_name.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex {
+namespace {
+namespace fs = std::filesystem;
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(PartialFile, AFileThatAppearsMeanwhileIsKeptWithoutForce) {
+  const test::TempDir dir;
+  const std::string out = dir.file("x.training.json");
+  {
+    PartialFile partial(out, false);
+    write_text(partial, "haptex's log");
+    std::ofstream(out) << "the user's notes";  // appears while the run writes
+    try {
+      partial.commit();
+      ADD_FAILURE() << "the user's file was replaced";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+      EXPECT_NE(std::string(e.what()).find(out + ": appeared while this run was writing it"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(read_text(out), "the user's notes");
+  EXPECT_TRUE(temporaries_of(out).empty());
+}
+
+TEST(PartialFile, WithForceTheFileIsReplacedAndWithoutOneANewFileAppears) {
+  const test::TempDir dir;
+  const std::string out = dir.file("m.json");
+  std::ofstream(out) << "an earlier output";
+  {
+    PartialFile partial(out, true);
+    write_text(partial, "new");
+    partial.commit();
+  }
+  EXPECT_EQ(read_text(out), "new");
+  const std::string fresh = dir.file("n.json");
+  write_file_durably(fresh, "first", false);
+  EXPECT_EQ(read_text(fresh), "first");
+  EXPECT_TRUE(temporaries_of(fresh).empty());
+}
+
+}  // namespace
+}  // namespace haptex
