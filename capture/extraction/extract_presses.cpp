@@ -15,6 +15,7 @@
 #include "capture/scoring/contact_score.hpp"
 #include "capture/storage/video_file.hpp"
 #include "core/durable_file.hpp"
+#include "core/output_is_input.hpp"
 #include "core/error.hpp"
 #include "core/naming.hpp"
 #include "core/parallel.hpp"
@@ -297,6 +298,13 @@ ExtractResult extract_presses(const std::vector<std::string>& inputs, const std:
   require_reference_frames(options.settings.reference_frames);
   check_output_path(output, options.overwrite);
   const std::vector<CaptureInput> expanded = expand_capture_inputs(inputs, options.material);
+  // The files found inside input folders are inputs too: a recorded press is never the output
+  // (issue 32, review 2: `extract sess -o sess/press_0.h5 --force` replaced the take's press).
+  std::vector<std::string> found;
+  for (const CaptureInput& c : expanded) found.push_back(c.path);
+  refuse_output_among_inputs(output, found);
+  if (options.sheets) refuse_output_among_inputs(options.sheets_dir.empty() ? default_sheets_dir(output) : options.sheets_dir, found);
+  if (options.explain) refuse_output_among_inputs(default_explain_dir(output), found);
   Extraction extraction(output, options);
   // Videos and image sequences are analysed a few at a time on as many threads, the next few while
   // the last are written, and written in their order, so the output is the same whatever the cores.

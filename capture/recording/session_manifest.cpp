@@ -108,7 +108,9 @@ nlohmann::json session_manifest(const SessionDescription& s, const ReferenceSumm
 }
 
 void write_session_manifest(const std::string& path, const nlohmann::json& manifest) {
-  json::write_file(manifest, "capture-session.schema.json", path);
+  PartialFile out(path, true);  // rewritten after every press: the take's own file in its own folder
+  json::write_file(manifest, "capture-session.schema.json", out);
+  out.commit();
 }
 
 }  // namespace haptex::capture

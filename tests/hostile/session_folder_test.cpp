@@ -76,6 +76,21 @@ TEST(SessionFolder, ForceReplacesTheOldSession) {
 
 // The recorded command, split as a POSIX shell splits it (shlex), gives back every word: a name with
 // quotes, back-quotes or $ stays a name when the line is pasted.
+// A press file found inside an input folder is an input: extract never writes over it, by its name or
+// a hard link to it, with or without --force (issue 32, review 2).
+TEST(SessionFolder, ExtractNeverWritesOverARecordedPress) {
+  const TempDir d;
+  const std::string session = d.file("sess");
+  ASSERT_EQ(record(kFake, session, false).exit_code, 0);
+  const std::string press = session + "/press_0.h5", before = file_bytes(press);
+  fs::create_hard_link(press, d.file("link.h5"));
+  for (const std::string& out : {press, d.file("link.h5")}) {
+    SCOPED_TRACE(out);
+    expect_refusal(run_haptex({"capture", "extract", session, "-o", out, "--force"}), {"also an input"});
+  }
+  EXPECT_EQ(file_bytes(press), before);
+}
+
 TEST(SessionFolder, TheRecordedCommandPastesAsTheSameCommand) {
   if (!python_has("json")) GTEST_SKIP() << "python3 is not installed";
   const TempDir d;
