@@ -8,6 +8,7 @@
 
 #include "convert/input_limits.hpp"
 #include "core/error.hpp"
+#include "core/json/schema.hpp"
 #include "core/naming.hpp"
 #include "core/text/parse_number.hpp"
 #include "core/text/utf8.hpp"
@@ -46,17 +47,9 @@ std::string names_text(const std::string& path) {
 std::map<int, std::string> from_json(const std::string& path) {
   // A key given twice is refused, as the CSV form refuses an id given twice (a JSON parser keeps the last).
   std::set<std::string> keys;
-  const auto unique_keys = [&](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-    if (event == nlohmann::json::parse_event_t::key && depth == 1 && !keys.insert(parsed.get<std::string>()).second)
-      throw input_error(path, "/" + parsed.get<std::string>(), "the key is given twice", "Name each texture once");
-    return true;
-  };
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(names_text(path), unique_keys);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw input_error(path, "byte " + std::to_string(e.byte), "not valid JSON (" + std::string(e.what()) + ")", kFix);
-  }
+  const nlohmann::json doc = json::parse_text(names_text(path), path, [&](const std::string& key) {
+    if (!keys.insert(key).second) throw input_error(path, "/" + key, "the key is given twice", "Name each texture once");
+  });
   if (!doc.is_object()) throw input_error(path, "/", "the file is not a JSON object", kFix);
   std::map<int, std::string> names;
   for (const auto& [key, value] : doc.items()) {

@@ -1,5 +1,7 @@
 #include "core/owned_folder.hpp"
 
+#include "core/json/schema.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -14,9 +16,13 @@ namespace fs = std::filesystem;
 namespace {
 
 std::set<std::string> listed_files(const fs::path& list_path) {
-  std::ifstream in(list_path, std::ios::binary);
-  const nlohmann::json list = nlohmann::json::parse(in, nullptr, false);
   std::set<std::string> files;
+  nlohmann::json list;
+  try {
+    list = json::read_file(list_path.string());
+  } catch (const Error&) {
+    return files;  // no list haptex can read: the folder is not known to be haptex's
+  }
   if (!list.is_object() || !list.contains("files") || !list["files"].is_array()) return files;
   for (const nlohmann::json& f : list["files"])
     if (f.is_string()) files.insert(f.get<std::string>());

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/json/schema.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
@@ -115,9 +116,11 @@ struct Reader {
   }
 
   nlohmann::json json(const h5::Node& node, const char* name) const {
-    nlohmann::json value = nlohmann::json::parse(node.attr_string(name), nullptr, false);
-    if (value.is_discarded()) throw input_error(path, node.object_path() + " attribute '" + name + "'", "is not JSON", kRetrain);
-    return value;
+    try {
+      return json::parse_text(node.attr_string(name), path);
+    } catch (const Error& e) {
+      throw input_error(path, node.object_path() + " attribute '" + name + "'", "is not JSON haptex can read", kRetrain);
+    }
   }
 
   // A training range's end. Low-passed force and speed ring slightly below zero after a stroke's

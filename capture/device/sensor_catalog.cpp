@@ -40,12 +40,7 @@ SensorModel model_from(const nlohmann::json& entry, const std::string& origin, s
 }  // namespace
 
 SensorCatalog SensorCatalog::parse(const std::string& text, const std::string& origin) {
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw input_error(origin, "byte " + std::to_string(e.byte), "not valid JSON", "Fix the syntax");
-  }
+  const nlohmann::json doc = json::parse_text(text, origin);
   json::validate(doc, "tactile-sensors.schema.json", origin);
   SensorCatalog catalog;
   const auto& sensors = doc.at("sensors");

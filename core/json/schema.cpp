@@ -47,8 +47,7 @@ void refuse_newer_format(const nlohmann::json& doc, std::string_view schema_name
   if (is_newer_version(found, wanted)) throw newer_version_error(file, "/format", found, wanted);
 }
 
-// The JSON pointer of the first key or string value holding a NUL (\u0000), "" when none does: no
-// name, path or hash haptex reads has one, and C strings downstream would cut it off there.
+// The JSON pointer of the first key or string value holding a NUL (\u0000), "" when none does.
 std::string nul_at(const nlohmann::json& doc, const std::string& pointer) {
   if (doc.is_string()) return doc.get_ref<const std::string&>().find('\0') == std::string::npos ? "" : pointer.empty() ? "/" : pointer;
   if (doc.is_array())
@@ -64,28 +63,47 @@ std::string nul_at(const nlohmann::json& doc, const std::string& pointer) {
 
 }  // namespace
 
+nlohmann::json parse_text(std::string_view text, const std::string& file, const std::function<void(const std::string& key)>& on_key) {
+  const auto check = [&](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    if (depth > kDeepestJson)
+      throw input_error(file, "", "nests deeper than " + std::to_string(kDeepestJson) + " levels", "No haptex document nests so deep: give the right file");
+    if (event == nlohmann::json::parse_event_t::key && depth == 1 && on_key) on_key(parsed.get<std::string>());
+    return true;
+  };
+  try {
+    nlohmann::json doc = nlohmann::json::parse(text, check);
+    if (const std::string at = nul_at(doc, ""); !at.empty())  // at most kDeepestJson deep: the walk's stack is safe
+      throw input_error(file, at, "holds a NUL character (\\u0000)", "Remove it: no name, path or hash has one");
+    return doc;
+  } catch (const nlohmann::json::parse_error& e) {
+    throw input_error(file, "byte " + std::to_string(e.byte), "not valid JSON (" + std::string(e.what()) + ")",
+                      "Fix the syntax; a JSON linter shows the exact spot");
+  } catch (const nlohmann::json::exception& e) {  // 1e400: out_of_range 406
+    throw input_error(file, "", "not JSON haptex can read (" + std::string(e.what()) + ")", "Write numbers within 64-bit floats (at most about 1.8e308)");
+  }
+}
+
 nlohmann::json read_file(const std::string& path) {
   require_regular_file(path);
-  std::ifstream in(path);
+  std::error_code ec;
+  if (std::filesystem::file_size(path, ec) > kLargestJsonBytes)
+    throw input_error(path, "", "is over 64 MiB, more than any JSON document haptex reads", "Give the right file");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw input_error(path, "", "cannot open the JSON file", "Check the path and permissions");
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw input_error(path, "byte " + std::to_string(e.byte), "not valid JSON (" + std::string(e.what()) + ")",
-                      "Fix the syntax; a JSON linter shows the exact spot");
-  }
-  if (const std::string at = nul_at(doc, ""); !at.empty())
-    throw input_error(path, at, "holds a NUL character (\\u0000)", "Remove it: no name, path or hash has one");
-  return doc;
+  const std::string text{std::istreambuf_iterator<char>(in), {}};
+  return parse_text(text, path);
 }
 
 bool has_format(const std::string& path, std::string_view format) {
-  constexpr std::uintmax_t kLargest = 64u << 20;
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kLargest || ec) return false;
+  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kLargestJsonBytes || ec) return false;
   std::ifstream in(path, std::ios::binary);
-  const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
+  nlohmann::json doc;
+  try {
+    doc = parse_text(std::string(std::istreambuf_iterator<char>(in), {}), path);
+  } catch (const Error&) {
+    return false;
+  }
   return doc.is_object() && doc.contains("format") && doc["format"].is_string() && doc["format"].get<std::string>() == format;
 }
 

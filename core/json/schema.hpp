@@ -3,6 +3,8 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <string>
+#include <cstdint>
+#include <functional>
 #include <string_view>
 
 #include "core/durable_file.hpp"
@@ -11,6 +13,17 @@ namespace haptex::json {
 
 // Parses a JSON file; a syntax error becomes haptex::Error (bad_input) naming the file and byte.
 nlohmann::json read_file(const std::string& path);
+
+// The one parser of JSON haptex did not write itself: `text` (a whole file, an attribute) as a
+// document. Throws haptex::Error (bad_input) naming `file`: not JSON (the byte), a number beyond
+// 64-bit floats ("1e400"), nesting deeper than kDeepestJson levels (a validator walking it would
+// run out of stack; no haptex document nests past 6), or a NUL character in a key or a string (C
+// strings downstream would cut it off). `on_key`, when given, sees every key of the top-level object
+// (the names reader refuses one given twice: the parser keeps the last).
+inline constexpr int kDeepestJson = 64;
+inline constexpr std::uintmax_t kLargestJsonBytes = 64u << 20;  // read_file refuses a larger file
+nlohmann::json parse_text(std::string_view text, const std::string& file,
+                          const std::function<void(const std::string& key)>& on_key = {});
 
 // Whether path is a JSON file (of at most 64 MiB) whose top-level "format" is `format`: how --force
 // knows that haptex wrote it. Never throws.

@@ -142,6 +142,26 @@ TEST(BadValues, AFileOfANewerFormatIsCalledNewer) {
                  {"split/2", "newer haptex"});
 }
 
+// JSON that nests 100000 deep crashed every reader (a recursive walk ran out of stack), and 1e400
+// came out as a raw library exception naming no file (issue 32, review 2).
+TEST(BadValues, JsonThatNestsTooDeepOrOverflowsIsRefusedNamingTheFile) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  std::ofstream(d.file("deep.json")) << std::string(100000, '[') << std::string(100000, ']');
+  std::ofstream(d.file("deep_object.json")) << "{\"format\": \"split/1\", \"a\": " << std::string(100000, '[') << std::string(100000, ']') << "}";
+  std::ofstream(d.file("huge.json")) << "{\"format\": \"split/1\", \"sections\": 1e400}";
+  for (const std::string& bad : {d.file("deep.json"), d.file("deep_object.json"), d.file("huge.json")}) {
+    SCOPED_TRACE(bad);
+    expect_refusal(run_haptex({"windows", p.dataset, "--split", bad, "-o", d.file("w.h5")}), {bad});
+  }
+  expect_refusal(run_haptex({"align", "--recordings", p.recordings, "--gelsight", p.gelsight, "--names", d.file("deep.json"), "-o",
+                             d.file("a.h5")}),
+                 {d.file("deep.json")});
+  expect_refusal(run_haptex({"capture", "devices", "--sensors", d.file("huge.json")}), {d.file("huge.json")});
+  expect_refusal(run_haptex({"qa", d.file("deep_object.json")}), {"nests deeper than 64 levels"});
+  expect_refusal(run_haptex({"qa", d.file("huge.json")}), {"1e400", "64-bit floats"});
+}
+
 // A NUL inside a JSON string is refused where it is, not cut off downstream (issue 32, second review).
 TEST(BadValues, ANulInAManifestNameIsRefused) {
   const TempDir d;
