@@ -85,11 +85,11 @@ class EvaluateCommand : public Command {
     std::cout << "wrote " << files.report << " (" << e.experiments.size() << " experiments, " << std::fixed << std::setprecision(1)
               << e.seconds << " s)\n";
     for (const evaluate::Experiment& x : e.experiments) {
-      std::printf("  %s: better than the %s on %zu of %zu materials, significantly on %zu, significantly worse on %zu (mean distance %.4g vs %.4g m/s^2)\n",
+      std::cout << text::format("  %s: better than the %s on %zu of %zu materials, significantly on %zu, significantly worse on %zu (mean distance %.4g vs %.4g m/s^2)\n",
                   x.id.c_str(), x.baseline_label.substr(0, x.baseline_label.find(" (")).c_str(), x.better(), x.materials.size(),
                   x.significantly_better(), x.significantly_worse(), x.mean_model(), x.mean_baseline());
       if (std::isfinite(x.median_floor_ratio()))
-        std::printf("  %s: within 10 %% of the %s on %zu of %zu materials (median ratio %.3g, worst %.3g)%s\n", x.id.c_str(),
+        std::cout << text::format("  %s: within 10 %% of the %s on %zu of %zu materials (median ratio %.3g, worst %.3g)%s\n", x.id.c_str(),
                     e.floor_kind == "oracle" ? "floor (oracle where --truth knows the material)" : "floor estimate", x.within_floor(0.10), x.materials.size(),
                     x.median_floor_ratio(), x.worst_floor_ratio(), x.below_floor() ? "; BEATS THE ORACLE: the oracle is wrong" : "");
     }

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "apps/command.hpp"
+#include "core/text/format.hpp"
 #include "core/error.hpp"
 #include "dataset/window.hpp"
 #include "predict/model_file.hpp"
@@ -94,18 +95,18 @@ class PredictCommand : public Command {
                 << " mm/s lies outside the training range; the model saturated it to the nearest trained value\n";
     if (reference_.empty() && !image_.empty() && !global.quiet)
       std::cerr << "note: no --reference: the image's own blur stands in for the no-contact frame\n";
-    std::printf("frequency_hz,amplitude_m_s2\n");
-    for (std::size_t k = 0; k < q.spectrum.size(); ++k) std::printf("%d,%.6g\n", int(double(k + 1) * dataset::kBinHz), double(q.spectrum[k]));
+    std::cout << text::format("frequency_hz,amplitude_m_s2\n");
+    for (std::size_t k = 0; k < q.spectrum.size(); ++k) std::cout << text::format("%d,%.6g\n", int(double(k + 1) * dataset::kBinHz), double(q.spectrum[k]));
   }
 
   static void print_csv(const std::vector<Query>& queries) {
-    std::printf("sample,time_s,force_n,speed_mm_s,out_of_range");
-    for (std::size_t k = 1; k <= dataset::kTargetBins; ++k) std::printf(",a_%dhz", int(double(k) * dataset::kBinHz));
-    std::printf("\n");
+    std::cout << text::format("sample,time_s,force_n,speed_mm_s,out_of_range");
+    for (std::size_t k = 1; k <= dataset::kTargetBins; ++k) std::cout << text::format(",a_%dhz", int(double(k) * dataset::kBinHz));
+    std::cout << text::format("\n");
     for (const Query& q : queries) {
-      std::printf("%zu,%.4f,%.6g,%.6g,%d", q.sample, double(q.sample) * 1e-4, double(q.force), double(q.speed), q.out_of_range ? 1 : 0);
-      for (float a : q.spectrum) std::printf(",%.6g", double(a));
-      std::printf("\n");
+      std::cout << text::format("%zu,%.4f,%.6g,%.6g,%d", q.sample, double(q.sample) * 1e-4, double(q.force), double(q.speed), q.out_of_range ? 1 : 0);
+      for (float a : q.spectrum) std::cout << text::format(",%.6g", double(a));
+      std::cout << text::format("\n");
     }
   }
 

@@ -26,7 +26,7 @@ PrintableBuffer::int_type PrintableBuffer::overflow(int_type c) {
     lead_c2_ = true;
     return c;
   }
-  if ((byte < 0x20 && byte != '\n' && byte != '\t' && byte != '\r') || byte == 0x7f) {
+  if ((byte < 0x20 && byte != '\n' && byte != '\t') || byte == 0x7f) {
     std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
     return put(escaped) ? c : traits_type::eof();
   }

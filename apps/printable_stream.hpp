@@ -1,7 +1,7 @@
 #pragma once
 // Everything haptex prints passes through here (installed on std::cout and std::cerr by run_main): a
 // name taken from a file or the command line may hold a terminal's escape sequences, which must not
-// reach the terminal. Control characters (C0 but newline, tab and carriage return; DEL; C1, which
+// reach the terminal. Control characters (C0 but newline and tab; DEL; C1, which
 // UTF-8 writes as 0xC2 0x80..0x9F) are written as \xHH or \u00HH; everything else passes unchanged
 // (JSON output holds none: nlohmann escapes them itself).
 #include <ostream>

@@ -1,4 +1,5 @@
 #include <filesystem>
+#include <regex>
 #include <iostream>
 
 #include "apps/command.hpp"
@@ -25,11 +26,26 @@ void require_finite_numbers(CLI::App& app) {
 // (core/text/utf8.hpp), naming the option and the first bad byte (a file name that is not UTF-8 would
 // reach JSON and HDF5 attributes that must be); and an output option given as "" names no file
 // (apps/provenance.hpp lists them).
+// CLI11 reads 025 as octal 21, 0x10 as 16 and " 30" as 30, and wraps -1 into an unsigned 2^64-1:
+// a number on the command line is plain decimal, as a user means it (issue 32, review 2).
+void check_decimal(const CLI::Option& option, const std::string& value) {
+  static const std::regex whole("[+-]?(0|[1-9][0-9]*)"), natural("\\+?(0|[1-9][0-9]*)"),
+      real("[+-]?((0|[1-9][0-9]*)(\\.[0-9]*)?|\\.[0-9]+)([eE][+-]?[0-9]+)?");
+  const std::string described = option.get_type_name();  // "UINT:INT in [3 - 10000]" with a range check
+  const std::string type = described.substr(0, described.find(':'));
+  const std::regex* form = type == "INT" ? &whole : type == "UINT" ? &natural : type == "FLOAT" ? &real : nullptr;
+  if (form && !std::regex_match(value, *form))
+    throw input_error(option.get_name(), "", "'" + value + "' is not a plain decimal " + (type == "FLOAT" ? "number" : type == "UINT" ? "whole number of 0 or more" : "whole number") +
+                                                 " (no leading zeros, 0x, spaces)",
+                      "Write it in decimal, e.g. " + option.get_name() + " 25");
+}
+
 void check_option_values(const CLI::App& app) {
   for (const CLI::Option* option : app.get_options()) {
     if (option->count() == 0) continue;
     for (const std::string& value : option->results()) {
       text::require_utf8(value, "command line", option->get_name());
+      check_decimal(*option, value);
       if (value.empty() && is_output_option(*option))
         throw input_error(option->get_name(), "", "is empty, which names no file", "Name the output with " + option->get_name());
     }

@@ -15,18 +15,25 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::set<std::string> listed_files(const fs::path& list_path) {
+struct FileList {
+  std::string written_by;
   std::set<std::string> files;
+};
+
+FileList listed_files(const fs::path& list_path) {
+  FileList out;
   nlohmann::json list;
   try {
     list = json::read_file(list_path.string());
   } catch (const Error&) {
-    return files;  // no list haptex can read: the folder is not known to be haptex's
+    return out;  // no list haptex can read: the folder is not known to be haptex's
   }
-  if (!list.is_object() || !list.contains("files") || !list["files"].is_array()) return files;
+  if (!list.is_object()) return out;
+  if (list.contains("written_by") && list["written_by"].is_string()) out.written_by = list["written_by"].get<std::string>();
+  if (!list.contains("files") || !list["files"].is_array()) return out;
   for (const nlohmann::json& f : list["files"])
-    if (f.is_string()) files.insert(f.get<std::string>());
-  return files;
+    if (f.is_string()) out.files.insert(f.get<std::string>());
+  return out;
 }
 
 }  // namespace
@@ -43,7 +50,7 @@ void write_file_list(const std::string& dir, std::string_view written_by) {
   write_file_durably((fs::path(dir) / kFileListName).string(), list.dump(1) + "\n", false);
 }
 
-void check_only_haptex_files(const std::string& folder) {
+void check_only_haptex_files(const std::string& folder, std::string_view written_by) {
   std::error_code ec;
   if (!fs::is_directory(folder, ec) || fs::is_empty(folder, ec)) return;
   const fs::path list_path = fs::path(folder) / kFileListName;
@@ -51,7 +58,13 @@ void check_only_haptex_files(const std::string& folder) {
     throw input_error(folder, "", "--force would replace this folder, but it has no " + std::string(kFileListName) +
                                       ", so haptex cannot tell its own files from yours",
                       "Choose a new folder with -o, or empty this one yourself");
-  const std::set<std::string> listed = listed_files(list_path);
+  const FileList list = listed_files(list_path);
+  // Another command's folder (split -o z.json --force meeting synth's z.plots) is not this one's to replace.
+  if (list.written_by != written_by)
+    throw input_error(folder, "", "--force would replace this folder, but " + (list.written_by.empty() ? std::string("its list names no command") : list.written_by + " wrote it") +
+                                      ", not " + std::string(written_by),
+                      "Choose another output name, or move the folder away yourself");
+  const std::set<std::string>& listed = list.files;
   for (const fs::directory_entry& entry : fs::recursive_directory_iterator(folder, ec)) {
     const std::string name = fs::relative(entry.path(), folder).generic_string();
     if (name != kFileListName && !listed.contains(name))

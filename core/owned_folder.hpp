@@ -14,8 +14,8 @@ inline constexpr std::string_view kFileListName = "haptex-files.json";
 void write_file_list(const std::string& dir, std::string_view written_by);
 
 // For --force on a folder about to be replaced: throws haptex::Error (bad input) when folder holds
-// anything its haptex-files.json does not list (naming the first such file), or has no such list.
-// An empty or missing folder passes.
-void check_only_haptex_files(const std::string& folder);
+// anything its haptex-files.json does not list (naming the first such file), has no such list, or
+// was written by another command than `written_by` ("haptex split"). An empty or missing folder passes.
+void check_only_haptex_files(const std::string& folder, std::string_view written_by);
 
 }  // namespace haptex

@@ -51,7 +51,7 @@ void check_destination(const std::string& dir, const FolderOptions& o) {
   if (!o.overwrite && !empty_folder(dir))
     throw input_error(dir, "", "the " + o.what + " already exists and is not empty",
                       "Remove it, choose another " + o.option + ", or pass --force to replace it");
-  check_only_haptex_files(dir);
+  check_only_haptex_files(dir, o.written_by);
 }
 
 // Every file and folder under dir, deepest first, then dir itself.

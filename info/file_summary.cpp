@@ -13,14 +13,20 @@ namespace {
 
 using dataset::layout::kMaterials;
 
+// An attribute a file may lack; one that is there but does not read (not UTF-8) is an error, not
+// hidden: unlike qa, which reports it as a failed check (h5::Node::try_attr), info has no other way to say it.
+std::string optional_string(const h5::Node& node, const char* name) {
+  return node.has_attr(name) ? node.attr_string(name) : std::string();
+}
+
 DatasetSummary summarize_dataset(const h5::Dataset& dataset, const std::string& name) {
-  DatasetSummary d{name, dataset.dtype(), dataset.try_attr<std::string>("units").value_or(""), {}};
+  DatasetSummary d{name, dataset.dtype(), optional_string(dataset, "units"), {}};
   for (auto extent : dataset.shape()) d.shape.push_back(extent);
   return d;
 }
 
 ItemSummary summarize_item(const h5::Group& group, const std::string& key) {
-  ItemSummary item{key, {}, {}, group.try_attr<std::string>("source_file").value_or(""), {}};
+  ItemSummary item{key, {}, {}, optional_string(group, "source_file"), {}};
   if (group.has_attr("sample_rate_hz")) item.sample_rate_hz = group.attr_double("sample_rate_hz");
   if (group.has_attr("duration_s")) item.duration_s = group.attr_double("duration_s");
   for (const std::string& child : group.children())
@@ -29,7 +35,7 @@ ItemSummary summarize_item(const h5::Group& group, const std::string& key) {
 }
 
 MaterialSummary summarize_material(const h5::Group& group, const std::string& id) {
-  MaterialSummary material{id, group.try_attr<std::string>("name").value_or(id), {}};
+  MaterialSummary material{id, group.has_attr("name") ? group.attr_string("name") : id, {}};
   for (const std::string& collection_name : group.children()) {
     if (!group.has_group(collection_name)) continue;
     const h5::Group collection = group.open_group(collection_name);
@@ -63,9 +69,9 @@ FileSummary summarize_file(const std::string& path) {
   summary.path = path;
   summary.bytes = std::filesystem::file_size(path);
   summary.format = dataset::read_format(file);
-  summary.version = root.try_attr<std::string>("haptex_version").value_or("");
-  summary.created_utc = root.try_attr<std::string>("created_utc").value_or("");
-  summary.source = root.try_attr<std::string>("source").value_or("");
+  summary.version = optional_string(root, "haptex_version");
+  summary.created_utc = optional_string(root, "created_utc");
+  summary.source = optional_string(root, "source");
   if (root.has_group(kMaterials)) {
     const h5::Group materials = root.open_group(kMaterials);
     for (const std::string& id : materials.children())

@@ -1,6 +1,7 @@
 // layout.*: a file against the tables of schemas/hdf5-layout.md (the same rules as
 // tests/e2e/check_layout.py, plus: a missing group on a required path is reported, not skipped).
 // The objects every row describes are looked up once (find_rows); each check then judges them.
+#include <cmath>
 #include <map>
 #include <optional>
 #include <set>
@@ -39,6 +40,7 @@ struct FoundObject {
   h5::Shape shape;     // datasets
   std::optional<std::string> units;  // datasets whose row names units: their `units` attribute, when they have one
   bool readable_text = true;  // string attributes: UTF-8 without a NUL inside, as haptex reads names
+  bool finite = true;         // scalar float attributes: not NaN or infinite (rates, durations, thresholds)
 };
 
 struct RowFindings {
@@ -59,12 +61,10 @@ FoundObject find_attribute(const h5::Group& root, const LayoutRow& row, const st
   f.present = true;
   f.dtype = info.dtype;
   f.scalar = info.scalar;
-  if (f.dtype == "string" && f.scalar) {
-    try {
-      node.attr_string(row.attribute);
-    } catch (const Error&) {
-      f.readable_text = false;
-    }
+  if (f.dtype == "string" && f.scalar) f.readable_text = node.try_attr<std::string>(row.attribute).has_value();
+  if (f.dtype.rfind("float", 0) == 0 && f.scalar) {
+    const std::optional<double> value = node.try_attr<double>(row.attribute);
+    f.finite = value && std::isfinite(*value);
   }
   return f;
 }
@@ -193,6 +193,7 @@ CheckResult check_layout_dtype(const std::vector<RowFindings>& rows) {
       if (f.dtype != r.row->dtype) tally.fail(f.where, "dtype " + f.dtype + ", expected " + r.row->dtype);
       else if (r.row->shape.empty() && !f.scalar) tally.fail(f.where, "holds several values, expected one " + r.row->dtype);
       else if (!f.readable_text) tally.fail(f.where, "is not UTF-8 text, or holds a NUL byte inside its text");
+      else if (!f.finite) tally.fail(f.where, "is not a finite number (NaN or infinite)");
       else tally.pass();
     }
   return tally.result();

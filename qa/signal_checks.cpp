@@ -126,7 +126,7 @@ void check_signal_nan(const LoadedRecording& r, CheckTally& tally) {
 
 void check_signal_sample_rate(const LoadedRecording& r, CheckTally& tally) {
   if (!r.sample_rate_hz) tally.skip(r.path + ": no sample_rate_hz attribute");
-  else if (std::abs(*r.sample_rate_hz - kSampleRateHz) > 1e-6 * kSampleRateHz)
+  else if (!(std::abs(*r.sample_rate_hz - kSampleRateHz) <= 1e-6 * kSampleRateHz))  // NaN fails too
     tally.fail(r.path, "sample_rate_hz is " + number(*r.sample_rate_hz, 8) + ", expected " + number(kSampleRateHz, 8));
   else tally.pass();
 }
@@ -135,7 +135,7 @@ void check_signal_sample_rate(const LoadedRecording& r, CheckTally& tally) {
 void check_signal_duration(const LoadedRecording& r, CheckTally& tally) {
   if (!has_timing(r)) return tally.skip(r.path + ": samples, duration_s or sample_rate_hz missing");
   const double expected = double(*r.samples) / *r.sample_rate_hz;
-  if (std::abs(*r.duration_s - expected) > 0.5 / *r.sample_rate_hz)
+  if (!(std::abs(*r.duration_s - expected) <= 0.5 / *r.sample_rate_hz))  // NaN fails too
     tally.fail(r.path, "duration_s is " + number(*r.duration_s, 8) + " s, but " + std::to_string(*r.samples) +
                            " samples at " + number(*r.sample_rate_hz, 8) + " Hz last " + number(expected, 8) + " s");
   else if (*r.samples < std::int64_t(kWindowSamples))

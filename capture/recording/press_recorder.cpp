@@ -17,6 +17,8 @@
 #include "capture/recording/session_folder.hpp"
 #include "capture/scoring/contact_score.hpp"
 #include "core/error.hpp"
+#include "core/text/utf8.hpp"
+#include "core/naming.hpp"
 
 namespace haptex::capture {
 namespace fs = std::filesystem;
@@ -112,6 +114,10 @@ void check_recorder_options(const RecorderOptions& o) {
     throw input_error(option, "", what, fix);
   };
   if (o.material.empty()) refuse("--material", "the material name is empty", "Name the material you press, e.g. --material \"Brick 2\"");
+  text::require_utf8(o.material, "--material", "the material name");
+  if (material_id(o.material).empty())  // the session and every press file are stored under that id
+    refuse("--material", "'" + o.material + "' has no ASCII letter or digit to make a material id from",
+           "Name the material with letters or digits, e.g. --material \"Brick 2\"");
   if (o.presses < 1) refuse("--presses", "must be at least 1", "Give the number of presses to record");
   require_reference_frames(o.reference_frames);
   if (o.warmup_frames < 0 || o.pre_frames < 0 || o.post_frames < 0)

@@ -80,6 +80,26 @@ TEST(CommandLine, FaultPercentagesAndFrameCountsStayInRange) {
   EXPECT_FALSE(fs::exists(d.file("s")));
 }
 
+// CLI11 read 025 as octal, 0x10 as hexadecimal and " 30" as 30, and wrapped -1 into 2^64-1: every
+// number on the command line is plain decimal (issue 32, review 2). Refused before any work.
+TEST(CommandLine, NumbersAreReadAsPlainDecimals) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  expect_refusal(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--sections", "025"}), {"--sections", "'025'", "decimal"});
+  expect_refusal(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--seed", "-1"}), {"--seed", "'-1'", "0 or more"});
+  expect_refusal(run_haptex({"train", p.dataset, "--split", p.split, "-o", d.file("m.h5"), "--epochs", "0x1"}), {"--epochs", "'0x1'"});
+  expect_refusal(run_haptex({"capture", "record", "--device", "fake:lockstep", "--material", "Cork", "--fps", " 30", "-o", d.file("r")}),
+                 {"--fps", "' 30'"});
+  expect_refusal(run_haptex({"capture", "record", "--device", "fake:lockstep", "--material", "Cork", "--seconds", "0x1", "-o", d.file("r")}),
+                 {"--seconds", "'0x1'"});
+  EXPECT_EQ(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--sections", "25", "--seed", "0", "--no-plots"}).exit_code, 0)
+      << "plain decimals still work";
+  // A material name with no letter or digit makes no material id: refused before a press is taken.
+  expect_refusal(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "\u65e5\u672c", "-o", d.file("r")}),
+                 {"--material", "no ASCII letter or digit"});
+  EXPECT_FALSE(fs::exists(d.file("r")));
+}
+
 // Issue 32, class 17 (second review): a value is all of its text, in decimal, within its range, once.
 TEST(CommandLine, CaptureValuesAreReadWholeAndOnce) {
   const TempDir d;

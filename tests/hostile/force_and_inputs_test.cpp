@@ -252,6 +252,19 @@ TEST(Force, SplitKeepsAPlotOfTheUsers) {
   EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
 }
 
+// --force replaces a folder only of the command that wrote it: split's plots never replace a synth
+// output that happens to be named like them (issue 32, review 2).
+TEST(Force, SplitNeverReplacesAnotherCommandsFolder) {
+  const TempDir d;
+  const std::string plots = d.file("z.plots");
+  fs::create_directory(plots);
+  std::ofstream(plots + "/truth.h5") << "synthetic truth";
+  std::ofstream(plots + "/haptex-files.json") << R"({"written_by": "haptex synth", "files": ["truth.h5"]})";
+  expect_refusal(run_haptex({"split", small_pipeline().dataset, "-o", d.file("z.json"), "--force"}),
+                 {plots, "haptex synth wrote it, not haptex split"});
+  EXPECT_EQ(file_bytes(plots + "/truth.h5"), "synthetic truth");
+}
+
 // A dangling link at the output path is refused, with --force or without: it is not haptex's.
 TEST(Force, ADanglingLinkAtTheOutputIsRefused) {
   const TempDir d;

@@ -221,6 +221,10 @@ std::vector<BrokenShard> broken_shards() {
          values[7] = 1e39;
          e.replace<double>(accel, values, e.dataset(accel).shape());
        }, {"/recordings/0/accel", "dtype float64, expected float32", "layout.dtype"}},
+      {"a sample rate of NaN", p.recordings, [](Edit& e, const std::string& m) { e.group(m + "/recordings/0").set_attr("sample_rate_hz", NAN); },
+       {"/recordings/0/@sample_rate_hz", "not a finite number", "layout.dtype"}},
+      {"a press's frame rate of NaN", p.gelsight, [](Edit& e, const std::string& m) { e.group(m + "/presses/0").set_attr("fps", NAN); },
+       {"/presses/0/@fps", "not a finite number", "layout.dtype"}},
       {"a sample rate of 1e39", p.recordings, [](Edit& e, const std::string& m) { e.group(m + "/recordings/0").set_attr("sample_rate_hz", 1e39); },
        {"sample_rate_hz is 1e+39", "signal.sample_rate"}},
       {"a dataset where the recordings group belongs", p.recordings, [](Edit& e, const std::string& m) {
