@@ -109,7 +109,10 @@ SynthSummary synth_hatt(const SynthHattOptions& o, const Progress& progress) {
       const std::string& material = models[i].model.set().material;
       truth.materials[i] = write_recordings(out, models[i], o);
       const fs::path image = fs::path(o.images_dir) / (material + "_square.jpg");
-      const bool has_image = !o.images_dir.empty() && fs::is_regular_file(image);
+      std::error_code ec;
+      const bool named = !o.images_dir.empty() && fs::exists(fs::symlink_status(image, ec));
+      if (named) require_regular_file(image.string());  // a FIFO or dangling link of that name is refused, not skipped
+      const bool has_image = named;
       if (has_image)
         write_photo_presses(image.string(), gelsight_directory(out, material), material,
                             derive_seed(o.seed, name_seed(material_id(material)), 1000), o.provenance, photo);

@@ -158,6 +158,14 @@ TEST(SynthCli, AFailureHalfWayLeavesNoOutput) {
                                               "-o", dir.file("out2")});
   EXPECT_EQ(no_images.exit_code, 2);
   EXPECT_NE(no_images.err.find("not a folder"), std::string::npos) << no_images.err;
+  // A photograph's name on a FIFO or a dangling link is refused by name, not skipped as "no photograph".
+  fs::remove(dir.file("images/Book_square.jpg"));
+  fs::create_symlink(dir.file("nowhere.jpg"), dir.file("images/Book_square.jpg"));
+  const CommandResult dangling = run_haptex({"synth", "hatt", "--models", dir.file("models"), "--images", dir.file("images"),
+                                             "-o", dir.file("out3"), "--seconds", "0.5"});
+  EXPECT_EQ(dangling.exit_code, 2) << dangling.err;
+  EXPECT_NE(dangling.err.find("Book_square.jpg"), std::string::npos) << dangling.err;
+  EXPECT_FALSE(fs::exists(dir.file("out3")));
 }
 
 TEST(SynthCli, HattModelsAndPhotographsBecomeRecordingsAndPresses) {
