@@ -11,18 +11,18 @@
 namespace haptex::evaluate {
 namespace {
 
-ActionPoint mean_action(const SectionSignals& s, std::size_t t) {
-  ActionPoint p;
+MeanAction mean_action(const SectionSignals& s, std::size_t t) {
+  MeanAction p;
   for (std::size_t i = t; i < t + dataset::kWindowSamples; ++i) p.speed += s.speed[i], p.force += s.force[i];
   p.speed /= double(dataset::kWindowSamples), p.force /= double(dataset::kWindowSamples);
   return p;
 }
 
-double spread(const std::vector<ActionPoint>& points, double ActionPoint::*axis) {
+double spread(const std::vector<MeanAction>& points, double MeanAction::*axis) {
   double m = 0, v = 0;
-  for (const ActionPoint& p : points) m += p.*axis;
+  for (const MeanAction& p : points) m += p.*axis;
   m /= double(points.size());
-  for (const ActionPoint& p : points) v += (p.*axis - m) * (p.*axis - m);
+  for (const MeanAction& p : points) v += (p.*axis - m) * (p.*axis - m);
   const double sd = std::sqrt(v / double(points.size()));
   return sd > 0 ? sd : 1.0;  // a constant axis does not separate windows
 }
@@ -38,8 +38,8 @@ WindowSet section_windows(const SectionSignals& s) {
   return {grid_spectra(s.accel, section_grid(s.accel.size())), section_actions(s)};
 }
 
-std::vector<ActionPoint> section_actions(const SectionSignals& s) {
-  std::vector<ActionPoint> actions;
+std::vector<MeanAction> section_actions(const SectionSignals& s) {
+  std::vector<MeanAction> actions;
   for (std::size_t t : section_grid(s.accel.size())) actions.push_back(mean_action(s, t));
   return actions;
 }
@@ -58,15 +58,15 @@ std::vector<double> mean_spectrum(const WindowSet& w) {
   return sum;
 }
 
-std::vector<std::vector<double>> nearest_action_spectra(const WindowSet& training, const std::vector<ActionPoint>& queries,
+std::vector<std::vector<double>> nearest_action_spectra(const WindowSet& training, const std::vector<MeanAction>& queries,
                                                         std::size_t k) {
   if (training.spectra.empty() || k == 0) throw failure("nearest_action_spectra: no training windows or k = 0");
   k = std::min(k, training.spectra.size());
-  const double ds = spread(training.actions, &ActionPoint::speed), df = spread(training.actions, &ActionPoint::force);
+  const double ds = spread(training.actions, &MeanAction::speed), df = spread(training.actions, &MeanAction::force);
   std::vector<std::size_t> order(training.actions.size());
   std::vector<double> d2(order.size());
   std::vector<std::vector<double>> out;
-  for (const ActionPoint& q : queries) {
+  for (const MeanAction& q : queries) {
     for (std::size_t i = 0; i < order.size(); ++i) {
       const double a = (training.actions[i].speed - q.speed) / ds, b = (training.actions[i].force - q.force) / df;
       d2[i] = a * a + b * b;

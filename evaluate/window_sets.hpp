@@ -11,20 +11,20 @@
 namespace haptex::evaluate {
 
 // Mean low-passed speed (mm/s) and force (N) over a window's 1000 target samples.
-struct ActionPoint {
+struct MeanAction {
   double speed = 0, force = 0;
 };
 
 struct WindowSet {
   std::vector<std::vector<double>> spectra;  // 100-bin amplitude spectra, one per window
-  std::vector<ActionPoint> actions;          // the same windows' action points
+  std::vector<MeanAction> actions;           // the same windows' mean actions
   void append(const WindowSet& other);
 };
 
 // The windows of section_grid(s.accel.size()) on one section.
 WindowSet section_windows(const SectionSignals& s);
 // Their action points alone (no spectra computed).
-std::vector<ActionPoint> section_actions(const SectionSignals& s);
+std::vector<MeanAction> section_actions(const SectionSignals& s);
 
 // Every training (train and validation) section's windows of a material.
 WindowSet training_windows(const MaterialSignals& m);
@@ -36,7 +36,7 @@ std::vector<double> mean_spectrum(const WindowSet& w);
 // force each divided by its spread over the training windows): an estimate of the best possible
 // prediction where the generating process is unknown. Ties keep the earlier window. Throws
 // haptex::Error when training is empty or k is 0.
-std::vector<std::vector<double>> nearest_action_spectra(const WindowSet& training, const std::vector<ActionPoint>& queries,
+std::vector<std::vector<double>> nearest_action_spectra(const WindowSet& training, const std::vector<MeanAction>& queries,
                                                         std::size_t k);
 
 inline constexpr std::size_t kNearestWindows = 32;  // ~9 % sampling error per bin, a narrow slice of actions

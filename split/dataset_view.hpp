@@ -1,5 +1,5 @@
 #pragma once
-// What the split needs from a dataset file: each material's windows (recording, start, mean action
+// What the split needs from a dataset file: each material's windows (recording, start, action
 // point) and recording lengths, and its press count.
 #include <cstdint>
 #include <string>
@@ -13,7 +13,7 @@ struct MaterialWindows {
   std::vector<std::size_t> row;                 // per window: its row in /windows
   std::vector<std::int32_t> recording;          // per window
   std::vector<std::int64_t> start;              // per window
-  std::vector<float> speed, force;              // per window: the mean of its action samples
+  std::vector<float> speed, force;              // per window: its action point, the newest action sample (dataset::action_point)
   std::size_t presses = 0;
 };
 
