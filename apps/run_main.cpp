@@ -48,6 +48,8 @@ void check_option_values(const CLI::App& app) {
       check_decimal(*option, value);
       if (value.empty() && is_output_option(*option))
         throw input_error(option->get_name(), "", "is empty, which names no file", "Name the output with " + option->get_name());
+      if (value.empty())  // `--names ""` named no file and was taken as no option at all
+        throw input_error(option->get_name(), "", "is empty", "Give it a value, or leave the option out");
     }
   }
   for (const CLI::App* sub : app.get_subcommands()) check_option_values(*sub);

@@ -9,6 +9,7 @@
 #include "apps/command.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
+#include "core/owned_folder.hpp"
 #include "core/partial_directory.hpp"
 #include "core/output_is_input.hpp"
 #include "core/json/schema.hpp"
@@ -62,6 +63,7 @@ class SplitCommand : public Command {
     if (plots_dir) plots_dir->finish();
     manifest_file.commit();
     if (plots_dir) plots_dir->commit();
+    else if (force_) remove_earlier_plots();
     if (global.json) {
       std::cout << json::read_file(output_).dump(2) << "\n";
       return 0;
@@ -71,6 +73,21 @@ class SplitCommand : public Command {
   }
 
  private:
+  // --force --no-plots: plots an earlier split wrote describe the manifest just replaced, so they go
+  // too; a folder of that name holding anything else (or another command's) is left alone.
+  void remove_earlier_plots() const {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(std::filesystem::symlink_status(plots_folder(), ec)) ||
+        !std::filesystem::is_regular_file(std::filesystem::path(plots_folder()) / kFileListName, ec))
+      return;
+    try {
+      check_only_haptex_files(plots_folder(), "haptex split");
+    } catch (const Error&) {
+      return;
+    }
+    std::filesystem::remove_all(plots_folder(), ec);
+  }
+
   std::string plots_folder() const { return std::filesystem::path(output_).replace_extension(".plots").string(); }
 
   void print(const std::vector<split::MaterialSplit>& splits, const split::PlotResult& plots) const {

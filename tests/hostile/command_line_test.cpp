@@ -68,6 +68,9 @@ TEST(CommandLine, AnEmptyOutputNameIsRefusedBeforeAnyWork) {
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5)) << "refused before the work";
   }
   EXPECT_FALSE(fs::exists(d.file("m.h5")));
+  // An empty value of any option is refused, not taken as no option (issue 32, review 2).
+  expect_refusal(run_haptex({"align", "--recordings", p.recordings, "--gelsight", p.gelsight, "--names", "", "-o", d.file("a.h5")}),
+                 {"--names", "is empty"});
 }
 
 TEST(CommandLine, FaultPercentagesAndFrameCountsStayInRange) {

@@ -265,6 +265,21 @@ TEST(Force, SplitNeverReplacesAnotherCommandsFolder) {
   EXPECT_EQ(file_bytes(plots + "/truth.h5"), "synthetic truth");
 }
 
+// --force --no-plots: the earlier split's plots describe the manifest replaced, so they go; a folder of
+// the user's of that name stays (issue 32, review 2).
+TEST(Force, SplitWithoutPlotsTakesAwayTheEarlierOnes) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  ASSERT_EQ(run_haptex({"split", p.dataset, "-o", d.file("s.json")}).exit_code, 0);
+  ASSERT_TRUE(fs::exists(d.file("s.plots")));
+  ASSERT_EQ(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--force", "--no-plots"}).exit_code, 0);
+  EXPECT_FALSE(fs::exists(d.file("s.plots")));
+  fs::create_directory(d.file("s.plots"));
+  std::ofstream(d.file("s.plots/mine.png")) << "my figure";
+  ASSERT_EQ(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--force", "--no-plots"}).exit_code, 0);
+  EXPECT_EQ(file_bytes(d.file("s.plots/mine.png")), "my figure");
+}
+
 // A dangling link at the output path is refused, with --force or without: it is not haptex's.
 TEST(Force, ADanglingLinkAtTheOutputIsRefused) {
   const TempDir d;
