@@ -52,15 +52,12 @@ class CaptureExtract : public CaptureSubcommand {
     inputs.push_back(reference_);
     refuse_output_among_inputs(output_, inputs);
     refuse_output_among_inputs(options_.sheets_dir.empty() ? capture::default_sheets_dir(output_) : options_.sheets_dir, inputs);
-    const auto same = [](const std::string& a, const std::string& b) {
-      return std::filesystem::absolute(a).lexically_normal() == std::filesystem::absolute(b).lexically_normal();
-    };
-    if (!options_.sheets_dir.empty() && same(options_.sheets_dir, output_))
+    if (!options_.sheets_dir.empty() && same_output_path(options_.sheets_dir, output_))
       throw input_error("--sheets", options_.sheets_dir, "is the output file itself", "Give the contact sheets another folder");
     if (options_.explain) {
       const std::string explain = capture::default_explain_dir(output_);
       refuse_output_among_inputs(explain, inputs);
-      if (!options_.sheets_dir.empty() && same(options_.sheets_dir, explain))
+      if (!options_.sheets_dir.empty() && same_output_path(options_.sheets_dir, explain))
         throw input_error("--sheets", options_.sheets_dir, "is the --explain folder", "Give the contact sheets another folder");
     }
     if (!material_.empty()) options_.material = material_;

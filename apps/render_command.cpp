@@ -66,7 +66,7 @@ class RenderCommand : public Command {
     refuse_output_among_inputs(csv_, inputs);
     render::check_wav_output(output_, force_);
     if (!csv_.empty()) {
-      if (std::filesystem::weakly_canonical(csv_) == std::filesystem::weakly_canonical(output_))
+      if (same_output_path(csv_, output_))
         throw input_error(csv_, "", "--csv and -o name the same file", "Give the CSV another name");
       render::check_vibration_csv_output(csv_, force_);
     }

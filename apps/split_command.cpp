@@ -39,7 +39,7 @@ class SplitCommand : public Command {
   }
 
   int run(const GlobalOptions& global) override {
-    if (!no_plots_ && std::filesystem::absolute(output_).lexically_normal() == std::filesystem::absolute(plots_folder()).lexically_normal())
+    if (!no_plots_ && same_output_path(output_, plots_folder()))
       throw input_error(output_, "", "names the plot folder (<output>.plots) itself", "Give the manifest a name ending in .json");
     refuse_output_among_inputs(output_, {dataset_});
     refuse_output_among_inputs(plots_folder(), {dataset_});

@@ -70,7 +70,7 @@ class TrainCommand : public Command {
 
   int run(const GlobalOptions& global) override {
     if (log_.empty()) log_ = std::filesystem::path(output_).replace_extension(".training.json").string();
-    if (std::filesystem::weakly_canonical(log_) == std::filesystem::weakly_canonical(output_))
+    if (same_output_path(log_, output_))
       throw input_error(log_, "", "--log names the model file itself", "Give the training log another name, or leave --log out");
     refuse_output_among_inputs(output_, input_.files());
     refuse_output_among_inputs(log_, input_.files());

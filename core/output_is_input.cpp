@@ -45,4 +45,10 @@ void refuse_output_among_inputs(const std::string& output, const std::vector<std
   }
 }
 
+bool same_output_path(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  const auto resolved = [&](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p), ec); };
+  return resolved(a) == resolved(b);
+}
+
 }  // namespace haptex

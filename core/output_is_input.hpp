@@ -11,4 +11,8 @@ namespace haptex {
 // that do not exist yet are skipped; empty strings (options not given) are ignored.
 void refuse_output_among_inputs(const std::string& output, const std::vector<std::string>& inputs);
 
+// Whether two output names (which may not exist yet) are one path: "x.wav", "./x.wav" and "d/../x.wav"
+// are, and so is a name through a symbolic link to a folder. For outputs of one command that must differ.
+bool same_output_path(const std::string& a, const std::string& b);
+
 }  // namespace haptex

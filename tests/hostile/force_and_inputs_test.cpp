@@ -217,6 +217,25 @@ TEST(Force, TrainRefusesALogThatIsTheModel) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("m.h5")));
 }
 
+// Two outputs of one command named by two spellings of one relative path ("x.wav", "./x.wav") are
+// refused as one file, not as "another run is writing" (issue 32, review 2).
+TEST(Force, TwoSpellingsOfOneRelativeOutputAreOneFile) {
+  const TempDir dir;
+  {
+    std::ofstream trajectory(dir.file("traj.csv"));
+    trajectory << "force,speed\n";
+    for (int i = 0; i < 1000; ++i) trajectory << "1,100\n";
+  }
+  expect_refusal(run_haptex_in(dir.path().string(), {"render", quick_model(), "--material", small_material(), "--trajectory", "traj.csv",
+                                                     "-o", "x.wav", "--csv", "./x.wav"}),
+                 {"--csv and -o name the same file"});
+  std::vector<std::string> args = quick_train_args(small_pipeline().dataset, small_pipeline().split, "m.h5");
+  args.insert(args.end(), {"--log", "./m.h5"});
+  expect_refusal(run_haptex_in(dir.path().string(), args), {"--log names the model file itself"});
+  EXPECT_FALSE(std::filesystem::exists(dir.file("m.h5")));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.wav")));
+}
+
 TEST(Force, EvaluateRefusesAReportFolderHoldingItsDataset) {
   const TempDir dir;
   const SmallPipeline& p = small_pipeline();
