@@ -64,7 +64,6 @@ void check_replaceable_output(const std::string& path, bool overwrite, const std
 }
 
 void durable_rename(const std::string& from, const std::string& to, bool replace) {
-  fsync_path(from, O_RDONLY);
   int status = replace ? std::rename(from.c_str(), to.c_str()) : ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE);
   if (status != 0 && !replace && errno == EINVAL) {  // a file system without RENAME_NOREPLACE: a hard link never replaces either
     status = ::link(from.c_str(), to.c_str());
@@ -90,11 +89,7 @@ PartialFile::~PartialFile() {
 
 void PartialFile::finish() {
   if (finished_) return;
-  try {
-    fsync_path(path_, O_RDONLY);
-  } catch (const Error& e) {
-    throw renamed_in(e, path_, final_path_);
-  }
+  if (::fsync(fd_) != 0) throw failure(final_path_ + ": cannot write it: " + why_not_written(errno));
   finished_ = true;
 }
 
@@ -106,21 +101,36 @@ void PartialFile::commit() {
   fd_ = -1;
 }
 
+namespace {
+
+// All of bytes to fd; throws haptex::Error (failed) naming `shown` when a write fails.
+void write_all(int fd, std::string_view bytes, const std::string& shown) {
+  while (!bytes.empty()) {
+    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw failure(shown + ": cannot write it: " + why_not_written(n < 0 ? errno : ENOSPC));
+    bytes.remove_prefix(std::size_t(n));
+  }
+}
+
+}  // namespace
+
 void write_whole_file(const std::string& path, std::string_view bytes) {
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (!file) throw failure(path + ": cannot create it: " + std::strerror(errno));
-  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-  const int saved = errno;
-  const bool closed = std::fclose(file) == 0;
-  if (!written || !closed) throw failure(path + ": cannot write it: " + why_not_written(written ? errno : saved));
+  // A new name in a folder being built: created exclusively, never through a link planted there.
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (fd < 0) throw failure(path + ": cannot create it: " + std::strerror(errno));
+  try {
+    write_all(fd, bytes, path);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  if (::close(fd) != 0) throw failure(path + ": cannot write it: " + why_not_written(errno));
 }
 
 void write_text(PartialFile& out, std::string_view text) {
-  try {
-    write_whole_file(out.path(), text);
-  } catch (const Error& e) {
-    throw renamed_in(e, out.path(), out.final_path());
-  }
+  // Through the descriptor the temporary was created with (O_EXCL | O_NOFOLLOW), never reopened by name.
+  write_all(out.fd_, text, out.final_path());
 }
 
 void write_file_durably(const std::string& path, std::string_view text, bool replace) {

@@ -21,7 +21,7 @@ void check_replaceable_output(const std::string& path, bool overwrite, const std
 std::string why_not_written(int error);
 // fsync one file or (with O_DIRECTORY in flags) directory; throws haptex::Error (failed) naming it.
 void fsync_path(const std::string& path, int flags);
-// fsync `from`, rename it to `to`, fsync the directory. Without `replace`, a `to` that exists by then
+// Rename `from` (already synced by the caller) to `to`, then fsync the directory. Without `replace`, a `to` that exists by then
 // (it appeared while the run wrote: a user's file, another run's output) is kept and refused
 // (bad_input), atomically (RENAME_NOREPLACE).
 void durable_rename(const std::string& from, const std::string& to, bool replace);
@@ -47,18 +47,19 @@ class PartialFile {
   void commit();
 
  private:
+  friend void write_text(PartialFile& out, std::string_view text);
   std::string final_path_, path_;
   int fd_ = -1;
   bool replace_ = false, finished_ = false, committed_ = false;
 };
 
-// The whole of `bytes` as the file at path (created or truncated), for a file inside a folder being
-// built (core/partial_directory.hpp syncs and renames it with the folder). Throws haptex::Error
+// The whole of `bytes` as a new file at path (created exclusively, O_EXCL | O_NOFOLLOW), for a file
+// inside a folder being built (core/partial_directory.hpp syncs and renames it with the folder). Throws haptex::Error
 // (failed) naming path and why_not_written when a write fails.
 void write_whole_file(const std::string& path, std::string_view bytes);
 
-// The whole of `text` into out's temporary file (the commit is the caller's: several outputs can
-// appear together). Throws haptex::Error (failed) naming the output when writing fails (a full disk).
+// The whole of `text` into out's temporary file, through the descriptor it was created with (the
+// commit is the caller's: several outputs can appear together). Throws haptex::Error (failed) naming the output when writing fails (a full disk).
 void write_text(PartialFile& out, std::string_view text);
 
 // The whole of `text` as a new file at path, through PartialFile: the final name appears only once
