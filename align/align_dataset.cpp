@@ -7,6 +7,7 @@
 #include "dataset/channel_order.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
+#include "qa/integrity.hpp"
 
 namespace haptex::align {
 namespace {
@@ -56,6 +57,8 @@ AlignResult align_dataset(const AlignOptions& o, const Progress& progress) {
   const h5::File recordings_file = dataset::open_checked(o.recordings, dataset::Kind::recordings),
                  gelsight_file = dataset::open_checked(o.gelsight, dataset::Kind::gelsight);
   const h5::Group recordings_root = recordings_file.root(), gelsight_root = gelsight_file.root();
+  qa::require_integrity(recordings_root, dataset::format_name(dataset::Kind::recordings));
+  qa::require_integrity(gelsight_root, dataset::format_name(dataset::Kind::gelsight));
   AlignResult result;
   result.match = match_materials(materials_of(recordings_root, kRecordings), materials_of(gelsight_root, kPresses),
                                  o.names_file.empty() ? std::map<std::string, std::string>{} : load_name_map(o.names_file),
@@ -90,13 +93,15 @@ AlignResult align_dataset(const AlignOptions& o, const Progress& progress) {
   root.set_attr(kGelsightFile, o.gelsight);
   root.set_attr(kGelsightSha256, sha256_file(o.gelsight));
   h5::Group materials = root.create_group(kMaterials);
+  h5::CopiedObjects copied_recordings, copied_presses;
   for (const MaterialPair& pair : result.match.pairs) {
     h5::Group m = materials.create_group(pair.id);
     m.set_attr(kName, pair.recordings.name);
     m.set_attr("recordings_name", pair.recordings.name);
     m.set_attr("gelsight_name", pair.gelsight.name);
-    m.copy_from(recordings_root.open_group(kMaterials).open_group(pair.recordings.id), kRecordings, kRecordings);
-    m.copy_from(gelsight_root.open_group(kMaterials).open_group(pair.gelsight.id), kPresses, kPresses);
+    m.copy_from(recordings_root.open_group(kMaterials).open_group(pair.recordings.id), kRecordings, kRecordings,
+                copied_recordings);
+    m.copy_from(gelsight_root.open_group(kMaterials).open_group(pair.gelsight.id), kPresses, kPresses, copied_presses);
     result.presses += m.open_group(kPresses).children().size();
   }
   if (progress) progress(1, 2, "writing");

@@ -20,10 +20,10 @@ Error bad_image(const h5::Dataset& d, std::size_t i, const std::string& what) {
                      "Write the file again with haptex capture extract (and align)");
 }
 
-// Decoded only once its header has been read and states the press's size (so no hostile header
-// makes OpenCV allocate more), and only when whole (so libjpeg conceals nothing and libpng prints no
-// complaint). Orientation tags are ignored, as any other reader of the bytes would.
-cv::Mat decode(const h5::Dataset& d, std::size_t i, const EncodedImage& bytes, std::optional<cv::Size> expected) {
+// An image's bytes are decoded only once its header has been read and states the press's size (so no
+// hostile header makes OpenCV allocate more), and only when whole (so libjpeg conceals nothing and
+// libpng prints no complaint).
+void require_whole(const h5::Dataset& d, std::size_t i, const EncodedImage& bytes, std::optional<cv::Size> expected) {
   const std::string encoding = image_format(bytes);
   if (encoding.empty()) throw bad_image(d, i, "is neither a JPEG nor a PNG image");
   const std::optional<ImageSize> size = image_header_size(bytes);
@@ -35,6 +35,11 @@ cv::Mat decode(const h5::Dataset& d, std::size_t i, const EncodedImage& bytes, s
                               " x " + std::to_string(expected->height));
   if (!is_complete_image(bytes))
     throw bad_image(d, i, "does not decode (a damaged or cut-off " + encoding + ")");
+}
+
+// Orientation tags are ignored, as any other reader of the bytes would.
+cv::Mat decode(const h5::Dataset& d, std::size_t i, const EncodedImage& bytes, std::optional<cv::Size> expected) {
+  require_whole(d, i, bytes, expected);
   const cv::Mat image = decode_image(bytes);
   if (image.empty()) throw bad_image(d, i, "does not decode (a damaged image)");
   return image;
@@ -48,6 +53,14 @@ std::optional<cv::Size> size_stated_by(const h5::Group& press) {
   } catch (const Error&) {
   }
   return std::nullopt;
+}
+
+h5::Dataset open_images(const h5::Group& press, const std::string& name) {
+  h5::Dataset d = press.open_dataset(name);
+  if (!is_vlen_bytes(d) || d.shape().size() != 1 || d.shape()[0] == 0)
+    throw input_error(d.file(), d.object_path(), "expected a 1-D dataset of encoded images (variable-length uint8)",
+                      "Files from before gelsight/2 stored pixels; run haptex capture extract (and align) again");
+  return d;
 }
 
 }  // namespace
@@ -80,10 +93,7 @@ h5::Dataset write_press_images(h5::Group& press, const std::string& name, const 
 
 std::vector<cv::Mat> read_press_images(const h5::Group& press, const std::string& name, bool stated_size) {
   const ChannelOrder order = read_channel_order(press, name);
-  const h5::Dataset d = press.open_dataset(name);
-  if (!is_vlen_bytes(d) || d.shape().size() != 1 || d.shape()[0] == 0)
-    throw input_error(d.file(), d.object_path(), "expected a 1-D dataset of encoded images (variable-length uint8)",
-                      "Files from before gelsight/2 stored pixels; run haptex capture extract (and align) again");
+  const h5::Dataset d = open_images(press, name);
   const std::optional<cv::Size> expected = stated_size ? size_stated_by(press) : std::nullopt;
   std::vector<cv::Mat> images;
   for (std::size_t i = 0; i < d.shape()[0]; ++i) {
@@ -95,5 +105,10 @@ std::vector<cv::Mat> read_press_images(const h5::Group& press, const std::string
 }
 
 cv::Mat read_press_image(const h5::Group& press, const std::string& name) { return read_press_images(press, name).front(); }
+
+void require_whole_press_images(const h5::Group& press, const std::string& name) {
+  const h5::Dataset d = open_images(press, name);
+  for (std::size_t i = 0; i < d.shape()[0]; ++i) require_whole(d, i, read_vlen_bytes(d, i), std::nullopt);
+}
 
 }  // namespace haptex::dataset

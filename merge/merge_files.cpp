@@ -47,10 +47,11 @@ std::optional<dataset::WindowTable> windows_for(const std::vector<Shard>& shards
 
 void copy_materials(h5::Group root, const std::vector<Shard>& shards, const MaterialPlan& plan, const Progress& progress) {
   h5::Group materials = root.create_group(kMaterials);
+  std::vector<h5::CopiedObjects> copied(shards.size());
   for (std::size_t i = 0; i < plan.materials.size(); ++i) {
     const MaterialSource& m = plan.materials[i];
     if (progress) progress(i, plan.materials.size(), m.id);
-    materials.copy_from(shards[m.shard].file.root().open_group(kMaterials), m.id, m.id);
+    materials.copy_from(shards[m.shard].file.root().open_group(kMaterials), m.id, m.id, copied[m.shard]);
   }
 }
 

@@ -1,5 +1,5 @@
 // gelsight.*: the no-contact reference, the peak's contact score, saturation, blur, image size,
-// press count and source damage of every press of a gelsight or dataset file.
+// press count, source damage, channel order and whole images of every press of a gelsight or dataset file.
 #include "qa/gelsight_checks.hpp"
 
 #include <algorithm>
@@ -7,6 +7,9 @@
 #include <functional>
 
 #include "capture/scoring/contact_score.hpp"
+#include "core/error.hpp"
+#include "dataset/layout.hpp"
+#include "dataset/press_images.hpp"
 #include "qa/checkers.hpp"
 #include "qa/thresholds.hpp"
 
@@ -204,6 +207,25 @@ CheckResult check_gelsight_channel_order(const std::vector<Press>& presses) {
   return tally.result();
 }
 
+CheckResult check_gelsight_images(const h5::Group& root) {
+  CheckTally tally("gelsight.images", "presses");
+  for (const std::string& path : press_paths(root)) {
+    const h5::Group press = root.open_group(path.substr(1));
+    std::string problem;
+    for (const char* name : {dataset::layout::kReference, dataset::layout::kPeak, dataset::layout::kFrames}) {
+      if (!problem.empty() || !press.has_dataset(name)) continue;  // a missing dataset is layout.required's
+      try {
+        dataset::require_whole_press_images(press, name);
+      } catch (const Error& e) {
+        problem = e.what();
+      }
+    }
+    if (problem.empty()) tally.pass();
+    else tally.fail(path, problem);
+  }
+  return tally.result();
+}
+
 std::vector<CheckResult> check_gelsight(const h5::Group& root) {
   const GelsightPresses file = read_presses(root);
   const NoContactBaselines baselines = no_contact_baselines(file.presses);
@@ -214,7 +236,8 @@ std::vector<CheckResult> check_gelsight(const h5::Group& root) {
           check_gelsight_resolution(file),
           check_gelsight_press_count(file.per_material),
           check_gelsight_source_damage(file.presses),
-          check_gelsight_channel_order(file.presses)};
+          check_gelsight_channel_order(file.presses),
+          check_gelsight_images(root)};
 }
 
 }  // namespace haptex::qa

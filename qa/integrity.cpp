@@ -3,6 +3,7 @@
 #include "core/error.hpp"
 #include "dataset/format.hpp"
 #include "qa/checkers.hpp"
+#include "qa/gelsight_checks.hpp"
 #include "qa/recording_checks.hpp"
 
 namespace haptex::qa {
@@ -27,6 +28,7 @@ void append(std::vector<CheckResult>& out, std::vector<CheckResult> more) {
 std::vector<CheckResult> check_integrity(const h5::Group& root, const std::string& format) {
   std::vector<CheckResult> results = check_layout(root, format);
   if (format != dataset::format_name(dataset::Kind::gelsight)) append(results, recording_integrity(root));
+  if (format != dataset::format_name(dataset::Kind::recordings)) results.push_back(check_gelsight_images(root));
   if (format == dataset::format_name(dataset::Kind::dataset)) append(results, check_dataset(root));
   return results;
 }

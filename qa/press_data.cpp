@@ -12,6 +12,7 @@
 #include "dataset/channel_order.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/press_images.hpp"
+#include "qa/recording_data.hpp"
 #include "qa/thresholds.hpp"
 
 namespace haptex::qa {
@@ -123,24 +124,31 @@ Press summarize_press(const h5::Group& g, std::string path, std::string material
 
 }  // namespace
 
+std::vector<std::string> press_paths(const h5::Group& root) {
+  std::vector<std::string> paths;
+  if (!root.has_group(layout::kMaterials)) return paths;
+  const h5::Group materials = root.open_group(layout::kMaterials);
+  for (const auto& id : materials.children()) {
+    if (!materials.has_group(id) || !materials.open_group(id).has_group(layout::kPresses)) continue;
+    const h5::Group presses = materials.open_group(id).open_group(layout::kPresses);
+    for (const auto& j : presses.children())
+      if (presses.has_group(j)) paths.push_back("/materials/" + id + "/presses/" + j);
+  }
+  return paths;
+}
+
 GelsightPresses read_presses(const h5::Group& root) {
   GelsightPresses file;
   if (!root.has_group(layout::kMaterials)) return file;
   const h5::Group materials = root.open_group(layout::kMaterials);
-  for (const auto& id : materials.children()) {
-    if (!materials.has_group(id)) continue;
-    const h5::Group material = materials.open_group(id);
-    std::size_t& count = file.per_material[id];
-    if (!material.has_group(layout::kPresses)) continue;
-    const h5::Group group = material.open_group(layout::kPresses);
-    for (const auto& j : group.children()) {
-      if (!group.has_group(j)) continue;
-      file.presses.push_back(summarize_press(group.open_group(j), "/materials/" + id + "/presses/" + j, id));
-      ++count;
-    }
+  for (const auto& id : materials.children())
+    if (materials.has_group(id)) file.per_material[id] = 0;
+  for (const std::string& path : press_paths(root)) {
+    const std::string material = material_of(path);
+    file.presses.push_back(summarize_press(root.open_group(path.substr(1)), path, material));
+    ++file.per_material[material];
   }
   return file;
 }
-
 
 }  // namespace haptex::qa

@@ -42,5 +42,7 @@ struct GelsightPresses {
   std::map<std::string, std::size_t> per_material;  // presses per material group (0: none)
 };
 GelsightPresses read_presses(const h5::Group& root);
+// "/materials/{material}/presses/{j}" of every press group, in file order.
+std::vector<std::string> press_paths(const h5::Group& root);
 
 }  // namespace haptex::qa

@@ -67,11 +67,16 @@ std::vector<std::string> recording_paths(const h5::Group& root) {
   return paths;
 }
 
+std::string material_of(const std::string& path) {
+  const std::size_t start = std::string_view("/materials/").size();
+  return path.substr(start, path.find('/', start) - start);
+}
+
 LoadedRecording load_recording(const h5::Group& root, const std::string& path) {
   const h5::Group group = root.open_group(path.substr(1));
   LoadedRecording r;
   r.path = path;
-  r.material = path.substr(11, path.find('/', 11) - 11);
+  r.material = material_of(path);
   r.sample_rate_hz = group.try_attr<double>("sample_rate_hz");
   r.duration_s = group.try_attr<double>("duration_s");
   r.samples = group.try_attr<std::int64_t>("samples");

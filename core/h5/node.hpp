@@ -2,6 +2,7 @@
 // Groups and datasets of an HDF5 file, with their attributes. Paths in error messages read
 // "FILE:/group/dataset" so a user can find the object with h5ls or h5py.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -21,6 +22,8 @@ inline constexpr std::uint64_t kMostBytesRead = std::uint64_t(4) << 30;
 void require_readable_size(double count, std::size_t element_size, const std::string& file, const std::string& where);
 // "(3, 4)": a shape in messages.
 std::string shape_text(const Shape& shape);
+// The objects Group::copy_from copied out of one source file: the path each was first copied from, by address.
+using CopiedObjects = std::map<haddr_t, std::string>;
 
 // Anything that carries attributes.
 class Node {
@@ -118,7 +121,10 @@ class Group : public Node {
   }
   Dataset write_strings(std::string_view name, const std::vector<std::string>& values);
   // Copies source's member `name` (a group with everything below it, or a dataset, with attributes)
-  // into this group as `new_name`; the source may be in another file.
+  // into this group as `new_name`; the source may be in another file. `copied` remembers every object
+  // copied out of one source file across calls, so that an object linked twice (one material
+  // hard-linked under two names) is refused, not copied twice; pass one per source file.
+  void copy_from(const Group& source, std::string_view name, std::string_view new_name, CopiedObjects& copied);
   void copy_from(const Group& source, std::string_view name, std::string_view new_name);
 
  private:

@@ -47,7 +47,7 @@ class Values {
 
 struct Copy {
   std::string source_file, target_file;
-  std::map<haddr_t, std::string> seen = {};  // every object copied, by address: a second link to one is refused
+  CopiedObjects& seen;  // every object copied, by address: a second link to one is refused
 
   // References point at objects of the file they were written in: copied, they would point nowhere
   // (or anywhere) in the output. No haptex file holds them.
@@ -189,7 +189,12 @@ struct Copy {
 }  // namespace
 
 void Group::copy_from(const Group& source, std::string_view name, std::string_view new_name) {
-  Copy copy{source.file(), file_};
+  CopiedObjects copied;
+  copy_from(source, name, new_name, copied);
+}
+
+void Group::copy_from(const Group& source, std::string_view name, std::string_view new_name, CopiedObjects& copied) {
+  Copy copy{source.file(), file_, copied};
   copy.object(source.id(), std::string(name), id(), std::string(new_name), joined(source.object_path(), std::string(name)),
               child_path(new_name));
 }

@@ -188,6 +188,8 @@ struct BrokenShard {
   std::string from;  // the file it is a copy of
   std::function<void(Edit&, const std::string& material)> damage;
   std::vector<std::string> says;
+  // align copies only the materials both its inputs name (a second link left unnamed is never copied).
+  bool align_refuses = true;
 };
 
 // A fixed-length string attribute as other tools write one, holding exactly `text` (NULs included).
@@ -235,6 +237,14 @@ std::vector<BrokenShard> broken_shards() {
        {"/@name", "NUL byte", "layout.dtype"}},
       {"an object reference", p.recordings, [](Edit& e, const std::string& m) { add_reference_attribute(e, m + "/recordings/0", m + "/recordings/0/speed"); },
        {"/recordings/0@odd", "object references"}},
+      {"a reference PNG whose CRC does not hold", p.gelsight, [](Edit& e, const std::string& m) {
+         e.change_image(m + "/presses/0/reference", 0, [](std::vector<std::uint8_t>& png) {
+           std::fill(png.begin() + std::ptrdiff_t(png.size() / 2), png.begin() + std::ptrdiff_t(png.size() / 2 + 20), 0);
+         });
+       }, {"/presses/0/reference[0]", "does not decode", "gelsight.images"}},
+      {"a material hard-linked under a second name", p.recordings, [](Edit& e, const std::string& m) {
+         H5Lcreate_hard(e.root().id(), m.c_str(), e.root().id(), "materials/zz_again", H5P_DEFAULT, H5P_DEFAULT);
+       }, {"second link to"}, false},
       {"a window start moved by 1e12", p.dataset, [](Edit& e, const std::string&) {
          std::vector<std::int64_t> start = e.dataset("windows/start").read<std::int64_t>();
          start[0] += 1000000000000;
@@ -259,6 +269,29 @@ TEST(MergeInput, AShardQaCallsBrokenIsRefused) {
     std::vector<std::string> says = c.says;
     says.push_back(bad);
     expect_refusal(run_haptex({"merge", bad, "-o", dir.file("out.h5")}), says);
+    EXPECT_FALSE(fs::exists(dir.file("out.h5")));
+    EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+  }
+}
+
+// align reads its recordings and gelsight inputs as strictly as merge reads a shard of theirs.
+TEST(MergeInput, AlignRefusesWhatMergeRefuses) {
+  const SmallPipeline& p = small_pipeline();
+  for (const BrokenShard& c : broken_shards()) {
+    if (c.from == p.dataset || !c.align_refuses) continue;
+    SCOPED_TRACE(c.name);
+    const TempDir dir;
+    const std::string bad = copy_into(dir, c.from, "broken.h5");
+    {
+      Edit edit(bad);
+      c.damage(edit, "materials/" + material_ids(bad).front());
+    }
+    std::vector<std::string> says = c.says;
+    says.push_back(bad);
+    const bool recordings = c.from == p.recordings;
+    expect_refusal(run_haptex({"align", "--recordings", recordings ? bad : p.recordings, "--gelsight", recordings ? p.gelsight : bad,
+                               "-o", dir.file("out.h5")}),
+                   says);
     EXPECT_FALSE(fs::exists(dir.file("out.h5")));
     EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
   }

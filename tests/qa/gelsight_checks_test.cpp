@@ -202,5 +202,18 @@ TEST_F(GelsightMutation, FourPressesAreGelsightPressCount) {
   EXPECT_NE(r.find("gelsight.press_count")->message.find("4 presses, at least 5"), std::string::npos);
 }
 
+// Issue 32: a reference PNG whose chunk no longer matches its CRC was left out of the image checks
+// ("not checked") and the file passed.
+TEST_F(GelsightMutation, AnImageWhosePngCrcFailsIsGelsightImages) {
+  Edit(file_).change_image(kPress + "/reference", 0, [](std::vector<std::uint8_t>& png) {
+    ASSERT_EQ(png[1], 'P') << "the small pipeline's references are PNG";
+    std::fill(png.begin() + std::ptrdiff_t(png.size() / 2), png.begin() + std::ptrdiff_t(png.size() / 2 + 20), 0);
+  });
+  const qa::Report r = qa();
+  ASSERT_NE(r.find("gelsight.images"), nullptr);
+  EXPECT_EQ(r.find("gelsight.images")->status, qa::Status::fail);
+  EXPECT_NE(r.find("gelsight.images")->message.find(kPress + "/reference[0]"), std::string::npos) << r.find("gelsight.images")->message;
+}
+
 }  // namespace
 }  // namespace haptex::test

@@ -3,6 +3,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "dataset/vlen_bytes.hpp"
+
 namespace haptex::test {
 
 h5::Group Edit::group(const std::string& path) const { return path.empty() ? root() : root().open_group(path); }
@@ -42,6 +44,19 @@ void Edit::change_bytes(const std::string& path, const std::function<void(std::v
   change(values);
   if (H5Dwrite(d.id(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
     throw std::runtime_error("cannot write " + path);
+}
+
+void Edit::change_image(const std::string& path, std::size_t index, const std::function<void(std::vector<std::uint8_t>&)>& change) {
+  std::vector<std::vector<std::uint8_t>> images;
+  for (std::size_t i = 0; i < dataset(path).shape()[0]; ++i) images.push_back(dataset::read_vlen_bytes(dataset(path), i));
+  change(images.at(index));
+  const auto attrs = string_attrs(dataset(path));
+  remove(path);
+  const auto slash = path.rfind('/');
+  h5::Group parent = group(path.substr(0, slash));
+  dataset::VlenBytesWriter writer(parent, path.substr(slash + 1));
+  for (const auto& image : images) writer.append(image);
+  restore(writer.dataset(), attrs);
 }
 
 std::vector<std::pair<std::string, std::string>> Edit::string_attrs(const h5::Dataset& d) const {

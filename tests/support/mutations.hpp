@@ -24,6 +24,9 @@ class Edit {
   // Reads a numeric dataset as float (or uint8), lets `change` edit the values, writes them back in place.
   void change_floats(const std::string& path, const std::function<void(std::vector<float>&)>& change);
   void change_bytes(const std::string& path, const std::function<void(std::vector<std::uint8_t>&)>& change);
+  // Lets `change` edit the encoded bytes of image `index` of an image dataset (a press's reference,
+  // peak or frames), written back with the dataset's string attributes.
+  void change_image(const std::string& path, std::size_t index, const std::function<void(std::vector<std::uint8_t>&)>& change);
   // Replaces a dataset by new values and shape (and dtype T), keeping its string attributes.
   template <typename T>
   void replace(const std::string& path, const std::vector<T>& values, const h5::Shape& shape);
