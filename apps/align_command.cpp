@@ -8,6 +8,7 @@
 #include "apps/output_options.hpp"
 #include "core/output_is_input.hpp"
 #include "apps/terminal_progress.hpp"
+#include "core/text/utf8.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -46,17 +47,17 @@ class AlignCommand : public Command {
       return 0;
     }
     if (global.quiet) return 0;
-    std::cout << "wrote " << options_.output << ": " << r.match.pairs.size() << " materials, " << r.recordings
+    std::cout << "wrote " << text::printable(options_.output) << ": " << r.match.pairs.size() << " materials, " << r.recordings
               << " recordings, " << r.presses << " presses, " << r.windows << " windows, in " << seconds << " s\n";
     auto list = [](const char* label, const std::vector<std::string>& names) {
       if (names.empty()) return;
       std::cout << label;
-      for (const auto& n : names) std::cout << " '" << n << "'";
+      for (const auto& n : names) std::cout << " '" << text::printable(n) << "'";
       std::cout << "\n";
     };
     list("only in the recordings file (left out):", only_r);
     list("only in the gelsight file (left out):", only_g);
-    for (const auto& note : r.notes) std::cout << "note: " << note << "\n";
+    for (const auto& note : r.notes) std::cout << "note: " << text::printable(note) << "\n";
     return 0;
   }
 

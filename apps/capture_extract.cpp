@@ -13,6 +13,7 @@
 #include "core/output_is_input.hpp"
 #include "apps/terminal_progress.hpp"
 #include "capture/extraction/extract_presses.hpp"
+#include "core/text/utf8.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -120,10 +121,10 @@ class CaptureExtract : public CaptureSubcommand {
                   << ", peak " << p.peak_index << " (score " << p.peak_score << ")\n";
     std::set<std::string> materials;
     for (const auto& p : r.presses) materials.insert(p.material_id);
-    std::cout << "wrote " << output_ << ": " << r.presses.size() << " presses of " << materials.size()
+    std::cout << "wrote " << text::printable(output_) << ": " << r.presses.size() << " presses of " << materials.size()
               << " materials from " << r.sources << " files";
-    if (!r.sheets_dir.empty()) std::cout << "; contact sheets in " << r.sheets_dir;
-    if (!r.explain_dir.empty()) std::cout << "; score charts in " << r.explain_dir;
+    if (!r.sheets_dir.empty()) std::cout << "; contact sheets in " << text::printable(r.sheets_dir);
+    if (!r.explain_dir.empty()) std::cout << "; score charts in " << text::printable(r.explain_dir);
     std::cout << "\n";
     if (r.frames_unreadable > 0)
       std::cout << r.frames_unreadable << " frames did not decode (damaged, or announced by a video cut short); none was "

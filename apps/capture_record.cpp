@@ -185,7 +185,7 @@ class CaptureRecord : public CaptureSubcommand {
         std::cerr << p.file << ": take frames " << p.take_first_frame << "-" << p.take_last_frame << ", contact "
                   << p.contact_first << "-" << p.contact_last << ", peak " << p.peak_frame << ", " << p.dropped_frames
                   << " dropped, ended by " << p.ended_by << "\n";
-    std::cout << "recorded " << r.presses.size() << " presses of " << options_.material << " into " << request_.output_dir
+    std::cout << "recorded " << r.presses.size() << " presses of " << text::printable(options_.material) << " into " << text::printable(request_.output_dir)
               << " (" << r.ended_by << "): " << r.totals.frames << " frames, " << r.totals.dropped_frames << " dropped, "
               << r.totals.error_buffers << " error buffers; " << capture::fourcc_text(r.session.format.fourcc) << " "
               << r.session.format.width << "x" << r.session.format.height << " at " << r.session.format.fps() << " fps";

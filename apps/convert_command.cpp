@@ -10,6 +10,7 @@
 #include "core/output_is_input.hpp"
 #include "apps/terminal_progress.hpp"
 #include "convert/convert_recordings.hpp"
+#include "core/text/utf8.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -77,8 +78,8 @@ class ConvertCommand : public Command {
     if (global.quiet) return;
     if (global.verbose)
       for (const auto& r : result.recordings)
-        std::cerr << r.source << " -> /materials/" << r.material_id << "/recordings/" << r.index << "\n";
-    std::cout << "wrote " << output_ << ": " << result.recordings.size() << " recordings, " << samples
+        std::cerr << text::printable(r.source) << " -> /materials/" << r.material_id << "/recordings/" << r.index << "\n";
+    std::cout << "wrote " << text::printable(output_) << ": " << result.recordings.size() << " recordings, " << samples
               << " samples, in " << seconds << " s\n";
   }
 

@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/output_is_input.hpp"
 #include "core/text/format.hpp"
+#include "core/text/utf8.hpp"
 #include "evaluate/report_writer.hpp"
 #include "evaluate/run_evaluation.hpp"
 #include "evaluate/truth_comparison.hpp"
@@ -82,7 +83,7 @@ class EvaluateCommand : public Command {
       return 0;
     }
     if (global.quiet) return 0;
-    std::cout << "wrote " << files.report << " (" << e.experiments.size() << " experiments, " << std::fixed << std::setprecision(1)
+    std::cout << "wrote " << text::printable(files.report) << " (" << e.experiments.size() << " experiments, " << std::fixed << std::setprecision(1)
               << e.seconds << " s)\n";
     for (const evaluate::Experiment& x : e.experiments) {
       std::cout << text::format("  %s: better than the %s on %zu of %zu materials, significantly on %zu, significantly worse on %zu (mean distance %.4g vs %.4g m/s^2)\n",
@@ -93,7 +94,7 @@ class EvaluateCommand : public Command {
                     e.floor_kind == "oracle" ? "floor (oracle where --truth knows the material)" : "floor estimate", x.within_floor(0.10), x.materials.size(),
                     x.median_floor_ratio(), x.worst_floor_ratio(), x.below_floor() ? "; BEATS THE ORACLE: the oracle is wrong" : "");
     }
-    if (!files.note.empty()) std::cout << "note: " << files.note << "\n";
+    if (!files.note.empty()) std::cout << "note: " << text::printable(files.note) << "\n";
     return 0;
   }
 

@@ -7,6 +7,7 @@
 #include "apps/command.hpp"
 #include "apps/terminal_progress.hpp"
 #include "core/output_is_input.hpp"
+#include "core/text/utf8.hpp"
 #include "merge/merge_files.hpp"
 
 namespace haptex::apps {
@@ -47,13 +48,13 @@ class MergeCommand : public Command {
       return 0;
     }
     if (global.quiet) return 0;
-    std::cout << "wrote " << options_.output << " (" << format << "): " << r.plan.materials.size() << " materials from "
+    std::cout << "wrote " << text::printable(options_.output) << " (" << format << "): " << r.plan.materials.size() << " materials from "
               << options_.shards.size() << " shards";
     if (r.kind == dataset::Kind::dataset) std::cout << ", " << r.windows << " windows";
     std::cout << ", in " << seconds << " s\n";
     for (const auto& l : r.plan.left_out)
-      std::cout << "left out (--keep-first): " << l.id << " of " << options_.shards[l.shard] << ", taken from "
-                << options_.shards[l.kept_from] << "\n";
+      std::cout << "left out (--keep-first): " << l.id << " of " << text::printable(options_.shards[l.shard]) << ", taken from "
+                << text::printable(options_.shards[l.kept_from]) << "\n";
     return 0;
   }
 

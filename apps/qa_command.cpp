@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.hpp"
+#include "core/text/utf8.hpp"
 #include "qa/run_qa.hpp"
 
 namespace haptex::apps {
@@ -32,8 +33,8 @@ class QaCommand : public Command {
   // -v every place it failed.
   static void print(const qa::Report& r, const GlobalOptions& global) {
     if (!global.quiet) {
-      std::cout << "haptex qa " << r.file << " (" << qa::to_string(r.kind) << ")";
-      if (r.split) std::cout << " with " << *r.split;
+      std::cout << "haptex qa " << text::printable(r.file) << " (" << qa::to_string(r.kind) << ")";
+      if (r.split) std::cout << " with " << text::printable(*r.split);
       std::cout << "\n\n";
     }
     std::size_t width = 2;
@@ -52,7 +53,7 @@ class QaCommand : public Command {
       if (c.status == qa::Status::fail) {
         std::cout << indent << "fix: " << c.hint << "\n";
         if (global.verbose)
-          for (const auto& w : c.where) std::cout << indent << "at " << w << "\n";
+          for (const auto& w : c.where) std::cout << indent << "at " << text::printable(w) << "\n";
       }
     }
     if (header) std::cout << std::right << "\n";

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/output_is_input.hpp"
 #include "core/text/format.hpp"
+#include "core/text/utf8.hpp"
 #include "dataset/window.hpp"
 #include "predict/model_file.hpp"
 #include "predict/texture_choice.hpp"
@@ -142,7 +143,7 @@ class RenderCommand : public Command {
     const double seconds = double(r.wav.samples) / render::kWavSampleRate;
     const std::string sc = std::isnan(r.convergence_db) ? std::string("SC n/a (under 0.1 s)") : text::format("SC %.1f dB", r.convergence_db);
     std::cout << text::format("wrote %s%s: %zu samples, %.3f s, peak %.4g m/s^2, full scale %.9g m/s^2 (24-bit PCM), %s, %s, %.3g s compute per s of vibration\n",
-                output_.c_str(), csv_.empty() ? "" : (" and " + csv_).c_str(), r.wav.samples, seconds, r.wav.peak_m_s2,
+                text::printable(output_).c_str(), csv_.empty() ? "" : (" and " + text::printable(csv_)).c_str(), r.wav.samples, seconds, r.wav.peak_m_s2,
                 r.wav.full_scale_m_s2, method(r.options).c_str(), sc.c_str(), r.compute_per_second);
   }
 

@@ -8,6 +8,7 @@
 #include "apps/provenance.hpp"
 #include "core/error.hpp"
 #include "core/freed_memory.hpp"
+#include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
 #include "core/version.hpp"
 
@@ -55,6 +56,16 @@ void check_option_values(const CLI::App& app) {
   for (const CLI::App* sub : app.get_subcommands()) check_option_values(*sub);
 }
 
+// printable() keeps a message's own newlines; a newline or tab inside a name given on the command line
+// is the name's, so wherever the message quotes that name it is escaped first.
+std::string shown_message(const std::string& message, int argc, char** argv) {
+  std::string shown = message;
+  for (int i = 1; i < argc; ++i)
+    if (const std::string name = argv[i]; name.find_first_of("\n\t") != std::string::npos)
+      shown = text::replace_all(shown, name, text::printable(name));
+  return text::printable(shown, true);
+}
+
 }  // namespace
 
 int run_main(int argc, char** argv) {
@@ -99,17 +110,17 @@ int run_main(int argc, char** argv) {
       check_option_values(*sub);
       return command->run(global);
     } catch (const Error& e) {
-      std::cerr << "haptex " << command->name() << ": error: " << text::printable(e.what(), true) << "\n";
+      std::cerr << "haptex " << command->name() << ": error: " << shown_message(e.what(), argc, argv) << "\n";
       return e.kind() == Error::Kind::bad_input ? 2 : 1;
     } catch (const std::filesystem::filesystem_error& e) {
-      std::cerr << "haptex " << command->name() << ": error: " << e.path1().string() << ": " << e.code().message()
+      std::cerr << "haptex " << command->name() << ": error: " << text::printable(e.path1().string()) << ": " << e.code().message()
                 << ". Check the path and its permissions\n";
       return 2;
     } catch (const std::bad_alloc&) {
       std::cerr << "haptex " << command->name() << ": error: out of memory. Give smaller inputs, or run it on a machine with more memory\n";
       return 1;
     } catch (const std::exception& e) {
-      std::cerr << "haptex " << command->name() << ": unexpected error: " << e.what() << "\n";
+      std::cerr << "haptex " << command->name() << ": unexpected error: " << shown_message(e.what(), argc, argv) << "\n";
       return 1;
     }
   }

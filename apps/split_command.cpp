@@ -13,6 +13,7 @@
 #include "core/partial_directory.hpp"
 #include "core/output_is_input.hpp"
 #include "core/json/schema.hpp"
+#include "core/text/utf8.hpp"
 #include "split/split_manifest.hpp"
 #include "split/split_plots.hpp"
 #include "qa/sound_split.hpp"
@@ -94,14 +95,14 @@ class SplitCommand : public Command {
     std::vector<double> worst;
     for (const auto& s : splits) worst.push_back(s.worst());
     std::sort(worst.begin(), worst.end());
-    std::cout << "wrote " << output_ << ": " << splits.size() << " materials; worst-case coverage min "
+    std::cout << "wrote " << text::printable(output_) << ": " << splits.size() << " materials; worst-case coverage min "
               << std::setprecision(3) << worst.front() << ", median " << worst[worst.size() / 2] << ", max " << worst.back() << "\n";
     for (const auto& s : splits)
       std::cout << "  " << std::left << std::setw(24) << s.id << std::right << " windows " << s.train_windows << "/"
                 << s.val_windows << "/" << s.test_windows << "  coverage val " << std::setprecision(3) << s.val_coverage
                 << " test " << s.test_coverage << "\n";
-    if (!plots.images.empty()) std::cout << plots.images.size() << " plots in " << std::filesystem::path(plots.images[0]).parent_path().string() << "\n";
-    if (!plots.note.empty()) std::cout << "note: " << plots.note << "\n";
+    if (!plots.images.empty()) std::cout << plots.images.size() << " plots in " << text::printable(std::filesystem::path(plots.images[0]).parent_path().string()) << "\n";
+    if (!plots.note.empty()) std::cout << "note: " << text::printable(plots.note) << "\n";
   }
 
   std::string dataset_, output_;

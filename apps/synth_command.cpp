@@ -7,6 +7,7 @@
 #include "apps/command.hpp"
 #include "apps/terminal_progress.hpp"
 #include "core/error.hpp"
+#include "core/text/utf8.hpp"
 #include "synth/synth_runs.hpp"
 
 namespace haptex::apps {
@@ -77,7 +78,7 @@ class SynthCommand : public Command {
       return;
     }
     if (global.quiet) return;
-    std::cout << "wrote " << out << ": " << s.materials.size() << " materials, " << s.recordings << " recordings, "
+    std::cout << "wrote " << text::printable(out) << ": " << s.materials.size() << " materials, " << s.recordings << " recordings, "
               << s.presses << " press videos, in " << seconds << " s\n";
     if (!s.materials_without_images.empty())
       std::cout << "no photograph (so no presses) for " << s.materials_without_images.size() << " materials\n";

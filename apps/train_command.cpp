@@ -18,6 +18,7 @@
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
+#include "core/text/utf8.hpp"
 #include "core/version.hpp"
 #include "predict/model_file.hpp"
 #include "predict/train.hpp"
@@ -126,8 +127,8 @@ class TrainCommand : public Command {
 
   void print_summary(const predict::Model& m, double seconds) const {
     const auto& base = m.metrics["mean_spectrum_baseline"];
-    std::cout << "wrote " << output_ << " (" << predict::variant_name(m.variant) << ", " << m.material_ids.size() << " materials, "
-              << parameters(m) << " parameters) and " << log_ << " in " << std::fixed << std::setprecision(1) << seconds << " s\n";
+    std::cout << "wrote " << text::printable(output_) << " (" << predict::variant_name(m.variant) << ", " << m.material_ids.size() << " materials, "
+              << parameters(m) << " parameters) and " << text::printable(log_) << " in " << std::fixed << std::setprecision(1) << seconds << " s\n";
     if (m.metrics.contains("texture"))
       std::cout << "texture encoder: material accuracy " << std::setprecision(3) << m.metrics["texture"]["train_accuracy"].get<double>()
                 << " on training images, " << m.metrics["texture"]["val_accuracy"].get<double>() << " on the validation presses\n";

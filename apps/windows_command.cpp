@@ -8,6 +8,7 @@
 #include "apps/command.hpp"
 #include "core/durable_file.hpp"
 #include "core/output_is_input.hpp"
+#include "core/text/utf8.hpp"
 #include "dataset/windows_file.hpp"
 #include "evaluate/evaluation_grid.hpp"
 
@@ -44,7 +45,7 @@ class WindowsCommand : public Command {
                                   {"dataset_sha256", grid.dataset_sha256}, {"split_sha256", grid.split_sha256}}.dump(2)
                 << "\n";
     else if (!global.quiet)
-      std::cout << "wrote " << output_ << " (" << grid.windows.size() << " test windows of " << materials << " materials)\n";
+      std::cout << "wrote " << text::printable(output_) << " (" << grid.windows.size() << " test windows of " << materials << " materials)\n";
   }
 
   DatasetSplitInput input_;

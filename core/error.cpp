@@ -1,11 +1,15 @@
 #include "core/error.hpp"
 
+#include "core/text/format.hpp"
+#include "core/text/utf8.hpp"
+
 namespace haptex {
 
 Error input_error(const std::string& file, const std::string& where, const std::string& what,
                   const std::string& fix) {
-  std::string message = file;
-  if (!where.empty()) message += ": " + where;
+  // The file and the place are names: a newline or a terminal's escape inside one is shown escaped.
+  std::string message = text::printable(file);
+  if (!where.empty()) message += ": " + text::printable(where);
   message += ": " + what;
   if (!fix.empty()) message += ". " + fix;
   return Error(Error::Kind::bad_input, message);
@@ -14,11 +18,8 @@ Error input_error(const std::string& file, const std::string& where, const std::
 Error failure(const std::string& what) { return Error(Error::Kind::failed, what); }
 
 Error renamed_in(const Error& error, const std::string& from, const std::string& to) {
-  std::string message = error.what();
-  if (!from.empty())
-    for (std::size_t at = message.find(from); at != std::string::npos; at = message.find(from, at + to.size()))
-      message.replace(at, from.size(), to);
-  return Error(error.kind(), message);
+  const std::string message = text::replace_all(error.what(), text::printable(from), text::printable(to));  // as input_error wrote them
+  return Error(error.kind(), text::replace_all(message, from, to));
 }
 
 }  // namespace haptex

@@ -25,7 +25,8 @@ class Error : public std::runtime_error {
   Kind kind_;
 };
 
-// "FILE: WHERE: WHAT. FIX" — the shape every bad-input message takes.
+// "FILE: WHERE: WHAT. FIX" — the shape every bad-input message takes; FILE and WHERE are shown
+// through text::printable (control characters escaped, a newline too).
 [[nodiscard]] Error input_error(const std::string& file, const std::string& where, const std::string& what,
                                 const std::string& fix);
 [[nodiscard]] Error failure(const std::string& what);

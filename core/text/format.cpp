@@ -17,4 +17,10 @@ std::string format(const char* pattern, ...) {
   return out;
 }
 
+std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  if (!from.empty())
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
+  return text;
+}
+
 }  // namespace haptex::text

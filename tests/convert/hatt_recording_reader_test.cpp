@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "core/gzip.hpp"
 #include "core/sha256.hpp"
+#include "core/text/format.hpp"
 #include "tests/support/bad_input.hpp"
 #include "tests/support/sample_recording.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -20,12 +21,7 @@ namespace {
 using test::bad_input_message;
 using test::SampleRecordingSpec;
 using test::TempDir;
-
-std::string replace_all(std::string text, const std::string& from, const std::string& to) {
-  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
-    text.replace(at, from.size(), to);
-  return text;
-}
+using text::replace_all;
 
 TEST(HattRecordingReader, ReadsTheDefaultFormat) {
   TempDir dir;

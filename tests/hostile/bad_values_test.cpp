@@ -199,6 +199,37 @@ TEST(BadValues, NoCommandPrintsATerminalEscapeOrStopsAtANul) {
                  {"line 2", "\\x00", "Fix or remove the line"});
 }
 
+// Review 2, #8: a newline or tab inside a name is the name's, not the line's: success lines and
+// errors show it escaped like any control character, so a line never splits where the name does.
+TEST(BadValues, ANewlineOrTabInANameIsPrintedEscaped) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  {
+    std::ofstream trajectory(d.file("traj.csv"));
+    trajectory << "force,speed\n";
+    for (int i = 0; i < 3000; ++i) trajectory << "1,100\n";
+  }
+  const std::string name = "a\n\tb";
+  const std::vector<std::vector<std::string>> runs = {
+      {"merge", p.gelsight, "-o", d.file(name + ".h5")},
+      {"align", "--recordings", p.recordings, "--gelsight", p.gelsight, "-o", d.file(name + ".d.h5")},
+      {"split", p.dataset, "-o", d.file(name + ".json")},
+      {"windows", p.dataset, "--split", p.split, "-o", d.file(name + ".w.h5")},
+      {"render", quick_model(), "--material", small_material(), "--trajectory", d.file("traj.csv"), "-o", d.file(name + ".wav"),
+       "--csv", d.file(name + ".csv")},
+  };
+  for (const auto& args : runs) {
+    SCOPED_TRACE(args.front());
+    const CommandResult r = run_haptex(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ((r.out + r.err).find("a\n"), std::string::npos) << r.out << r.err;
+    EXPECT_NE(r.out.find("a\\x0a\\x09b"), std::string::npos) << r.out;
+  }
+  const CommandResult missing = run_haptex({"qa", d.file("no\nsuch.h5")});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("no\\x0asuch.h5"), std::string::npos) << missing.err;
+}
+
 // A recordings file whose accel is float64 holding 1e39 (beyond float32, which the layout says) is
 // refused by align naming the dataset, instead of becoming NaN windows.
 TEST(BadValues, AlignRefusesASignalOfTheWrongType) {
