@@ -52,6 +52,7 @@ struct Model {
   nlohmann::json config = nlohmann::json::object();   // training options
   nlohmann::json metrics = nlohmann::json::object();  // losses, epochs, accuracies
   std::string dataset_sha256, split_sha256;
+  std::string file;  // the file it was read from (empty when made in memory): errors name it
 
   int latent_size() const { return variant == Variant::unified ? int(texture.outputs()) : 0; }
   // Index of a material by id; -1 when absent.

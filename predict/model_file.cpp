@@ -8,6 +8,7 @@
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/window.hpp"
+#include "predict/model_probe.hpp"
 
 namespace haptex::predict {
 namespace {
@@ -254,6 +255,8 @@ Model read_model(const std::string& path) {
   for (const std::string& k : nets.children())
     m.nets.push_back({r.mlp(nets.open_group(k), "action_encoder"), r.mlp(nets.open_group(k), "predictor")});
   check_nets(m, path);
+  m.file = path;
+  require_finite_outputs(m, path);
   return m;
 }
 

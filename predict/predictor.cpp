@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "predict/dense_kernel.hpp"
+#include "predict/model_probe.hpp"
 #include "predict/spectrum_net.hpp"
 
 namespace haptex::predict {
@@ -45,7 +46,9 @@ Eigen::VectorXf Predictor::image_latent(std::span<const float> descriptor) const
 }
 
 TextureCode Predictor::image_code(const Eigen::VectorXf& image_latent) const {
+  if (!image_latent.allFinite()) throw non_finite_output(model_.file, "/texture_encoder", "this press");
   TextureCode code = encode_latent(recognised(image_latent));
+  if (!code.latent.allFinite()) throw non_finite_output(model_.file, "/classifier", "this press");
   code.image_latent = image_latent;
   return code;
 }
@@ -96,7 +99,9 @@ bool Predictor::predict(const TextureCode& code, std::span<const float> action, 
   dense_column(first.weight.rightCols(in->size()), *in, code.first_layer, first.activation, layer_[k]);
   in = &layer_[k++];
   for (std::size_t i = 1; i < net.predictor.layers.size(); ++i) apply(net.predictor.layers[i], *in, layer_[k]), in = &layer_[k++];
-  Eigen::Map<Eigen::VectorXf>(spectrum.data(), Eigen::Index(spectrum.size())) = in->cwiseProduct(n.target_scale);
+  Eigen::Map<Eigen::VectorXf> out(spectrum.data(), Eigen::Index(spectrum.size()));
+  out = in->cwiseProduct(n.target_scale);
+  if (!out.allFinite()) throw non_finite_output(model_.file, "/nets/" + std::to_string(code.net) + "/predictor", "this press and action");
   return saturated;
 }
 
@@ -114,7 +119,9 @@ Eigen::MatrixXf Predictor::predict_batch(const TextureCode& code, const Eigen::M
   tail.layers.back().activation = Activation::linear;
   forward(tail, action.out.back(), spectrum);
   activate_fast(output, spectrum.out.back());
-  return model_.normalisation.target_scale.asDiagonal() * spectrum.out.back();
+  Eigen::MatrixXf spectra = model_.normalisation.target_scale.asDiagonal() * spectrum.out.back();
+  if (!spectra.allFinite()) throw non_finite_output(model_.file, "/nets/" + std::to_string(code.net) + "/predictor", "this press and these actions");
+  return spectra;
 }
 
 }  // namespace haptex::predict

@@ -148,5 +148,30 @@ TEST(NonFinite, EveryCommandRefusesAModelWithNaNInfinityOrAZeroScale) {
   }
 }
 
+// Review 2, #9: weights that are each finite but overflow 32-bit floats together (3e38 in a layer)
+// gave "inf" spectra with exit 0 (predict) or an error naming no file (render, evaluate). Loading
+// runs the model once per material at the corners of its force-speed range and refuses it.
+TEST(NonFinite, AModelWhoseFiniteWeightsOverflowIsRefused) {
+  const SmallPipeline& p = small_pipeline();
+  for (const std::string array : {"nets/0/predictor/layers/1/weight", "texture_encoder/layers/0/weight"}) {
+    SCOPED_TRACE(array);
+    const TempDir dir;
+    const std::string model = copy_into(dir, quick_model(), "m.h5");
+    Edit(model).change_floats(array, [](std::vector<float>& v) { std::fill(v.begin(), v.end(), 3e38f); });
+    std::ofstream trajectory(dir.file("t.csv"));
+    trajectory << "force,speed\n";
+    for (int i = 0; i < 20; ++i) trajectory << "1,100\n";
+    trajectory.close();
+    const std::string material = read_json(p.split)["materials"][0]["id"];
+    const std::vector<std::string> mentions = {model, "/" + array.substr(0, array.find("/layers")), "non-finite", "Train the model again"};
+    expect_refusal(run_haptex({"predict", model, "--material", material, "--normal-force", "1", "--speed", "100"}), mentions);
+    expect_refusal(run_haptex({"render", model, "--material", material, "--trajectory", dir.file("t.csv"), "-o", dir.file("o.wav")}),
+                   mentions);
+    EXPECT_FALSE(fs::exists(dir.file("o.wav")));
+    expect_refusal(run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", model, "-o", dir.file("report")}), mentions);
+    EXPECT_FALSE(fs::exists(dir.file("report")));
+  }
+}
+
 }  // namespace
 }  // namespace haptex::test

@@ -1,0 +1,57 @@
+#include "predict/model_probe.hpp"
+
+#include "core/error.hpp"
+#include "core/text/format.hpp"
+#include "predict/predictor.hpp"
+#include "predict/spectrum_net.hpp"
+
+namespace haptex::predict {
+namespace {
+
+// Constant force and speed over the action's 45 ms, at the corners and the middle of the range.
+Eigen::MatrixXf probe_actions(const Normalisation& n) {
+  const float forces[] = {n.force_min, n.force_max, n.force_min, n.force_max, (n.force_min + n.force_max) / 2};
+  const float speeds[] = {n.speed_min, n.speed_min, n.speed_max, n.speed_max, (n.speed_min + n.speed_max) / 2};
+  Eigen::MatrixXf actions(kActionValues, 5);
+  for (int c = 0; c < 5; ++c) {
+    actions.col(c).head(kActionValues / 2).setConstant(forces[c]);
+    actions.col(c).tail(kActionValues / 2).setConstant(speeds[c]);
+  }
+  return actions;
+}
+
+void require_finite_texture(const Model& m, const std::string& path) {
+  const Eigen::Index length = m.normalisation.descriptor_mean.size();
+  Eigen::MatrixXf x(length, 3);  // standardised: the mean, one spread above, one below
+  x.col(0).setZero(), x.col(1).setOnes(), x.col(2).setConstant(-1);
+  MlpTrace trace;
+  forward(m.texture, x, trace);
+  if (!trace.out.back().allFinite()) throw non_finite_output(path, "/texture_encoder", "descriptors within one spread of the training mean");
+  if (!recognised_latents(m, m.material_latents).allFinite() || !recognised_latents(m, trace.out.back()).allFinite())
+    throw non_finite_output(path, "/classifier", "the training materials' latents");
+}
+
+}  // namespace
+
+Error non_finite_output(const std::string& path, const std::string& part, const std::string& input) {
+  return input_error(path.empty() ? "(the model in memory)" : path, part,
+                     "gives a non-finite output for " + input + ": its weights, each finite, overflow 32-bit floats together",
+                     "Train the model again (the training that wrote it diverged, or the file was edited)");
+}
+
+void require_finite_outputs(const Model& m, const std::string& path) {
+  if (m.variant == Variant::unified) require_finite_texture(m, path);
+  Predictor predictor(m);
+  const Eigen::MatrixXf actions = probe_actions(m.normalisation);
+  for (std::size_t k = 0; k < m.material_ids.size(); ++k) {
+    const TextureCode code = predictor.material_code(int(k));
+    const std::string net = "/nets/" + std::to_string(code.net), input = "material '" + m.material_ids[k] + "' across its training range";
+    MlpTrace action;
+    forward(m.nets[std::size_t(code.net)].action, normalised_actions(m.normalisation, actions), action);
+    if (!action.out.back().allFinite()) throw non_finite_output(path, net + "/action_encoder", input);
+    if (!code.first_layer.allFinite() || !predictor.predict_batch(code, actions).allFinite())
+      throw non_finite_output(path, net + "/predictor", input);
+  }
+}
+
+}  // namespace haptex::predict
