@@ -25,6 +25,12 @@ class CaptureCommand : public Command {
     return 2;
   }
 
+  bool ends_on_signals_itself() const override {
+    for (std::size_t i = 0; i < parts_.size(); ++i)
+      if (apps_[i]->parsed()) return parts_[i]->ends_on_signals_itself();
+    return false;
+  }
+
  private:
   std::vector<std::unique_ptr<CaptureSubcommand>> parts_;
   std::vector<CLI::App*> apps_;

@@ -85,6 +85,8 @@ class CaptureRecord : public CaptureSubcommand {
     return app;
   }
 
+  bool ends_on_signals_itself() const override { return true; }  // StopOnSignal
+
   int run(const GlobalOptions& global) override {
     if (device_.empty() && serial_.empty())
       throw input_error("capture record", "", "no sensor given", "Name it with --device /dev/videoN or --serial S");

@@ -11,6 +11,7 @@ class CaptureSubcommand {
   virtual ~CaptureSubcommand() = default;
   virtual CLI::App* declare(CLI::App& capture) = 0;  // adds itself to `capture`
   virtual int run(const GlobalOptions& global) = 0;
+  virtual bool ends_on_signals_itself() const { return false; }  // as Command's
 };
 
 std::unique_ptr<CaptureSubcommand> make_capture_devices();  // apps/capture_devices.cpp

@@ -26,6 +26,10 @@ class Command {
   virtual void declare(CLI::App& app) = 0;
   // Runs after parsing; returns the exit code. Throws haptex::Error for bad input or failed work.
   virtual int run(const GlobalOptions& global) = 0;
+  // Whether the parsed command ends by itself on SIGINT, SIGTERM and SIGHUP (capture record keeps the
+  // press in progress). Otherwise run_main has those signals remove its unfinished outputs
+  // (core/temporary_name.hpp, remove_temporaries_on_signals).
+  virtual bool ends_on_signals_itself() const { return false; }
 };
 
 std::vector<std::unique_ptr<Command>> all_commands();  // apps/commands.cpp

@@ -8,6 +8,7 @@
 #include "apps/provenance.hpp"
 #include "core/error.hpp"
 #include "core/freed_memory.hpp"
+#include "core/temporary_name.hpp"
 #include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
 #include "core/version.hpp"
@@ -106,6 +107,7 @@ int run_main(int argc, char** argv) {
   for (auto& [sub, command] : parsed) {
     if (!sub->parsed()) continue;
     global.command_line = command_line(*sub);
+    if (!command->ends_on_signals_itself()) remove_temporaries_on_signals();  // before any thread is made
     try {
       check_option_values(*sub);
       return command->run(global);

@@ -84,6 +84,7 @@ PartialFile::PartialFile(const std::string& final_path, bool replace) : final_pa
 
 PartialFile::~PartialFile() {
   if (!committed_) std::remove(path_.c_str());
+  forget_temporary(path_);
   if (fd_ >= 0) ::close(fd_);  // releases the lock
 }
 

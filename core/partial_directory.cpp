@@ -78,6 +78,7 @@ PartialDirectory::PartialDirectory(std::string final_path, FolderOptions options
 PartialDirectory::~PartialDirectory() {
   std::error_code ignored;
   if (!committed_) fs::remove_all(path_, ignored);
+  forget_temporary(path_);
   if (fd_ >= 0) ::close(fd_);
 }
 

@@ -1,6 +1,8 @@
 #include "core/temporary_name.hpp"
 
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -8,8 +10,12 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
+#include <cstdio>
 #include <filesystem>
+#include <mutex>
 #include <random>
+#include <set>
+#include <thread>
 
 #include "core/error.hpp"
 
@@ -61,11 +67,49 @@ bool another_run_writes(const std::string& final_path, const std::string& own) {
   return false;
 }
 
+// The temporaries this process has made and not yet renamed or removed. The lock is held while one
+// is made and listed, and for good once a signal is taken (the process is ending).
+std::mutex& listed_lock() {
+  static std::mutex lock;
+  return lock;
+}
+std::set<std::string>& listed() {
+  static std::set<std::string> paths;
+  return paths;
+}
+
+sigset_t ending_signals() {
+  sigset_t set;
+  sigemptyset(&set);
+  for (const int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, s);
+  return set;
+}
+
+[[noreturn]] void remove_listed_and_end(int signal) {
+  listed_lock().lock();  // never released: nothing is made from here on
+  std::size_t removed = 0;
+  for (const std::string& path : listed()) {
+    std::error_code ignored;
+    removed += fs::remove_all(path, ignored) > 0 ? 1 : 0;
+  }
+  std::fprintf(stderr, "haptex: %s: stopped; %zu unfinished output%s removed\n", strsignal(signal), removed,
+               removed == 1 ? "" : "s");
+  std::fflush(stderr);
+  ::signal(signal, SIG_DFL);
+  sigset_t only;
+  sigemptyset(&only);
+  sigaddset(&only, signal);
+  pthread_sigmask(SIG_UNBLOCK, &only, nullptr);
+  ::raise(signal);
+  std::_Exit(128 + signal);  // not reached: the default action ends the process
+}
+
 // Makes a fresh temporary with `make` (which returns an open descriptor, or -1 with errno EEXIST when
 // the name exists), locks it, then looks for a concurrent run writing the same output.
 template <class Make>
 Temporary create_temporary(const std::string& final_path, const char* what, Make make) {
   Temporary t;
+  std::unique_lock<std::mutex> lock(listed_lock());
   for (int attempt = 0;; ++attempt) {
     t.path = fresh_name(final_path);
     if ((t.fd = make(t.path)) >= 0) break;
@@ -78,10 +122,12 @@ Temporary create_temporary(const std::string& final_path, const char* what, Make
     ::close(t.fd);
     std::error_code ignored;
     fs::remove(t.path, ignored);  // empty: only this run made it
+    lock.unlock();
     throw input_error(final_path, "", "another haptex run is writing this output right now (it holds a locked " +
                                           std::string(what) + " beside it)",
                       "Wait for it to finish, or choose another output name");
   }
+  listed().insert(t.path);
   return t;
 }
 
@@ -114,6 +160,22 @@ std::vector<std::string> temporaries_of(const std::string& final_path) {
     if (is_temporary_of(it->path().filename().string(), name))
       found.push_back((fs::path(final_path).parent_path() / it->path().filename()).string());
   return found;
+}
+
+void forget_temporary(const std::string& path) {
+  const std::lock_guard<std::mutex> lock(listed_lock());
+  listed().erase(path);
+}
+
+void remove_temporaries_on_signals() {
+  const sigset_t set = ending_signals();
+  pthread_sigmask(SIG_BLOCK, &set, nullptr);
+  std::thread([set] {
+    int signal = 0;
+    while (sigwait(&set, &signal) != 0) {
+    }
+    remove_listed_and_end(signal);
+  }).detach();
 }
 
 }  // namespace haptex

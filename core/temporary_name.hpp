@@ -28,4 +28,17 @@ Temporary create_temporary_folder(const std::string& final_path);
 // The temporary names of final_path that exist now: any run's, finished, killed or running.
 std::vector<std::string> temporaries_of(const std::string& final_path);
 
+// Every temporary this process creates is listed until forget_temporary (called once it has been
+// renamed or removed), so that an interrupted run can take its temporaries away.
+void forget_temporary(const std::string& path);
+
+// From now on SIGINT, SIGTERM and SIGHUP (Ctrl-C, kill, a closed terminal or ssh session) remove
+// every listed temporary, say so on stderr, then end the process by the same signal, as it would
+// have ended without haptex's help. Call it at the start of main, before any thread is made: the
+// signals are blocked in every thread and taken by one that waits for them (sigwait), so the removal
+// runs outside a signal handler, and no temporary is created while it runs. Child processes start
+// with them unblocked (core/process/run_program.hpp). A command that ends on these signals itself
+// (capture record keeps the press in progress) does not call it.
+void remove_temporaries_on_signals();
+
 }  // namespace haptex

@@ -1,6 +1,7 @@
 #include "core/process/run_program.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -48,8 +49,20 @@ int run_program(const ProgramRun& run) {
   std::vector<char*> argv;
   for (const std::string& arg : run.argv) argv.push_back(const_cast<char*>(arg.c_str()));
   argv.push_back(nullptr);
+  // The child starts with no signal blocked and default actions, whatever haptex blocks for itself
+  // (core/temporary_name.hpp): Ctrl-C stops it too.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t none, all;
+  sigemptyset(&none);
+  sigfillset(&all);
+  posix_spawnattr_setsigmask(&attributes, &none);
+  posix_spawnattr_setsigdefault(&attributes, &all);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
   pid_t pid = 0;
-  if (posix_spawnp(&pid, argv[0], actions.get(), nullptr, argv.data(), environ) != 0) return kNotStarted;
+  const int spawned = posix_spawnp(&pid, argv[0], actions.get(), &attributes, argv.data(), environ);
+  posix_spawnattr_destroy(&attributes);
+  if (spawned != 0) return kNotStarted;
   int status = 0;
   while (waitpid(pid, &status, 0) < 0)
     if (errno != EINTR) return kNotStarted;

@@ -4,9 +4,13 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstring>
 #include <thread>
 
 #include <filesystem>
@@ -150,6 +154,53 @@ TEST(TemporaryNames, AFifoNamedLikeATemporaryIsNotOpened) {
   const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);  // let the writer go
   writer.join();
   ::close(reader);
+}
+
+// Review 2, #11: Ctrl-C, kill and a closed terminal left NAME.<8>.partial files and folders behind.
+// Each signal now takes the run's unfinished outputs away and ends the run by that same signal.
+// The signal is sent once a temporary exists, so it lands while the run writes its outputs.
+TEST(TemporaryNames, ASignalTakesTheUnfinishedOutputsAway) {
+  const SmallPipeline& p = small_pipeline();
+  const std::string synth_gelsight = (fs::path(p.recordings).parent_path() / "synth" / "gelsight").string();
+  struct Run {
+    std::string output;             // inside the run's folder
+    std::vector<std::string> args;  // without -o
+  };
+  const std::vector<Run> runs = {
+      {"sy", {"synth", "materials", "-n", "3", "--seconds", "2", "--presses", "6", "--recordings", "1", "--size", "320x240"}},
+      {"e.h5", {"capture", "extract", synth_gelsight, "--explain"}},
+      {"s.json", {"split", p.dataset, "--sections", "40"}},
+  };
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP})
+    for (const Run& run : runs) {
+      SCOPED_TRACE(std::string(strsignal(signal)) + " to " + run.args.front());
+      const TempDir d;
+      const std::string output = d.file(run.output);
+      std::vector<std::string> args = {haptex_binary()};
+      args.insert(args.end(), run.args.begin(), run.args.end());
+      args.insert(args.end(), {"-o", output});
+      std::vector<char*> argv;
+      for (std::string& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      const pid_t child = fork();
+      ASSERT_GE(child, 0);
+      if (child == 0) {
+        freopen("/dev/null", "w", stdout);
+        freopen("/dev/null", "w", stderr);
+        execv(argv[0], argv.data());
+        _exit(127);
+      }
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+      while (partial_files(d.path().string()).empty() && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      const bool started = !partial_files(d.path().string()).empty();
+      kill(child, signal);
+      int status = 0;
+      waitpid(child, &status, 0);
+      ASSERT_TRUE(started) << "the run never began its output";
+      EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << "status " << status;
+      EXPECT_TRUE(fs::is_empty(d.path())) << "no output, finished or not, is left";
+    }
 }
 
 }  // namespace
