@@ -85,7 +85,7 @@ AlignResult align_dataset(const AlignOptions& o, const Progress& progress) {
   dataset::WindowTable windows = build_windows(signals, o.stride);
   windows.materials = ids;
 
-  h5::AtomicFile out(o.output, o.overwrite);
+  h5::AtomicFile out(o.output, o.overwrite, dataset::format_name(dataset::Kind::dataset));
   h5::Group root = out.root();
   dataset::stamp(root, dataset::Kind::dataset, o.provenance);
   root.set_attr(kRecordingsFile, o.recordings);

@@ -44,8 +44,7 @@ class SplitCommand : public Command {
       throw input_error(output_, "", "names the plot folder (<output>.plots) itself", "Give the manifest a name ending in .json");
     refuse_output_among_inputs(output_, {dataset_});
     refuse_output_among_inputs(plots_folder(), {dataset_});
-    check_replaceable_output(output_, force_, "a split manifest (format split/1)",
-                             [](const std::string& p) { return json::has_format(p, "split/1"); });
+    json::check_replaceable_json(output_, force_, split::kManifestFormat);
     // The plots go into a folder written whole (refused now, before any work, when it may not be replaced).
     std::optional<PartialDirectory> plots_dir;
     if (!no_plots_) plots_dir.emplace(plots_folder(), FolderOptions{force_, "plot folder", "-o", "haptex split"});

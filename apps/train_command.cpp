@@ -20,6 +20,7 @@
 #include "core/json/schema.hpp"
 #include "core/text/utf8.hpp"
 #include "core/version.hpp"
+#include "dataset/format.hpp"
 #include "predict/model_file.hpp"
 #include "predict/train.hpp"
 
@@ -76,8 +77,8 @@ class TrainCommand : public Command {
     refuse_output_among_inputs(output_, input_.files());
     refuse_output_among_inputs(log_, input_.files());
     check_output_path(output_, force_);
-    check_replaceable_output(log_, force_, "a training log (format training-log/1)",
-                             [](const std::string& p) { return json::has_format(p, "training-log/1"); });
+    if (force_) h5::require_replaceable(output_, dataset::format_name(dataset::Kind::model));  // before the training, not after
+    json::check_replaceable_json(log_, force_, predict::kTrainingLogFormat);
     options_.variant = per_material_ ? predict::Variant::per_material : predict::Variant::unified;
     const auto start = std::chrono::steady_clock::now();
     const split::DatasetSplit split = input_.read();
@@ -92,10 +93,10 @@ class TrainCommand : public Command {
       if (show) print_epoch(r);
     });
     // The model and its log appear together or not at all (a full disk while writing either).
-    h5::AtomicFile model_file(output_, force_);
+    h5::AtomicFile model_file(output_, force_, dataset::format_name(dataset::Kind::model));
     predict::write_model(model, model_file, global.command_line);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const nlohmann::json log = {{"format", "training-log/1"}, {"haptex_version", kVersion}, {"created_utc", h5::utc_now_iso8601()},
+    const nlohmann::json log = {{"format", predict::kTrainingLogFormat}, {"haptex_version", kVersion}, {"created_utc", h5::utc_now_iso8601()},
                                 {"source", global.command_line}, {"model", output_},
                                 {"dataset", {{"path", input_.dataset}, {"sha256", split.dataset_sha256}}},
                                 {"split", {{"path", input_.split}, {"sha256", split.manifest_sha256}}},

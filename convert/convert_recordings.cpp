@@ -103,7 +103,7 @@ ConvertResult convert_recordings(const std::vector<std::string>& inputs, const s
                                  const ConvertOptions& options, const Progress& progress) {
   const FieldMap map = options.map_path ? load_field_map(*options.map_path) : default_field_map();
   const std::vector<std::string> files = expand_inputs(inputs);
-  h5::AtomicFile out(output, options.overwrite);
+  h5::AtomicFile out(output, options.overwrite, dataset::format_name(dataset::Kind::recordings));
   dataset::stamp(out.root(), dataset::Kind::recordings, options.provenance);
   out.root().set_attr(dataset::layout::kFieldMap, map.origin);
   return write_all(out, files, progress, [&](std::size_t i, std::uintmax_t& bytes) {
@@ -119,7 +119,7 @@ ConvertResult convert_cluster(const std::string& root, const std::string& output
   const std::vector<ClusterTake> takes = find_cluster_takes(root);
   std::vector<std::string> sources;
   for (const auto& take : takes) sources.push_back(take.accel);
-  h5::AtomicFile out(output, options.overwrite);
+  h5::AtomicFile out(output, options.overwrite, dataset::format_name(dataset::Kind::recordings));
   dataset::stamp(out.root(), dataset::Kind::recordings, options.provenance);
   out.root().set_attr(dataset::layout::kFieldMap, kClusterLayout);
   return write_all(out, sources, progress, [&](std::size_t i, std::uintmax_t& bytes) {

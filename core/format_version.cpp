@@ -30,4 +30,17 @@ Error newer_version_error(const std::string& file, const std::string& where, con
                      "Read it with the haptex that wrote it, or update this one");
 }
 
+void require_replaceable_format(const std::string& path, const std::string& found, const std::string& wanted) {
+  const std::string fix = "Choose another output name, or move the file away yourself";
+  const std::string_view family = std::string_view(wanted).substr(0, wanted.find('/'));
+  if (found.empty())
+    throw input_error(path, "", "--force replaces only a file haptex wrote as an earlier " + wanted + " output, and this one is not", fix);
+  if (!version_of(found, family))
+    throw input_error(path, "", "is a " + found + " file; this command writes " + wanted +
+                                    ", and --force replaces only an earlier output of the same kind", fix);
+  if (is_newer_version(found, wanted))
+    throw input_error(path, "", "is " + found + ", written by a newer haptex than this one (" + std::string(kVersion) +
+                                    "); --force does not replace it", fix);
+}
+
 }  // namespace haptex

@@ -15,4 +15,10 @@ bool is_newer_version(std::string_view found, std::string_view wanted);
 [[nodiscard]] Error newer_version_error(const std::string& file, const std::string& where, const std::string& found,
                                         const std::string& wanted);
 
+// For --force on an existing output `path` whose format is `found` (nothing: not a file haptex wrote)
+// when the command writes `wanted`: haptex replaces only an earlier output of the same kind, so this
+// throws haptex::Error (bad_input) naming path when `found` is missing, of another family ("is a
+// recordings/2 file"), or of a later version (written by a newer haptex).
+void require_replaceable_format(const std::string& path, const std::string& found, const std::string& wanted);
+
 }  // namespace haptex

@@ -240,7 +240,7 @@ const MaterialTruth* Truth::find(const std::string& id) const {
 }
 
 void write_truth_file(const std::string& path, const Truth& truth, const std::string& source) {
-  h5::AtomicFile out(path, true);
+  h5::AtomicFile out(path, true, dataset::format_name(dataset::Kind::truth));
   h5::Group root = out.root();
   dataset::stamp(root, dataset::Kind::truth, source);
   root.set_attr("sample_rate_hz", truth.sample_rate_hz);

@@ -7,7 +7,7 @@
 namespace haptex::dataset {
 
 void write_windows_file(const WindowsFile& file, const std::string& path, bool overwrite, const std::string& source) {
-  h5::AtomicFile out(path, overwrite);
+  h5::AtomicFile out(path, overwrite, format_name(Kind::windows));
   h5::Group root = out.root();
   stamp(root, Kind::windows, source);
   root.set_attr(layout::kDatasetFile, file.dataset_file);

@@ -62,7 +62,7 @@ MergeResult merge_files(const MergeOptions& o, const Progress& progress) {
   const std::vector<Shard> shards = open_shards(o.shards, o.check_integrity);
   MergeResult result{shards.front().kind, plan_for(shards, o.keep_first), 0};
   const std::optional<dataset::WindowTable> windows = windows_for(shards, result.plan);
-  h5::AtomicFile out(o.output, o.overwrite);
+  h5::AtomicFile out(o.output, o.overwrite, dataset::format_name(result.kind));
   h5::Group root = out.root();
   dataset::stamp(root, result.kind, o.provenance);
   write_joined_root_attributes(root, shards, result.plan);

@@ -175,7 +175,7 @@ void check_nets(const Model& m, const std::string& path) {
 }  // namespace
 
 void write_model(const Model& model, const std::string& path, bool overwrite, const std::string& source) {
-  h5::AtomicFile out(path, overwrite);
+  h5::AtomicFile out(path, overwrite, dataset::format_name(dataset::Kind::model));
   write_model(model, out, source);
   out.commit();
 }

@@ -8,6 +8,9 @@
 
 namespace haptex::predict {
 
+// The training log haptex train writes beside the model (docs/predict.md).
+inline constexpr const char* kTrainingLogFormat = "training-log/1";
+
 // progress may be called from several threads at once in the per-material variant; calls are serialised.
 Model train_model(const TrainingData& data, const TrainOptions& options, const EpochCallback& progress = {});
 

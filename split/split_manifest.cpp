@@ -29,7 +29,7 @@ nlohmann::json manifest_json(const std::string& dataset_path, const SplitOptions
                     {"coverage", {{"val", m.val_coverage}, {"test", m.test_coverage}}},
                     {"presses", sets_json(m.presses)}});
   }
-  return {{"format", "split/1"},
+  return {{"format", kManifestFormat},
           {"haptex_version", kVersion},
           {"created_utc", h5::utc_now_iso8601()},
           {"source", source},

@@ -9,6 +9,8 @@
 
 namespace haptex::split {
 
+inline constexpr const char* kManifestFormat = "split/1";  // schemas/split.schema.json
+
 nlohmann::json manifest_json(const std::string& dataset_path, const SplitOptions& options,
                              const std::vector<MaterialSplit>& materials, const std::string& source);
 

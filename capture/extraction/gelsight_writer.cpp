@@ -57,7 +57,7 @@ void set_description(h5::Dataset d, const std::string& units, const std::string&
 }  // namespace
 
 GelsightWriter::GelsightWriter(const std::string& path, bool overwrite, const std::string& provenance)
-    : file_(path, overwrite) {
+    : file_(path, overwrite, dataset::format_name(dataset::Kind::gelsight)) {
   dataset::stamp(file_.root(), dataset::Kind::gelsight, provenance);
 }
 

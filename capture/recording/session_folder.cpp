@@ -7,10 +7,14 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
+#include "capture/recording/session_manifest.hpp"
 #include "core/error.hpp"
+#include "core/format_version.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "core/json/schema.hpp"
 #include "core/output_is_input.hpp"
+#include "core/version.hpp"
+#include "dataset/format.hpp"
 
 namespace haptex::capture {
 namespace fs = std::filesystem;
@@ -44,8 +48,11 @@ std::vector<fs::path> old_session_files(const std::string& dir) {
   if (!fs::is_regular_file(fs::symlink_status(manifest, ec)))
     refuse_replacing(dir, manifest, "is missing or not a plain file, so nothing says which press files haptex wrote");
   const nlohmann::json doc = json::read_file(manifest.string());
-  if (!doc.is_object() || doc.value("format", "") != "capture-session/1" || !doc.contains("presses") || !doc["presses"].is_array())
-    refuse_replacing(dir, manifest, "is not a capture session's manifest (format capture-session/1)");
+  const std::string format = doc.is_object() && doc.contains("format") && doc["format"].is_string() ? doc["format"].get<std::string>() : "";
+  if (is_newer_version(format, kSessionManifestFormat))
+    refuse_replacing(dir, manifest, "is " + format + ", written by a newer haptex than this one (" + std::string(kVersion) + ")");
+  if (format != kSessionManifestFormat || !doc.contains("presses") || !doc["presses"].is_array())
+    refuse_replacing(dir, manifest, "is not a capture session's manifest (format " + std::string(kSessionManifestFormat) + ")");
   std::vector<fs::path> owned{manifest};
   for (const nlohmann::json& press : doc["presses"])
     if (press.is_object() && press.contains("file") && press["file"].is_string() &&
@@ -61,7 +68,7 @@ std::vector<fs::path> old_session_files(const std::string& dir) {
     return !fs::exists(fs::symlink_status(p, ignored));
   });
   for (const fs::path& p : owned)
-    if (p.extension() == ".h5") h5::require_replaceable(p.string());
+    if (p.extension() == ".h5") h5::require_replaceable(p.string(), dataset::format_name(dataset::Kind::press));
   return owned;
 }
 

@@ -79,7 +79,7 @@ nlohmann::json session_manifest(const SessionDescription& s, const ReferenceSumm
   nlohmann::json press_list = nlohmann::json::array();
   for (const auto& p : presses) press_list.push_back(press_json(p));
   nlohmann::json doc = {
-      {"format", "capture-session/1"},
+      {"format", kSessionManifestFormat},
       {"haptex_version", kVersion},
       {"created_utc", h5::utc_now_iso8601()},
       {"command", s.command},

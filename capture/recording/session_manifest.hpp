@@ -17,6 +17,8 @@
 
 namespace haptex::capture {
 
+inline constexpr const char* kSessionManifestFormat = "capture-session/1";  // schemas/capture-session.schema.json
+
 struct SessionDescription {
   std::string command, material;
   DeviceIdentity identity;

@@ -3,35 +3,36 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/format_version.hpp"
 
 namespace haptex::h5 {
 
-void require_replaceable(const std::string& path) {
+void require_replaceable(const std::string& path, const std::string& format) {
+  if (format.empty()) throw failure("internal: --force on " + path + " without the format to be written");
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return;
-  std::string why = "it has no haptex_format attribute";
+  std::string found;
   try {
-    if (File::open(path).root().has_attr(kFormatAttribute)) return;
-  } catch (const Error&) {
-    why = "it is not an HDF5 file haptex can read";
+    const Group root = File::open(path).root();
+    if (root.has_attr(kFormatAttribute)) found = root.attr_string(kFormatAttribute);
+  } catch (const Error&) {  // not HDF5, or a format that is not text: not a file haptex wrote
   }
-  throw input_error(path, "", "--force replaces only a file haptex wrote, and " + why,
-                    "Choose another output name, or move the file away yourself");
+  require_replaceable_format(path, found, format);
 }
 
 namespace {
 
 // The checks before anything is written, in the order a user fixes them.
-const std::string& checked(const std::string& final_path, bool overwrite) {
+const std::string& checked(const std::string& final_path, bool overwrite, const std::string& format) {
   check_output_path(final_path, overwrite);
-  if (overwrite) require_replaceable(final_path);
+  if (overwrite) require_replaceable(final_path, format);
   return final_path;
 }
 
 }  // namespace
 
-AtomicFile::AtomicFile(std::string final_path, bool overwrite)
-    : final_path_((checked(final_path, overwrite), std::move(final_path))),
+AtomicFile::AtomicFile(std::string final_path, bool overwrite, const std::string& format)
+    : final_path_((checked(final_path, overwrite, format), std::move(final_path))),
       partial_(final_path_, overwrite),
       file_(File::create(partial_.path(), final_path_)) {}
 

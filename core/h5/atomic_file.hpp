@@ -9,17 +9,20 @@
 
 namespace haptex::h5 {
 
-// For --force: refuses (haptex::Error, bad_input) to replace an existing file at path that haptex
-// did not write (not HDF5, or no haptex_format), so a user's own file is never overwritten. A path
-// that does not exist, or is not a regular file (core/durable_file.hpp refuses that), passes.
-void require_replaceable(const std::string& path);
+// For --force: refuses (haptex::Error, bad_input) to replace an existing file at path unless haptex
+// wrote it as an earlier output of `format`'s kind (core/format_version.hpp,
+// require_replaceable_format): a user's own file, another kind of haptex file and a newer haptex's
+// are never overwritten. A path that does not exist, or is not a regular file (core/durable_file.hpp
+// refuses that), passes.
+void require_replaceable(const std::string& path, const std::string& format);
 
 class AtomicFile {
  public:
   // Refuses (haptex::Error, bad_input) when final_path exists and overwrite is false, or exists and
-  // is not a file haptex wrote (--force replaces only those: require_replaceable), when its
-  // directory does not exist or is not writable, or when another run is writing it.
-  AtomicFile(std::string final_path, bool overwrite);
+  // is not an earlier file of `format` (the haptex_format the caller will stamp: --force replaces only
+  // those, require_replaceable), when its directory does not exist or is not writable, or when
+  // another run is writing it. `format` may be left out only without overwrite.
+  AtomicFile(std::string final_path, bool overwrite, const std::string& format = {});
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;

@@ -94,17 +94,27 @@ nlohmann::json read_file(const std::string& path) {
   return parse_text(text, path);
 }
 
-bool has_format(const std::string& path, std::string_view format) {
+namespace {
+
+// The top-level "format" of the JSON file at path; empty when it is not one (or over 64 MiB).
+std::string format_of_file(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kLargestJsonBytes || ec) return false;
+  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kLargestJsonBytes || ec) return "";
   std::ifstream in(path, std::ios::binary);
-  nlohmann::json doc;
   try {
-    doc = parse_text(std::string(std::istreambuf_iterator<char>(in), {}), path);
+    const nlohmann::json doc = parse_text(std::string(std::istreambuf_iterator<char>(in), {}), path);
+    if (doc.is_object() && doc.contains("format") && doc["format"].is_string()) return doc["format"].get<std::string>();
   } catch (const Error&) {
-    return false;
   }
-  return doc.is_object() && doc.contains("format") && doc["format"].is_string() && doc["format"].get<std::string>() == format;
+  return "";
+}
+
+}  // namespace
+
+void check_replaceable_json(const std::string& path, bool overwrite, const std::string& format) {
+  check_output_path(path, overwrite);
+  std::error_code ec;
+  if (overwrite && std::filesystem::exists(path, ec)) require_replaceable_format(path, format_of_file(path), format);
 }
 
 void validate(const nlohmann::json& doc, std::string_view schema_name, const std::string& file) {

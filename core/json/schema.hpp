@@ -25,9 +25,11 @@ inline constexpr std::uintmax_t kLargestJsonBytes = 64u << 20;  // read_file ref
 nlohmann::json parse_text(std::string_view text, const std::string& file,
                           const std::function<void(const std::string& key)>& on_key = {});
 
-// Whether path is a JSON file (of at most 64 MiB) whose top-level "format" is `format`: how --force
-// knows that haptex wrote it. Never throws.
-bool has_format(const std::string& path, std::string_view format);
+// The checks before writing a JSON document of `format` ("split/1") at path: check_output_path, and
+// with overwrite an existing file is replaced only when it is a JSON file (of at most 64 MiB) whose
+// top-level "format" is an earlier `format` (require_replaceable_format, core/format_version.hpp):
+// how --force knows that haptex wrote it.
+void check_replaceable_json(const std::string& path, bool overwrite, const std::string& format);
 
 // Throws haptex::Error (bad_input) naming `file`, the JSON pointer of the first failing element and
 // the reason, when doc does not satisfy schemas/<schema_name>.

@@ -151,7 +151,7 @@ TEST(H5, SecondWriterOfTheSameOutputIsRefused) {
   AtomicFile first(path, false);
   first.root().write("x", std::vector<double>{1, 2, 3});
   try {
-    AtomicFile second(path, true);
+    AtomicFile second(path, true, "recordings/1");
     FAIL() << "a second writer was allowed";
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), Error::Kind::bad_input);
@@ -196,17 +196,17 @@ TEST(H5, RefusesExistingOutputUnlessOverwrite) {
   std::string kept;
   std::getline(in, kept);
   EXPECT_EQ(kept, "keep me");
-  EXPECT_THROW(AtomicFile(path, true), Error) << "--force replaces only a file haptex wrote";
+  EXPECT_THROW(AtomicFile(path, true, "recordings/1"), Error) << "--force replaces only a file haptex wrote";
   std::filesystem::remove(path);
   {
     AtomicFile ours(path, false);
     ours.root().set_attr(kFormatAttribute, "recordings/1");
     ours.commit();
   }
-  AtomicFile replaced(path, true);
+  AtomicFile replaced(path, true, "recordings/1");
   replaced.commit();
   std::filesystem::create_directory(dir.file("a_directory"));
-  EXPECT_THROW(AtomicFile(dir.file("a_directory"), true), Error);
+  EXPECT_THROW(AtomicFile(dir.file("a_directory"), true, "recordings/1"), Error);
   EXPECT_GT(H5Fis_hdf5(path.c_str()), 0);
 }
 

@@ -97,15 +97,23 @@ TEST(Format, OpensTheRightKindAndRefusesEveryOtherWithTheFix) {
   EXPECT_NE(refusal(dir.file("missing.h5"), Kind::gelsight).find("missing.h5"), std::string::npos);
 }
 
-// --force replaces a file only when haptex wrote it; a user's file of another kind is left alone.
-TEST(Format, OnlyAFileHaptexWroteIsReplaceable) {
+// --force replaces a file only when haptex wrote it as an earlier output of the kind being written; a
+// user's file, another kind of haptex file and a newer haptex's file are left alone.
+TEST(Format, OnlyAnEarlierFileOfTheSameKindIsReplaceable) {
   const test::TempDir dir;
-  EXPECT_NO_THROW(h5::require_replaceable(dir.file("new.h5")));
-  EXPECT_NO_THROW(h5::require_replaceable(file_with_format(dir, "ours.h5", "recordings/1")));
+  EXPECT_NO_THROW(h5::require_replaceable(dir.file("new.h5"), "recordings/2"));
+  EXPECT_NO_THROW(h5::require_replaceable(file_with_format(dir, "ours.h5", "recordings/1"), "recordings/2"));
+  EXPECT_NO_THROW(h5::require_replaceable(file_with_format(dir, "same.h5", "recordings/2"), "recordings/2"));
   std::ofstream(dir.file("notes.h5")) << "my notes";
-  for (const std::string& theirs : {dir.file("notes.h5"), file_with_format(dir, "plain.h5", "")}) {
-    const std::string message = test::bad_input_message([&] { h5::require_replaceable(theirs); });
-    EXPECT_NE(message.find(theirs + ": --force replaces only a file haptex wrote"), std::string::npos) << message;
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {dir.file("notes.h5"), "--force replaces only a file haptex wrote as an earlier recordings/2 output"},
+      {file_with_format(dir, "plain.h5", ""), "--force replaces only a file haptex wrote as an earlier recordings/2 output"},
+      {file_with_format(dir, "gel.h5", "gelsight/2"), "is a gelsight/2 file; this command writes recordings/2"},
+      {file_with_format(dir, "newer.h5", "recordings/3"), "is recordings/3, written by a newer haptex"},
+  };
+  for (const auto& [theirs, says] : refused) {
+    const std::string message = test::bad_input_message([&] { h5::require_replaceable(theirs, "recordings/2"); });
+    EXPECT_NE(message.find(theirs + ": " + says), std::string::npos) << message;
   }
 }
 

@@ -27,7 +27,7 @@ WindowTable two_windows() {
 }
 
 std::string written(const test::TempDir& dir, const WindowTable& t, const std::string& name = "d.h5") {
-  h5::AtomicFile out(dir.file(name), true);
+  h5::AtomicFile out(dir.file(name), true, format_name(Kind::dataset));
   stamp(out.root(), Kind::dataset, "test");
   write_window_table(out.root(), t);
   out.commit();
@@ -84,7 +84,7 @@ TEST(WindowTableFile, RefusesAnotherContractOrDamagedColumnsNamingTheObject) {
 
   const std::string broken = dir.file("broken \"`x`\".h5");
   {
-    h5::AtomicFile out(broken, true);
+    h5::AtomicFile out(broken, true, format_name(Kind::dataset));
     stamp(out.root(), Kind::dataset, "test");
     const WindowTable t = two_windows();
     h5::Group w = out.root().create_group("windows");

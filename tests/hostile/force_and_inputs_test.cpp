@@ -9,6 +9,7 @@
 
 #include "core/sha256.hpp"
 #include "tests/hostile/hostile_support.hpp"
+#include "tests/support/mutations.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/small_pipeline.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -207,6 +208,36 @@ TEST(Force, TextOutputsReplaceTheirOwn) {
     const CommandResult again = run_haptex(command);
     EXPECT_EQ(again.exit_code, 0) << again.err;
   }
+}
+
+// Review 2, #12 and #13: --force replaced a haptex output of another kind (train over a gelsight
+// file) or of a newer haptex (model/4, split/2) silently, and called a newer JSON output "not one".
+// Now it replaces only an earlier output of the kind it writes, and says which rule the file breaks.
+TEST(Force, OnlyAnEarlierOutputOfTheSameKindIsReplaced) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string newer_model = copy_into(d, quick_model(), "newer.h5"), gelsight = copy_into(d, p.gelsight, "g.h5"),
+                    recordings = copy_into(d, p.recordings, "r.h5");
+  Edit(newer_model).root().set_attr("haptex_format", "model/99");
+  std::ofstream(d.file("log.json")) << R"({"format": "training-log/1"})";
+  std::ofstream(d.file("newer_split.json")) << R"({"format": "split/2"})";
+  std::ofstream(d.file("newer_log.json")) << R"({"format": "training-log/2"})";
+  const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> refused = {
+      {{"train", p.dataset, "--split", p.split, "-o", newer_model, "--per-material", "--force"}, {newer_model, "model/99", "newer haptex"}},
+      {{"train", p.dataset, "--split", p.split, "-o", gelsight, "--force"}, {gelsight, "is a gelsight/2 file", "same kind"}},
+      {{"merge", p.gelsight, "-o", recordings, "--force"}, {recordings, "is a recordings/", "writes gelsight/2"}},
+      {{"split", p.dataset, "-o", d.file("log.json"), "--no-plots", "--force"}, {d.file("log.json"), "is a training-log/1 file"}},
+      {{"split", p.dataset, "-o", d.file("newer_split.json"), "--no-plots", "--force"}, {"split/2", "newer haptex"}},
+      {{"train", p.dataset, "--split", p.split, "-o", d.file("m.h5"), "--log", d.file("newer_log.json"), "--force"},
+       {"training-log/2", "newer haptex"}},
+  };
+  for (const auto& [command, says] : refused) {
+    SCOPED_TRACE(command.front() + ": " + says.front());
+    const std::vector<std::string> before = {file_bytes(newer_model), file_bytes(gelsight), file_bytes(recordings)};
+    expect_refusal(run_haptex(command), says);
+    EXPECT_EQ(before, (std::vector<std::string>{file_bytes(newer_model), file_bytes(gelsight), file_bytes(recordings)}));
+  }
+  EXPECT_FALSE(fs::exists(d.file("m.h5")));
 }
 
 TEST(Force, TrainRefusesALogThatIsTheModel) {

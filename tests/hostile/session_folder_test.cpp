@@ -55,6 +55,19 @@ TEST(SessionFolder, ForceRefusesASessionJsonHaptexDidNotWrite) {
   EXPECT_EQ(file_bytes(o + "/press_0.h5"), "my own");
 }
 
+// Review 2, #13: a session of a newer haptex is called that, not "not a capture session's manifest".
+TEST(SessionFolder, ForceRefusesASessionOfANewerHaptex) {
+  const TempDir d;
+  const std::string o = d.file("o");
+  ASSERT_EQ(record(kFake, o, false).exit_code, 0);
+  nlohmann::json manifest = nlohmann::json::parse(file_bytes(o + "/session.json"));
+  manifest["format"] = "capture-session/2";
+  std::ofstream(o + "/session.json") << manifest.dump();
+  const std::string press = file_bytes(o + "/press_0.h5");
+  expect_refusal(record(kFake, o, true), {"session.json", "capture-session/2", "newer haptex"});
+  EXPECT_EQ(file_bytes(o + "/press_0.h5"), press);
+}
+
 TEST(SessionFolder, ForceRefusesAListedPressFileHaptexDidNotWrite) {
   const TempDir d;
   const std::string o = d.file("o");
