@@ -44,6 +44,7 @@ void check_output_path(const std::string& path, bool overwrite) {
   if (::access(dir.c_str(), W_OK) != 0)
     throw input_error(path, "", "the output directory " + dir + " is not writable",
                       "Choose a directory you can write to with -o");
+  require_name_fits(path);
   const fs::file_status link = fs::symlink_status(path, ec);
   if (fs::is_symlink(link) && !fs::exists(path, ec))
     throw input_error(path, "", "the output path is a symbolic link to nothing", "Remove the link, or choose another -o");

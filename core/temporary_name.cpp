@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "core/sha256.hpp"
 
 namespace haptex {
 namespace fs = std::filesystem;
@@ -25,25 +26,39 @@ namespace {
 
 constexpr std::string_view kSuffix = ".partial";
 constexpr std::size_t kRandomLetters = 8;
+constexpr std::size_t kLongestName = 255;  // NAME_MAX of Linux file systems
 
 std::string folder_of(const std::string& path) {
   const fs::path parent = fs::path(path).parent_path();
   return parent.empty() ? "." : parent.string();
 }
 
+// What a temporary's name holds before ".<8>.partial": the output's own name or, when the temporary's
+// name would then pass the file system's 255 bytes, the output name's first bytes (cut between
+// characters), "~" and 8 hex digits of its SHA-256, so that every legal output name can be written
+// and two outputs still have temporaries of their own.
+std::string stem_of(const std::string& final_name) {
+  const std::size_t room = kLongestName - 1 - kRandomLetters - kSuffix.size();
+  if (final_name.size() <= room) return final_name;
+  std::size_t keep = room - 9;
+  while (keep > 0 && (static_cast<unsigned char>(final_name[keep]) & 0xC0) == 0x80) --keep;  // a UTF-8 continuation byte
+  return final_name.substr(0, keep) + "~" + sha256_hex(final_name).substr(0, 8);
+}
+
 std::string fresh_name(const std::string& final_path) {
   static constexpr char kLetters[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
   thread_local std::mt19937_64 random{std::random_device{}()};
   std::uniform_int_distribution<std::size_t> pick(0, sizeof kLetters - 2);
-  std::string name = final_path + ".";
+  std::string name = stem_of(fs::path(final_path).filename().string()) + ".";
   for (std::size_t i = 0; i < kRandomLetters; ++i) name += kLetters[pick(random)];
-  return name + std::string(kSuffix);
+  return (fs::path(final_path).parent_path() / (name + std::string(kSuffix))).string();
 }
 
 bool is_temporary_of(const std::string& entry, const std::string& final_name) {
-  if (entry.size() != final_name.size() + 1 + kRandomLetters + kSuffix.size()) return false;
-  if (!entry.starts_with(final_name + ".") || !entry.ends_with(kSuffix)) return false;
-  for (std::size_t i = final_name.size() + 1; i < final_name.size() + 1 + kRandomLetters; ++i)
+  const std::string stem = stem_of(final_name);
+  if (entry.size() != stem.size() + 1 + kRandomLetters + kSuffix.size()) return false;
+  if (!entry.starts_with(stem + ".") || !entry.ends_with(kSuffix)) return false;
+  for (std::size_t i = stem.size() + 1; i < stem.size() + 1 + kRandomLetters; ++i)
     if (!std::isalnum(static_cast<unsigned char>(entry[i]))) return false;
   return true;
 }
@@ -108,14 +123,17 @@ sigset_t ending_signals() {
 // the name exists), locks it, then looks for a concurrent run writing the same output.
 template <class Make>
 Temporary create_temporary(const std::string& final_path, const char* what, Make make) {
+  require_name_fits(final_path);
   Temporary t;
   std::unique_lock<std::mutex> lock(listed_lock());
   for (int attempt = 0;; ++attempt) {
     t.path = fresh_name(final_path);
     if ((t.fd = make(t.path)) >= 0) break;
+    if (errno == ENAMETOOLONG)
+      throw input_error(final_path, "", "is longer than the file system allows (255 bytes a name, 4096 a path)",
+                        "Choose a shorter output name");
     if (errno != EEXIST || attempt == 100)
-      throw input_error(final_path, "", std::string("cannot create the ") + what + " " + t.path + " to write it in: " +
-                                            std::strerror(errno),
+      throw input_error(final_path, "", std::string("cannot create a ") + what + " beside it to write it in: " + std::strerror(errno),
                         "Choose a folder you can write to");
   }
   if (::flock(t.fd, LOCK_EX | LOCK_NB) != 0 || another_run_writes(final_path, t.path)) {
@@ -132,6 +150,14 @@ Temporary create_temporary(const std::string& final_path, const char* what, Make
 }
 
 }  // namespace
+
+void require_name_fits(const std::string& final_path) {
+  const long longest = ::pathconf(folder_of(final_path).c_str(), _PC_NAME_MAX);
+  if (fs::path(final_path).filename().string().size() > std::size_t(longest > 0 ? longest : long(kLongestName)))
+    throw input_error(final_path, "", "is longer than the file system allows (" + std::to_string(longest > 0 ? longest : long(kLongestName)) +
+                                          " bytes a name)",
+                      "Choose a shorter output name");
+}
 
 Temporary create_temporary_file(const std::string& final_path) {
   return create_temporary(final_path, "temporary file", [](const std::string& p) {

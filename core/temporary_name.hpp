@@ -11,6 +11,10 @@
 
 namespace haptex {
 
+// Throws haptex::Error (bad_input) naming final_path when its name is longer than its folder's file
+// system allows (255 bytes on Linux): checked before any work, since nothing could be renamed to it.
+void require_name_fits(const std::string& final_path);
+
 // A temporary file or folder, open and locked. The caller closes `fd` (which releases the lock).
 struct Temporary {
   std::string path;

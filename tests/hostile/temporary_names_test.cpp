@@ -136,6 +136,28 @@ TEST(TemporaryNames, AnotherRunWritingTheSameOutputIsRefused) {
   EXPECT_EQ(run_haptex({"merge", small_pipeline().gelsight, "-o", out}).exit_code, 0) << "once that run has ended";
 }
 
+// Review 2, #14: a legal output name of 239 to 255 bytes could not be written (its temporary's name
+// passed 255 bytes) and the message named the temporary. Such a name now works, and two runs writing
+// it still find each other.
+TEST(TemporaryNames, TheLongestLegalOutputNameIsWritten) {
+  const TempDir d;
+  for (const std::size_t length : {239u, 255u}) {
+    SCOPED_TRACE(length);
+    const std::string name = std::string(length - 5, 'A') + "\u00e9.h5";  // a two-byte character where the cut may fall
+    ASSERT_EQ(name.size(), length);
+    const std::string out = d.file(name);
+    const CommandResult r = run_haptex({"merge", small_pipeline().gelsight, "-o", out});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
+    const Temporary other = create_temporary_file(out);
+    expect_refusal(run_haptex({"merge", small_pipeline().gelsight, "-o", out, "--force"}), {"another haptex run"});
+    ::close(other.fd);
+    fs::remove(other.path);
+  }
+  expect_refusal(run_haptex({"merge", small_pipeline().gelsight, "-o", d.file(std::string(256, 'B'))}), {"longer than the file system allows"});
+}
+
 // A FIFO of the user's named like a temporary is never opened: opening it would release a writer
 // blocked on it, whose data would then be lost.
 TEST(TemporaryNames, AFifoNamedLikeATemporaryIsNotOpened) {
