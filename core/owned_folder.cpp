@@ -20,13 +20,18 @@ struct FileList {
   std::set<std::string> files;
 };
 
-FileList listed_files(const fs::path& list_path) {
+// A name inside the folder as written in the list: its own path, never a link's target.
+std::string listed_name(const fs::path& entry, const fs::path& folder) { return entry.lexically_relative(folder).generic_string(); }
+
+FileList listed_files(const std::string& folder, const fs::path& list_path) {
   FileList out;
   nlohmann::json list;
   try {
     list = json::read_file(list_path.string());
-  } catch (const Error&) {
-    return out;  // no list haptex can read: the folder is not known to be haptex's
+  } catch (const Error& e) {
+    throw input_error(folder, "", "--force would replace this folder, but its " + std::string(kFileListName) +
+                                      " cannot be read, so haptex cannot tell its own files from yours (" + e.what() + ")",
+                      "Move the folder away yourself, or choose another output name");
   }
   if (!list.is_object()) return out;
   if (list.contains("written_by") && list["written_by"].is_string()) out.written_by = list["written_by"].get<std::string>();
@@ -41,7 +46,7 @@ FileList listed_files(const fs::path& list_path) {
 void write_file_list(const std::string& dir, std::string_view written_by) {
   nlohmann::json files = nlohmann::json::array();
   for (const fs::directory_entry& entry : fs::recursive_directory_iterator(dir))
-    files.push_back(fs::relative(entry.path(), dir).generic_string());
+    files.push_back(listed_name(entry.path(), dir));
   const nlohmann::json list = {
       {"about", "The files haptex wrote in this folder. haptex --force replaces the folder only while it holds "
                 "nothing else; add a file of your own and it refuses."},
@@ -58,7 +63,7 @@ void check_only_haptex_files(const std::string& folder, std::string_view written
     throw input_error(folder, "", "--force would replace this folder, but it has no " + std::string(kFileListName) +
                                       ", so haptex cannot tell its own files from yours",
                       "Choose a new folder with -o, or empty this one yourself");
-  const FileList list = listed_files(list_path);
+  const FileList list = listed_files(folder, list_path);
   // Another command's folder (split -o z.json --force meeting synth's z.plots) is not this one's to replace.
   if (list.written_by != written_by)
     throw input_error(folder, "", "--force would replace this folder, but " + (list.written_by.empty() ? std::string("its list names no command") : list.written_by + " wrote it") +
@@ -66,10 +71,13 @@ void check_only_haptex_files(const std::string& folder, std::string_view written
                       "Choose another output name, or move the folder away yourself");
   const std::set<std::string>& listed = list.files;
   for (const fs::directory_entry& entry : fs::recursive_directory_iterator(folder, ec)) {
-    const std::string name = fs::relative(entry.path(), folder).generic_string();
+    const std::string name = listed_name(entry.path(), folder);
     if (name != kFileListName && !listed.contains(name))
       throw input_error(folder, name, "--force would replace this folder, but haptex did not write this file",
                         "Move your files out of the folder, or choose a new folder with -o");
+    if (entry.is_symlink(ec))
+      throw input_error(folder, name, "--force would replace this folder, but this is a symbolic link, which haptex never writes",
+                        "Move it out of the folder, or choose a new folder with -o");
   }
   if (ec) throw input_error(folder, "", "cannot list the folder (" + ec.message() + ")", "Check its permissions");
 }

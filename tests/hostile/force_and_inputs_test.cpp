@@ -46,6 +46,27 @@ TEST(Force, SynthRefusesAFolderHoldingFilesItDidNotWrite) {
   EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
 }
 
+// Review 2, #14: a link inside the folder was named by its target (../../etc/passwd), and a damaged
+// file list was reported as a file haptex did not write.
+TEST(Force, ALinkOrADamagedFileListInTheFolderIsNamedForWhatItIs) {
+  const TempDir dir;
+  const std::string out = dir.file("out");
+  ASSERT_EQ(run_haptex(tiny_synth(out, false)).exit_code, 0);
+  const fs::path material = *fs::directory_iterator(out + "/gelsight");
+  const fs::path press = *fs::directory_iterator(material);
+  const std::string listed = press.lexically_relative(out).generic_string(), kept = file_bytes(press.string());
+  fs::rename(press, dir.file("moved"));
+  fs::create_symlink("/etc/passwd", press);
+  expect_refusal(run_haptex(tiny_synth(out, true)), {out + ": " + listed, "symbolic link"});
+  EXPECT_TRUE(fs::is_symlink(press));
+  fs::remove(press);
+  fs::rename(dir.file("moved"), press);
+  const std::string list = file_bytes(out + "/haptex-files.json");
+  std::ofstream(out + "/haptex-files.json") << "{\"files\": [1e400]}";
+  expect_refusal(run_haptex(tiny_synth(out, true)), {out, "haptex-files.json cannot be read", "1e400"});
+  EXPECT_EQ(file_bytes(press.string()), kept);
+}
+
 TEST(Force, SynthRefusesAFolderWithoutItsFileList) {
   const TempDir dir;
   fs::create_directory(dir.file("mine"));
