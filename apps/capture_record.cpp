@@ -81,7 +81,9 @@ class CaptureRecord : public CaptureSubcommand {
     app->add_option("--pre-frames", options_.pre_frames, "Frames kept before each contact")->capture_default_str();
     app->add_option("--post-frames", options_.post_frames, "Frames kept after each release")->capture_default_str();
     app->add_option("--buffers", request_.buffers, "Driver buffers, 4 to 8")->capture_default_str()->check(CLI::Range(4, 8));
-    app->add_option("--sensors", sensors_, "JSON list of more sensors for --serial (the form of schemas/tactile-sensors.json)");
+    // Read only to find --serial's sensor: without --serial a list given would be ignored unread.
+    app->add_option("--sensors", sensors_, "JSON list of more sensors for --serial (the form of schemas/tactile-sensors.json)")
+        ->needs(serial);
     return app;
   }
 

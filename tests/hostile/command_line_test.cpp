@@ -116,6 +116,8 @@ TEST(CommandLine, CaptureValuesAreReadWholeAndOnce) {
   expect_refusal(record({"--control", "gain=3", "--control", "gain=4"}), {"--control gain=4", "given twice"});
   expect_refusal(record({"--size", "160x120x3"}), {"--size 160x120x3", "WIDTHxHEIGHT"});
   expect_refusal(record({"--seconds", "1e39"}), {"--seconds", "at most 1e6"});
+  // Review 2, #15: a --sensors list (even a FIFO) was ignored unread when --device named the camera.
+  expect_refusal(record({"--sensors", d.file("sensors.json")}), {"--sensors requires --serial"});
   const auto device = [&](const std::string& spec) {
     return run_haptex({"capture", "record", "--device", spec, "--material", "Cork", "-o", d.file("s")});
   };

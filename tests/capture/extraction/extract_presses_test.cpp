@@ -317,5 +317,28 @@ TEST(CaptureInputs, RefusesMissingPathsAndEmptyFolders) {
   }
 }
 
+// Review 2, #15: a link inside the input folder back to a folder holding it (`loop -> ../..`) made
+// extract read everything around the input. It is refused by its own name; a link to a material
+// folder elsewhere is still followed.
+TEST(CaptureInputs, ALinkToAFolderHoldingTheInputIsRefused) {
+  haptex::test::TempDir dir;
+  const std::filesystem::path in = dir.path() / "in", elsewhere = dir.path() / "elsewhere" / "cork";
+  std::filesystem::create_directories(in / "felt");
+  std::filesystem::create_directories(elsewhere);
+  std::ofstream(in / "felt" / "press_0.avi") << "x";
+  std::ofstream(elsewhere / "press_0.avi") << "x";
+  std::filesystem::create_directory_symlink(elsewhere, in / "cork");
+  const std::vector<CaptureInput> found = expand_capture_inputs({in.string()}, std::nullopt);
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0].material, "cork");
+  std::filesystem::create_directory_symlink("../..", in / "loop");
+  try {
+    expand_capture_inputs({in.string()}, std::nullopt);
+    FAIL() << "the link back was followed";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find((in / "loop").string() + ": is a link to"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace haptex::capture
