@@ -257,20 +257,29 @@ std::vector<BrokenShard> broken_shards() {
   };
 }
 
+// A copy of the shard `c` damages, in dir.
+std::string broken_copy(const TempDir& dir, const BrokenShard& c) {
+  const std::string bad = copy_into(dir, c.from, "broken.h5");
+  Edit edit(bad);
+  c.damage(edit, "materials/" + material_ids(bad).front());
+  return bad;
+}
+
+// The command refused naming the broken file and what c says, and wrote nothing.
+void expect_nothing_written(const CommandResult& r, const TempDir& dir, const BrokenShard& c, const std::string& bad) {
+  std::vector<std::string> says = c.says;
+  says.push_back(bad);
+  expect_refusal(r, says);
+  EXPECT_FALSE(fs::exists(dir.file("out.h5")));
+  EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+}
+
 TEST(MergeInput, AShardQaCallsBrokenIsRefused) {
   for (const BrokenShard& c : broken_shards()) {
     SCOPED_TRACE(c.name);
     const TempDir dir;
-    const std::string bad = copy_into(dir, c.from, "broken.h5");
-    {
-      Edit edit(bad);
-      c.damage(edit, "materials/" + material_ids(bad).front());
-    }
-    std::vector<std::string> says = c.says;
-    says.push_back(bad);
-    expect_refusal(run_haptex({"merge", bad, "-o", dir.file("out.h5")}), says);
-    EXPECT_FALSE(fs::exists(dir.file("out.h5")));
-    EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+    const std::string bad = broken_copy(dir, c);
+    expect_nothing_written(run_haptex({"merge", bad, "-o", dir.file("out.h5")}), dir, c, bad);
   }
 }
 
@@ -281,19 +290,11 @@ TEST(MergeInput, AlignRefusesWhatMergeRefuses) {
     if (c.from == p.dataset || !c.align_refuses) continue;
     SCOPED_TRACE(c.name);
     const TempDir dir;
-    const std::string bad = copy_into(dir, c.from, "broken.h5");
-    {
-      Edit edit(bad);
-      c.damage(edit, "materials/" + material_ids(bad).front());
-    }
-    std::vector<std::string> says = c.says;
-    says.push_back(bad);
+    const std::string bad = broken_copy(dir, c);
     const bool recordings = c.from == p.recordings;
-    expect_refusal(run_haptex({"align", "--recordings", recordings ? bad : p.recordings, "--gelsight", recordings ? p.gelsight : bad,
-                               "-o", dir.file("out.h5")}),
-                   says);
-    EXPECT_FALSE(fs::exists(dir.file("out.h5")));
-    EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+    expect_nothing_written(run_haptex({"align", "--recordings", recordings ? bad : p.recordings, "--gelsight",
+                                       recordings ? p.gelsight : bad, "-o", dir.file("out.h5")}),
+                           dir, c, bad);
   }
 }
 
