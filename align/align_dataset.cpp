@@ -41,7 +41,7 @@ h5::Shape check_press_sizes(const h5::Group& presses) {
   for (const std::string& j : presses.children()) {
     const h5::Group press = presses.open_group(j);
     dataset::read_channel_order(press, kPeak);
-    const h5::Shape size = {hsize_t(press.attr_int("height")), hsize_t(press.attr_int("width")), 3};
+    const h5::Shape size = {hsize_t(press.attr_int(kHeight)), hsize_t(press.attr_int(kWidth)), 3};
     if (shape.empty()) shape = size;
     else if (size != shape)
       throw input_error(press.file(), press.object_path(), "image size differs from the material's other presses",
@@ -97,8 +97,8 @@ AlignResult align_dataset(const AlignOptions& o, const Progress& progress) {
   for (const MaterialPair& pair : result.match.pairs) {
     h5::Group m = materials.create_group(pair.id);
     m.set_attr(kName, pair.recordings.name);
-    m.set_attr("recordings_name", pair.recordings.name);
-    m.set_attr("gelsight_name", pair.gelsight.name);
+    m.set_attr(kRecordingsName, pair.recordings.name);
+    m.set_attr(kGelsightName, pair.gelsight.name);
     m.copy_from(recordings_root.open_group(kMaterials).open_group(pair.recordings.id), kRecordings, kRecordings,
                 copied_recordings);
     m.copy_from(gelsight_root.open_group(kMaterials).open_group(pair.gelsight.id), kPresses, kPresses, copied_presses);

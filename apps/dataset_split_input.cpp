@@ -11,8 +11,9 @@ void DatasetSplitInput::declare(CLI::App& app, const std::string& split_help) {
 }
 
 split::DatasetSplit DatasetSplitInput::read() const {
-  split::DatasetSplit windows = split::read_dataset_split(dataset, split);
-  qa::require_sound_split(split::read_split_manifest(split), dataset);
+  const split::SplitManifestDocument manifest = split::read_split_manifest(split);  // read once, for both
+  split::DatasetSplit windows = split::read_dataset_split(dataset, manifest);
+  qa::require_sound_split(manifest, dataset);
   return windows;
 }
 

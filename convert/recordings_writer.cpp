@@ -5,6 +5,7 @@
 #include "core/signal/butterworth.hpp"
 #include "core/signal/dft321.hpp"
 #include "core/signal/sosfilt.hpp"
+#include "dataset/description.hpp"
 #include "dataset/layout.hpp"
 
 namespace haptex::convert {
@@ -28,9 +29,7 @@ std::vector<float> interleave(const std::vector<double>& a, const std::vector<do
 
 void write_signal(h5::Group& group, const std::string& name, const std::vector<float>& values, h5::Shape shape,
                   const std::string& units, const std::string& description) {
-  h5::Dataset dataset = group.write_array<float>(name, values, shape);
-  dataset.set_attr("units", units);
-  dataset.set_attr("description", description);
+  dataset::describe(group.write_array<float>(name, values, shape), units, description);
 }
 
 void write_lowpassed(h5::Group& group, const std::string& name, const std::vector<double>& raw,
@@ -52,27 +51,27 @@ WrittenRecording write_recording(h5::Group root, const Recording& r) {
   h5::Group materials = root.require_group(layout::kMaterials);
   const bool first = !materials.has_group(written.material_id);
   h5::Group material = materials.require_group(written.material_id);
-  if (first) material.set_attr("name", r.material);
+  if (first) material.set_attr(layout::kName, r.material);
   h5::Group recordings = material.require_group(layout::kRecordings);
   written.index = static_cast<int>(recordings.children().size());
   h5::Group g = recordings.create_group(std::to_string(written.index));
 
   const std::size_t n = r.samples();
   const auto& ch = r.channels;
-  g.set_attr("sample_rate_hz", r.sample_rate_hz);
-  g.set_attr("samples", static_cast<std::int64_t>(n));
-  g.set_attr("duration_s", double(n) / r.sample_rate_hz);
-  g.set_attr("lowpass_filter", "butterworth");
-  g.set_attr("lowpass_order", kLowpassOrder);
-  g.set_attr("lowpass_cutoff_hz", kLowpassCutoffHz);
-  g.set_attr("lowpass_method", "sosfiltfilt, odd padding, default pad length (scipy semantics)");
-  g.set_attr("accel_reduction", "DFT321 frame by frame, phase along the axes' principal direction (Landin et al. 2010; "
+  g.set_attr(layout::kSampleRate, r.sample_rate_hz);
+  g.set_attr(layout::kSamples, static_cast<std::int64_t>(n));
+  g.set_attr(layout::kDuration, double(n) / r.sample_rate_hz);
+  g.set_attr(layout::kLowpassFilterAttr, "butterworth");
+  g.set_attr(layout::kLowpassOrderAttr, kLowpassOrder);
+  g.set_attr(layout::kLowpassCutoffAttr, kLowpassCutoffHz);
+  g.set_attr(layout::kLowpassMethodAttr, "sosfiltfilt, odd padding, default pad length (scipy semantics)");
+  g.set_attr(layout::kAccelReduction, "DFT321 frame by frame, phase along the axes' principal direction (Landin et al. 2010; "
                                 "schemas/hdf5-layout.md)");
-  g.set_attr("accel_reduction_window", std::int64_t(signal::kDft321Frames.window));
-  g.set_attr("accel_reduction_hop", std::int64_t(signal::kDft321Frames.hop));
-  g.set_attr("source_file", r.source_path);
-  g.set_attr("source_sha256", r.source_sha256);
-  if (r.texture) g.set_attr("hatt_texture", *r.texture);
+  g.set_attr(layout::kAccelReductionWindow, std::int64_t(signal::kDft321Frames.window));
+  g.set_attr(layout::kAccelReductionHop, std::int64_t(signal::kDft321Frames.hop));
+  g.set_attr(layout::kSourceFile, r.source_path);
+  g.set_attr(layout::kSourceSha256, r.source_sha256);
+  if (r.texture) g.set_attr(layout::kHattTexture, *r.texture);
   for (const auto& [name, value] : r.source_numbers) g.set_attr(name, value);
   for (const auto& [name, value] : r.source_texts) g.set_attr(name, value);
 

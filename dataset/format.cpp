@@ -57,15 +57,18 @@ std::string read_format(const h5::File& file) {
   }
 }
 
-h5::File open_checked(const std::string& path, Kind kind) {
-  h5::File file = h5::File::open(path);
+namespace {
+
+// Throws unless the open file is of `kind` at this haptex's version.
+void require_kind(const h5::File& file, Kind kind) {
+  const std::string& path = file.path();
   const Format& want = format_of(kind);
   const std::string wanted = format_name(kind);
   const std::string give = "Give the file " + std::string(want.written_by) + " wrote";
   if (!file.root().has_attr(h5::kFormatAttribute))
     throw input_error(path, "/", "no haptex_format attribute: not a " + wanted + " file haptex wrote", give);
   const std::string found = read_format(file);
-  if (found == wanted) return file;
+  if (found == wanted) return;
   if (family_of(found) == want.family) {
     if (is_newer_version(found, wanted)) throw newer_version_error(path, "/@haptex_format", found, wanted);
     if (!want.older.empty())
@@ -75,10 +78,22 @@ h5::File open_checked(const std::string& path, Kind kind) {
   throw input_error(path, "/@haptex_format", "is '" + found + "', not " + wanted, give);
 }
 
+}  // namespace
+
+h5::File open_checked(const std::string& path, Kind kind) {
+  h5::File file = h5::File::open(path);
+  require_kind(file, kind);
+  return file;
+}
+
 OpenedFile open_any(const std::string& path, std::span<const Kind> kinds, const std::string& who, const std::string& fix) {
-  const std::string found = read_format(h5::File::open(path));
+  h5::File file = h5::File::open(path);
+  const std::string found = read_format(file);
   for (const Kind kind : kinds)
-    if (family_of(found) == format_of(kind).family) return {open_checked(path, kind), kind};
+    if (family_of(found) == format_of(kind).family) {
+      require_kind(file, kind);
+      return {std::move(file), kind};
+    }
   throw input_error(path, "/@" + std::string(h5::kFormatAttribute), "is '" + found + "': " + who + " " + format_list(kinds) + " files", fix);
 }
 

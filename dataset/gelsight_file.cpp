@@ -1,64 +1,59 @@
-#include "capture/extraction/gelsight_writer.hpp"
+#include "dataset/gelsight_file.hpp"
 
 #include "core/error.hpp"
 #include "core/naming.hpp"
 #include "dataset/channel_order.hpp"
+#include "dataset/description.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 
-namespace haptex::capture {
-
-namespace layout = dataset::layout;
+namespace haptex::dataset {
 namespace {
 
 void set_press_attributes(h5::Group& g, const GelsightPress& p) {
-  g.set_attr("source_file", p.source_file);
-  g.set_attr("source_sha256", p.source_sha256);
-  g.set_attr("press_in_source", p.press_in_source);
-  g.set_attr("frame_start", p.frame_start);
-  g.set_attr("frame_end", p.frame_end);
-  g.set_attr("samples", std::int64_t(p.contrast.size()));
-  g.set_attr("contact_first", p.contact_first);
-  g.set_attr("contact_last", p.contact_last);
-  g.set_attr("peak_score", double(p.peak_score));
-  g.set_attr("height", std::int64_t(p.peak.rows));
-  g.set_attr("width", std::int64_t(p.peak.cols));
-  g.set_attr(layout::kChannelOrder, dataset::channel_order_name(dataset::kWrittenChannelOrder));
-  if (p.fps > 0) g.set_attr("fps", p.fps);
-  g.set_attr("reference_source", p.reference_note);
-  g.set_attr("score_method", "mean over the grey image averaged in 2, 4 or 8 pixel blocks of max(0, |d - drift(d)| - pixel_threshold), "
+  g.set_attr(layout::kSourceFile, p.source_file);
+  g.set_attr(layout::kSourceSha256, p.source_sha256);
+  g.set_attr(layout::kPressInSource, p.press_in_source);
+  g.set_attr(layout::kFrameStart, p.frame_start);
+  g.set_attr(layout::kFrameEnd, p.frame_end);
+  g.set_attr(layout::kSamples, std::int64_t(p.contrast.size()));
+  g.set_attr(layout::kContactFirst, p.contact_first);
+  g.set_attr(layout::kContactLast, p.contact_last);
+  g.set_attr(layout::kPeakScore, double(p.peak_score));
+  g.set_attr(layout::kHeight, std::int64_t(p.peak.rows));
+  g.set_attr(layout::kWidth, std::int64_t(p.peak.cols));
+  g.set_attr(layout::kChannelOrder, channel_order_name(kWrittenChannelOrder));
+  if (p.fps > 0) g.set_attr(layout::kFps, p.fps);
+  g.set_attr(layout::kReferenceSource, p.reference_note);
+  g.set_attr(layout::kScoreMethod, "mean over the grey image averaged in 2, 4 or 8 pixel blocks of max(0, |d - drift(d)| - pixel_threshold), "
                              "d = frame - reference, drift = the robust least-squares fit of an offset and a multiple of the "
                              "reference (docs/capture.md)");
-  g.set_attr("noise", double(p.noise));
-  g.set_attr("pixel_threshold", double(p.pixel_threshold));
+  g.set_attr(layout::kNoise, double(p.noise));
+  g.set_attr(layout::kPixelThreshold, double(p.pixel_threshold));
   g.set_attr(layout::kNoContactLevel, double(p.level));
-  g.set_attr("trigger", double(p.trigger));
-  g.set_attr("release", double(p.release));
-  if (!p.contact_sheet.empty()) g.set_attr("contact_sheet", p.contact_sheet);
-  g.set_attr("source_frames_unreadable", p.source_frames_unreadable);
+  g.set_attr(layout::kTrigger, double(p.trigger));
+  g.set_attr(layout::kRelease, double(p.release));
+  if (!p.contact_sheet.empty()) g.set_attr(layout::kContactSheet, p.contact_sheet);
+  g.set_attr(layout::kSourceFramesUnreadable, p.source_frames_unreadable);
 }
 
 // The source's bytes when it gave them for every frame, else every frame as PNG (one encoding a dataset).
-std::vector<dataset::EncodedImage> stored_frames(const GelsightPress& p) {
+std::vector<EncodedImage> stored_frames(const GelsightPress& p) {
   if (!p.frames_encoded.empty()) {
     if (p.frames_encoded.size() != p.frames.size()) throw failure("GelsightWriter: frames and their bytes differ in number");
     return p.frames_encoded;
   }
-  std::vector<dataset::EncodedImage> png;
-  for (const cv::Mat& frame : p.frames) png.push_back(dataset::encode_png(frame));
+  std::vector<EncodedImage> png;
+  for (const cv::Mat& frame : p.frames) png.push_back(encode_png(frame));
   return png;
 }
 
-void set_description(h5::Dataset d, const std::string& units, const std::string& description) {
-  if (!units.empty()) d.set_attr("units", units);
-  d.set_attr("description", description);
-}
 
 }  // namespace
 
 GelsightWriter::GelsightWriter(const std::string& path, bool overwrite, const std::string& provenance)
-    : file_(path, overwrite, dataset::format_name(dataset::Kind::gelsight)) {
-  dataset::stamp(file_.root(), dataset::Kind::gelsight, provenance);
+    : file_(path, overwrite, format_name(Kind::gelsight)) {
+  stamp(file_.root(), Kind::gelsight, provenance);
 }
 
 int GelsightWriter::add_press(const std::string& material_name, const GelsightPress& p) {
@@ -70,22 +65,22 @@ int GelsightWriter::add_press(const std::string& material_name, const GelsightPr
   h5::Group materials = file_.root().require_group(layout::kMaterials);
   const bool first = !materials.has_group(id);
   h5::Group material = materials.require_group(id);
-  if (first) material.set_attr("name", material_name);  // the first spelling of a name is kept
+  if (first) material.set_attr(layout::kName, material_name);  // the first spelling of a name is kept
   h5::Group presses = material.require_group(layout::kPresses);
   const int j = int(presses.children().size());
   h5::Group g = presses.create_group(std::to_string(j));
   set_press_attributes(g, p);
-  dataset::write_press_images(g, layout::kReference, {dataset::encode_png(p.reference)},
+  write_press_images(g, layout::kReference, {encode_png(p.reference)},
                               "no-contact reference (" + p.reference_note + ")");
-  dataset::write_press_images(g, layout::kPeak, {p.peak_encoded.empty() ? dataset::encode_png(p.peak) : p.peak_encoded},
+  write_press_images(g, layout::kPeak, {p.peak_encoded.empty() ? encode_png(p.peak) : p.peak_encoded},
                               "the press's highest-scoring frame");
   // A scalar dataset: one number, as h5py users expect (f[...][layout::kPeakIndex][()]).
-  set_description(g.write_array<std::int64_t>(layout::kPeakIndex, std::span<const std::int64_t>(&p.peak_index, 1), {},
+  describe(g.write_array<std::int64_t>(layout::kPeakIndex, std::span<const std::int64_t>(&p.peak_index, 1), {},
                                               h5::DatasetOptions{.compress = false, .gzip_level = 0, .chunk = {}}),
                   "", "frame number of the peak in the source file");
-  dataset::write_press_images(g, layout::kFrames, stored_frames(p), "the peak and its neighbours: consecutive frames of the source");
-  set_description(g.write(layout::kFrameIndices, p.frame_indices), "", "frame numbers of `frames` in the source file");
-  set_description(g.write(layout::kContrast, p.contrast), "grey levels",
+  write_press_images(g, layout::kFrames, stored_frames(p), "the peak and its neighbours: consecutive frames of the source");
+  describe(g.write(layout::kFrameIndices, p.frame_indices), "", "frame numbers of `frames` in the source file");
+  describe(g.write(layout::kContrast, p.contrast), "grey levels",
                   "contact score of each frame from frame_start to frame_end (docs/capture.md)");
   return j;
 }
@@ -93,4 +88,4 @@ int GelsightWriter::add_press(const std::string& material_name, const GelsightPr
 void GelsightWriter::finish() { file_.finish(); }
 void GelsightWriter::commit() { file_.commit(); }
 
-}  // namespace haptex::capture
+}  // namespace haptex::dataset

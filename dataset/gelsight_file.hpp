@@ -1,8 +1,9 @@
 #pragma once
-// The gelsight file (schemas/hdf5-layout.md "GelSight file"): per material and press, the no-contact
-// reference, the peak frame (encoded images, dataset/press_images.hpp) and its index, the 12 frames around the peak, and the contact score of
-// every frame in the press's range, with the source file and frame range as attributes. `haptex align`
-// and the dataset builder read it.
+// The gelsight file's writer (schemas/hdf5-layout.md "GelSight file"; `haptex capture extract` writes
+// it): per material and press, the no-contact reference, the peak frame (encoded images,
+// dataset/press_images.hpp) and its index, the 12 frames around the peak, and the contact score of
+// every frame in the press's range, with the source file and frame range as attributes. align, qa
+// and merge read it through dataset/press_images.hpp and layout.hpp's names.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -13,7 +14,7 @@
 #include "core/h5/atomic_file.hpp"
 #include "dataset/press_images.hpp"
 
-namespace haptex::capture {
+namespace haptex::dataset {
 
 struct GelsightPress {
   std::string source_file, source_sha256;
@@ -27,8 +28,8 @@ struct GelsightPress {
   cv::Mat peak, reference;                          // BGR
   // The source's own JPEG or PNG bytes of `frames` and `peak` (true colours once decoded), stored as
   // they are; empty when the source has none, and then the decoded frames are stored as PNG.
-  std::vector<dataset::EncodedImage> frames_encoded;
-  dataset::EncodedImage peak_encoded;
+  std::vector<EncodedImage> frames_encoded;
+  EncodedImage peak_encoded;
   std::vector<float> contrast;                      // scores of frame_start..frame_end
   double fps = 0;                                   // 0: unknown
   std::string reference_note;
@@ -51,4 +52,4 @@ class GelsightWriter {
   h5::AtomicFile file_;
 };
 
-}  // namespace haptex::capture
+}  // namespace haptex::dataset

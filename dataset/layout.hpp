@@ -14,6 +14,9 @@ inline constexpr const char* kGelsightSha256 = "gelsight_sha256";
 // Every file with materials: /materials/{material}/...
 inline constexpr const char* kMaterials = "materials";
 inline constexpr const char* kName = "name";  // attribute: the material's name as the source spells it
+// Dataset file (align): the material's names in the two files it joined.
+inline constexpr const char* kRecordingsName = "recordings_name";
+inline constexpr const char* kGelsightName = "gelsight_name";
 
 // Recordings file (convert), and the dataset's copy: /materials/{material}/recordings/{k}/...
 inline constexpr const char* kRecordings = "recordings";
@@ -26,6 +29,16 @@ inline constexpr const char* kSpeed = "speed";                        // mm/s, u
 inline constexpr const char* kSpeedLp = "speed_lp";                   // mm/s, low-passed
 inline constexpr const char* kPosition = "position";                  // mm, optional
 inline constexpr const char* kSampleRate = "sample_rate_hz";          // attribute of a recording
+inline constexpr const char* kDuration = "duration_s";                // attribute of a recording
+// A recording's attributes saying how its signals were made (convert's preprocessing).
+inline constexpr const char* kLowpassFilterAttr = "lowpass_filter";
+inline constexpr const char* kLowpassOrderAttr = "lowpass_order";
+inline constexpr const char* kLowpassCutoffAttr = "lowpass_cutoff_hz";
+inline constexpr const char* kLowpassMethodAttr = "lowpass_method";
+inline constexpr const char* kAccelReduction = "accel_reduction";
+inline constexpr const char* kAccelReductionWindow = "accel_reduction_window";
+inline constexpr const char* kAccelReductionHop = "accel_reduction_hop";
+inline constexpr const char* kHattTexture = "hatt_texture";          // the HaTT texture number, when from HaTT
 inline constexpr const char* kSourceSha256 = "source_sha256";         // attribute: the source file's hash
 // Attributes of a recording converted from the Cluster Haptic Texture Database (docs/convert.md):
 // the take's conditions as its file name states them, and its force and position files.
@@ -52,6 +65,54 @@ inline constexpr const char* kChannelOrder = "channel_order"; // attribute of a 
 // Attribute of press files and gelsight presses: the contact score of a no-contact frame, which the
 // trigger is a multiple of (docs/capture.md, "Finding presses"); absent in files from before it.
 inline constexpr const char* kNoContactLevel = "no_contact_level";
+// Attributes of a gelsight press (dataset/gelsight_file.hpp); the press file's share some of them.
+inline constexpr const char* kSourceFile = "source_file";
+inline constexpr const char* kPressInSource = "press_in_source";
+inline constexpr const char* kFrameStart = "frame_start";
+inline constexpr const char* kFrameEnd = "frame_end";
+inline constexpr const char* kSamples = "samples";            // also of a recording
+inline constexpr const char* kContactFirst = "contact_first";
+inline constexpr const char* kContactLast = "contact_last";
+inline constexpr const char* kPeakScore = "peak_score";
+inline constexpr const char* kWidth = "width";
+inline constexpr const char* kHeight = "height";
+inline constexpr const char* kFps = "fps";
+inline constexpr const char* kReferenceSource = "reference_source";
+inline constexpr const char* kScoreMethod = "score_method";
+inline constexpr const char* kNoise = "noise";
+inline constexpr const char* kPixelThreshold = "pixel_threshold";
+inline constexpr const char* kTrigger = "trigger";
+inline constexpr const char* kRelease = "release";
+inline constexpr const char* kContactSheet = "contact_sheet";
+inline constexpr const char* kSourceFramesUnreadable = "source_frames_unreadable";
+
+inline constexpr const char* kPressMaterial = "material";     // the press file's material name
+// Press file (capture record; schemas/hdf5-layout.md "Press file"): root datasets and attributes
+// beyond those a gelsight press shares (frames, reference, contrast, samples, encoding, width,
+// height, fps, contact_first, contact_last, noise, pixel_threshold, trigger, no_contact_level).
+inline constexpr const char* kTimestampNs = "timestamp_ns";
+inline constexpr const char* kSequence = "sequence";
+inline constexpr const char* kFlags = "flags";
+inline constexpr const char* kPressMaterialId = "material_id";
+inline constexpr const char* kPressIndex = "press_index";
+inline constexpr const char* kDevice = "device";
+inline constexpr const char* kCard = "card";
+inline constexpr const char* kDriver = "driver";
+inline constexpr const char* kBusInfo = "bus_info";
+inline constexpr const char* kSerial = "serial";
+inline constexpr const char* kFourcc = "fourcc";
+inline constexpr const char* kRequestedFps = "requested_fps";
+inline constexpr const char* kLockedControls = "locked_controls";
+inline constexpr const char* kMissingControls = "missing_controls";
+inline constexpr const char* kDroppedFrames = "dropped_frames";
+inline constexpr const char* kErrorFrames = "error_frames";
+inline constexpr const char* kCorruptFrames = "corrupt_frames";
+inline constexpr const char* kPeakFrame = "peak_frame";
+inline constexpr const char* kEndedBy = "ended_by";
+
+// Attributes of any dataset haptex writes: what its values mean.
+inline constexpr const char* kUnits = "units";
+inline constexpr const char* kDescription = "description";
 
 // Dataset file (align): the model's windows, /windows/...
 inline constexpr const char* kWindows = "windows";
@@ -85,5 +146,13 @@ inline constexpr const char* kSplitFile = "split_file";
 // which test section each window lies in and the material's test press.
 inline constexpr const char* kWindowSection = "section";
 inline constexpr const char* kWindowPress = "press";
+
+// Predictions file (another method's predictions for `haptex evaluate --predictions`; users write it,
+// python/haptex_data.py's write_predictions for one): /spectra, optional /signals/{k}, timings.
+inline constexpr const char* kPredictedSpectra = "spectra";
+inline constexpr const char* kPredictedSignals = "signals";
+inline constexpr const char* kQuerySeconds = "query_seconds";    // root attribute
+inline constexpr const char* kSignalSeconds = "seconds";         // attribute of /signals
+inline constexpr const char* kPredictionsSource = "source";      // root attribute: the method, one line
 
 }  // namespace haptex::dataset::layout

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/image_header.hpp"
 #include "dataset/channel_order.hpp"
+#include "dataset/description.hpp"
 #include "dataset/decode_image.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/vlen_bytes.hpp"
@@ -85,7 +86,7 @@ h5::Dataset write_press_images(h5::Group& press, const std::string& name, const 
     writer.append(image);
   }
   h5::Dataset& d = writer.dataset();
-  d.set_attr("description", description);
+  describe(d, "", description);
   d.set_attr(layout::kEncoding, encoding);
   d.set_attr(layout::kChannelOrder, channel_order_name(kWrittenChannelOrder));
   return d;

@@ -14,7 +14,7 @@ constexpr const char* kConvertAgain = "Convert the recordings again with haptex 
 std::vector<float> read_signal(const h5::Group& recording, const char* name, const char* units) {
   if (!recording.has_dataset(name)) throw input_error(recording.file(), recording.object_path() + "/" + name, "is missing", kConvertAgain);
   const h5::Dataset d = recording.open_dataset(name);
-  const std::string found = d.has_attr("units") ? d.attr_string("units") : "";
+  const std::string found = d.has_attr(layout::kUnits) ? d.attr_string(layout::kUnits) : "";
   if (found != units) throw input_error(d.file(), d.object_path(), "units are '" + found + "', expected '" + units + "'", kConvertAgain);
   if (d.shape().size() != 1) throw input_error(d.file(), d.object_path(), "is not a 1-D signal", kConvertAgain);
   // float32 as the layout says (schemas/hdf5-layout.md): a float64 value beyond its range would be read as inf.

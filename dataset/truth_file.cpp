@@ -9,6 +9,7 @@
 #include "core/h5/atomic_file.hpp"
 #include "core/naming.hpp"
 #include "core/sha256.hpp"
+#include "dataset/description.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/window.hpp"
@@ -31,25 +32,17 @@ constexpr std::size_t kMostTotalSamples = 50'000'000;
 // ---- writing
 
 void write_grid(h5::Group g, const TruthGrid& grid) {
-  h5::Dataset speeds = g.write("speeds", grid.speeds_mm_s);
-  speeds.set_attr("units", "mm/s");
-  speeds.set_attr("description", "the grid's constant speeds, ascending");
-  h5::Dataset forces = g.write("forces", grid.forces_n);
-  forces.set_attr("units", "N");
-  forces.set_attr("description", "the grid's constant normal forces, ascending");
-  h5::Dataset spectrum =
-      g.write_array<double>("spectrum", grid.spectra, {grid.speeds_mm_s.size(), grid.forces_n.size(), kBins});
-  spectrum.set_attr("units", "m/s^2");
-  spectrum.set_attr("description", "expected single-sided amplitude spectrum 2|X_k|/N of 1000-sample windows, "
-                                   "bins k = 1..100 (10..1000 Hz), noise-free, at each (speed, force)");
+  describe(g.write("speeds", grid.speeds_mm_s), "mm/s", "the grid's constant speeds, ascending");
+  describe(g.write("forces", grid.forces_n), "N", "the grid's constant normal forces, ascending");
+  describe(g.write_array<double>("spectrum", grid.spectra, {grid.speeds_mm_s.size(), grid.forces_n.size(), kBins}), "m/s^2",
+           "expected single-sided amplitude spectrum 2|X_k|/N of 1000-sample windows, bins k = 1..100 (10..1000 Hz), "
+           "noise-free, at each (speed, force)");
 }
 
 // float32 like the recordings file's channels: the action is compared with float32 recordings.
 void write_action(h5::Group g, const char* name, const std::vector<double>& values, const char* units, const char* what) {
-  h5::Dataset d = g.write(name, std::vector<float>(values.begin(), values.end()));
-  d.set_attr("units", units);
-  d.set_attr("description", std::string("noise-free ") + what + " the vibration was rendered along, one value per sample "
-                                                                 "(before the sensors' ripple)");
+  describe(g.write(name, std::vector<float>(values.begin(), values.end())), units,
+           std::string("noise-free ") + what + " the vibration was rendered along, one value per sample (before the sensors' ripple)");
 }
 
 void write_recordings(h5::Group material, const MaterialTruth& m) {

@@ -8,10 +8,13 @@
 #include "core/input_file.hpp"
 #include "core/sha256.hpp"
 #include "core/text/format.hpp"
+#include "dataset/layout.hpp"
 #include "dataset/window.hpp"
 
 namespace haptex::evaluate {
 namespace {
+
+namespace layout = dataset::layout;
 
 constexpr std::size_t kLongestName = 40;
 constexpr const char* kRemake = "Predict again on the grid of `haptex windows DATASET --split SPLIT` (docs/benchmark.md)";
@@ -88,7 +91,7 @@ struct Reader {
   }
 
   std::vector<std::vector<double>> spectra(const h5::Group& root, std::size_t rows) const {
-    const h5::Dataset d = floats(root, "spectra", "/spectra");
+    const h5::Dataset d = floats(root, layout::kPredictedSpectra, std::string("/") + layout::kPredictedSpectra);
     const h5::Shape want{rows, dataset::kTargetBins};
     if (d.shape() != want) {
       const bool other_grid = d.shape().size() == 2 && d.shape()[1] == dataset::kTargetBins;
@@ -116,7 +119,7 @@ struct Reader {
   }
 
   std::vector<std::vector<double>> signals(const h5::Group& root, const std::vector<GridSection>& grid) const {
-    const h5::Group g = root.open_group("signals");
+    const h5::Group g = root.open_group(layout::kPredictedSignals);
     const std::vector<std::string> names = g.children();
     for (const std::string& name : names)
       if (name.empty() || name.size() > 9 || !std::all_of(name.begin(), name.end(), [](char c) { return c >= '0' && c <= '9'; }) ||
@@ -196,13 +199,15 @@ ExternalPredictions read_external_predictions(const PredictionsInput& input, con
   std::size_t windows = 0;
   for (const GridSection& s : grid) windows += s.windows;
   ExternalPredictions p{input.name, input.path, sha256_file(input.path), {}, {}, {}, kNotMeasured, kNotMeasured};
-  if (root.has_attr("source")) p.source = one_line(r.text(root, "source", "/@source"));
-  p.query_seconds = r.seconds(root, "query_seconds", "/@query_seconds");
+  if (root.has_attr(layout::kPredictionsSource))
+    p.source = one_line(r.text(root, layout::kPredictionsSource, std::string("/@") + layout::kPredictionsSource));
+  p.query_seconds = r.seconds(root, layout::kQuerySeconds, std::string("/@") + layout::kQuerySeconds);
   p.spectra = r.spectra(root, windows);
-  if (root.has("signals")) {
-    if (!root.has_group("signals")) throw r.error("/signals", "is not a group");
+  if (root.has(layout::kPredictedSignals)) {
+    if (!root.has_group(layout::kPredictedSignals)) throw r.error(std::string("/") + layout::kPredictedSignals, "is not a group");
     p.signals = r.signals(root, grid);
-    p.signal_seconds = r.seconds(root.open_group("signals"), "seconds", "/signals/@seconds");
+    p.signal_seconds = r.seconds(root.open_group(layout::kPredictedSignals), layout::kSignalSeconds,
+                                 std::string("/") + layout::kPredictedSignals + "/@" + layout::kSignalSeconds);
   }
   return p;
 }

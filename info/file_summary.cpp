@@ -27,15 +27,15 @@ DatasetSummary summarize_dataset(const h5::Dataset& dataset, const std::string& 
 
 ItemSummary summarize_item(const h5::Group& group, const std::string& key) {
   ItemSummary item{key, {}, {}, optional_string(group, "source_file"), {}};
-  if (group.has_attr("sample_rate_hz")) item.sample_rate_hz = group.attr_double("sample_rate_hz");
-  if (group.has_attr("duration_s")) item.duration_s = group.attr_double("duration_s");
+  if (group.has_attr(dataset::layout::kSampleRate)) item.sample_rate_hz = group.attr_double(dataset::layout::kSampleRate);
+  if (group.has_attr(dataset::layout::kDuration)) item.duration_s = group.attr_double(dataset::layout::kDuration);
   for (const std::string& child : group.children())
     if (group.has_dataset(child)) item.datasets.push_back(summarize_dataset(group.open_dataset(child), child));
   return item;
 }
 
 MaterialSummary summarize_material(const h5::Group& group, const std::string& id) {
-  MaterialSummary material{id, group.has_attr("name") ? group.attr_string("name") : id, {}};
+  MaterialSummary material{id, group.has_attr(dataset::layout::kName) ? group.attr_string(dataset::layout::kName) : id, {}};
   for (const std::string& collection_name : group.children()) {
     if (!group.has_group(collection_name)) continue;
     const h5::Group collection = group.open_group(collection_name);

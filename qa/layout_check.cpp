@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "dataset/layout.hpp"
 #include "qa/checkers.hpp"
 #include "qa/h5_inspect.hpp"
 #include "qa/layout_spec.hpp"
@@ -76,9 +77,9 @@ FoundObject find_dataset(const h5::Group& root, const LayoutRow& row, const std:
   const h5::Dataset d = open_dataset_at(root, path);
   f.present = true;
   f.dtype = d.dtype();
-  if (!row.units.empty() && d.has_attr("units")) {
+  if (!row.units.empty() && d.has_attr(dataset::layout::kUnits)) {
     try {
-      f.units = d.attr_string("units");
+      f.units = d.attr_string(dataset::layout::kUnits);
     } catch (const Error&) {
       f.units = "(not a string)";
     }

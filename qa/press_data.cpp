@@ -56,11 +56,11 @@ std::optional<cv::Mat> read_single(const h5::Group& press, const std::string& na
 // layout.* reports a missing or mistyped attribute; source_damage skips the press then.
 void read_source_frames_unreadable(const h5::Group& g, Press& p) {
   try {
-    if (!g.has_attr("source_frames_unreadable")) {
+    if (!g.has_attr(layout::kSourceFramesUnreadable)) {
       p.source_frames_problem = p.path + ": no source_frames_unreadable attribute";
       return;
     }
-    p.source_frames_unreadable = g.attr_int("source_frames_unreadable");
+    p.source_frames_unreadable = g.attr_int(layout::kSourceFramesUnreadable);
   } catch (const Error&) {
     p.source_frames_problem = p.path + "/@source_frames_unreadable is not an integer";
   }
@@ -70,8 +70,8 @@ Press summarize_press(const h5::Group& g, std::string path, std::string material
   Press p;
   p.path = std::move(path);
   p.material = std::move(material);
-  p.trigger = g.try_attr<double>("trigger");
-  p.pixel_threshold = g.try_attr<double>("pixel_threshold");
+  p.trigger = g.try_attr<double>(layout::kTrigger);
+  p.pixel_threshold = g.try_attr<double>(layout::kPixelThreshold);
   // Images in an order qa cannot read are not judged: gelsight.channel_order reports the press.
   try {
     for (const char* image : {layout::kReference, layout::kPeak, layout::kFrames}) dataset::read_channel_order(g, image);
@@ -109,7 +109,7 @@ Press summarize_press(const h5::Group& g, std::string path, std::string material
     p.images.push_back({p.path + "/frames[" + std::to_string(i) + "]", frames[i].size(), 0, 0});
   }
   // Encoded images carry their size inside; the press's attributes state it for the layout.
-  const std::optional<double> width = g.try_attr<double>("width"), height = g.try_attr<double>("height");
+  const std::optional<double> width = g.try_attr<double>(layout::kWidth), height = g.try_attr<double>(layout::kHeight);
   const auto pixels = [](double v) { return v >= 0 && v < 1e6 ? int(v) : -1; };  // NaN or absurd: no size
   if (!sizes.empty() && width && height) sizes.push_back(cv::Size(pixels(*width), pixels(*height)));
   p.sizes_agree = !sizes.empty() && std::all_of(sizes.begin(), sizes.end(), [&](cv::Size s) { return s == sizes.front(); });

@@ -77,10 +77,10 @@ LoadedRecording load_recording(const h5::Group& root, const std::string& path) {
   LoadedRecording r;
   r.path = path;
   r.material = material_of(path);
-  r.sample_rate_hz = group.try_attr<double>("sample_rate_hz");
-  r.duration_s = group.try_attr<double>("duration_s");
-  r.samples = group.try_attr<std::int64_t>("samples");
-  r.source_sha256 = group.try_attr<std::string>("source_sha256");
+  r.sample_rate_hz = group.try_attr<double>(layout::kSampleRate);
+  r.duration_s = group.try_attr<double>(layout::kDuration);
+  r.samples = group.try_attr<std::int64_t>(layout::kSamples);
+  r.source_sha256 = group.try_attr<std::string>(layout::kSourceSha256);
   // Rows: the recording's `samples`; without it, whatever `accel` has (layout.required reports it).
   std::optional<std::size_t> rows;
   if (r.samples && *r.samples >= 0) rows = std::size_t(*r.samples);

@@ -55,9 +55,9 @@ std::optional<WindowTable> load_window_table(const h5::Group& root, std::string&
     problem = "/windows/material, recording and start differ in length";
     return std::nullopt;
   }
-  const auto stride = windows.try_attr<std::int64_t>("stride"), action = windows.try_attr<std::int64_t>("action_samples"),
-             window = windows.try_attr<std::int64_t>("window_samples"), action_end = windows.try_attr<std::int64_t>("action_end"),
-             action_step = windows.try_attr<std::int64_t>("action_step");
+  const auto stride = windows.try_attr<std::int64_t>(layout::kStride), action = windows.try_attr<std::int64_t>(layout::kActionSamplesAttr),
+             window = windows.try_attr<std::int64_t>(layout::kWindowSamplesAttr), action_end = windows.try_attr<std::int64_t>(layout::kActionEndAttr),
+             action_step = windows.try_attr<std::int64_t>(layout::kActionStepAttr);
   if (!stride || !action || !window || !action_end || !action_step || *stride <= 0 || *action <= 0 || *window <= 0 ||
       *action_step <= 0 || *action > *window || *action_step > *window || (*action - 1) > *action_end / *action_step ||
       *action_end >= *window) {
@@ -81,7 +81,7 @@ std::optional<std::int64_t> recording_samples(const h5::Group& root, const std::
     return std::nullopt;
   const h5::Group m = root.open_group(layout::kMaterials).open_group(material);
   if (!m.has_group(layout::kRecordings) || !m.open_group(layout::kRecordings).has_group(std::to_string(recording))) return std::nullopt;
-  return m.open_group(layout::kRecordings).open_group(std::to_string(recording)).try_attr<std::int64_t>("samples");
+  return m.open_group(layout::kRecordings).open_group(std::to_string(recording)).try_attr<std::int64_t>(layout::kSamples);
 }
 
 }  // namespace haptex::qa

@@ -5,6 +5,7 @@
 #include "core/h5/file.hpp"
 #include "core/sha256.hpp"
 #include "core/version.hpp"
+#include "dataset/layout.hpp"
 
 namespace haptex::split {
 namespace {
@@ -34,8 +35,8 @@ nlohmann::json manifest_json(const std::string& dataset_path, const SplitOptions
           {"created_utc", h5::utc_now_iso8601()},
           {"source", source},
           {"dataset", {{"path", dataset_path}, {"sha256", sha256_file(dataset_path)},
-                       {"recordings_sha256", root.attr_string("recordings_sha256")},
-                       {"gelsight_sha256", root.attr_string("gelsight_sha256")}}},
+                       {"recordings_sha256", root.attr_string(dataset::layout::kRecordingsSha256)},
+                       {"gelsight_sha256", root.attr_string(dataset::layout::kGelsightSha256)}}},
           {"parameters", {{"sections", o.sections}, {"val", o.val}, {"test", o.test}, {"seed", o.seed},
                           {"min_coverage", o.min_coverage}, {"tries", o.tries}}},
           {"materials", list},

@@ -38,9 +38,9 @@ MaterialSets assign(const MaterialWindows& windows, const SplitMaterial& listed,
 
 }  // namespace
 
-DatasetSplit read_dataset_split(const std::string& dataset_path, const std::string& manifest_path) {
+DatasetSplit read_dataset_split(const std::string& dataset_path, const SplitManifestDocument& document) {
+  const std::string& manifest_path = document.path;
   h5::File::open(dataset_path);  // a damaged dataset is named as such, not as "another dataset" by its hash
-  const SplitManifestDocument document = read_split_manifest(manifest_path);
   json::validate(document.json, "split.schema.json", manifest_path);
   const SplitManifest manifest = parse_split_manifest(document.json);
   DatasetSplit out{dataset_path, manifest_path, sha256_file(dataset_path), sha256_file(manifest_path),

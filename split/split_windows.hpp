@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "split/manifest_reader.hpp"
+
 namespace haptex::split {
 
 enum : std::size_t { kTrain = 0, kVal = 1, kTest = 2 };
@@ -28,6 +30,6 @@ struct DatasetSplit {
 // Throws haptex::Error (bad_input) naming the file when the manifest does not satisfy
 // split.schema.json, was made from another dataset (hash mismatch), or names other materials than
 // the dataset holds.
-DatasetSplit read_dataset_split(const std::string& dataset_path, const std::string& manifest_path);
+DatasetSplit read_dataset_split(const std::string& dataset_path, const SplitManifestDocument& manifest);
 
 }  // namespace haptex::split

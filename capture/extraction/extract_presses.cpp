@@ -10,7 +10,7 @@
 
 #include "capture/extraction/capture_inputs.hpp"
 #include "capture/extraction/contact_sheet.hpp"
-#include "capture/extraction/gelsight_writer.hpp"
+#include "dataset/gelsight_file.hpp"
 #include "capture/extraction/score_chart.hpp"
 #include "capture/scoring/contact_score.hpp"
 #include "capture/storage/video_file.hpp"
@@ -194,7 +194,7 @@ class Extraction {
   void write_press(const std::string& material, const FrameSource& source, const SourceScores& scores,
                    const std::string& sha, const PressPlan& plan, PressFrames frames) {
     const ContactReference& contact = *scores.contact;
-    GelsightPress p;
+    dataset::GelsightPress p;
     p.source_file = source.path();
     p.source_sha256 = sha;
     p.press_in_source = plan.press_in_source;
@@ -259,7 +259,7 @@ class Extraction {
   std::string output_;
   const ExtractOptions& options_;
   ExtractSettings settings_;
-  GelsightWriter writer_;
+  dataset::GelsightWriter writer_;
   std::unique_ptr<PartialDirectory> sheets_, explain_;
   std::set<std::string> explain_names_;
   ExtractResult result_;

@@ -21,15 +21,15 @@ class PressFileSource : public FrameSource {
  public:
   explicit PressFileSource(const std::string& path) : frames_(path) {
     const h5::Group root = frames_.root();
-    material_ = root.attr_string("material");
+    material_ = root.attr_string(layout::kPressMaterial);
     // The press's order covers its decoded frames too: a file whose frames hold B, G, R says BGR.
     order_ = dataset::read_channel_order(root, layout::kReference);
     reference_.image = read_image(root, layout::kReference);
     if (reference_.image.size() != frames_.size())
       throw input_error(frames_.path(), "/reference", "the reference is not the frame size", "Record the press again");
-    reference_.noise = float(root.attr_double("noise"));
-    reference_.pixel_threshold = float(root.attr_double("pixel_threshold"));
-    reference_.trigger = float(root.attr_double("trigger"));
+    reference_.noise = float(root.attr_double(layout::kNoise));
+    reference_.pixel_threshold = float(root.attr_double(layout::kPixelThreshold));
+    reference_.trigger = float(root.attr_double(layout::kTrigger));
     if (root.has_attr(layout::kNoContactLevel)) reference_.level = float(root.attr_double(layout::kNoContactLevel));
   }
 

@@ -10,26 +10,19 @@
 #include "capture/storage/image_datasets.hpp"
 #include "core/naming.hpp"
 #include "dataset/channel_order.hpp"
+#include "dataset/description.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 
 namespace haptex::capture {
 
 namespace layout = dataset::layout;
-namespace {
-
-void describe(h5::Dataset dataset, const std::string& units, const std::string& description) {
-  if (!units.empty()) dataset.set_attr("units", units);
-  dataset.set_attr("description", description);
-}
-
-}  // namespace
 
 PressFileWriter::PressFileWriter(const std::string& path, const PressFileInfo& info, const cv::Mat& reference)
     : info_(info), file_(std::make_unique<h5::AtomicFile>(path, false)), drops_(1e9 / info.fps) {
   h5::Group root = file_->root();
   frames_ = std::make_unique<dataset::VlenBytesWriter>(root, layout::kFrames);
-  describe(frames_->dataset(), "",
+  dataset::describe(frames_->dataset(), "",
            info.fourcc == V4L2_PIX_FMT_MJPEG ? "one JPEG per frame, the bytes the sensor sent (MJPG), not re-encoded"
                                              : "one lossless PNG per frame, converted from the sensor's " + fourcc_text(info.fourcc));
   write_image(root, layout::kReference, reference, "no-contact reference: mean of the frames taken before the presses");
@@ -72,41 +65,41 @@ PressFileSummary PressFileWriter::finish(const std::string& ended_by) {
   summary_.dropped_frames = drops_.dropped();
   summary_.ended_by = ended_by;
   h5::Group root = file_->root();
-  describe(root.write("timestamp_ns", timestamps_), "ns", "CLOCK_MONOTONIC time the driver stamped on each frame");
-  describe(root.write("sequence", sequences_), "", "the driver's frame counter; a gap is a lost frame");
-  describe(root.write("flags", flags_), "", "V4L2_BUF_FLAG_* of each frame's buffer");
-  describe(root.write(layout::kContrast, scores_), "grey levels",
+  dataset::describe(root.write(layout::kTimestampNs, timestamps_), "ns", "CLOCK_MONOTONIC time the driver stamped on each frame");
+  dataset::describe(root.write(layout::kSequence, sequences_), "", "the driver's frame counter; a gap is a lost frame");
+  dataset::describe(root.write(layout::kFlags, flags_), "", "V4L2_BUF_FLAG_* of each frame's buffer");
+  dataset::describe(root.write(layout::kContrast, scores_), "grey levels",
            "live contact score (docs/capture.md); NaN where the frame did not decode");
   dataset::stamp(root, dataset::Kind::press, info_.provenance);
-  root.set_attr("samples", std::int64_t(summary_.frames));
-  root.set_attr("material", info_.material);
-  root.set_attr("material_id", material_id(info_.material));
-  root.set_attr("press_index", info_.press_index);
-  root.set_attr("device", info_.device);
-  root.set_attr("card", info_.card);
-  root.set_attr("driver", info_.driver);
-  root.set_attr("bus_info", info_.bus_info);
-  root.set_attr("serial", info_.serial);
-  root.set_attr("fourcc", fourcc_text(info_.fourcc));
-  root.set_attr("encoding", info_.fourcc == V4L2_PIX_FMT_MJPEG ? "jpeg" : "png");
+  root.set_attr(layout::kSamples, std::int64_t(summary_.frames));
+  root.set_attr(layout::kPressMaterial, info_.material);
+  root.set_attr(layout::kPressMaterialId, material_id(info_.material));
+  root.set_attr(layout::kPressIndex, info_.press_index);
+  root.set_attr(layout::kDevice, info_.device);
+  root.set_attr(layout::kCard, info_.card);
+  root.set_attr(layout::kDriver, info_.driver);
+  root.set_attr(layout::kBusInfo, info_.bus_info);
+  root.set_attr(layout::kSerial, info_.serial);
+  root.set_attr(layout::kFourcc, fourcc_text(info_.fourcc));
+  root.set_attr(layout::kEncoding, info_.fourcc == V4L2_PIX_FMT_MJPEG ? "jpeg" : "png");
   // JPEG and PNG decode to R, G, B; the reference is written RGB (storage/image_datasets.hpp).
   root.set_attr(layout::kChannelOrder, dataset::channel_order_name(dataset::kWrittenChannelOrder));
-  root.set_attr("width", info_.width);
-  root.set_attr("height", info_.height);
-  root.set_attr("fps", info_.fps);
-  root.set_attr("requested_fps", info_.requested_fps);
-  root.set_attr("locked_controls", info_.locked_controls);
-  root.set_attr("missing_controls", info_.missing_controls);
-  root.set_attr("dropped_frames", std::int64_t(summary_.dropped_frames));
-  root.set_attr("error_frames", std::int64_t(summary_.error_frames));
-  root.set_attr("corrupt_frames", std::int64_t(summary_.corrupt_frames));
-  root.set_attr("contact_first", summary_.contact_first);
-  root.set_attr("contact_last", summary_.contact_last);
-  root.set_attr("peak_frame", summary_.peak);
-  root.set_attr("ended_by", ended_by);
-  root.set_attr("noise", double(info_.noise));
-  root.set_attr("pixel_threshold", double(info_.pixel_threshold));
-  root.set_attr("trigger", double(info_.trigger));
+  root.set_attr(layout::kWidth, info_.width);
+  root.set_attr(layout::kHeight, info_.height);
+  root.set_attr(layout::kFps, info_.fps);
+  root.set_attr(layout::kRequestedFps, info_.requested_fps);
+  root.set_attr(layout::kLockedControls, info_.locked_controls);
+  root.set_attr(layout::kMissingControls, info_.missing_controls);
+  root.set_attr(layout::kDroppedFrames, std::int64_t(summary_.dropped_frames));
+  root.set_attr(layout::kErrorFrames, std::int64_t(summary_.error_frames));
+  root.set_attr(layout::kCorruptFrames, std::int64_t(summary_.corrupt_frames));
+  root.set_attr(layout::kContactFirst, summary_.contact_first);
+  root.set_attr(layout::kContactLast, summary_.contact_last);
+  root.set_attr(layout::kPeakFrame, summary_.peak);
+  root.set_attr(layout::kEndedBy, ended_by);
+  root.set_attr(layout::kNoise, double(info_.noise));
+  root.set_attr(layout::kPixelThreshold, double(info_.pixel_threshold));
+  root.set_attr(layout::kTrigger, double(info_.trigger));
   root.set_attr(layout::kNoContactLevel, double(info_.level));
   frames_.reset();
   file_->commit();

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "dataset/channel_order.hpp"
+#include "dataset/description.hpp"
 #include "dataset/layout.hpp"
 
 namespace haptex::capture {
@@ -27,7 +28,7 @@ h5::Dataset write_image(h5::Group& group, const std::string& name, const cv::Mat
   if (!rgb.isContinuous()) rgb = rgb.clone();
   h5::Dataset d = group.write_array<std::uint8_t>(name, std::span<const std::uint8_t>(rgb.data, rgb.total() * 3),
                                                   {hsize_t(bgr.rows), hsize_t(bgr.cols), 3}, one_chunk(bgr));
-  d.set_attr("description", description);
+  dataset::describe(d, "", description);
   d.set_attr(dataset::layout::kChannelOrder, dataset::channel_order_name(dataset::kWrittenChannelOrder));
   return d;
 }

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
-#include "capture/extraction/gelsight_writer.hpp"
+#include "dataset/gelsight_file.hpp"
 #include "capture/scoring/contact_score.hpp"
 #include "capture/scoring/scoring_image.hpp"
 #include "qa/run_qa.hpp"
@@ -24,9 +24,9 @@ std::string gelsight_file(const TempDir& dir, const std::string& material, const
   const cv::Mat reference = cv::imread(reference_path.string(), cv::IMREAD_COLOR);
   const auto contact = capture::ContactReference::from_image(capture::scoring_image(reference));
   const std::string out = dir.file(material + ".h5");
-  capture::GelsightWriter writer(out, false, "qa real-capture test");
+  dataset::GelsightWriter writer(out, false, "qa real-capture test");
   for (const auto& path : presses) {
-    capture::GelsightPress p;
+    dataset::GelsightPress p;
     p.source_file = path.string();
     p.source_sha256 = std::string(64, '0');
     p.reference = reference;

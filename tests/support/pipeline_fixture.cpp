@@ -4,15 +4,15 @@
 #include <opencv2/imgproc.hpp>
 
 #include "align/align_dataset.hpp"
-#include "capture/extraction/gelsight_writer.hpp"
+#include "dataset/gelsight_file.hpp"
 #include "convert/convert_recordings.hpp"
 #include "tests/support/sample_recording.hpp"
 
 namespace haptex::test {
 namespace {
 
-capture::GelsightPress tiny_press(int size, int seed) {
-  capture::GelsightPress p;
+dataset::GelsightPress tiny_press(int size, int seed) {
+  dataset::GelsightPress p;
   p.source_file = "press.mkv";
   p.source_sha256 = std::string(64, 'a');
   p.reference = cv::Mat(size, size, CV_8UC3, cv::Scalar(100, 110, 120));
@@ -45,7 +45,7 @@ void make_pipeline_inputs(PipelineFiles& in, const PipelineSpec& spec) {
   xml("sand.xml", "Sandpaper_100", 3);
   xml("felt.xml", "Felt", 4);
   convert::convert_recordings({in.dir.file("xml")}, in.recordings, {});
-  capture::GelsightWriter writer(in.gelsight, false, "test");
+  dataset::GelsightWriter writer(in.gelsight, false, "test");
   for (int j = 0; j < 5; ++j) {
     writer.add_press("Book", tiny_press(j == 4 && spec.odd_press_size ? spec.odd_press_size : 32, j));
     writer.add_press("sandpaper 100", tiny_press(32, j));

@@ -13,7 +13,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "capture/extraction/gelsight_writer.hpp"
+#include "dataset/gelsight_file.hpp"
 #include "capture/scoring/contact_score.hpp"
 #include "capture/scoring/scoring_image.hpp"
 #include "core/h5/file.hpp"
@@ -40,7 +40,7 @@ void run_or_fail(const std::vector<std::string>& args) {
 // every frame, the peak and the 12 highest-scoring consecutive frames around it. The pixel threshold
 // is 4 x the frames' noise without capture's 6-grey-level floor, which is meant for full-size frames:
 // 160 x 120 frames are not averaged down before scoring.
-capture::GelsightPress press_from_video(const fs::path& video) {
+dataset::GelsightPress press_from_video(const fs::path& video) {
   std::vector<cv::Mat> frames, scoring;
   for (cv::Mat& frame : read_press_frames(video.string())) {
     frames.push_back(frame);
@@ -52,7 +52,7 @@ capture::GelsightPress press_from_video(const fs::path& video) {
   settings.pixel_threshold = 0.0f;
   const auto contact = capture::ContactReference::from_frames(
       std::vector<cv::Mat>(scoring.begin(), scoring.begin() + kReferenceFrames), settings);
-  capture::GelsightPress p;
+  dataset::GelsightPress p;
   cv::Mat sum = cv::Mat::zeros(frames.front().size(), CV_64FC3);
   for (int i = 0; i < kReferenceFrames; ++i) cv::accumulate(frames[std::size_t(i)], sum);
   sum.convertTo(p.reference, CV_8UC3, 1.0 / kReferenceFrames);
@@ -82,7 +82,7 @@ capture::GelsightPress press_from_video(const fs::path& video) {
 
 // Every material folder's press videos, in press order, into a gelsight file.
 void write_gelsight(const fs::path& synth_gelsight, const std::string& output) {
-  capture::GelsightWriter writer(output, false, "test fixture: synth press frames scored as capture extract does");
+  dataset::GelsightWriter writer(output, false, "test fixture: synth press frames scored as capture extract does");
   std::vector<fs::path> materials;
   for (const auto& m : fs::directory_iterator(synth_gelsight))
     if (m.is_directory()) materials.push_back(m.path());
