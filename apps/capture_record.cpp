@@ -41,10 +41,15 @@ class StopOnSignal {
     sigemptyset(&action.sa_mask);
     // TERM and HUP may come twice (timeout forwards them, a closing terminal repeats them): they keep
     // asking to stop. Only a second Ctrl-C kills, as a user expects.
-    sigaction(SIGTERM, &action, &old_term_);
-    sigaction(SIGHUP, &action, &old_hup_);
+    take(SIGTERM, action, old_term_);
+    take(SIGHUP, action, old_hup_);
     action.sa_flags = SA_RESETHAND;
-    sigaction(SIGINT, &action, &old_int_);
+    take(SIGINT, action, old_int_);
+  }
+  // A signal ignored when haptex started (nohup's HUP, a background job's INT) stays ignored.
+  static void take(int signal, const struct sigaction& action, struct sigaction& old) {
+    sigaction(signal, nullptr, &old);
+    if (old.sa_handler != SIG_IGN) sigaction(signal, &action, nullptr);
   }
   ~StopOnSignal() {
     sigaction(SIGINT, &old_int_, nullptr);

@@ -1,3 +1,5 @@
+#include <cerrno>
+#include <cstdio>
 #include <filesystem>
 #include <regex>
 #include <iostream>
@@ -6,6 +8,7 @@
 #include "apps/number_checks.hpp"
 #include "apps/printable_stream.hpp"
 #include "apps/provenance.hpp"
+#include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/freed_memory.hpp"
 #include "core/temporary_name.hpp"
@@ -67,6 +70,17 @@ std::string shown_message(const std::string& message, int argc, char** argv) {
   return text::printable(shown, true);
 }
 
+// What a command printed on stdout (predict's CSV, --json, info) is an output too: a full disk or a
+// closed file under a redirection is exit 1 saying so, not a cut-off file and exit 0.
+int with_stdout_written(const std::string& command, int code) {
+  errno = 0;
+  std::cout.flush();
+  if (!std::cout.fail() && std::fflush(stdout) == 0 && !std::ferror(stdout)) return code;
+  std::cerr << "haptex " << command << ": error: standard output: cannot write it: " << why_not_written(errno != 0 ? errno : EIO)
+            << ". What was printed is incomplete: free space, or send the output elsewhere\n";
+  return 1;
+}
+
 }  // namespace
 
 int run_main(int argc, char** argv) {
@@ -110,7 +124,7 @@ int run_main(int argc, char** argv) {
     if (!command->ends_on_signals_itself()) remove_temporaries_on_signals();  // before any thread is made
     try {
       check_option_values(*sub);
-      return command->run(global);
+      return with_stdout_written(command->name(), command->run(global));
     } catch (const Error& e) {
       std::cerr << "haptex " << command->name() << ": error: " << shown_message(e.what(), argc, argv) << "\n";
       return e.kind() == Error::Kind::bad_input ? 2 : 1;

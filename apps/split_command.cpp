@@ -8,6 +8,7 @@
 #include "apps/output_options.hpp"
 #include "apps/command.hpp"
 #include "core/durable_file.hpp"
+#include "core/temporary_name.hpp"
 #include "core/error.hpp"
 #include "core/owned_folder.hpp"
 #include "core/partial_directory.hpp"
@@ -61,9 +62,12 @@ class SplitCommand : public Command {
     PartialFile manifest_file(output_, force_);
     json::write_file(manifest, "split.schema.json", manifest_file);
     if (plots_dir) plots_dir->finish();
-    manifest_file.commit();
-    if (plots_dir) plots_dir->commit();
-    else if (force_) remove_earlier_plots();
+    {
+      const auto together = hold_temporaries();
+      manifest_file.commit();
+      if (plots_dir) plots_dir->commit();
+    }
+    if (!plots_dir && force_) remove_earlier_plots();
     if (global.json) {
       std::cout << json::read_file(output_).dump(2) << "\n";
       return 0;

@@ -15,6 +15,7 @@
 #include "core/h5/atomic_file.hpp"
 #include "core/output_is_input.hpp"
 #include "core/durable_file.hpp"
+#include "core/temporary_name.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
@@ -102,12 +103,16 @@ class TrainCommand : public Command {
                                 {"split", {{"path", input_.split}, {"sha256", split.manifest_sha256}}},
                                 {"options", options_.to_json()}, {"epochs", epochs}, {"metrics", model.metrics},
                                 {"parameters", parameters(model)}, {"seconds", seconds}};
+    json::check_replaceable_json(log_, force_, predict::kTrainingLogFormat);  // again: a file may have appeared there meanwhile
     PartialFile log_file(log_, force_);
     json::write_file(log, "training-log.schema.json", log_file);
     model_file.finish();
     log_file.finish();
-    model_file.commit();
-    log_file.commit();
+    {
+      const auto together = hold_temporaries();
+      model_file.commit();
+      log_file.commit();
+    }
     if (global.json)
       std::cout << log.dump(2) << "\n";
     else if (!global.quiet)

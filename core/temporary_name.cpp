@@ -93,10 +93,15 @@ std::set<std::string>& listed() {
   return paths;
 }
 
+// The ending signals this process was not told to ignore: `nohup` (HUP) and a shell's `cmd &` (INT)
+// start it with them ignored, and it must then go on as they meant.
 sigset_t ending_signals() {
   sigset_t set;
   sigemptyset(&set);
-  for (const int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, s);
+  for (const int s : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction now {};
+    if (sigaction(s, nullptr, &now) == 0 && now.sa_handler != SIG_IGN) sigaddset(&set, s);
+  }
   return set;
 }
 
@@ -187,6 +192,8 @@ std::vector<std::string> temporaries_of(const std::string& final_path) {
       found.push_back((fs::path(final_path).parent_path() / it->path().filename()).string());
   return found;
 }
+
+std::unique_lock<std::mutex> hold_temporaries() { return std::unique_lock<std::mutex>(listed_lock()); }
 
 void forget_temporary(const std::string& path) {
   const std::lock_guard<std::mutex> lock(listed_lock());

@@ -6,6 +6,7 @@
 // an input of that name is never touched, and a killed run's leftover is never mistaken for the
 // current one; haptex does not delete leftovers either (it cannot tell them from files of the user's).
 // Two runs writing the same NAME find each other through these locks: the later one refuses.
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -40,9 +41,15 @@ void forget_temporary(const std::string& path);
 // every listed temporary, say so on stderr, then end the process by the same signal, as it would
 // have ended without haptex's help. Call it at the start of main, before any thread is made: the
 // signals are blocked in every thread and taken by one that waits for them (sigwait), so the removal
-// runs outside a signal handler, and no temporary is created while it runs. Child processes start
+// runs outside a signal handler, and no temporary is created while it runs. A signal ignored when
+// the process started (nohup's HUP, a background job's INT) stays ignored. Child processes start
 // with them unblocked (core/process/run_program.hpp). A command that ends on these signals itself
 // (capture record keeps the press in progress) does not call it.
 void remove_temporaries_on_signals();
+
+// Held while outputs that belong together are renamed one after another: a signal taken meanwhile
+// waits until every one is in place (the run then ends by it, its outputs whole). Nothing that makes
+// or forgets a temporary (creating a PartialFile, destroying one) may run while it is held.
+[[nodiscard]] std::unique_lock<std::mutex> hold_temporaries();
 
 }  // namespace haptex

@@ -109,7 +109,15 @@ cv::Mat read_press_image(const h5::Group& press, const std::string& name) { retu
 
 void require_whole_press_images(const h5::Group& press, const std::string& name) {
   const h5::Dataset d = open_images(press, name);
-  for (std::size_t i = 0; i < d.shape()[0]; ++i) require_whole(d, i, read_vlen_bytes(d, i), std::nullopt);
+  const std::string label = d.has_attr(layout::kEncoding) ? d.attr_string(layout::kEncoding) : "";
+  const std::optional<cv::Size> stated = size_stated_by(press);
+  for (std::size_t i = 0; i < d.shape()[0]; ++i) {
+    const EncodedImage bytes = read_vlen_bytes(d, i);
+    if (!label.empty() && image_format(bytes) != label)
+      throw bad_image(d, i, "is " + (image_format(bytes).empty() ? std::string("no image") : "a " + image_format(bytes)) +
+                                ", but the dataset's encoding says " + label);
+    require_whole(d, i, bytes, stated);
+  }
 }
 
 }  // namespace haptex::dataset

@@ -34,9 +34,11 @@ h5::Dataset write_press_images(h5::Group& press, const std::string& name, const 
 std::vector<cv::Mat> read_press_images(const h5::Group& press, const std::string& name, bool stated_size = true);
 // The one image of a dataset that holds one (`reference`, `peak`).
 cv::Mat read_press_image(const h5::Group& press, const std::string& name);
-// Throws as read_press_images does for everything short of decoding: each image is a JPEG or PNG
-// with a readable header of at most 64 megapixels, and whole (every PNG chunk's CRC holds, each JPEG
-// ends with its end marker). No pixel is decoded, so merge and align afford it on every image they copy.
+// Throws as read_press_images does for everything short of decoding: each image is a JPEG or PNG as
+// the dataset's `encoding` says, with a readable header stating the press's width and height (at
+// most 64 megapixels), and whole (every PNG chunk's CRC holds, each JPEG ends with its end marker).
+// No pixel is decoded, so merge and align afford it on every image they copy; a JPEG damaged inside
+// but closed with its end marker is not found (OpenCV's own encoder closes whole frames the same way).
 void require_whole_press_images(const h5::Group& press, const std::string& name);
 
 }  // namespace haptex::dataset

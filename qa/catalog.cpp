@@ -81,7 +81,7 @@ const std::vector<CheckInfo>& all_checks() {
        "every press states its images' channel order as RGB or BGR (`channel_order`), and its image datasets agree",
        "Set the press's channel_order to the order of its stored pixels (haptex writes RGB); its images are not judged until then"},
       {"gelsight.images", error,
-       "every stored image (reference, peak, frames) is a JPEG or PNG with a readable header, whole: each PNG chunk's CRC holds, each JPEG ends",
+       "every stored image (reference, peak, frames) is a JPEG or PNG as its dataset's encoding says, its header stating the press's width and height, whole: each PNG chunk's CRC holds, each JPEG ends",
        "Extract the press again from its video (haptex capture extract); a damaged image is not judged by the other checks"},
       // dataset
       {"dataset.windows", error,

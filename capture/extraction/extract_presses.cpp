@@ -23,6 +23,7 @@
 #include "core/sha256.hpp"
 #include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
+#include "core/temporary_name.hpp"
 #include "dataset/decode_image.hpp"
 
 namespace haptex::capture {
@@ -152,6 +153,7 @@ class Extraction {
     writer_.finish();
     if (explain_) explain_->finish();
     if (sheets_) sheets_->finish();
+    const auto together = hold_temporaries();
     writer_.commit();
     commit_explain();
     if (sheets_) {

@@ -3,6 +3,8 @@
 // which needs the right to mount (root with CAP_SYS_ADMIN, as on the CI machine); the test skips
 // without it.
 #include <gtest/gtest.h>
+#include <unistd.h>
+#include <sys/wait.h>
 #include <sys/mount.h>
 
 #include <filesystem>
@@ -104,6 +106,34 @@ TEST(DiskFull, EveryCommandSaysSoAndLeavesNothing) {
       expect_disk_full(r, disk.file(c.output));
       EXPECT_EQ(disk.listing(), std::vector<std::string>{});
     }
+  }
+}
+
+// Review 3: what a command prints on stdout is an output too. On a full disk (/dev/full) it was cut
+// short with exit 0; now the run exits 1 saying so.
+TEST(DiskFull, OutputOnStdoutThatCannotBeWrittenIsAnError) {
+  const SmallPipeline& p = small_pipeline();
+  for (const std::vector<std::string>& command : std::vector<std::vector<std::string>>{{"info", p.dataset}, {"qa", p.split, "--json"}}) {
+    SCOPED_TRACE(command.front());
+    std::vector<std::string> args = {haptex_binary()};
+    args.insert(args.end(), command.begin(), command.end());
+    const TempDir d;
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      freopen("/dev/full", "w", stdout);
+      freopen(d.file("err").c_str(), "w", stderr);
+      execv(argv[0], argv.data());
+      _exit(127);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << "status " << status;
+    EXPECT_NE(file_bytes(d.file("err")).find("standard output: cannot write it: the disk is full"), std::string::npos)
+        << file_bytes(d.file("err"));
   }
 }
 

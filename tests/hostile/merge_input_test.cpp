@@ -9,6 +9,7 @@
 #include <functional>
 
 #include "core/h5/file.hpp"
+#include "dataset/press_images.hpp"
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/mutations.hpp"
 #include "tests/support/small_pipeline.hpp"
@@ -242,6 +243,14 @@ std::vector<BrokenShard> broken_shards() {
            std::fill(png.begin() + std::ptrdiff_t(png.size() / 2), png.begin() + std::ptrdiff_t(png.size() / 2 + 20), 0);
          });
        }, {"/presses/0/reference[0]", "does not decode", "gelsight.images"}},
+      {"a reference of another size than the press states", p.gelsight, [](Edit& e, const std::string& m) {
+         e.change_image(m + "/presses/0/reference", 0, [](std::vector<std::uint8_t>& png) {
+           png = dataset::encode_png(cv::Mat(60, 80, CV_8UC3, cv::Scalar(10, 20, 30)));
+         });
+       }, {"/presses/0/reference[0]", "80 x 60 pixels, the press's width and height", "gelsight.images"}},
+      {"a PNG reference in a dataset whose encoding says jpeg", p.gelsight, [](Edit& e, const std::string& m) {
+         e.dataset(m + "/presses/0/reference").set_attr("encoding", "jpeg");
+       }, {"/presses/0/reference[0]", "is a png, but the dataset's encoding says jpeg", "gelsight.images"}},
       {"a material hard-linked under a second name", p.recordings, [](Edit& e, const std::string& m) {
          H5Lcreate_hard(e.root().id(), m.c_str(), e.root().id(), "materials/zz_again", H5P_DEFAULT, H5P_DEFAULT);
        }, {"second link to"}, false},

@@ -136,6 +136,35 @@ TEST(TemporaryNames, AnotherRunWritingTheSameOutputIsRefused) {
   EXPECT_EQ(run_haptex({"merge", small_pipeline().gelsight, "-o", out}).exit_code, 0) << "once that run has ended";
 }
 
+// Review 3: `nohup haptex ...` and a shell's background job start with HUP (or INT) ignored, and the
+// run must then go on through it, as it did before haptex took these signals over.
+TEST(TemporaryNames, ASignalIgnoredAtStartStaysIgnored) {
+  const TempDir d;
+  const std::string output = d.file("sy");
+  std::vector<std::string> args = {haptex_binary(), "synth", "materials", "-n", "2", "--seconds", "1", "--presses", "5",
+                                   "--recordings", "1", "--size", "160x120", "-o", output};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    signal(SIGHUP, SIG_IGN);  // as nohup does
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (partial_files(d.path().string()).empty() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  kill(child, SIGHUP);
+  int status = 0;
+  waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
+  EXPECT_TRUE(fs::exists(output + "/truth.h5"));
+}
+
 // Review 2, #14: a legal output name of 239 to 255 bytes could not be written (its temporary's name
 // passed 255 bytes) and the message named the temporary. Such a name now works, and two runs writing
 // it still find each other.
