@@ -4,11 +4,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
+#include "core/sha256.hpp"
 
 namespace haptex {
 namespace fs = std::filesystem;
@@ -18,6 +20,7 @@ namespace {
 struct FileList {
   std::string written_by;
   std::set<std::string> files;
+  std::map<std::string, std::string> sha256;  // of each file, by name; empty in lists of earlier haptex
 };
 
 // A name inside the folder as written in the list: its own path, never a link's target.
@@ -38,20 +41,26 @@ FileList listed_files(const std::string& folder, const fs::path& list_path) {
   if (!list.contains("files") || !list["files"].is_array()) return out;
   for (const nlohmann::json& f : list["files"])
     if (f.is_string()) out.files.insert(f.get<std::string>());
+  if (list.contains("sha256") && list["sha256"].is_object())
+    for (const auto& [name, hash] : list["sha256"].items())
+      if (hash.is_string()) out.sha256[name] = hash.get<std::string>();
   return out;
 }
 
 }  // namespace
 
 void write_file_list(const std::string& dir, std::string_view written_by) {
-  nlohmann::json files = nlohmann::json::array();
-  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(dir))
+  nlohmann::json files = nlohmann::json::array(), hashes = nlohmann::json::object();
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(dir)) {
     files.push_back(listed_name(entry.path(), dir));
+    if (entry.is_regular_file()) hashes[listed_name(entry.path(), dir)] = sha256_file(entry.path().string());
+  }
   const nlohmann::json list = {
       {"about", "The files haptex wrote in this folder. haptex --force replaces the folder only while it holds "
                 "nothing else; add a file of your own and it refuses."},
       {"written_by", written_by},
-      {"files", files}};
+      {"files", files},
+      {"sha256", hashes}};
   write_file_durably((fs::path(dir) / kFileListName).string(), list.dump(1) + "\n", false);
 }
 
@@ -78,6 +87,10 @@ void check_only_haptex_files(const std::string& folder, std::string_view written
     if (entry.is_symlink(ec))
       throw input_error(folder, name, "--force would replace this folder, but this is a symbolic link, which haptex never writes",
                         "Move it out of the folder, or choose a new folder with -o");
+    const auto hash = list.sha256.find(name);
+    if (hash != list.sha256.end() && entry.is_regular_file(ec) && sha256_file(entry.path().string()) != hash->second)
+      throw input_error(folder, name, "--force would replace this folder, but this file is not the one haptex wrote (its SHA-256 differs)",
+                        "Move your file out of the folder, or choose a new folder with -o");
   }
   if (ec) throw input_error(folder, "", "cannot list the folder (" + ec.message() + ")", "Check its permissions");
 }

@@ -9,13 +9,16 @@ namespace haptex {
 
 inline constexpr std::string_view kFileListName = "haptex-files.json";
 
-// Writes dir/haptex-files.json naming every file and folder now under dir (paths relative to it).
-// Call it last, just before the folder is synced and renamed into place.
+// Writes dir/haptex-files.json naming every file and folder now under dir (paths relative to it),
+// with each file's SHA-256. Call it last, just before the folder is synced and renamed into place.
 void write_file_list(const std::string& dir, std::string_view written_by);
 
 // For --force on a folder about to be replaced: throws haptex::Error (bad input) when folder holds
-// anything its haptex-files.json does not list (naming the first such file), has no such list, or
-// was written by another command than `written_by` ("haptex split"). An empty or missing folder passes.
+// anything its haptex-files.json does not list (naming the first such file), a listed file whose
+// bytes are no longer those haptex wrote (its SHA-256 differs: the user's own file of that name, or
+// one edited since), a link, has no readable list, or was written by another command than
+// `written_by` ("haptex split"). Lists of haptex before the hashes are judged by names alone. An
+// empty or missing folder passes.
 void check_only_haptex_files(const std::string& folder, std::string_view written_by);
 
 }  // namespace haptex

@@ -67,6 +67,17 @@ TEST(Force, ALinkOrADamagedFileListInTheFolderIsNamedForWhatItIs) {
   EXPECT_EQ(file_bytes(press.string()), kept);
 }
 
+// Review 3: --force judged a folder's files by their names alone, so a user's own truth.h5 (or one
+// edited since) with a listed name was deleted. The list now holds each file's SHA-256.
+TEST(Force, AListedFileThatIsNotTheOneHaptexWroteIsKept) {
+  const TempDir dir;
+  const std::string out = dir.file("out");
+  ASSERT_EQ(run_haptex(tiny_synth(out, false)).exit_code, 0);
+  std::ofstream(out + "/truth.h5") << "my own truth";
+  expect_refusal(run_haptex(tiny_synth(out, true)), {out, "truth.h5", "not the one haptex wrote"});
+  EXPECT_EQ(file_bytes(out + "/truth.h5"), "my own truth");
+}
+
 TEST(Force, SynthRefusesAFolderWithoutItsFileList) {
   const TempDir dir;
   fs::create_directory(dir.file("mine"));
