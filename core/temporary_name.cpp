@@ -202,6 +202,7 @@ void forget_temporary(const std::string& path) {
 
 void remove_temporaries_on_signals() {
   const sigset_t set = ending_signals();
+  if (sigisemptyset(&set)) return;  // all three ignored: nothing to wait for
   pthread_sigmask(SIG_BLOCK, &set, nullptr);
   std::thread([set] {
     int signal = 0;
