@@ -122,21 +122,23 @@ int run_main(int argc, char** argv) {
     if (!sub->parsed()) continue;
     global.command_line = command_line(*sub);
     if (!command->ends_on_signals_itself()) remove_temporaries_on_signals();  // before any thread is made
+    std::string name = command->name();  // "capture extract": the part of a command with parts too
+    for (const CLI::App* part : sub->get_subcommands()) name += " " + part->get_name();
     try {
       check_option_values(*sub);
-      return with_stdout_written(command->name(), command->run(global));
+      return with_stdout_written(name, command->run(global));
     } catch (const Error& e) {
-      std::cerr << "haptex " << command->name() << ": error: " << shown_message(e.what(), argc, argv) << "\n";
+      std::cerr << "haptex " << name << ": error: " << shown_message(e.what(), argc, argv) << "\n";
       return e.kind() == Error::Kind::bad_input ? 2 : 1;
     } catch (const std::filesystem::filesystem_error& e) {
-      std::cerr << "haptex " << command->name() << ": error: " << text::printable(e.path1().string()) << ": " << e.code().message()
+      std::cerr << "haptex " << name << ": error: " << text::printable(e.path1().string()) << ": " << e.code().message()
                 << ". Check the path and its permissions\n";
       return 2;
     } catch (const std::bad_alloc&) {
-      std::cerr << "haptex " << command->name() << ": error: out of memory. Give smaller inputs, or run it on a machine with more memory\n";
+      std::cerr << "haptex " << name << ": error: out of memory. Give smaller inputs, or run it on a machine with more memory\n";
       return 1;
     } catch (const std::exception& e) {
-      std::cerr << "haptex " << command->name() << ": unexpected error: " << shown_message(e.what(), argc, argv) << "\n";
+      std::cerr << "haptex " << name << ": unexpected error: " << shown_message(e.what(), argc, argv) << "\n";
       return 1;
     }
   }

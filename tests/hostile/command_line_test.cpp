@@ -126,5 +126,13 @@ TEST(CommandLine, CaptureValuesAreReadWholeAndOnce) {
   EXPECT_FALSE(fs::exists(d.file("s")));
 }
 
+// Review 3: errors of a command's part were prefixed by the command alone ("haptex capture:").
+TEST(CommandLine, AnErrorNamesThePartOfTheCommandThatRan) {
+  const TempDir d;
+  const CommandResult r = run_haptex({"capture", "extract", d.file("nowhere"), "-o", d.file("g.h5")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("haptex capture extract: error: ", 0), 0u) << r.err;
+}
+
 }  // namespace
 }  // namespace haptex::test
