@@ -115,22 +115,8 @@ TEST(DiskFull, OutputOnStdoutThatCannotBeWrittenIsAnError) {
   const SmallPipeline& p = small_pipeline();
   for (const std::vector<std::string>& command : std::vector<std::vector<std::string>>{{"info", p.dataset}, {"qa", p.split, "--json"}}) {
     SCOPED_TRACE(command.front());
-    std::vector<std::string> args = {haptex_binary()};
-    args.insert(args.end(), command.begin(), command.end());
     const TempDir d;
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    const pid_t child = fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
-      freopen("/dev/full", "w", stdout);
-      freopen(d.file("err").c_str(), "w", stderr);
-      execv(argv[0], argv.data());
-      _exit(127);
-    }
-    int status = 0;
-    waitpid(child, &status, 0);
+    const int status = wait_for(start_haptex(command, "/dev/full", d.file("err")));
     EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << "status " << status;
     EXPECT_NE(file_bytes(d.file("err")).find("standard output: cannot write it: the disk is full"), std::string::npos)
         << file_bytes(d.file("err"));

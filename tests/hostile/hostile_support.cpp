@@ -2,7 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -35,6 +40,28 @@ std::vector<std::string> partial_files(const std::string& folder) {
 std::string file_bytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+int start_haptex(const std::vector<std::string>& args, const std::string& stdout_path, const std::string& stderr_path, int ignored) {
+  std::vector<std::string> all = {haptex_binary()};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t child = fork();
+  if (child == 0) {
+    if (!std::freopen(stdout_path.c_str(), "w", stdout) || !std::freopen(stderr_path.c_str(), "w", stderr)) _exit(126);
+    if (ignored != 0) std::signal(ignored, SIG_IGN);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return child;
+}
+
+int wait_for(int pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
 }
 
 }  // namespace haptex::test

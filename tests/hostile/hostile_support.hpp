@@ -20,4 +20,11 @@ std::vector<std::string> partial_files(const std::string& folder);
 // The file's bytes (empty when it cannot be read).
 std::string file_bytes(const std::string& path);
 
+// Starts haptex with `args` in a child process, its stdout and stderr sent to the files named, with
+// `ignored` (a signal number, or 0) ignored as nohup would; returns the child's pid to signal and wait for.
+int start_haptex(const std::vector<std::string>& args, const std::string& stdout_path = "/dev/null",
+                 const std::string& stderr_path = "/dev/null", int ignored = 0);
+// Waits for the child and returns its wait status.
+int wait_for(int pid);
+
 }  // namespace haptex::test

@@ -141,26 +141,14 @@ TEST(TemporaryNames, AnotherRunWritingTheSameOutputIsRefused) {
 TEST(TemporaryNames, ASignalIgnoredAtStartStaysIgnored) {
   const TempDir d;
   const std::string output = d.file("sy");
-  std::vector<std::string> args = {haptex_binary(), "synth", "materials", "-n", "2", "--seconds", "1", "--presses", "5",
-                                   "--recordings", "1", "--size", "160x120", "-o", output};
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  const pid_t child = fork();
-  ASSERT_GE(child, 0);
-  if (child == 0) {
-    freopen("/dev/null", "w", stdout);
-    freopen("/dev/null", "w", stderr);
-    signal(SIGHUP, SIG_IGN);  // as nohup does
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
+  const int child = start_haptex({"synth", "materials", "-n", "2", "--seconds", "1", "--presses", "5", "--recordings", "1", "--size",
+                                  "160x120", "-o", output},
+                                 "/dev/null", "/dev/null", SIGHUP);  // as nohup starts it
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (partial_files(d.path().string()).empty() && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   kill(child, SIGHUP);
-  int status = 0;
-  waitpid(child, &status, 0);
+  const int status = wait_for(child);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
   EXPECT_TRUE(fs::exists(output + "/truth.h5"));
 }
@@ -227,27 +215,15 @@ TEST(TemporaryNames, ASignalTakesTheUnfinishedOutputsAway) {
       SCOPED_TRACE(std::string(strsignal(signal)) + " to " + run.args.front());
       const TempDir d;
       const std::string output = d.file(run.output);
-      std::vector<std::string> args = {haptex_binary()};
-      args.insert(args.end(), run.args.begin(), run.args.end());
+      std::vector<std::string> args = run.args;
       args.insert(args.end(), {"-o", output});
-      std::vector<char*> argv;
-      for (std::string& a : args) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      const pid_t child = fork();
-      ASSERT_GE(child, 0);
-      if (child == 0) {
-        freopen("/dev/null", "w", stdout);
-        freopen("/dev/null", "w", stderr);
-        execv(argv[0], argv.data());
-        _exit(127);
-      }
+      const int child = start_haptex(args);
       const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
       while (partial_files(d.path().string()).empty() && std::chrono::steady_clock::now() < deadline)
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
       const bool started = !partial_files(d.path().string()).empty();
       kill(child, signal);
-      int status = 0;
-      waitpid(child, &status, 0);
+      const int status = wait_for(child);
       ASSERT_TRUE(started) << "the run never began its output";
       EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << "status " << status;
       EXPECT_TRUE(fs::is_empty(d.path())) << "no output, finished or not, is left";
