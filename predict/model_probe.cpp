@@ -49,8 +49,12 @@ void require_finite_outputs(const Model& m, const std::string& path) {
     MlpTrace action;
     forward(m.nets[std::size_t(code.net)].action, normalised_actions(m.normalisation, actions), action);
     if (!action.out.back().allFinite()) throw non_finite_output(path, net + "/action_encoder", input);
-    if (!code.first_layer.allFinite() || !predictor.predict_batch(code, actions).allFinite())
+    if (!code.first_layer.allFinite()) throw non_finite_output(path, net + "/predictor", input);
+    try {
+      predictor.predict_batch(code, actions);  // checks its own spectra, naming no material
+    } catch (const Error&) {
       throw non_finite_output(path, net + "/predictor", input);
+    }
   }
 }
 
