@@ -79,6 +79,16 @@ std::string image_format(std::span<const std::uint8_t> b) {
   return "";
 }
 
+PngPixels png_pixels(std::span<const std::uint8_t> png) {
+  if (png.size() < 26 || image_format(png) != "png" || std::string(png.begin() + 12, png.begin() + 16) != "IHDR") return {};
+  return {png[24], png[25]};
+}
+
+bool is_plain_rgb_png(std::span<const std::uint8_t> png) {
+  const PngPixels pixels = png_pixels(png);
+  return pixels.bit_depth == 8 && pixels.colour_type == 2;
+}
+
 bool is_complete_jpeg(std::span<const std::uint8_t> jpeg) {
   if (jpeg.size() < 4 || jpeg[0] != 0xFF || jpeg[1] != 0xD8) return false;
   const std::size_t tail = std::min<std::size_t>(jpeg.size(), 4096);

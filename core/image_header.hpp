@@ -25,6 +25,15 @@ std::optional<ImageSize> image_header_size(const std::string& path);
 // The same for an image in memory.
 std::optional<ImageSize> image_header_size(std::span<const std::uint8_t> bytes);
 
+// A PNG's IHDR: bit depth per channel and colour type (2 is RGB); zeros when the bytes are no PNG.
+struct PngPixels {
+  int bit_depth = 0, colour_type = 0;
+};
+PngPixels png_pixels(std::span<const std::uint8_t> png);
+// An 8-bit RGB PNG, the only PNG haptex stores: every reader decodes it to the same three channels
+// (OpenCV and PIL differ on 16 bits; PIL gives grey as one channel and keeps alpha).
+bool is_plain_rgb_png(std::span<const std::uint8_t> png);
+
 // A whole JPEG starts with SOI (FF D8) and ends with EOI (FF D9), perhaps followed by padding some
 // cameras add. A cut-off frame lacks EOI; libjpeg would still "decode" it, the missing part grey,
 // and that would score as contact.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <jpeglib.h>
+#include <jerror.h>
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/image_header.hpp"
@@ -18,17 +19,37 @@ namespace haptex::dataset {
 namespace {
 
 // libjpeg reports an error by calling error_exit, which must not return; it jumps back into the call
-// below that started the work. Warnings go to output_message, which stays silent (libjpeg still counts
-// them in num_warnings).
+// below that started the work, keeping its text. Warnings reach emit_message, which prints nothing,
+// counts them and keeps the text of the first that tells of damaged image data.
 struct JpegState {
   jpeg_decompress_struct info{};
   jpeg_error_mgr errors{};
   std::jmp_buf jump{};
   bool created = false;
+  char damage[JMSG_LENGTH_MAX] = {};
 };
 
-void jump_back(j_common_ptr info) { std::longjmp(static_cast<JpegState*>(info->client_data)->jump, 1); }
-void stay_silent(j_common_ptr) {}
+void jump_back(j_common_ptr info) {
+  auto* s = static_cast<JpegState*>(info->client_data);
+  if (s->damage[0] == 0) info->err->format_message(info, s->damage);
+  std::longjmp(s->jump, 1);
+}
+
+// Bits that are no Huffman (or arithmetic) code, a lost restart marker, a scan that breaks the
+// sequence: the coded data was changed, and libjpeg draws garbage where it was. "Premature end of data
+// segment" and "extraneous bytes before marker" are not damage: OpenCV's MJPG encoder and many webcams
+// write them on whole frames (decode_image.hpp).
+bool tells_of_damage(int code) {
+  return code == JWRN_HUFF_BAD_CODE || code == JWRN_ARITH_BAD_CODE || code == JWRN_MUST_RESYNC || code == JWRN_NOT_SEQUENTIAL ||
+         code == JWRN_BOGUS_PROGRESSION || code == JWRN_JPEG_EOF;
+}
+
+void count_warning(j_common_ptr info, int level) {
+  if (level >= 0) return;  // trace messages
+  ++info->err->num_warnings;
+  auto* s = static_cast<JpegState*>(info->client_data);
+  if (s->damage[0] == 0 && tells_of_damage(info->err->msg_code)) info->err->format_message(info, s->damage);
+}
 
 // The two functions that call libjpeg hold no C++ object of their own, so the jump skips no destructor.
 bool start(JpegState& s, std::span<const std::uint8_t> jpeg, DecodedColour colour, int reduction) {
@@ -71,13 +92,13 @@ cv::Mat png_decode(std::span<const std::uint8_t> bytes, DecodedColour colour) {
 
 }  // namespace
 
-cv::Mat decode_jpeg(std::span<const std::uint8_t> jpeg, DecodedColour colour, int reduction, int* warnings) {
+cv::Mat decode_jpeg(std::span<const std::uint8_t> jpeg, DecodedColour colour, int reduction, JpegReport* report) {
   if (reduction != 1 && reduction != 2 && reduction != 4 && reduction != 8) return {};
   if (!is_complete_jpeg(jpeg)) return {};  // libjpeg would draw the missing part grey, which scores as contact
   auto s = std::make_unique<JpegState>();
   s->info.err = jpeg_std_error(&s->errors);
   s->errors.error_exit = jump_back;
-  s->errors.output_message = stay_silent;
+  s->errors.emit_message = count_warning;
   s->info.client_data = s.get();
   struct Destroy {
     JpegState& s;
@@ -87,8 +108,9 @@ cv::Mat decode_jpeg(std::span<const std::uint8_t> jpeg, DecodedColour colour, in
   } destroy{*s};
   if (!start(*s, jpeg, colour, reduction)) return {};
   cv::Mat image(int(s->info.output_height), int(s->info.output_width), colour == DecodedColour::grey ? CV_8UC1 : CV_8UC3);
-  if (!read_rows(*s, image.data, image.step)) return {};
-  if (warnings) *warnings = int(s->errors.num_warnings);
+  const bool read = read_rows(*s, image.data, image.step);
+  if (report) *report = {int(s->errors.num_warnings), s->damage};
+  if (!read || s->damage[0] != 0) return {};
   return image;
 }
 

@@ -17,15 +17,23 @@ namespace haptex::dataset {
 
 enum class DecodedColour { bgr, grey };
 
+// What libjpeg said while decoding, never printed: how many warnings, and its error or the first
+// warning that tells of damaged coded data ("Corrupt JPEG data: bad Huffman code"; empty when none).
+struct JpegReport {
+  int warnings = 0;
+  std::string damage;
+};
+
 // A JPEG decoded at 1/reduction of its size (1, 2, 4 or 8: libjpeg's DCT-domain scaling, OpenCV's
-// IMREAD_REDUCED_*) as 8-bit BGR or grey, warnings counted in `warnings` when given and never printed;
-// empty when it is cut off (is_complete_jpeg), does not decode, states more than kMaxImagePixels
-// (core/image_header.hpp) whatever the reduction, or is CMYK (no GelSight-type camera sends it). A
-// frame cut off and closed with an end marker still decodes, its missing part grey, with a warning
-// ("premature end of data segment"): OpenCV's own MJPG encoder closes whole frames the same way, so
-// the two cannot be told apart.
+// IMREAD_REDUCED_*) as 8-bit BGR or grey, what libjpeg said in `report` when given; empty when it is
+// cut off (is_complete_jpeg), does not decode, its coded data is damaged (JpegReport::damage: libjpeg
+// would draw garbage there), it states more than kMaxImagePixels (core/image_header.hpp) whatever the
+// reduction, or is CMYK (no GelSight-type camera sends it). A frame cut off and closed with an end
+// marker still decodes, its missing part grey, with a warning ("premature end of data segment"):
+// OpenCV's own MJPG encoder closes whole frames the same way, so the two cannot be told apart. Nor can
+// a changed byte that still reads as valid codes: libjpeg decodes what it finds.
 cv::Mat decode_jpeg(std::span<const std::uint8_t> jpeg, DecodedColour colour = DecodedColour::bgr, int reduction = 1,
-                    int* warnings = nullptr);
+                    JpegReport* report = nullptr);
 
 // A JPEG (decode_jpeg) or a PNG (cv::imdecode, 8-bit BGR; is_complete_png checked first, so libpng
 // finds nothing to complain of) at full size; empty for anything else or when it does not decode.

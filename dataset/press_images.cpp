@@ -21,6 +21,14 @@ Error bad_image(const h5::Dataset& d, std::size_t i, const std::string& what) {
                      "Write the file again with haptex capture extract (and align)");
 }
 
+// A JPEG's coded data read through at an eighth of its size (libjpeg's DCT scaling: every code is
+// read, few pixels drawn), so damage libjpeg can see is found at a fraction of a full decode's cost.
+void require_undamaged_jpeg(const h5::Dataset& d, std::size_t i, const EncodedImage& bytes) {
+  JpegReport report;
+  if (decode_jpeg(bytes, DecodedColour::grey, 8, &report).empty())
+    throw bad_image(d, i, "does not decode (a damaged JPEG" + (report.damage.empty() ? std::string() : ": " + report.damage) + ")");
+}
+
 // An image's bytes are decoded only once its header has been read and states the press's size (so no
 // hostile header makes OpenCV allocate more), and only when whole (so libjpeg conceals nothing and
 // libpng prints no complaint).
@@ -36,6 +44,11 @@ void require_whole(const h5::Dataset& d, std::size_t i, const EncodedImage& byte
                               " x " + std::to_string(expected->height));
   if (!is_complete_image(bytes))
     throw bad_image(d, i, "does not decode (a damaged or cut-off " + encoding + ")");
+  if (encoding == "png" && !is_plain_rgb_png(bytes)) {
+    const PngPixels pixels = png_pixels(bytes);
+    throw bad_image(d, i, "is a PNG of " + std::to_string(pixels.bit_depth) + " bits, colour type " + std::to_string(pixels.colour_type) +
+                              "; haptex stores 8-bit RGB PNGs (colour type 2) only, which every reader decodes alike");
+  }
 }
 
 // Orientation tags are ignored, as any other reader of the bytes would.
@@ -117,6 +130,7 @@ void require_whole_press_images(const h5::Group& press, const std::string& name)
       throw bad_image(d, i, "is " + (image_format(bytes).empty() ? std::string("no image") : "a " + image_format(bytes)) +
                                 ", but the dataset's encoding says " + label);
     require_whole(d, i, bytes, stated);
+    if (image_format(bytes) == "jpeg") require_undamaged_jpeg(d, i, bytes);
   }
 }
 

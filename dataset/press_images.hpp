@@ -36,9 +36,10 @@ std::vector<cv::Mat> read_press_images(const h5::Group& press, const std::string
 cv::Mat read_press_image(const h5::Group& press, const std::string& name);
 // Throws as read_press_images does for everything short of decoding: each image is a JPEG or PNG as
 // the dataset's `encoding` says, with a readable header stating the press's width and height (at
-// most 64 megapixels), and whole (every PNG chunk's CRC holds, each JPEG ends with its end marker).
-// No pixel is decoded, so merge and align afford it on every image they copy; a JPEG damaged inside
-// but closed with its end marker is not found (OpenCV's own encoder closes whole frames the same way).
+// most 64 megapixels), and whole: every PNG chunk's CRC holds and it is 8-bit; each JPEG ends with its
+// end marker and its coded data reads without damage (decode_jpeg at an eighth of its size, about a
+// tenth of a full decode, so merge and align afford it on every image they copy). A changed byte that
+// still reads as valid codes is not found (dataset/decode_image.hpp).
 void require_whole_press_images(const h5::Group& press, const std::string& name);
 
 }  // namespace haptex::dataset

@@ -66,15 +66,15 @@ class ImageSequenceSource : public FrameSource {
     }
   }
 
-  // An 8-bit PNG frame file is stored as it is: any reader decodes it to these pixels. A JPEG file
+  // An 8-bit RGB PNG frame file is stored as it is: any reader decodes it to these pixels. A JPEG file
   // may carry an orientation tag, which haptex ignores (dataset/decode_image.hpp) and other readers
-  // may apply, and a 16-bit PNG decodes differently in OpenCV and PIL: those are stored as the PNG of
-  // the decoded frame.
+  // may apply, and other PNGs decode differently in OpenCV and PIL (core/image_header.hpp): those are
+  // stored as the PNG of the decoded frame.
   void read(const std::vector<std::int64_t>& indices, const Delivery& deliver) override {
     for (std::int64_t i : indices) {
       dataset::EncodedImage bytes = file_bytes(std::size_t(i));
       const cv::Mat frame = load(std::size_t(i), bytes);
-      const bool plain_png = image_format(bytes) == "png" && bytes.size() > 24 && bytes[24] == 8;  // IHDR bit depth
+      const bool plain_png = is_plain_rgb_png(bytes);
       if (!plain_png) bytes.clear();
       deliver(i, frame, bytes);
     }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -28,6 +29,8 @@ cv::Mat picture() {
   cv::circle(image, {160, 120}, 70, {30, 200, 90}, 5);
   return image;
 }
+
+const std::uint8_t kStartOfScan[] = {0xFF, 0xDA};
 
 Bytes encode(const cv::Mat& image, const std::string& ext) {
   Bytes bytes;
@@ -86,13 +89,35 @@ TEST(DecodeImage, JpegWarningsAreCountedNotPrinted) {
   noisy.insert(noisy.end(), {0xFF, 0xD9});
   EXPECT_NE(stderr_of([&] { cv::imdecode(noisy, cv::IMREAD_COLOR); }), "");
   cv::Mat image;
-  int warnings = 0;
-  EXPECT_EQ(stderr_of([&] { image = decode_jpeg(noisy, DecodedColour::bgr, 1, &warnings); }), "");
-  EXPECT_EQ(warnings, 1);
+  JpegReport report;
+  EXPECT_EQ(stderr_of([&] { image = decode_jpeg(noisy, DecodedColour::bgr, 1, &report); }), "");
+  EXPECT_EQ(report.warnings, 1);
+  EXPECT_EQ(report.damage, "");
   EXPECT_TRUE(same(image, decode_jpeg(clean)));
-  int none = -1;
+  JpegReport none{-1, "x"};
   decode_jpeg(clean, DecodedColour::bgr, 1, &none);
-  EXPECT_EQ(none, 0);
+  EXPECT_EQ(none.warnings, 0);
+  EXPECT_EQ(none.damage, "");
+}
+
+// Coded data changed in transfer (every 97th byte after the scan header flipped; the end marker
+// kept): libjpeg meets bits that are no Huffman code, or a marker where none belongs, and would draw
+// garbage. Refused, saying what libjpeg found, at every reduction, without a word on stderr.
+TEST(DecodeImage, DamagedCodedDataIsRefusedNamingTheDamage) {
+  const Bytes clean = encode(picture(), ".jpg");
+  Bytes damaged = clean;
+  const auto scan = std::search(damaged.begin(), damaged.end(), std::begin(kStartOfScan), std::end(kStartOfScan));
+  ASSERT_NE(scan, damaged.end());
+  for (std::size_t i = std::size_t(scan - damaged.begin()) + 20; i + 2 < damaged.size(); i += 97) damaged[i] ^= 0x5A;
+  EXPECT_NE(stderr_of([&] { cv::imdecode(damaged, cv::IMREAD_COLOR); }), "");
+  for (int reduction : {1, 8}) {
+    JpegReport report;
+    cv::Mat image;
+    EXPECT_EQ(stderr_of([&] { image = decode_jpeg(damaged, DecodedColour::grey, reduction, &report); }), "");
+    EXPECT_TRUE(image.empty());
+    EXPECT_NE(report.damage, "");
+  }
+  EXPECT_TRUE(decode_image(damaged).empty());
 }
 
 // A 16 x 8 CMYK JPEG: PIL's Image.new("CMYK", (16, 8), (10, 200, 30, 5)).save(f, "JPEG", quality=50).

@@ -4,9 +4,13 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "core/h5/file.hpp"
 #include "dataset/press_images.hpp"
@@ -214,6 +218,19 @@ void add_reference_attribute(Edit& edit, const std::string& object, const std::s
   H5Aclose(attr), H5Oclose(owner), H5Sclose(space);
 }
 
+// A height x width JPEG with every 97th byte of its coded data flipped, its end marker kept: libjpeg
+// finds bits that are no Huffman code.
+std::vector<std::uint8_t> damaged_jpeg(int height, int width) {
+  cv::Mat picture(height, width, CV_8UC3);
+  cv::randu(picture, 0, 256);
+  std::vector<std::uint8_t> jpeg;
+  cv::imencode(".jpg", picture, jpeg);
+  const std::uint8_t start_of_scan[] = {0xFF, 0xDA};
+  const auto scan = std::search(jpeg.begin(), jpeg.end(), std::begin(start_of_scan), std::end(start_of_scan));
+  for (std::size_t i = std::size_t(scan - jpeg.begin()) + 20; i + 2 < jpeg.size(); i += 97) jpeg[i] ^= 0x5A;
+  return jpeg;
+}
+
 std::vector<BrokenShard> broken_shards() {
   const SmallPipeline& p = small_pipeline();
   return {
@@ -251,6 +268,18 @@ std::vector<BrokenShard> broken_shards() {
       {"a PNG reference in a dataset whose encoding says jpeg", p.gelsight, [](Edit& e, const std::string& m) {
          e.dataset(m + "/presses/0/reference").set_attr("encoding", "jpeg");
        }, {"/presses/0/reference[0]", "is a png, but the dataset's encoding says jpeg", "gelsight.images"}},
+      {"a JPEG peak whose coded data was changed in transfer (end marker kept)", p.gelsight, [](Edit& e, const std::string& m) {
+         e.dataset(m + "/presses/0/peak").set_attr("encoding", "jpeg");
+         e.change_image(m + "/presses/0/peak", 0, [](std::vector<std::uint8_t>& image) { image = damaged_jpeg(120, 160); });
+       }, {"/presses/0/peak[0]", "a damaged JPEG", "gelsight.images"}},
+      {"a grey PNG peak (PIL reads one channel)", p.gelsight, [](Edit& e, const std::string& m) {
+         e.change_image(m + "/presses/0/peak", 0, [](std::vector<std::uint8_t>& image) { cv::imencode(".png", cv::Mat(120, 160, CV_8UC1, 90), image); });
+       }, {"/presses/0/peak[0]", "colour type 0", "8-bit RGB", "gelsight.images"}},
+      {"a 16-bit PNG frame", p.gelsight, [](Edit& e, const std::string& m) {
+         e.change_image(m + "/presses/0/frames", 3, [](std::vector<std::uint8_t>& image) {
+           cv::imencode(".png", cv::Mat(120, 160, CV_16UC3, cv::Scalar(9000, 20000, 30000)), image);
+         });
+       }, {"/presses/0/frames[3]", "16 bits", "gelsight.images"}},
       {"a material hard-linked under a second name", p.recordings, [](Edit& e, const std::string& m) {
          H5Lcreate_hard(e.root().id(), m.c_str(), e.root().id(), "materials/zz_again", H5P_DEFAULT, H5P_DEFAULT);
        }, {"second link to"}, false},

@@ -12,6 +12,7 @@
 #include "capture/recording/press_recorder.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
+#include "core/image_header.hpp"
 #include "core/temporary_name.hpp"
 #include "dataset/press_images.hpp"
 #include "dataset/vlen_bytes.hpp"
@@ -275,6 +276,34 @@ TEST_F(Extract, FoldersOfFrameImagesAreVideos) {
   EXPECT_EQ(one.presses[0].material, "Woven 1");
   h5::File f = h5::File::open(out());
   EXPECT_EQ(f.root().open_group("materials/woven_1/presses/0").attr_string("source_sha256").size(), 64u);
+}
+
+// An 8-bit RGB PNG frame file is kept byte for byte; a grey or RGBA one, which PIL would hand over as
+// one or four channels, is stored as the RGB PNG of its decoded frame, so every stored PNG is one
+// every reader decodes alike (schemas/hdf5-layout.md).
+TEST_F(Extract, OnlyRgbPngFramesAreKeptAsTheyAre) {
+  write_png_sequence(dir_.path() / "gelsight" / "Cork" / "press_0", 1, 50);
+  write_png_sequence(dir_.path() / "gelsight" / "Felt" / "press_0", 1, 50);
+  for (const auto& file : fs::directory_iterator(dir_.path() / "gelsight" / "Felt" / "press_0")) {
+    cv::Mat rgba;
+    cv::cvtColor(cv::imread(file.path().string()), rgba, cv::COLOR_BGR2BGRA);
+    cv::imwrite(file.path().string(), rgba);
+  }
+  ExtractOptions options;
+  options.sheets = false;
+  const ExtractResult r = extract_presses({dir_.file("gelsight")}, out(), options);
+  ASSERT_EQ(r.presses.size(), 2u);
+  const h5::File f = h5::File::open(out());
+  for (const ExtractedPressSummary& p : r.presses) {
+    const h5::Group press = f.root().open_group("materials/" + p.material_id + "/presses/0");
+    const std::vector<std::uint8_t> peak = dataset::read_vlen_bytes(press.open_dataset("peak"), 0);
+    EXPECT_TRUE(is_plain_rgb_png(peak)) << p.material;
+    EXPECT_NO_THROW(dataset::require_whole_press_images(press, "frames"));
+    const std::string file = (dir_.path() / "gelsight" / p.material / "press_0" / ("frame_" + std::to_string(1000 + p.peak_index).substr(1) + ".png")).string();
+    std::ifstream in(file, std::ios::binary);
+    const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_EQ(peak == bytes, p.material == "Cork") << p.material << ": the RGB file kept as it is, the RGBA one stored anew";
+  }
 }
 
 TEST_F(Extract, LosslessSourcesGetLowerFloorsThanLossyOnes) {
