@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/text/format.hpp"
 #include "core/json/schema.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "dataset/format.hpp"
@@ -83,10 +84,11 @@ struct Reader {
 
   void check(const h5::Dataset& d, const std::vector<float>& v, Values kind) const {
     for (std::size_t i = 0; i < v.size(); ++i)
-      if (!std::isfinite(v[i]) || (kind == Values::positive && !(v[i] > 0)))
+      // A subnormal scale (below 1.2e-38) divides values past float32's range.
+      if (!std::isfinite(v[i]) || (kind == Values::positive && !(v[i] > 0 && std::isnormal(v[i]))))
         throw input_error(path, d.object_path(),
-                          "value " + std::to_string(i) + " is " + std::to_string(v[i]) +
-                              (kind == Values::positive ? ", but a scale must be positive and finite" : ", not a finite number"),
+                          "value " + std::to_string(i) + " is " + text::format("%.9g", double(v[i])) +
+                              (kind == Values::positive ? ", but a scale must be positive and finite, at least 1.2e-38 (a normal float32)" : ", not a finite number"),
                           std::string("The model is damaged or its training diverged. ") + kRetrain);
   }
 

@@ -26,12 +26,30 @@ void require_finite_texture(const Model& m, const std::string& path) {
   x.col(0).setZero(), x.col(1).setOnes(), x.col(2).setConstant(-1);
   MlpTrace trace;
   forward(m.texture, x, trace);
-  if (!trace.out.back().allFinite()) throw non_finite_output(path, "/texture_encoder", "descriptors within one spread of the training mean");
+  if (!trace.out.back().allFinite()) {
+    const std::string layer = first_runaway_layer({{"/texture_encoder", trace}});
+    throw non_finite_output(path, layer.empty() ? "/texture_encoder" : layer, "descriptors within one spread of the training mean");
+  }
   if (!recognised_latents(m, m.material_latents).allFinite() || !recognised_latents(m, trace.out.back()).allFinite())
     throw non_finite_output(path, "/classifier", "the training materials' latents");
 }
 
+bool runs_away(const Eigen::MatrixXf& out) { return !out.allFinite() || out.cwiseAbs().maxCoeff() > kRunaway; }
+
 }  // namespace
+
+std::string first_runaway_layer(const std::vector<TracedPart>& parts) {
+  for (const TracedPart& part : parts)
+    for (std::size_t i = 1; i < part.trace.out.size(); ++i)  // out[0] is the part's input
+      if (runs_away(part.trace.out[i])) return part.name + "/layers/" + std::to_string(i - 1);
+  return "";
+}
+
+std::string part_that_overflows(const SpectrumTrace& trace, int net) {
+  const std::string name = "/nets/" + std::to_string(net);
+  const std::string layer = first_runaway_layer({{name + "/action_encoder", trace.action}, {name + "/predictor", trace.predictor}});
+  return layer.empty() ? "/normalisation/target_scale" : layer;
+}
 
 Error non_finite_output(const std::string& path, const std::string& part, const std::string& input) {
   return input_error(path.empty() ? "(the model in memory)" : path, part,
@@ -46,15 +64,10 @@ void require_finite_outputs(const Model& m, const std::string& path) {
   for (std::size_t k = 0; k < m.material_ids.size(); ++k) {
     const TextureCode code = predictor.material_code(int(k));
     const std::string net = "/nets/" + std::to_string(code.net), input = "material '" + m.material_ids[k] + "' across its training range";
-    MlpTrace action;
-    forward(m.nets[std::size_t(code.net)].action, normalised_actions(m.normalisation, actions), action);
-    if (!action.out.back().allFinite()) throw non_finite_output(path, net + "/action_encoder", input);
-    if (!code.first_layer.allFinite()) throw non_finite_output(path, net + "/predictor", input);
-    try {
-      predictor.predict_batch(code, actions);  // checks its own spectra, naming no material
-    } catch (const Error&) {
-      throw non_finite_output(path, net + "/predictor", input);
-    }
+    if (!code.first_layer.allFinite()) throw non_finite_output(path, net + "/predictor/layers/0", input);
+    SpectrumTrace trace;
+    if (!predictor.trace_batch(code, normalised_actions(m.normalisation, actions), trace).allFinite())
+      throw non_finite_output(path, part_that_overflows(trace, code.net), input);
   }
 }
 

@@ -1,12 +1,16 @@
 #pragma once
 // A model whose weights are each finite can still overflow 32-bit floats together (a diverged or
 // edited training): its spectra would be inf. read_model runs every part of it once on inputs a
-// query can reach and refuses the file if any output is not finite, naming the part; Predictor
-// checks each spectrum it returns as well, for inputs beyond the probes (a far-off new press).
+// query can reach and refuses the file if any output is not finite, naming the layer where values
+// ran away (or the normalisation that overflowed moderate outputs); Predictor checks each spectrum it
+// returns as well, for inputs beyond the probes (a far-off new press).
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
+#include "predict/mlp.hpp"
 #include "predict/model.hpp"
+#include "predict/spectrum_net.hpp"
 
 namespace haptex::predict {
 
@@ -18,5 +22,24 @@ void require_finite_outputs(const Model& model, const std::string& path);
 
 // The error for a non-finite output of `part` of the model read from `path`.
 [[nodiscard]] Error non_finite_output(const std::string& path, const std::string& part, const std::string& input);
+
+// Values past kRunaway have run away: the nets see standardised inputs, and a trained net's
+// activations stay within tens (at most 21 on inputs three spreads out, in the models the tests
+// train), so 1e15 is far beyond any of them yet 23 orders of magnitude short of float32's limit,
+// where the overflow they lead to shows.
+inline constexpr float kRunaway = 1e15f;
+
+// One forward pass through a part of the model (/nets/K/action_encoder, ...), layer by layer.
+struct TracedPart {
+  std::string name;
+  const MlpTrace& trace;
+};
+// The first layer, in the parts' order, whose output is not finite or runs past kRunaway
+// ("/nets/0/action_encoder/layers/1"), so an overflow is blamed on the layer where it started, not
+// on the one where it showed; "" when every layer stays within it.
+std::string first_runaway_layer(const std::vector<TracedPart>& parts);
+// Where non-finite spectra of /nets/`net` come from: the first of its layers that ran away, else
+// /normalisation/target_scale, which made moderate outputs overflow.
+std::string part_that_overflows(const SpectrumTrace& trace, int net);
 
 }  // namespace haptex::predict

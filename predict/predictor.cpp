@@ -101,14 +101,31 @@ bool Predictor::predict(const TextureCode& code, std::span<const float> action, 
   for (std::size_t i = 1; i < net.predictor.layers.size(); ++i) apply(net.predictor.layers[i], *in, layer_[k]), in = &layer_[k++];
   Eigen::Map<Eigen::VectorXf> out(spectrum.data(), Eigen::Index(spectrum.size()));
   out = in->cwiseProduct(n.target_scale);
-  if (!out.allFinite()) throw non_finite_output(model_.file, "/nets/" + std::to_string(code.net) + "/predictor", "this press and action");
+  if (!out.allFinite()) throw non_finite_output(model_.file, part_that_overflows(code.net, k), "this press and action");
   return saturated;
 }
 
+// As part_that_overflows (model_probe.hpp), for predict()'s first `layers` outputs (the action
+// encoder's layers, then the predictor's).
+std::string Predictor::part_that_overflows(int net, std::size_t layers) const {
+  const std::size_t action_layers = model_.nets[std::size_t(net)].action.layers.size();
+  const std::string name = "/nets/" + std::to_string(net);
+  for (std::size_t k = 0; k < layers; ++k)
+    if (!layer_[k].allFinite() || layer_[k].cwiseAbs().maxCoeff() > kRunaway)
+      return k < action_layers ? name + "/action_encoder/layers/" + std::to_string(k) : name + "/predictor/layers/" + std::to_string(k - action_layers);
+  return "/normalisation/target_scale";
+}
+
 Eigen::MatrixXf Predictor::predict_batch(const TextureCode& code, const Eigen::MatrixXf& actions, std::size_t* out_of_range) const {
+  SpectrumTrace trace;
+  Eigen::MatrixXf spectra = trace_batch(code, normalised_actions(model_.normalisation, actions, out_of_range), trace);
+  if (!spectra.allFinite()) throw non_finite_output(model_.file, predict::part_that_overflows(trace, code.net), "this press and these actions");
+  return spectra;
+}
+
+Eigen::MatrixXf Predictor::trace_batch(const TextureCode& code, const Eigen::MatrixXf& normalised, SpectrumTrace& trace) const {
   const SpectrumNet& net = model_.nets[std::size_t(code.net)];
-  MlpTrace action, spectrum;
-  forward(net.action, normalised_actions(model_.normalisation, actions, out_of_range), action);
+  forward(net.action, normalised, trace.action);
   // As predict(): the texture's share of the first layer comes from the code, not from a latent per column.
   Mlp tail = net.predictor;
   DenseLayer& first = tail.layers.front();
@@ -117,11 +134,9 @@ Eigen::MatrixXf Predictor::predict_batch(const TextureCode& code, const Eigen::M
   // The output's softplus, the most of a batch's time in Eigen's exp and log1p, in predict()'s kernel.
   const Activation output = tail.layers.back().activation;
   tail.layers.back().activation = Activation::linear;
-  forward(tail, action.out.back(), spectrum);
-  activate_fast(output, spectrum.out.back());
-  Eigen::MatrixXf spectra = model_.normalisation.target_scale.asDiagonal() * spectrum.out.back();
-  if (!spectra.allFinite()) throw non_finite_output(model_.file, "/nets/" + std::to_string(code.net) + "/predictor", "this press and these actions");
-  return spectra;
+  forward(tail, trace.action.out.back(), trace.predictor);
+  activate_fast(output, trace.predictor.out.back());
+  return model_.normalisation.target_scale.asDiagonal() * trace.predictor.out.back();
 }
 
 }  // namespace haptex::predict

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "predict/model.hpp"
+#include "predict/spectrum_net.hpp"
 #include "dataset/window.hpp"
 
 namespace haptex::predict {
@@ -46,11 +47,15 @@ class Predictor {
   // Columns of raw actions -> columns of spectra; counts saturated columns in out_of_range.
   Eigen::MatrixXf predict_batch(const TextureCode& code, const Eigen::MatrixXf& actions,
                                 std::size_t* out_of_range = nullptr) const;
+  // The same pass on actions already normalised (normalised_actions), every layer kept in `trace` and
+  // the spectra left unchecked (model_probe.hpp judges them).
+  Eigen::MatrixXf trace_batch(const TextureCode& code, const Eigen::MatrixXf& normalised, SpectrumTrace& trace) const;
 
   const Model& model() const { return model_; }
 
  private:
   Eigen::VectorXf image_latent(std::span<const float> descriptor) const;  // the texture encoder's output
+  std::string part_that_overflows(int net, std::size_t layers) const;
   TextureCode image_code(const Eigen::VectorXf& image_latent) const;     // recognised, with image_latent kept
 
   const Model& model_;

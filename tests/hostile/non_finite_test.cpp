@@ -151,19 +151,36 @@ TEST(NonFinite, EveryCommandRefusesAModelWithNaNInfinityOrAZeroScale) {
 // Review 2, #9: weights that are each finite but overflow 32-bit floats together (3e38 in a layer)
 // gave "inf" spectra with exit 0 (predict) or an error naming no file (render, evaluate). Loading
 // runs the model once per material at the corners of its force-speed range and refuses it.
+// Review 3, #8: the refusal named the layer where the inf showed (/nets/0/predictor for a runaway
+// action-encoder bias or target scale; the texture encoder for a subnormal descriptor scale), not the
+// one that was changed. It names the first layer whose values run away, else the scale.
+struct Overflow {
+  std::string array;
+  float value;
+  std::vector<std::string> says;
+};
+
 TEST(NonFinite, AModelWhoseFiniteWeightsOverflowIsRefused) {
   const SmallPipeline& p = small_pipeline();
-  for (const std::string array : {"nets/0/predictor/layers/1/weight", "texture_encoder/layers/0/weight"}) {
-    SCOPED_TRACE(array);
+  const std::vector<Overflow> cases = {
+      {"nets/0/predictor/layers/1/weight", 3e38f, {"/nets/0/predictor/layers/1", "non-finite"}},
+      {"texture_encoder/layers/0/weight", 3e38f, {"/texture_encoder/layers/0", "non-finite"}},
+      {"nets/0/action_encoder/layers/1/bias", 3e38f, {"/nets/0/action_encoder/layers/1", "non-finite"}},
+      {"normalisation/target_scale", 3e38f, {"/normalisation/target_scale", "non-finite"}},
+      {"normalisation/descriptor_scale", 1e-45f, {"/normalisation/descriptor_scale", "at least 1.2e-38"}},
+  };
+  for (const Overflow& c : cases) {
+    SCOPED_TRACE(c.array);
     const TempDir dir;
     const std::string model = copy_into(dir, quick_model(), "m.h5");
-    Edit(model).change_floats(array, [](std::vector<float>& v) { std::fill(v.begin(), v.end(), 3e38f); });
+    Edit(model).change_floats(c.array, [&](std::vector<float>& v) { std::fill(v.begin(), v.end(), c.value); });
     std::ofstream trajectory(dir.file("t.csv"));
     trajectory << "force,speed\n";
     for (int i = 0; i < 20; ++i) trajectory << "1,100\n";
     trajectory.close();
     const std::string material = read_json(p.split)["materials"][0]["id"];
-    const std::vector<std::string> mentions = {model, "/" + array.substr(0, array.find("/layers")), "non-finite", "Train the model again"};
+    std::vector<std::string> mentions = c.says;
+    mentions.insert(mentions.end(), {model, "Train the model again"});
     expect_refusal(run_haptex({"predict", model, "--material", material, "--normal-force", "1", "--speed", "100"}), mentions);
     expect_refusal(run_haptex({"render", model, "--material", material, "--trajectory", dir.file("t.csv"), "-o", dir.file("o.wav")}),
                    mentions);
