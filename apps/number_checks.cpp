@@ -1,5 +1,6 @@
 #include "apps/number_checks.hpp"
 
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -8,14 +9,17 @@ namespace haptex::apps {
 namespace {
 
 // An empty string when `input` is a finite number of at least `min` (above it when `strict`); what is
-// wrong otherwise. Text that is no number is left to CLI11's conversion, which names the type.
+// wrong otherwise. Text that is no number is left to CLI11's conversion, which names the type. Many
+// options are 32-bit floats, so every number is judged as one would hold it: 1e39 would be inf, and a
+// positive 1e-320 would be 0.
 std::string judge(const std::string& input, double min, bool strict) {
   char* end = nullptr;
   const double value = std::strtod(input.c_str(), &end);
   if (end == input.c_str()) return "";
-  if (!std::isfinite(value)) return "must be a finite number, not " + input;
+  if (!std::isfinite(value) || std::abs(value) > FLT_MAX) return "must be a finite number (at most 3.4e38 in size), not " + input;
   if (value < min || (strict && value == min))
     return std::string("must be ") + (strict ? "above " : "at least ") + std::to_string(int(min)) + ", not " + input;
+  if (strict && value < FLT_MIN) return "must be at least 1.2e-38 (the least normal 32-bit float), not " + input;
   return "";
 }
 

@@ -6,8 +6,8 @@
 
 namespace haptex::apps {
 
-CLI::Validator finite_number();        // every floating-point option has it (run_main.cpp)
-CLI::Validator positive_number();      // finite and > 0
+CLI::Validator finite_number();        // every floating-point option has it (run_main.cpp); at most 3.4e38 in size
+CLI::Validator positive_number();      // finite and > 0, at least 1.2e-38 (a normal 32-bit float)
 CLI::Validator non_negative_number();  // finite and >= 0
 CLI::Validator odd_number();           // a whole number not divisible by 2
 

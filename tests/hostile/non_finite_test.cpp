@@ -77,7 +77,9 @@ std::vector<std::vector<std::string>> commands_under(std::vector<std::string> pa
 }
 
 // CLI11 reads "nan" and "inf" as numbers, and range checks let NaN through: every option whose help
-// says FLOAT, in every command, refuses them before any work.
+// says FLOAT, in every command, refuses them before any work; 1e39 too, which a 32-bit float holds as
+// inf. A POSITIVE one refuses 1e-320, which a 32-bit float holds as 0 (review 3: --trigger 1e-320
+// found a "press" in every frame).
 TEST(NonFinite, NoFloatingPointOptionTakesNaNOrInfinity) {
   static const std::regex float_option("^ *(--[a-z-]+) FLOAT.*");
   int options = 0;
@@ -89,15 +91,20 @@ TEST(NonFinite, NoFloatingPointOptionTakesNaNOrInfinity) {
     for (std::string line; std::getline(help, line);) {
       if (!std::regex_match(line, m, float_option)) continue;
       ++options;
-      for (const char* value : {"nan", "inf", "-inf"}) {
+      std::vector<std::string> values = {"nan", "inf", "-inf", "1e39", "-1e39"};
+      if (line.find("POSITIVE") != std::string::npos) values.push_back("1e-320");
+      for (const std::string& value : values) {
         std::vector<std::string> args = command;
         args.push_back(m[1].str() + "=" + value);
         SCOPED_TRACE(args.front() + " " + args.back());
         const CommandResult r = run_haptex(args);
         EXPECT_EQ(r.exit_code, 2) << r.err;
         EXPECT_NE(r.err.find(m[1].str() + ": "), std::string::npos) << r.err;
-        if (std::string(value) == "nan") {
+        if (value == "nan") {
           EXPECT_NE(r.err.find("must be a finite number"), std::string::npos) << r.err;
+        }
+        if (value == "1e-320") {
+          EXPECT_NE(r.err.find("at least 1.2e-38"), std::string::npos) << r.err;
         }
         EXPECT_FALSE(std::regex_search(r.err, std::regex("[0-9]{20}"))) << "no bound of 309 digits: " << r.err;
       }
