@@ -7,6 +7,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/h5/link_rule.hpp"
 #include "dataset/layout.hpp"
 #include "qa/checkers.hpp"
 #include "qa/h5_inspect.hpp"
@@ -224,13 +225,21 @@ CheckResult check_layout_units(const std::vector<RowFindings>& rows) {
   return tally.result();
 }
 
+CheckResult check_layout_links(const h5::Group& root) {
+  CheckTally tally("layout.links", "objects");
+  for (const auto& [path, fault] : h5::link_faults(root)) tally.fail(path, fault.what);
+  tally.set_pass_message("every object is reached by one hard link");
+  tally.pass();
+  return tally.result();
+}
+
 }  // namespace
 
 std::vector<CheckResult> check_layout(const h5::Group& root, const std::string& format) {
   const std::vector<LayoutRow> rows = rows_for_format(embedded_layout(), format);
   const std::vector<RowFindings> found = find_rows(root, rows);
   return {check_layout_required(found), check_layout_dtype(found), check_layout_shape(root, found),
-          check_layout_units(found)};
+          check_layout_units(found), check_layout_links(root)};
 }
 
 }  // namespace haptex::qa

@@ -6,6 +6,7 @@
 #include <cctype>
 
 #include "core/error.hpp"
+#include "core/h5/link_rule.hpp"
 #include "core/text/utf8.hpp"
 
 namespace haptex::h5 {
@@ -263,13 +264,9 @@ Group Group::require_group(std::string_view name) {
   return has_group(name) ? open_group(name) : create_group(name);
 }
 
-// haptex reads only what a file stores itself: a soft or external link may point anywhere (another
-// file, which the file's SHA-256 does not cover), so opening one is refused.
 static void require_hard_link(hid_t group, std::string_view name, const std::string& file, const std::string& path) {
-  H5L_info_t info;
-  if (H5Lget_info(group, std::string(name).c_str(), &info, H5P_DEFAULT) >= 0 && info.type != H5L_TYPE_HARD)
-    throw input_error(file, path, "is a soft or external link; haptex reads only data stored in the file itself",
-                      "Store the data in the file instead of linking to it");
+  if (const std::optional<LinkFault> fault = soft_or_external(group, std::string(name), path, file))
+    throw input_error(file, path, fault->what, fault->fix);
 }
 
 Group Group::open_group(std::string_view name) const {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/h5/link_rule.hpp"
 #include "core/h5/node.hpp"
 
 namespace haptex::h5 {
@@ -47,7 +48,7 @@ class Values {
 
 struct Copy {
   std::string source_file, target_file;
-  CopiedObjects& seen;  // every object copied, by address: a second link to one is refused
+  CopiedObjects& seen;  // every object copied, by address (core/h5/link_rule.hpp)
 
   // References point at objects of the file they were written in: copied, they would point nowhere
   // (or anywhere) in the output. No haptex file holds them.
@@ -60,14 +61,6 @@ struct Copy {
   void require_readable(hid_t type, hid_t space, const std::string& where) const {
     require_plain_type(type, where);
     require_readable_size(double(std::max<hssize_t>(0, H5Sget_simple_extent_npoints(space))), H5Tget_size(type), source_file, where);
-  }
-
-  std::string member_name(hid_t group, hsize_t i, const std::string& group_path) const {
-    const ssize_t length = H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
-    std::string name(std::size_t(length > 0 ? length : 0), '\0');
-    if (length < 0 || H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size() + 1, H5P_DEFAULT) < 0)
-      check_input_status(-1, "list " + group_path, source_file);
-    return name;
   }
 
   void attributes(hid_t from, hid_t to, const std::string& source_path, const std::string& target_path) const {
@@ -154,30 +147,15 @@ struct Copy {
     Handle to(check(H5Gcreate2(to_parent, new_name.c_str(), H5P_DEFAULT, creation.get(), H5P_DEFAULT), "create group",
                     target_file + ":" + target_path));
     attributes(from.get(), to.get(), source_path, target_path);
-    H5G_info_t info;
-    check_input_status(H5Gget_info(from.get(), &info), "list " + source_path, source_file);
-    for (hsize_t i = 0; i < info.nlinks; ++i) {
-      const std::string member = member_name(from.get(), i, source_path);
+    for (const std::string& member : link_names(from.get(), source_path, source_file))
       object(from.get(), member, to.get(), member, joined(source_path, member), joined(target_path, member));
-    }
   }
 
   void object(hid_t from_parent, const std::string& name, hid_t to_parent, const std::string& new_name,
               const std::string& source_path, const std::string& target_path) {
-    H5L_info_t link;
-    check_input_status(H5Lget_info(from_parent, name.c_str(), &link, H5P_DEFAULT), "read the link " + source_path, source_file);
-    if (link.type != H5L_TYPE_HARD)
-      throw input_error(source_file, source_path,
-                        std::string("is ") + (link.type == H5L_TYPE_SOFT ? "a soft" : "an external") +
-                            " link, which no haptex file holds and which is not copied",
-                        "Remove the link (h5py: del f[path]), or make the file again with the haptex command that wrote it");
     H5O_info_t info;
-    check_input_status(H5Oget_info_by_name2(from_parent, name.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT),
-                       "read " + source_path, source_file);
-    // A hard link back to a group above would copy forever; haptex files link each object once.
-    if (const auto [first, added] = seen.emplace(info.addr, source_path); !added)
-      throw input_error(source_file, source_path, "is a second link to " + first->second + ", which no haptex file holds",
-                        "Remove the extra link, or make the file again with the haptex command that wrote it");
+    if (const std::optional<LinkFault> fault = follow_link(from_parent, name, source_path, source_file, seen, info))
+      throw input_error(source_file, source_path, fault->what, fault->fix);
     if (info.type == H5O_TYPE_GROUP) group(from_parent, name, to_parent, new_name, source_path, target_path);
     else if (info.type == H5O_TYPE_DATASET) dataset(from_parent, name, to_parent, new_name, source_path, target_path);
     else

@@ -4,6 +4,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "dataset/press_images.hpp"
+#include "core/error.hpp"
+#include "dataset/format.hpp"
+#include "qa/integrity.hpp"
 #include "qa/run_qa.hpp"
 #include "tests/qa/qa_fixture.hpp"
 #include "tests/support/mutations.hpp"
@@ -214,6 +217,24 @@ TEST_F(GelsightMutation, AnImageWhosePngCrcFailsIsGelsightImages) {
   ASSERT_NE(r.find("gelsight.images"), nullptr);
   EXPECT_EQ(r.find("gelsight.images")->status, qa::Status::fail);
   EXPECT_NE(r.find("gelsight.images")->message.find(kPress + "/reference[0]"), std::string::npos) << r.find("gelsight.images")->message;
+}
+
+// Review 3: a press or peak reached by a second hard link was "clean" to qa while merge and align
+// refused the file. qa now reports every such link (layout.links), so the three agree.
+TEST_F(GelsightMutation, AnObjectLinkedTwiceIsLayoutLinks) {
+  {
+    Edit e(file_);
+    e.remove("materials/woven_1/presses/4/peak");
+    const h5::Group root = e.root();
+    H5Lcreate_hard(root.id(), "materials/woven_1/presses/3/peak", root.id(), "materials/woven_1/presses/4/peak", H5P_DEFAULT, H5P_DEFAULT);
+  }
+  const qa::Report r = qa();
+  ASSERT_NE(r.find("layout.links"), nullptr);
+  EXPECT_EQ(r.find("layout.links")->status, qa::Status::fail);
+  EXPECT_NE(r.find("layout.links")->message.find("/materials/woven_1/presses/4/peak: is a second link to /materials/woven_1/presses/3/peak"),
+            std::string::npos)
+      << r.find("layout.links")->message;
+  EXPECT_THROW(qa::require_integrity(h5::File::open(file_).root(), dataset::format_name(dataset::Kind::gelsight)), Error) << "merge and align refuse it too";
 }
 
 }  // namespace

@@ -22,16 +22,16 @@ void expect_clean(const qa::Report& report, qa::FileKind kind, std::size_t check
 }
 
 TEST(GoodFiles, RecordingsPassEveryCheck) {
-  expect_clean(qa::run_qa({small_pipeline().recordings, {}}), qa::FileKind::recordings, 16);
+  expect_clean(qa::run_qa({small_pipeline().recordings, {}}), qa::FileKind::recordings, 17);
 }
 
 // The synthetic gel's references are too smooth for gelsight.blur (docs/qa.md).
 TEST(GoodFiles, GelsightPassesEveryCheck) {
-  expect_clean(qa::run_qa({small_pipeline().gelsight, {}}), qa::FileKind::gelsight, 13, {"gelsight.blur"});
+  expect_clean(qa::run_qa({small_pipeline().gelsight, {}}), qa::FileKind::gelsight, 14, {"gelsight.blur"});
 }
 
 TEST(GoodFiles, DatasetWithItsSplitPassesEveryCheck) {
-  expect_clean(qa::run_qa({small_pipeline().dataset, small_pipeline().split}), qa::FileKind::dataset, 4 + 12 + 9 + 2 + 9,
+  expect_clean(qa::run_qa({small_pipeline().dataset, small_pipeline().split}), qa::FileKind::dataset, 5 + 12 + 9 + 2 + 9,
                {"gelsight.blur"});
 }
 

@@ -1,0 +1,70 @@
+#include "core/h5/link_rule.hpp"
+
+#include "core/h5/handle.hpp"
+
+namespace haptex::h5 {
+namespace {
+
+std::string joined(const std::string& path, const std::string& name) { return path == "/" ? "/" + name : path + "/" + name; }
+
+void collect(hid_t group, const std::string& path, const std::string& file, CopiedObjects& seen,
+             std::vector<std::pair<std::string, LinkFault>>& faults) {
+  for (const std::string& name : link_names(group, path, file)) {
+    const std::string member = joined(path, name);
+    H5O_info_t info;
+    if (const std::optional<LinkFault> fault = follow_link(group, name, member, file, seen, info)) {
+      faults.emplace_back(member, *fault);
+    } else if (info.type == H5O_TYPE_GROUP) {
+      Handle child(check_input(H5Gopen2(group, name.c_str(), H5P_DEFAULT), "open " + member, file));
+      collect(child.get(), member, file, seen, faults);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> link_names(hid_t group, const std::string& group_path, const std::string& file) {
+  H5G_info_t info;
+  check_input_status(H5Gget_info(group, &info), "list " + group_path, file);
+  std::vector<std::string> names;
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    const ssize_t length = H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+    std::string name(std::size_t(length > 0 ? length : 0), '\0');
+    if (length < 0 || H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), name.size() + 1, H5P_DEFAULT) < 0)
+      check_input_status(-1, "list " + group_path, file);
+    names.push_back(std::move(name));
+  }
+  return names;
+}
+
+std::optional<LinkFault> soft_or_external(hid_t parent, const std::string& name, const std::string& path, const std::string& file) {
+  H5L_info_t link;
+  check_input_status(H5Lget_info(parent, name.c_str(), &link, H5P_DEFAULT), "read the link " + path, file);
+  if (link.type == H5L_TYPE_HARD) return std::nullopt;
+  return LinkFault{std::string("is ") + (link.type == H5L_TYPE_SOFT ? "a soft" : "an external") +
+                       " link, which no haptex file holds and which is never followed: haptex reads only data stored in the file itself",
+                   "Store the data in the file instead of linking to it (h5py: del f[path], then write it), or make the file again with "
+                   "the haptex command that wrote it"};
+}
+
+std::optional<LinkFault> follow_link(hid_t parent, const std::string& name, const std::string& path, const std::string& file,
+                                     CopiedObjects& seen, H5O_info_t& info) {
+  if (std::optional<LinkFault> fault = soft_or_external(parent, name, path, file)) return fault;
+  check_input_status(H5Oget_info_by_name2(parent, name.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT), "read " + path, file);
+  if (const auto [first, added] = seen.emplace(info.addr, path); !added)
+    return LinkFault{"is a second link to " + first->second + ", which no haptex file holds",
+                     "Remove the extra link, or make the file again with the haptex command that wrote it"};
+  return std::nullopt;
+}
+
+std::vector<std::pair<std::string, LinkFault>> link_faults(const Group& root) {
+  CopiedObjects seen;
+  H5O_info_t info;
+  check_input_status(H5Oget_info2(root.id(), &info, H5O_INFO_BASIC), "read " + root.object_path(), root.file());
+  seen.emplace(info.addr, root.object_path());
+  std::vector<std::pair<std::string, LinkFault>> faults;
+  collect(root.id(), root.object_path(), root.file(), seen, faults);
+  return faults;
+}
+
+}  // namespace haptex::h5
