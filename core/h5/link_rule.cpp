@@ -7,16 +7,16 @@ namespace {
 
 std::string joined(const std::string& path, const std::string& name) { return path == "/" ? "/" + name : path + "/" + name; }
 
-void collect(hid_t group, const std::string& path, const std::string& file, CopiedObjects& seen,
-             std::vector<std::pair<std::string, LinkFault>>& faults) {
+void collect(hid_t group, const std::string& path, const std::string& file, CopiedObjects& seen, LinkReport& report) {
   for (const std::string& name : link_names(group, path, file)) {
     const std::string member = joined(path, name);
+    ++report.links;
     H5O_info_t info;
     if (const std::optional<LinkFault> fault = follow_link(group, name, member, file, seen, info)) {
-      faults.emplace_back(member, *fault);
+      report.faults.emplace_back(member, *fault);
     } else if (info.type == H5O_TYPE_GROUP) {
       Handle child(check_input(H5Gopen2(group, name.c_str(), H5P_DEFAULT), "open " + member, file));
-      collect(child.get(), member, file, seen, faults);
+      collect(child.get(), member, file, seen, report);
     }
   }
 }
@@ -57,14 +57,14 @@ std::optional<LinkFault> follow_link(hid_t parent, const std::string& name, cons
   return std::nullopt;
 }
 
-std::vector<std::pair<std::string, LinkFault>> link_faults(const Group& root) {
+LinkReport check_links(const Group& root) {
   CopiedObjects seen;
   H5O_info_t info;
   check_input_status(H5Oget_info2(root.id(), &info, H5O_INFO_BASIC), "read " + root.object_path(), root.file());
   seen.emplace(info.addr, root.object_path());
-  std::vector<std::pair<std::string, LinkFault>> faults;
-  collect(root.id(), root.object_path(), root.file(), seen, faults);
-  return faults;
+  LinkReport report;
+  collect(root.id(), root.object_path(), root.file(), seen, report);
+  return report;
 }
 
 }  // namespace haptex::h5

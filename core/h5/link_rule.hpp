@@ -32,7 +32,11 @@ std::optional<LinkFault> soft_or_external(hid_t parent, const std::string& name,
 std::optional<LinkFault> follow_link(hid_t parent, const std::string& name, const std::string& path, const std::string& file,
                                      CopiedObjects& seen, H5O_info_t& info);
 
-// Every link below `root` that breaks the rule, by path: {path, fault}.
-std::vector<std::pair<std::string, LinkFault>> link_faults(const Group& root);
+// Every link below `root`: how many, and each that breaks the rule, by path.
+struct LinkReport {
+  std::size_t links = 0;
+  std::vector<std::pair<std::string, LinkFault>> faults;
+};
+LinkReport check_links(const Group& root);
 
 }  // namespace haptex::h5

@@ -115,7 +115,8 @@ TEST(CommandLine, CaptureValuesAreReadWholeAndOnce) {
   expect_refusal(record({"--control", "gain=0x10"}), {"--control gain=0x10", "whole decimal number"});
   expect_refusal(record({"--control", "gain=3", "--control", "gain=4"}), {"--control gain=4", "given twice"});
   expect_refusal(record({"--size", "160x120x3"}), {"--size 160x120x3", "WIDTHxHEIGHT"});
-  expect_refusal(record({"--seconds", "1e39"}), {"--seconds", "at most 1e6"});
+  expect_refusal(record({"--seconds", "1e39"}), {"--seconds", "at most 3.4e38 in size"});
+  expect_refusal(record({"--seconds", "2e6"}), {"--seconds", "at most 1e6"});
   // Review 2, #15: a --sensors list (even a FIFO) was ignored unread when --device named the camera.
   expect_refusal(record({"--sensors", d.file("sensors.json")}), {"--sensors requires --serial"});
   const auto device = [&](const std::string& spec) {
