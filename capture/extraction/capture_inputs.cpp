@@ -4,7 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include "capture/storage/press_file_frames.hpp"
+#include "dataset/press_file.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "core/text/utf8.hpp"
@@ -29,7 +29,7 @@ void sort_by_name(std::vector<std::string>& paths) {
 // is refused by name rather than skipped.
 bool is_source_file(const fs::directory_entry& entry) {
   const std::string p = entry.path().string();
-  if (!(is_video_name(p) || is_press_file_name(p)) || entry.is_directory()) return false;
+  if (!(is_video_name(p) || dataset::is_press_file_name(p)) || entry.is_directory()) return false;
   require_regular_file(p);
   return true;
 }
@@ -71,7 +71,7 @@ CaptureInput input_for(const std::string& path, const std::string& material_name
                        const std::optional<std::string>& material) {
   text::require_utf8(path, path, "the file's name");  // it is stored as the press's source
   std::error_code ec;
-  const bool press = is_press_file_name(path);
+  const bool press = dataset::is_press_file_name(path);
   const auto kind = press ? CaptureInput::Kind::press_file
                   : fs::is_directory(path, ec) ? CaptureInput::Kind::image_sequence
                                                : CaptureInput::Kind::video;

@@ -25,7 +25,7 @@ std::vector<CaptureInput> expand_capture_inputs(const std::vector<std::string>& 
 // "press_2" < "press_10": runs of digits compare as numbers.
 bool natural_less(const std::string& a, const std::string& b);
 bool is_video_name(const std::string& path);
-// is_press_file_name: capture/storage/press_file_frames.hpp (replay takes press files by name too).
+// is_press_file_name: dataset/press_file.hpp (replay takes press files by name too).
 bool is_image_name(const std::string& path);
 // A folder with frame images in it (at least two).
 bool is_image_sequence_dir(const std::string& path);

@@ -3,8 +3,7 @@
 
 #include "capture/extraction/frame_source.hpp"
 #include "capture/scoring/scoring_image.hpp"
-#include "capture/storage/image_datasets.hpp"
-#include "capture/storage/press_file_frames.hpp"
+#include "dataset/press_file.hpp"
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "core/sha256.hpp"
@@ -24,9 +23,7 @@ class PressFileSource : public FrameSource {
     material_ = root.attr_string(layout::kPressMaterial);
     // The press's order covers its decoded frames too: a file whose frames hold B, G, R says BGR.
     order_ = dataset::read_channel_order(root, layout::kReference);
-    reference_.image = read_image(root, layout::kReference);
-    if (reference_.image.size() != frames_.size())
-      throw input_error(frames_.path(), "/reference", "the reference is not the frame size", "Record the press again");
+    reference_.image = frames_.reference();
     reference_.noise = float(root.attr_double(layout::kNoise));
     reference_.pixel_threshold = float(root.attr_double(layout::kPixelThreshold));
     reference_.trigger = float(root.attr_double(layout::kTrigger));
@@ -92,7 +89,7 @@ class PressFileSource : public FrameSource {
     return image;
   }
 
-  PressFileFrames frames_;
+  dataset::PressFile frames_;
   std::string material_;
   dataset::ChannelOrder order_ = dataset::kWrittenChannelOrder;
   StoredReference reference_;

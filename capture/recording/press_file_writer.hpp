@@ -1,34 +1,17 @@
 #pragma once
-// One press file (schemas/hdf5-layout.md "Press file"): the frames of one press as the sensor sent
-// them (MJPG bytes untouched; raw formats as lossless PNG), their timestamps, sequence numbers, flags
-// and live contact scores, the session's no-contact reference, and the device, format, controls,
-// material and loss counts as attributes. Frames are appended as they come; the file appears under its
-// final name only at finish().
+// The capture half of writing a press file (the file itself: dataset/press_file.hpp): frames stored as
+// the sensor sent them (MJPG bytes untouched; raw YUYV as lossless PNG), lost frames counted from the
+// driver's sequence numbers and timestamps, and what the take processor needs of the press afterwards.
 #include <cstdint>
-#include <memory>
 #include <string>
-#include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "capture/device/drop_counter.hpp"
 #include "capture/device/frame.hpp"
-#include "dataset/vlen_bytes.hpp"
-#include "core/h5/atomic_file.hpp"
+#include "dataset/press_file.hpp"
 
 namespace haptex::capture {
-
-struct PressFileInfo {
-  std::string material;
-  int press_index = 0;
-  std::string device, card, driver, bus_info, serial;
-  std::uint32_t fourcc = 0;
-  int width = 0, height = 0;
-  double fps = 0, requested_fps = 0;
-  std::string locked_controls = "[]", missing_controls = "[]";  // JSON arrays, as in the session manifest
-  float noise = 0, pixel_threshold = 0, trigger = 0, level = 0;
-  std::string provenance;
-};
 
 struct PressFileSummary {
   std::string path;
@@ -38,25 +21,26 @@ struct PressFileSummary {
   std::string ended_by;
 };
 
+// The header of a press file from the sensor's format: its fourcc as text, how its frames are stored.
+dataset::PressFileHeader press_file_header(std::uint32_t fourcc, int width, int height);
+
 class PressFileWriter {
  public:
-  // `reference` is the no-contact reference image (BGR, the frame size).
-  PressFileWriter(const std::string& path, const PressFileInfo& info, const cv::Mat& reference);
+  // `header` as press_file_header made it, the rest filled in; `reference` is the no-contact reference
+  // image (BGR, the frame size).
+  PressFileWriter(const std::string& path, const dataset::PressFileHeader& header, const cv::Mat& reference);
   // error_buffers: buffers flagged by the driver since the previous appended frame.
   void append(const Frame& frame, float score, std::uint64_t error_buffers);
   void mark_contact(std::int64_t first, std::int64_t last, std::int64_t peak);  // indices into this file's frames
-  std::size_t frames() const { return timestamps_.size(); }
+  std::size_t frames() const { return file_.frames(); }
   // Writes the per-frame arrays and attributes and renames the file into place.
   PressFileSummary finish(const std::string& ended_by);
 
  private:
-  std::vector<std::uint8_t> encode(const Frame& frame) const;
-  PressFileInfo info_;
-  std::unique_ptr<h5::AtomicFile> file_;
-  std::unique_ptr<dataset::VlenBytesWriter> frames_;
-  std::vector<std::int64_t> timestamps_;
-  std::vector<std::uint32_t> sequences_, flags_;
-  std::vector<float> scores_;
+  std::vector<std::uint8_t> stored(const Frame& frame) const;
+  bool jpeg_;
+  cv::Size size_;
+  dataset::PressFileWriter file_;
   DropCounter drops_;
   PressFileSummary summary_;
 };

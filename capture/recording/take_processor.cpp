@@ -142,7 +142,7 @@ void TakeProcessor::open_press(const PressInterval& contact) {
   current_.contact_first = contact.first;
   current_.peak_frame = contact.peak;
   post_left_ = -1;
-  PressFileInfo info;
+  dataset::PressFileHeader info = press_file_header(session_.format.fourcc, size_.width, size_.height);
   info.material = session_.material;
   info.press_index = j;
   info.device = session_.identity.path;
@@ -150,9 +150,6 @@ void TakeProcessor::open_press(const PressInterval& contact) {
   info.driver = session_.identity.driver;
   info.bus_info = session_.identity.bus_info;
   info.serial = session_.serial;
-  info.fourcc = session_.format.fourcc;
-  info.width = size_.width;
-  info.height = size_.height;
   info.fps = session_.format.fps();
   info.requested_fps = session_.format.requested_fps;
   info.locked_controls = locked_controls_json(session_.controls);

@@ -13,7 +13,7 @@
 namespace haptex::capture {
 
 FakeMode press_file_replay_mode(const std::string& path) {
-  const PressFileFrames frames(path);
+  const dataset::PressFile frames(path);
   FakeMode mode;
   mode.fourcc = frames.encoding() == "jpeg" ? V4L2_PIX_FMT_MJPEG : V4L2_PIX_FMT_YUYV;
   mode.width = std::uint32_t(frames.size().width);

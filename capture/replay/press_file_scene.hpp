@@ -10,7 +10,7 @@
 
 #include "capture/device/camera_scene.hpp"
 #include "capture/device/fake_camera.hpp"
-#include "capture/storage/press_file_frames.hpp"
+#include "dataset/press_file.hpp"
 #include "dataset/channel_order.hpp"
 
 namespace haptex::capture {
@@ -25,7 +25,7 @@ class PressFileScene : public CameraScene {
   const std::vector<std::uint8_t>* frame(std::uint64_t k) override;  // nullptr after the last
 
  private:
-  PressFileFrames frames_;
+  dataset::PressFile frames_;
   dataset::ChannelOrder order_;
   std::vector<std::uint8_t> payload_;
 };

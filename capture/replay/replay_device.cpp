@@ -12,7 +12,7 @@
 #include "capture/replay/press_file_scene.hpp"
 #include "capture/replay/video_scene.hpp"
 #include "capture/storage/video_file.hpp"
-#include "capture/storage/press_file_frames.hpp"
+#include "dataset/press_file.hpp"
 #include "core/error.hpp"
 #include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
@@ -78,16 +78,16 @@ FakeDevice parse_replay_device(const std::string& device) {
   replay.source_file = file;
   FakeCameraConfig& c = replay.config;
   c.realtime = true;
-  FakeMode mode = is_press_file_name(file) ? press_file_replay_mode(file) : video_replay_mode(file);
+  FakeMode mode = dataset::is_press_file_name(file) ? press_file_replay_mode(file) : video_replay_mode(file);
   for (const auto& [key, value] : keys.items(items)) {
     if (keys.apply_stream_key(c, key, value)) continue;
     if (key != "fps") keys.refuse(key, "unknown key");
     mode.fps = {keys.number(key, value)};
-    if (!(mode.fps.front() >= kLowestFps && mode.fps.front() <= kHighestFps))
-      keys.refuse(key, text::format("expected a rate of %g to %g frames per second", kLowestFps, kHighestFps));
+    if (!(mode.fps.front() >= dataset::kLowestFps && mode.fps.front() <= dataset::kHighestFps))
+      keys.refuse(key, text::format("expected a rate of %g to %g frames per second", dataset::kLowestFps, dataset::kHighestFps));
   }
-  if (!(mode.fps.front() >= kLowestFps && mode.fps.front() <= kHighestFps))
-    throw input_error(file, "frame rate", text::format("the file does not say its frame rate (or says one outside %g to %g frames per second)", kLowestFps, kHighestFps),
+  if (!(mode.fps.front() >= dataset::kLowestFps && mode.fps.front() <= dataset::kHighestFps))
+    throw input_error(file, "frame rate", text::format("the file does not say its frame rate (or says one outside %g to %g frames per second)", dataset::kLowestFps, dataset::kHighestFps),
                       "Give it: replay:" + file + ",fps=N");
   if (mode.width > kMaxSide || mode.height > kMaxSide)
     throw input_error(file, "frame size", std::to_string(mode.width) + "x" + std::to_string(mode.height) +
@@ -104,7 +104,7 @@ FakeDevice parse_replay_device(const std::string& device) {
   c.card = "haptex replay";
   c.driver = "haptex replay";
   c.bus_info = "replay";
-  const bool press_file = is_press_file_name(file);
+  const bool press_file = dataset::is_press_file_name(file);
   const std::string path = file;
   c.film = [press_file, path](const FakeMode& granted) -> std::unique_ptr<CameraScene> {
     if (press_file) return std::make_unique<PressFileScene>(path);

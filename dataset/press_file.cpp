@@ -1,0 +1,151 @@
+#include "dataset/press_file.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+
+#include <opencv2/imgproc.hpp>
+
+#include "core/error.hpp"
+#include "core/naming.hpp"
+#include "core/text/format.hpp"
+#include "dataset/channel_order.hpp"
+#include "dataset/description.hpp"
+#include "dataset/format.hpp"
+#include "dataset/layout.hpp"
+
+namespace haptex::dataset {
+namespace {
+
+// The reference: uint8 H x W x 3 in RGB order (what h5py, PIL and matplotlib users expect; its
+// channel_order attribute says so), one image per chunk, gzip level 1 (images barely compress
+// further, and a 3280 x 2464 frame at level 4 would take longer than a frame period).
+void write_reference(h5::Group& root, const cv::Mat& bgr) {
+  CV_Assert(bgr.type() == CV_8UC3);
+  cv::Mat rgb;
+  cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+  if (!rgb.isContinuous()) rgb = rgb.clone();
+  h5::DatasetOptions options;
+  options.gzip_level = 1;
+  options.chunk = {hsize_t(bgr.rows), hsize_t(bgr.cols), 3};
+  h5::Dataset d = root.write_array<std::uint8_t>(layout::kReference, std::span<const std::uint8_t>(rgb.data, rgb.total() * 3),
+                                                 {hsize_t(bgr.rows), hsize_t(bgr.cols), 3}, options);
+  describe(d, "", "no-contact reference: mean of the frames taken before the presses");
+  d.set_attr(layout::kChannelOrder, channel_order_name(kWrittenChannelOrder));
+}
+
+void write_header(h5::Group& root, const PressFileHeader& h) {
+  stamp(root, Kind::press, h.provenance);
+  root.set_attr(layout::kPressMaterial, h.material);
+  root.set_attr(layout::kPressMaterialId, material_id(h.material));
+  root.set_attr(layout::kPressIndex, h.press_index);
+  root.set_attr(layout::kDevice, h.device);
+  root.set_attr(layout::kCard, h.card);
+  root.set_attr(layout::kDriver, h.driver);
+  root.set_attr(layout::kBusInfo, h.bus_info);
+  root.set_attr(layout::kSerial, h.serial);
+  root.set_attr(layout::kFourcc, h.fourcc);
+  root.set_attr(layout::kEncoding, h.encoding);
+  // JPEG and PNG decode to R, G, B, and the reference is written RGB.
+  root.set_attr(layout::kChannelOrder, channel_order_name(kWrittenChannelOrder));
+  root.set_attr(layout::kWidth, h.width);
+  root.set_attr(layout::kHeight, h.height);
+  root.set_attr(layout::kFps, h.fps);
+  root.set_attr(layout::kRequestedFps, h.requested_fps);
+  root.set_attr(layout::kLockedControls, h.locked_controls);
+  root.set_attr(layout::kMissingControls, h.missing_controls);
+  root.set_attr(layout::kNoise, double(h.noise));
+  root.set_attr(layout::kPixelThreshold, double(h.pixel_threshold));
+  root.set_attr(layout::kTrigger, double(h.trigger));
+  root.set_attr(layout::kNoContactLevel, double(h.level));
+}
+
+void write_trailer(h5::Group& root, const PressFileTrailer& t, std::size_t frames) {
+  root.set_attr(layout::kSamples, std::int64_t(frames));
+  root.set_attr(layout::kDroppedFrames, std::int64_t(t.dropped_frames));
+  root.set_attr(layout::kErrorFrames, std::int64_t(t.error_frames));
+  root.set_attr(layout::kCorruptFrames, std::int64_t(t.corrupt_frames));
+  root.set_attr(layout::kContactFirst, t.contact_first);
+  root.set_attr(layout::kContactLast, t.contact_last);
+  root.set_attr(layout::kPeakFrame, t.peak);
+  root.set_attr(layout::kEndedBy, t.ended_by);
+}
+
+}  // namespace
+
+bool is_press_file_name(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".h5" || ext == ".hdf5";
+}
+
+PressFileWriter::PressFileWriter(const std::string& path, const PressFileHeader& header, const cv::Mat& reference)
+    : header_(header), file_(std::make_unique<h5::AtomicFile>(path, false)) {
+  h5::Group root = file_->root();
+  frames_ = std::make_unique<VlenBytesWriter>(root, layout::kFrames);
+  describe(frames_->dataset(), "", header.frames_description);
+  write_reference(root, reference);
+}
+
+void PressFileWriter::append(std::span<const std::uint8_t> stored, std::int64_t timestamp_ns, std::uint32_t sequence,
+                             std::uint32_t flags, float score) {
+  frames_->append(stored);
+  timestamps_.push_back(timestamp_ns);
+  sequences_.push_back(sequence);
+  flags_.push_back(flags);
+  scores_.push_back(score);
+}
+
+void PressFileWriter::finish(const PressFileTrailer& trailer) {
+  h5::Group root = file_->root();
+  describe(root.write(layout::kTimestampNs, timestamps_), "ns", "CLOCK_MONOTONIC time the driver stamped on each frame");
+  describe(root.write(layout::kSequence, sequences_), "", "the driver's frame counter; a gap is a lost frame");
+  describe(root.write(layout::kFlags, flags_), "", "V4L2_BUF_FLAG_* of each frame's buffer");
+  describe(root.write(layout::kContrast, scores_), "grey levels", "live contact score (docs/capture.md); NaN where the frame did not decode");
+  write_header(root, header_);
+  write_trailer(root, trailer, timestamps_.size());
+  frames_.reset();
+  file_->commit();
+}
+
+PressFile::PressFile(std::string path) : path_(std::move(path)), file_(open_checked(path_, Kind::press)) {
+  const h5::Group root = file_.root();
+  frames_ = root.open_dataset(layout::kFrames);
+  if (!is_vlen_bytes(frames_)) throw input_error(path_, frames_.object_path(), "expected variable-length uint8 frames", "Record the press again");
+  encoding_ = root.attr_string(layout::kEncoding);
+  if (encoding_ != "jpeg" && encoding_ != "png")
+    throw input_error(path_, "/", "unknown frame encoding '" + encoding_ + "'", "Expected jpeg or png");
+  const std::int64_t width = root.attr_int(layout::kWidth), height = root.attr_int(layout::kHeight);
+  // 65535: V4L2 frame sizes; anything else is a damaged attribute, not a frame size.
+  if (width <= 0 || height <= 0 || width > 65535 || height > 65535)
+    throw input_error(path_, "/@width, /@height", std::to_string(width) + " x " + std::to_string(height) + " is not a frame size",
+                      "Record the press again");
+  size_ = cv::Size(int(width), int(height));
+  fps_ = root.attr_double(layout::kFps);
+  if (fps_ != 0 && !(fps_ >= kLowestFps && fps_ <= kHighestFps))  // 0: not known (replay then needs fps=)
+    throw input_error(path_, "/@fps", text::format("is %g, neither 0 (not known) nor a frame rate of %g to %g frames per second",
+                                                   fps_, kLowestFps, kHighestFps),
+                      "Record the press again, or replay it with replay:FILE,fps=N");
+  count_ = frames_.shape().at(0);
+}
+
+std::vector<std::uint8_t> PressFile::bytes(std::size_t index) const { return read_vlen_bytes(frames_, index); }
+
+cv::Mat PressFile::reference() const {
+  const h5::Group root = file_.root();
+  const ChannelOrder order = read_channel_order(root, layout::kReference);
+  const h5::Dataset d = root.open_dataset(layout::kReference);
+  const h5::Shape shape = d.shape();
+  if (shape.size() != 3 || shape[2] != 3 || d.dtype() != "uint8")
+    throw input_error(d.file(), d.object_path(), "expected an H x W x 3 uint8 image", "Was the file written by haptex?");
+  if (cv::Size(int(shape[1]), int(shape[0])) != size_)
+    throw input_error(path_, d.object_path(), "the reference is not the frame size", "Record the press again");
+  const std::vector<std::uint8_t> pixels = d.read<std::uint8_t>();
+  cv::Mat image(static_cast<int>(shape[0]), static_cast<int>(shape[1]), CV_8UC3);
+  std::memcpy(image.data, pixels.data(), pixels.size());
+  if (order == ChannelOrder::rgb) cv::cvtColor(image, image, cv::COLOR_RGB2BGR);
+  return image;
+}
+
+}  // namespace haptex::dataset
