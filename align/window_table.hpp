@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "dataset/recording_signals.hpp"
+#include "dataset/recordings_file.hpp"
 #include "dataset/window_table.hpp"
 
 namespace haptex::align {

@@ -10,7 +10,7 @@
 #include "convert/csv_recording_reader.hpp"
 #include "convert/field_map.hpp"
 #include "convert/hatt_recording_reader.hpp"
-#include "convert/recordings_writer.hpp"
+#include "convert/preprocess.hpp"
 #include "convert/texture_names.hpp"
 #include "core/error.hpp"
 #include "core/text/utf8.hpp"
@@ -87,7 +87,7 @@ ConvertResult write_all(h5::AtomicFile& out, const std::vector<std::string>& sou
     if (progress) progress(i, sources.size(), sources[i]);
     std::uintmax_t bytes = 0;
     const Recording recording = read(i, bytes);
-    const WrittenRecording written = write_recording(out.root(), recording);
+    const dataset::WrittenRecording written = dataset::write_recording(out.root(), preprocess(recording));
     result.recordings.push_back({sources[i], recording.material, written.material_id, written.index,
                                  recording.samples(), recording.sample_rate_hz});
     result.input_bytes += bytes;

@@ -5,7 +5,7 @@
 #include "core/signal/spectrum.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
-#include "dataset/recording_signals.hpp"
+#include "dataset/recordings_file.hpp"
 #include "split/sections.hpp"
 
 namespace haptex::evaluate {

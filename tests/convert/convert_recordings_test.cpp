@@ -5,7 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "convert/recordings_writer.hpp"
+#include "convert/preprocess.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/signal/fft.hpp"

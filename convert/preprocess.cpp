@@ -1,0 +1,63 @@
+#include "convert/preprocess.hpp"
+
+#include "core/signal/butterworth.hpp"
+#include "core/signal/dft321.hpp"
+#include "core/signal/sosfilt.hpp"
+
+namespace haptex::convert {
+namespace {
+
+namespace layout = dataset::layout;
+
+std::vector<float> narrow(const std::vector<double>& x) { return std::vector<float>(x.begin(), x.end()); }
+
+std::vector<float> interleave(const std::vector<double>& a, const std::vector<double>& b, const std::vector<double>& c) {
+  std::vector<float> rows(3 * a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    rows[3 * i] = float(a[i]);
+    rows[3 * i + 1] = float(b[i]);
+    rows[3 * i + 2] = float(c[i]);
+  }
+  return rows;
+}
+
+std::vector<float> lowpassed(const std::vector<double>& raw) {
+  static const signal::Sos sos = signal::butter_lowpass_hz(kLowpassOrder, kLowpassCutoffHz, kSampleRateHz);
+  return narrow(signal::sosfiltfilt(sos, raw));
+}
+
+}  // namespace
+
+dataset::RecordingToWrite preprocess(const Recording& r) {
+  const auto& ch = r.channels;
+  dataset::RecordingToWrite w;
+  w.material = r.material;
+  w.texture = r.texture;
+  w.sample_rate_hz = r.sample_rate_hz;
+  w.accel_units = r.units.at("accel");
+  w.force_units = r.units.at("force");
+  w.speed_units = r.units.at("speed");
+  w.source_path = r.source_path;
+  w.source_sha256 = r.source_sha256;
+  w.source_numbers = r.source_numbers;
+  w.source_texts = r.source_texts;
+  w.lowpass = {"butterworth", kLowpassOrder, kLowpassCutoffHz, "sosfiltfilt, odd padding, default pad length (scipy semantics)",
+               "4th-order Butterworth low-pass at 20 Hz run forward and backward (zero phase)"};
+  static_assert(kLowpassOrder == 4 && kLowpassCutoffHz == 20.0, "the description above states them");
+  w.accel_reduction = {"DFT321 frame by frame, phase along the axes' principal direction (Landin et al. 2010; schemas/hdf5-layout.md)",
+                       std::int64_t(signal::kDft321Frames.window), std::int64_t(signal::kDft321Frames.hop)};
+  w.accel = narrow(signal::dft321(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z")));
+  w.accel_xyz = interleave(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z"));
+  w.force_normal = narrow(ch.at(layout::kForceNormal));
+  w.speed = narrow(ch.at(layout::kSpeed));
+  w.force_normal_lp = lowpassed(ch.at(layout::kForceNormal));
+  w.speed_lp = lowpassed(ch.at(layout::kSpeed));
+  if (r.has(layout::kForceTangential)) w.force_tangential = narrow(ch.at(layout::kForceTangential));
+  if (r.has("position_x")) {
+    w.position = interleave(ch.at("position_x"), ch.at("position_y"), ch.at("position_z"));
+    w.position_units = r.units.at("position");
+  }
+  return w;
+}
+
+}  // namespace haptex::convert
