@@ -155,4 +155,41 @@ inline constexpr const char* kQuerySeconds = "query_seconds";    // root attribu
 inline constexpr const char* kSignalSeconds = "seconds";         // attribute of /signals
 inline constexpr const char* kPredictionsSource = "source";      // root attribute: the method, one line
 
+// Model file (predict/model_file.cpp; schemas/hdf5-layout.md, "Model file"): root attributes, the
+// materials it knows (/materials/ids, /materials/names), the descriptor's spec, the normalisation,
+// and the networks, each /layers/{i} with weight, bias and activation.
+inline constexpr const char* kModelVariant = "variant";
+inline constexpr const char* kModelConfig = "config";
+inline constexpr const char* kModelMetrics = "metrics";
+inline constexpr const char* kMaterialIds = "ids";
+inline constexpr const char* kMaterialNames = "names";
+inline constexpr const char* kFeatureSpec = "feature_spec";
+inline constexpr const char* kDescriptorSpec = "descriptor";
+inline constexpr const char* kDescriptorSize = "size";
+inline constexpr const char* kRadialBins = "radial_bins";
+inline constexpr const char* kOrientations = "orientations";
+inline constexpr const char* kOctaves = "octaves";
+inline constexpr const char* kGradientScales = "gradient_scales";
+inline constexpr const char* kDescriptorLength = "length";
+inline constexpr const char* kNormalisation = "normalisation";
+inline constexpr const char* kActionMean = "action_mean";
+inline constexpr const char* kActionScale = "action_scale";
+inline constexpr const char* kTargetScale = "target_scale";
+inline constexpr const char* kForceMin = "force_min";
+inline constexpr const char* kForceMax = "force_max";
+inline constexpr const char* kSpeedMin = "speed_min";
+inline constexpr const char* kSpeedMax = "speed_max";
+inline constexpr const char* kDescriptorMean = "descriptor_mean";
+inline constexpr const char* kDescriptorScale = "descriptor_scale";
+inline constexpr const char* kTextureEncoder = "texture_encoder";
+inline constexpr const char* kClassifier = "classifier";
+inline constexpr const char* kMaterialLatents = "material_latents";
+inline constexpr const char* kNets = "nets";
+inline constexpr const char* kActionEncoder = "action_encoder";
+inline constexpr const char* kPredictor = "predictor";
+inline constexpr const char* kLayers = "layers";
+inline constexpr const char* kWeight = "weight";
+inline constexpr const char* kBias = "bias";
+inline constexpr const char* kActivation = "activation";
+
 }  // namespace haptex::dataset::layout

@@ -8,6 +8,7 @@
 #include "core/ar/expected_spectrum.hpp"
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
+#include "dataset/object_paths.hpp"
 #include "dataset/window.hpp"
 #include "evaluate/summary_statistics.hpp"
 
@@ -106,7 +107,7 @@ std::vector<std::vector<double>> ar_input_section(const ar::PiecewiseArModel& mo
 
 void check_length(const dataset::TruthRecording& r, const SectionSignals& s, const std::string& path, const std::string& material) {
   if (std::size_t(s.begin) + s.accel.size() > r.speed_mm_s.size())
-    throw input_error(path, "/materials/" + material + "/recordings/" + std::to_string(r.index),
+    throw input_error(path, dataset::recording_path(material, r.index),
                       "the true action has " + std::to_string(r.speed_mm_s.size()) + " samples but the dataset's recording has at least " +
                           std::to_string(std::size_t(s.begin) + s.accel.size()),
                       "Give the truth.h5 written with the recordings this dataset was converted from");

@@ -1,3 +1,4 @@
+#include "dataset/object_paths.hpp"
 #include "evaluate/run_evaluation.hpp"
 
 #include <algorithm>
@@ -382,7 +383,7 @@ void check_model(const ModelInput& input, const split::DatasetSplit& split) {
                       "Evaluate with the dataset and split it was trained on, or train it again");
   for (const split::MaterialSets& s : split.materials)
     if (m.material_index(s.id) < 0)
-      throw input_error(input.path, "/materials/ids", "the model does not know material '" + s.id + "'", "Train it on this dataset");
+      throw input_error(input.path, dataset::model_material_ids_path(), "the model does not know material '" + s.id + "'", "Train it on this dataset");
 }
 
 // Only the test presses' peaks are encoded: the training presses' latents are in the model.

@@ -8,10 +8,14 @@
 #include "core/h5/atomic_file.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/object_paths.hpp"
 #include "dataset/window.hpp"
 #include "predict/model_probe.hpp"
 
 namespace haptex::predict {
+
+namespace layout = dataset::layout;
+using dataset::root_path;
 namespace {
 
 using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -36,40 +40,40 @@ void write_matrix(h5::Group g, const char* name, const Eigen::MatrixXf& m) {
 }
 
 void write_mlp(h5::Group parent, const char* name, const Mlp& net) {
-  h5::Group layers = parent.create_group(name).create_group("layers");
+  h5::Group layers = parent.create_group(name).create_group(layout::kLayers);
   for (std::size_t i = 0; i < net.layers.size(); ++i) {
     h5::Group l = layers.create_group(std::to_string(i));
-    write_matrix(l, "weight", net.layers[i].weight);
-    write_vector(l, "bias", net.layers[i].bias);
-    l.set_attr("activation", activation_name(net.layers[i].activation));
+    write_matrix(l, layout::kWeight, net.layers[i].weight);
+    write_vector(l, layout::kBias, net.layers[i].bias);
+    l.set_attr(layout::kActivation, activation_name(net.layers[i].activation));
   }
 }
 
 void write_normalisation(h5::Group root, const Model& model) {
   const Normalisation& n = model.normalisation;
-  h5::Group g = root.create_group("normalisation");
-  write_vector(g, "action_mean", n.action_mean);
-  write_vector(g, "action_scale", n.action_scale);
-  write_vector(g, "target_scale", n.target_scale);
-  g.set_attr("force_min", double(n.force_min));
-  g.set_attr("force_max", double(n.force_max));
-  g.set_attr("speed_min", double(n.speed_min));
-  g.set_attr("speed_max", double(n.speed_max));
+  h5::Group g = root.create_group(layout::kNormalisation);
+  write_vector(g, layout::kActionMean, n.action_mean);
+  write_vector(g, layout::kActionScale, n.action_scale);
+  write_vector(g, layout::kTargetScale, n.target_scale);
+  g.set_attr(layout::kForceMin, double(n.force_min));
+  g.set_attr(layout::kForceMax, double(n.force_max));
+  g.set_attr(layout::kSpeedMin, double(n.speed_min));
+  g.set_attr(layout::kSpeedMax, double(n.speed_max));
   if (model.variant == Variant::unified) {
-    write_vector(g, "descriptor_mean", n.descriptor_mean);
-    write_vector(g, "descriptor_scale", n.descriptor_scale);
+    write_vector(g, layout::kDescriptorMean, n.descriptor_mean);
+    write_vector(g, layout::kDescriptorScale, n.descriptor_scale);
   }
 }
 
 void write_descriptor_spec(h5::Group root, const TextureDescriptorSpec& spec) {
-  h5::Group g = root.create_group("feature_spec");
-  g.set_attr("descriptor", "texture_descriptor/1");
-  g.set_attr("size", spec.size);
-  g.set_attr("radial_bins", spec.radial_bins);
-  g.set_attr("orientations", spec.orientations);
-  g.set_attr("octaves", spec.octaves);
-  g.set_attr("gradient_scales", spec.gradient_scales);
-  g.set_attr("length", std::int64_t(descriptor_length(spec)));
+  h5::Group g = root.create_group(layout::kFeatureSpec);
+  g.set_attr(layout::kDescriptorSpec, "texture_descriptor/1");
+  g.set_attr(layout::kDescriptorSize, spec.size);
+  g.set_attr(layout::kRadialBins, spec.radial_bins);
+  g.set_attr(layout::kOrientations, spec.orientations);
+  g.set_attr(layout::kOctaves, spec.octaves);
+  g.set_attr(layout::kGradientScales, spec.gradient_scales);
+  g.set_attr(layout::kDescriptorLength, std::int64_t(descriptor_length(spec)));
 }
 
 constexpr const char* kRetrain = "Train the model again (haptex train)";
@@ -141,18 +145,18 @@ struct Reader {
       const std::int64_t v = g.attr_int(name);
       return v < 0 || v > 1 << 20 ? -1 : int(v);
     };
-    const TextureDescriptorSpec spec{value("size"), value("radial_bins"), value("orientations"), value("octaves"),
-                                     value("gradient_scales")};
+    const TextureDescriptorSpec spec{value(layout::kDescriptorSize), value(layout::kRadialBins), value(layout::kOrientations), value(layout::kOctaves),
+                                     value(layout::kGradientScales)};
     if (const std::string problem = spec_problem(spec); !problem.empty()) throw input_error(path, g.object_path(), problem, kRetrain);
     return spec;
   }
 
   Mlp mlp(const h5::Group& parent, const char* name) const {
     Mlp net;
-    const h5::Group layers = parent.open_group(name).open_group("layers");
+    const h5::Group layers = parent.open_group(name).open_group(layout::kLayers);
     for (const std::string& i : layers.children()) {
       const h5::Group l = layers.open_group(i);
-      DenseLayer layer{matrix(l, "weight"), vector(l, "bias"), parse_activation(l.attr_string("activation"))};
+      DenseLayer layer{matrix(l, layout::kWeight), vector(l, layout::kBias), parse_activation(l.attr_string(layout::kActivation))};
       const Eigen::Index in = net.layers.empty() ? layer.weight.cols() : net.layers.back().weight.rows();
       if (layer.bias.size() != layer.weight.rows() || layer.weight.cols() != in)
         throw input_error(path, l.object_path(), "weight and bias sizes do not chain", "Train the model again");
@@ -166,12 +170,12 @@ struct Reader {
 void check_nets(const Model& m, const std::string& path) {
   const std::size_t expected = m.variant == Variant::unified ? 1 : m.material_ids.size();
   if (m.nets.size() != expected)
-    throw input_error(path, "/nets", std::to_string(m.nets.size()) + " networks for " + std::to_string(expected), "Train the model again");
+    throw input_error(path, root_path(layout::kNets), std::to_string(m.nets.size()) + " networks for " + std::to_string(expected), "Train the model again");
   for (const SpectrumNet& n : m.nets)
     if (n.action.inputs() != kActionValues || n.predictor.outputs() != kTargetBins ||
         n.predictor.inputs() != m.latent_size() + n.action.outputs() || n.action.outputs() != m.nets[0].action.outputs() ||
         m.normalisation.target_scale.size() != kTargetBins)
-      throw input_error(path, "/nets", "the networks' sizes do not fit together", "Train the model again");
+      throw input_error(path, root_path(layout::kNets), "the networks' sizes do not fit together", "Train the model again");
 }
 
 }  // namespace
@@ -185,26 +189,26 @@ void write_model(const Model& model, const std::string& path, bool overwrite, co
 void write_model(const Model& model, h5::AtomicFile& out, const std::string& source) {
   h5::Group root = out.root();
   dataset::stamp(root, dataset::Kind::model, source);
-  root.set_attr("variant", variant_name(model.variant));
+  root.set_attr(layout::kModelVariant, variant_name(model.variant));
   root.set_attr(dataset::layout::kDatasetSha256, model.dataset_sha256);
   root.set_attr(dataset::layout::kSplitSha256, model.split_sha256);
-  root.set_attr("config", model.config.dump());
-  root.set_attr("metrics", model.metrics.dump());
-  h5::Group materials = root.create_group("materials");
-  materials.write_strings("ids", model.material_ids);
-  materials.write_strings("names", model.material_names);
+  root.set_attr(layout::kModelConfig, model.config.dump());
+  root.set_attr(layout::kModelMetrics, model.metrics.dump());
+  h5::Group materials = root.create_group(layout::kMaterials);
+  materials.write_strings(layout::kMaterialIds, model.material_ids);
+  materials.write_strings(layout::kMaterialNames, model.material_names);
   write_normalisation(root, model);
   write_descriptor_spec(root, model.descriptor);
   if (model.variant == Variant::unified) {
-    write_mlp(root, "texture_encoder", model.texture);
-    write_mlp(root, "classifier", model.classifier);
-    write_matrix(root, "material_latents", model.material_latents.transpose());
+    write_mlp(root, layout::kTextureEncoder, model.texture);
+    write_mlp(root, layout::kClassifier, model.classifier);
+    write_matrix(root, layout::kMaterialLatents, model.material_latents.transpose());
   }
-  h5::Group nets = root.create_group("nets");
+  h5::Group nets = root.create_group(layout::kNets);
   for (std::size_t k = 0; k < model.nets.size(); ++k) {
     h5::Group g = nets.create_group(std::to_string(k));
-    write_mlp(g, "action_encoder", model.nets[k].action);
-    write_mlp(g, "predictor", model.nets[k].predictor);
+    write_mlp(g, layout::kActionEncoder, model.nets[k].action);
+    write_mlp(g, layout::kPredictor, model.nets[k].predictor);
   }
 }
 
@@ -213,49 +217,49 @@ Model read_model(const std::string& path) {
   const h5::Group root = file.root();
   const Reader r{path};
   Model m;
-  const std::string variant = root.attr_string("variant");
+  const std::string variant = root.attr_string(layout::kModelVariant);
   if (variant != variant_name(Variant::unified) && variant != variant_name(Variant::per_material))
     throw input_error(path, "/ attribute 'variant'", "is '" + variant + "', neither unified nor per_material", kRetrain);
   m.variant = variant == variant_name(Variant::unified) ? Variant::unified : Variant::per_material;
   m.dataset_sha256 = root.attr_string(dataset::layout::kDatasetSha256);
   m.split_sha256 = root.attr_string(dataset::layout::kSplitSha256);
-  m.config = r.json(root, "config");
-  m.metrics = r.json(root, "metrics");
-  m.material_ids = root.open_dataset("materials/ids").read_strings();
-  m.material_names = root.open_dataset("materials/names").read_strings();
+  m.config = r.json(root, layout::kModelConfig);
+  m.metrics = r.json(root, layout::kModelMetrics);
+  m.material_ids = root.open_group(layout::kMaterials).open_dataset(layout::kMaterialIds).read_strings();
+  m.material_names = root.open_group(layout::kMaterials).open_dataset(layout::kMaterialNames).read_strings();
   if (m.material_ids.empty() || m.material_names.size() != m.material_ids.size())
-    throw input_error(path, "/materials", std::to_string(m.material_ids.size()) + " ids and " + std::to_string(m.material_names.size()) +
+    throw input_error(path, root_path(layout::kMaterials), std::to_string(m.material_ids.size()) + " ids and " + std::to_string(m.material_names.size()) +
                                               " names", kRetrain);
-  m.descriptor = r.spec(root.open_group("feature_spec"));
-  const h5::Group g = root.open_group("normalisation");
+  m.descriptor = r.spec(root.open_group(layout::kFeatureSpec));
+  const h5::Group g = root.open_group(layout::kNormalisation);
   Normalisation& n = m.normalisation;
-  n.action_mean = r.vector(g, "action_mean", kActionValues);
-  n.action_scale = r.vector(g, "action_scale", kActionValues, Values::positive);
-  n.target_scale = r.vector(g, "target_scale", kTargetBins, Values::positive);
-  n.force_min = r.bound(g, "force_min"), n.force_max = r.bound(g, "force_max");
-  n.speed_min = r.bound(g, "speed_min"), n.speed_max = r.bound(g, "speed_max");
+  n.action_mean = r.vector(g, layout::kActionMean, kActionValues);
+  n.action_scale = r.vector(g, layout::kActionScale, kActionValues, Values::positive);
+  n.target_scale = r.vector(g, layout::kTargetScale, kTargetBins, Values::positive);
+  n.force_min = r.bound(g, layout::kForceMin), n.force_max = r.bound(g, layout::kForceMax);
+  n.speed_min = r.bound(g, layout::kSpeedMin), n.speed_max = r.bound(g, layout::kSpeedMax);
   if (n.force_min > n.force_max || n.speed_min > n.speed_max)
-    throw input_error(path, "/normalisation", "the force or speed range is reversed (minimum above maximum)", kRetrain);
+    throw input_error(path, root_path(layout::kNormalisation), "the force or speed range is reversed (minimum above maximum)", kRetrain);
   if (m.variant == Variant::unified) {
     const auto length = Eigen::Index(descriptor_length(m.descriptor));
-    n.descriptor_mean = r.vector(g, "descriptor_mean", length);
-    n.descriptor_scale = r.vector(g, "descriptor_scale", length, Values::positive);
-    m.texture = r.mlp(root, "texture_encoder");
-    m.classifier = r.mlp(root, "classifier");
-    m.material_latents = r.matrix(root, "material_latents").transpose();
+    n.descriptor_mean = r.vector(g, layout::kDescriptorMean, length);
+    n.descriptor_scale = r.vector(g, layout::kDescriptorScale, length, Values::positive);
+    m.texture = r.mlp(root, layout::kTextureEncoder);
+    m.classifier = r.mlp(root, layout::kClassifier);
+    m.material_latents = r.matrix(root, layout::kMaterialLatents).transpose();
     if (m.texture.inputs() != length || m.material_latents.rows() != m.texture.outputs() ||
         m.material_latents.cols() != Eigen::Index(m.material_ids.size()))
-      throw input_error(path, "/texture_encoder", "the texture encoder does not fit the descriptor or the materials", "Train the model again");
+      throw input_error(path, root_path(layout::kTextureEncoder), "the texture encoder does not fit the descriptor or the materials", "Train the model again");
     if (m.classifier.inputs() != m.texture.outputs() || m.classifier.outputs() != Eigen::Index(m.material_ids.size()))
-      throw input_error(path, "/classifier", "takes " + std::to_string(m.classifier.inputs()) + " values to " +
+      throw input_error(path, root_path(layout::kClassifier), "takes " + std::to_string(m.classifier.inputs()) + " values to " +
                                                  std::to_string(m.classifier.outputs()) + " materials; the latent has " +
                                                  std::to_string(m.texture.outputs()) + " and the model " +
                                                  std::to_string(m.material_ids.size()) + " materials",
                         "Train the model again");
   }
-  const h5::Group nets = root.open_group("nets");
+  const h5::Group nets = root.open_group(layout::kNets);
   for (const std::string& k : nets.children())
-    m.nets.push_back({r.mlp(nets.open_group(k), "action_encoder"), r.mlp(nets.open_group(k), "predictor")});
+    m.nets.push_back({r.mlp(nets.open_group(k), layout::kActionEncoder), r.mlp(nets.open_group(k), layout::kPredictor)});
   check_nets(m, path);
   m.file = path;
   require_finite_outputs(m, path);

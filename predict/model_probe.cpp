@@ -1,3 +1,4 @@
+#include "dataset/object_paths.hpp"
 #include "predict/model_probe.hpp"
 
 #include "core/error.hpp"
@@ -27,11 +28,11 @@ void require_finite_texture(const Model& m, const std::string& path) {
   MlpTrace trace;
   forward(m.texture, x, trace);
   if (!trace.out.back().allFinite()) {
-    const std::string layer = first_runaway_layer({{"/texture_encoder", trace}});
-    throw non_finite_output(path, layer.empty() ? "/texture_encoder" : layer, "descriptors within one spread of the training mean");
+    const std::string layer = first_runaway_layer({{dataset::root_path(dataset::layout::kTextureEncoder), trace}});
+    throw non_finite_output(path, layer.empty() ? dataset::root_path(dataset::layout::kTextureEncoder) : layer, "descriptors within one spread of the training mean");
   }
   if (!recognised_latents(m, m.material_latents).allFinite() || !recognised_latents(m, trace.out.back()).allFinite())
-    throw non_finite_output(path, "/classifier", "the training materials' latents");
+    throw non_finite_output(path, dataset::root_path(dataset::layout::kClassifier), "the training materials' latents");
 }
 
 bool runs_away(const Eigen::MatrixXf& out) { return !out.allFinite() || out.cwiseAbs().maxCoeff() > kRunaway; }
@@ -41,15 +42,17 @@ bool runs_away(const Eigen::MatrixXf& out) { return !out.allFinite() || out.cwis
 std::string first_runaway_layer(const std::vector<TracedPart>& parts) {
   for (const TracedPart& part : parts)
     for (std::size_t i = 1; i < part.trace.out.size(); ++i)  // out[0] is the part's input
-      if (runs_away(part.trace.out[i])) return part.name + "/layers/" + std::to_string(i - 1);
+      if (runs_away(part.trace.out[i])) return dataset::layer_path(part.name, i - 1);
   return "";
 }
 
 std::string part_that_overflows(const SpectrumTrace& trace, int net) {
-  const std::string name = "/nets/" + std::to_string(net);
-  const std::string layer = first_runaway_layer({{name + "/action_encoder", trace.action}, {name + "/predictor", trace.predictor}});
-  return layer.empty() ? "/normalisation/target_scale" : layer;
+  const std::string layer = first_runaway_layer({{dataset::net_part_path(net, dataset::layout::kActionEncoder), trace.action},
+                                                 {dataset::net_part_path(net, dataset::layout::kPredictor), trace.predictor}});
+  return layer.empty() ? target_scale_path() : layer;
 }
+
+std::string target_scale_path() { return dataset::root_path(dataset::layout::kNormalisation) + "/" + dataset::layout::kTargetScale; }
 
 Error non_finite_output(const std::string& path, const std::string& part, const std::string& input) {
   return input_error(path.empty() ? "(the model in memory)" : path, part,
@@ -63,8 +66,9 @@ void require_finite_outputs(const Model& m, const std::string& path) {
   const Eigen::MatrixXf actions = probe_actions(m.normalisation);
   for (std::size_t k = 0; k < m.material_ids.size(); ++k) {
     const TextureCode code = predictor.material_code(int(k));
-    const std::string net = "/nets/" + std::to_string(code.net), input = "material '" + m.material_ids[k] + "' across its training range";
-    if (!code.first_layer.allFinite()) throw non_finite_output(path, net + "/predictor/layers/0", input);
+    const std::string input = "material '" + m.material_ids[k] + "' across its training range";
+    if (!code.first_layer.allFinite())
+      throw non_finite_output(path, dataset::layer_path(dataset::net_part_path(code.net, dataset::layout::kPredictor), 0), input);
     SpectrumTrace trace;
     if (!predictor.trace_batch(code, normalised_actions(m.normalisation, actions), trace).allFinite())
       throw non_finite_output(path, part_that_overflows(trace, code.net), input);

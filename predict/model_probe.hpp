@@ -38,6 +38,8 @@ struct TracedPart {
 // ("/nets/0/action_encoder/layers/1"), so an overflow is blamed on the layer where it started, not
 // on the one where it showed; "" when every layer stays within it.
 std::string first_runaway_layer(const std::vector<TracedPart>& parts);
+// "/normalisation/target_scale".
+std::string target_scale_path();
 // Where non-finite spectra of /nets/`net` come from: the first of its layers that ran away, else
 // /normalisation/target_scale, which made moderate outputs overflow.
 std::string part_that_overflows(const SpectrumTrace& trace, int net);

@@ -1,3 +1,4 @@
+#include "dataset/object_paths.hpp"
 #include "predict/predictor.hpp"
 
 #include "core/error.hpp"
@@ -46,9 +47,9 @@ Eigen::VectorXf Predictor::image_latent(std::span<const float> descriptor) const
 }
 
 TextureCode Predictor::image_code(const Eigen::VectorXf& image_latent) const {
-  if (!image_latent.allFinite()) throw non_finite_output(model_.file, "/texture_encoder", "this press");
+  if (!image_latent.allFinite()) throw non_finite_output(model_.file, dataset::root_path(dataset::layout::kTextureEncoder), "this press");
   TextureCode code = encode_latent(recognised(image_latent));
-  if (!code.latent.allFinite()) throw non_finite_output(model_.file, "/classifier", "this press");
+  if (!code.latent.allFinite()) throw non_finite_output(model_.file, dataset::root_path(dataset::layout::kClassifier), "this press");
   code.image_latent = image_latent;
   return code;
 }
@@ -109,11 +110,11 @@ bool Predictor::predict(const TextureCode& code, std::span<const float> action, 
 // encoder's layers, then the predictor's).
 std::string Predictor::part_that_overflows(int net, std::size_t layers) const {
   const std::size_t action_layers = model_.nets[std::size_t(net)].action.layers.size();
-  const std::string name = "/nets/" + std::to_string(net);
   for (std::size_t k = 0; k < layers; ++k)
     if (!layer_[k].allFinite() || layer_[k].cwiseAbs().maxCoeff() > kRunaway)
-      return k < action_layers ? name + "/action_encoder/layers/" + std::to_string(k) : name + "/predictor/layers/" + std::to_string(k - action_layers);
-  return "/normalisation/target_scale";
+      return k < action_layers ? dataset::layer_path(dataset::net_part_path(net, dataset::layout::kActionEncoder), k)
+                               : dataset::layer_path(dataset::net_part_path(net, dataset::layout::kPredictor), k - action_layers);
+  return target_scale_path();
 }
 
 Eigen::MatrixXf Predictor::predict_batch(const TextureCode& code, const Eigen::MatrixXf& actions, std::size_t* out_of_range) const {

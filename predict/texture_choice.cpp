@@ -1,3 +1,4 @@
+#include "dataset/object_paths.hpp"
 #include "predict/texture_choice.hpp"
 
 #include <opencv2/imgproc.hpp>
@@ -36,7 +37,7 @@ TextureCode choose_texture(const Predictor& predictor, const std::string& model_
   if (!choice.material.empty()) {
     const int m = model.material_index(choice.material);
     if (m < 0)
-      throw input_error(model_path, "/materials/ids", "no material '" + choice.material + "'", "Use one of the ids haptex info lists");
+      throw input_error(model_path, dataset::model_material_ids_path(), "no material '" + choice.material + "'", "Use one of the ids haptex info lists");
     return predictor.material_code(m);
   }
   if (choice.image.empty())

@@ -8,6 +8,7 @@
 #include "core/parallel.hpp"
 #include "core/signal/spectrum.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/object_paths.hpp"
 #include "dataset/window.hpp"
 #include "qa/checkers.hpp"
 #include "qa/recording_data.hpp"
@@ -51,8 +52,7 @@ std::optional<Finding> run_problem(const h5::Group& root, const WindowTable& t, 
   const std::string& id = t.materials[std::size_t(run.material)];
   const auto samples = recording_samples(root, id, run.recording);
   if (!samples)
-    return Finding{where, "/materials/" + id + "/recordings/" + std::to_string(run.recording) +
-                              " does not exist (or has no samples attribute)"};
+    return Finding{where, dataset::recording_path(id, int(run.recording)) + " does not exist (or has no samples attribute)"};
   const std::int64_t t0 = 0;
   const std::int64_t expected = *samples < t0 + t.window_samples ? 0 : (*samples - t0 - t.window_samples) / std::int64_t(t.stride) + 1;
   if (std::int64_t(run.windows.size()) != expected)
@@ -100,7 +100,7 @@ void check_material_list(const h5::Group& root, const WindowTable& t, CheckTally
     if (!listed.insert(id).second) tally.fail("/windows/materials", "'" + id + "' is listed twice");
   if (root.has_group(layout::kMaterials))
     for (const auto& id : root.open_group(layout::kMaterials).children())
-      if (!listed.count(id)) tally.fail("/materials/" + id, "has no windows in /windows");
+      if (!listed.count(id)) tally.fail(dataset::material_path(id), "has no windows in /windows");
 }
 
 double max_abs(const std::vector<double>& x) {
@@ -141,7 +141,7 @@ std::string cache_mismatch(const WindowTable& t, std::size_t w, const CacheSourc
 
 // dataset.cache for the windows of one recording.
 void judge_cache(const h5::Group& root, const WindowTable& t, const WindowRun& run, CheckTally& tally) {
-  const std::string path = "/materials/" + t.materials[std::size_t(run.material)] + "/recordings/" + std::to_string(run.recording);
+  const std::string path = dataset::recording_path(t.materials[std::size_t(run.material)], int(run.recording));
   const LoadedRecording r = load_recording(root, path);
   const Signal &force = r.signals.at(layout::kForceNormalLp), &speed = r.signals.at(layout::kSpeedLp), &accel = r.signals.at(layout::kAccel);
   if (!force.ok() || !speed.ok() || !accel.ok()) return tally.skip(path + ": force_normal_lp, speed_lp or accel unreadable");

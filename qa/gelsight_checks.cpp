@@ -9,6 +9,7 @@
 #include "capture/scoring/contact_score.hpp"
 #include "core/error.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/object_paths.hpp"
 #include "dataset/press_images.hpp"
 #include "qa/checkers.hpp"
 #include "qa/thresholds.hpp"
@@ -67,11 +68,11 @@ void judge_resolution(const std::vector<Press>& presses, const std::string& id, 
     if (p.sizes_agree) ++by_size[size_text(press_size(p))];
   }
   if (!mixed_inside.empty()) return tally.fail(mixed_inside, "reference, peak, frames and the press's width and height differ in size");
-  if (by_size.empty()) return tally.skip("/materials/" + id + ": no readable press images");
+  if (by_size.empty()) return tally.skip(dataset::material_path(id) + ": no readable press images");
   if (by_size.size() == 1) return tally.pass();
   std::string sizes;
   for (const auto& [s, n] : by_size) sizes += (sizes.empty() ? "" : ", ") + s + " (" + std::to_string(n) + ")";
-  tally.fail("/materials/" + id + "/presses", "presses of several sizes: " + sizes);
+  tally.fail(dataset::presses_path(id), "presses of several sizes: " + sizes);
 }
 
 }  // namespace
@@ -182,7 +183,7 @@ CheckResult check_gelsight_press_count(const std::map<std::string, std::size_t>&
   CheckTally tally("gelsight.press_count", "materials");
   for (const auto& [id, count] : per_material)
     if (count < kPressesPerMaterial)
-      tally.fail("/materials/" + id + "/presses", std::to_string(count) + " presses, at least " +
+      tally.fail(dataset::presses_path(id), std::to_string(count) + " presses, at least " +
                                                       std::to_string(kPressesPerMaterial) + " needed (3 train, 1 val, 1 test)");
     else tally.pass();
   return tally.result();

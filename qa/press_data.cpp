@@ -11,6 +11,7 @@
 #include "core/parallel.hpp"
 #include "dataset/channel_order.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/object_paths.hpp"
 #include "dataset/press_images.hpp"
 #include "qa/recording_data.hpp"
 #include "qa/thresholds.hpp"
@@ -132,7 +133,7 @@ std::vector<std::string> press_paths(const h5::Group& root) {
     if (!materials.has_group(id) || !materials.open_group(id).has_group(layout::kPresses)) continue;
     const h5::Group presses = materials.open_group(id).open_group(layout::kPresses);
     for (const auto& j : presses.children())
-      if (presses.has_group(j)) paths.push_back("/materials/" + id + "/presses/" + j);
+      if (presses.has_group(j)) paths.push_back(dataset::press_path(id, j));
   }
   return paths;
 }
@@ -144,7 +145,7 @@ GelsightPresses read_presses(const h5::Group& root) {
   for (const auto& id : materials.children())
     if (materials.has_group(id)) file.per_material[id] = 0;
   for (const std::string& path : press_paths(root)) {
-    const std::string material = material_of(path);
+    const std::string material = dataset::material_of(path);
     file.presses.push_back(summarize_press(root.open_group(path.substr(1)), path, material));
     ++file.per_material[material];
   }

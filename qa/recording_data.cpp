@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/object_paths.hpp"
 #include "qa/thresholds.hpp"
 
 namespace haptex::qa {
@@ -62,21 +63,16 @@ std::vector<std::string> recording_paths(const h5::Group& root) {
     if (!material.has_group(layout::kRecordings)) continue;
     const h5::Group recordings = material.open_group(layout::kRecordings);
     for (const auto& k : recordings.children())
-      if (recordings.has_group(k)) paths.push_back("/materials/" + id + "/recordings/" + k);
+      if (recordings.has_group(k)) paths.push_back(dataset::recording_path(id, k));
   }
   return paths;
-}
-
-std::string material_of(const std::string& path) {
-  const std::size_t start = std::string_view("/materials/").size();
-  return path.substr(start, path.find('/', start) - start);
 }
 
 LoadedRecording load_recording(const h5::Group& root, const std::string& path) {
   const h5::Group group = root.open_group(path.substr(1));
   LoadedRecording r;
   r.path = path;
-  r.material = material_of(path);
+  r.material = dataset::material_of(path);
   r.sample_rate_hz = group.try_attr<double>(layout::kSampleRate);
   r.duration_s = group.try_attr<double>(layout::kDuration);
   r.samples = group.try_attr<std::int64_t>(layout::kSamples);

@@ -42,8 +42,6 @@ struct SignalSpec {
 extern const std::vector<SignalSpec> kSignalSpecs;
 
 std::vector<std::string> recording_paths(const h5::Group& root);
-// The {material} of "/materials/{material}/...".
-std::string material_of(const std::string& path);
 LoadedRecording load_recording(const h5::Group& root, const std::string& path);
 
 }  // namespace haptex::qa

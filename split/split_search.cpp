@@ -9,6 +9,7 @@
 #include "core/parallel.hpp"
 #include "core/random_seeds.hpp"
 #include "core/text/format.hpp"
+#include "dataset/object_paths.hpp"
 #include "dataset/window.hpp"
 #include "split/coverage.hpp"
 #include "split/sections.hpp"
@@ -98,7 +99,7 @@ std::vector<MaterialSplit> search_split(const std::vector<MaterialWindows>& mate
   if (o.tries < 1) throw input_error("--tries", "", "must be at least 1", "Pass --tries 200");
   for (const auto& m : materials)
     if (m.presses < kPresses)
-      throw input_error(dataset_path, "/materials/" + m.id + "/presses",
+      throw input_error(dataset_path, dataset::presses_path(m.id),
                         "material '" + m.name + "' has " + std::to_string(m.presses) + " presses; the split needs 5 (3 train, 1 val, 1 test)",
                         "Capture more presses of this material, then run capture extract and align again");
   std::vector<MaterialSplit> result(materials.size());
