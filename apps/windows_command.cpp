@@ -10,7 +10,7 @@
 #include "core/output_is_input.hpp"
 #include "core/text/utf8.hpp"
 #include "dataset/windows_file.hpp"
-#include "evaluate/evaluation_grid.hpp"
+#include "evaluate/inputs/evaluation_grid.hpp"
 
 namespace haptex::apps {
 namespace {

@@ -9,8 +9,8 @@
 #include <random>
 
 #include "bench/run_benchmarks.hpp"
-#include "evaluate/spectral_distance.hpp"
-#include "evaluate/welch_test.hpp"
+#include "evaluate/measures/spectral_distance.hpp"
+#include "evaluate/measures/welch_test.hpp"
 #include "render/griffin_lim.hpp"
 #include "render/online_reconstruction.hpp"
 #include "render/spectral_convergence.hpp"

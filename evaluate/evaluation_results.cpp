@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "evaluate/summary_statistics.hpp"
+#include "evaluate/measures/summary_statistics.hpp"
 
 namespace haptex::evaluate {
 namespace {

@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "evaluate/summary_statistics.hpp"
-#include "evaluate/welch_test.hpp"
+#include "evaluate/measures/summary_statistics.hpp"
+#include "evaluate/measures/welch_test.hpp"
 
 namespace haptex::evaluate {
 

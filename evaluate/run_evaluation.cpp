@@ -17,14 +17,14 @@
 #include "core/sha256.hpp"
 #include "core/thread_clock.hpp"
 #include "dataset/window.hpp"
-#include "evaluate/ar_expectation.hpp"
-#include "evaluate/ar_refit.hpp"
-#include "evaluate/hatt_published.hpp"
-#include "evaluate/log_spectral_distance.hpp"
-#include "evaluate/oracle.hpp"
-#include "evaluate/section_signals.hpp"
-#include "evaluate/spectral_distance.hpp"
-#include "evaluate/window_sets.hpp"
+#include "evaluate/baselines/ar_expectation.hpp"
+#include "evaluate/baselines/ar_refit.hpp"
+#include "evaluate/baselines/hatt_published.hpp"
+#include "evaluate/measures/log_spectral_distance.hpp"
+#include "evaluate/floors/oracle.hpp"
+#include "evaluate/inputs/section_signals.hpp"
+#include "evaluate/measures/spectral_distance.hpp"
+#include "evaluate/inputs/window_sets.hpp"
 #include "predict/predictor.hpp"
 #include "predict/training_data.hpp"
 #include "render/griffin_lim.hpp"
@@ -653,7 +653,7 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
     e.predictions.push_back({p.name, p.path, p.sha256, p.source});
   }
   Context c{models, external, {}, {}, codes, o, truth, {}, {}, stitched};
-  // Where each material's windows begin in the grid (evaluate/evaluation_grid.hpp's order).
+  // Where each material's windows begin in the grid (evaluate/inputs/evaluation_grid.hpp's order).
   std::size_t row = 0, k = 0;
   for (std::size_t m = 0; m < signals.size(); ++m) {
     c.first_row.push_back(row), c.first_section.push_back(k);

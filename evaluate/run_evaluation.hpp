@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/progress.hpp"
-#include "evaluate/external_predictions.hpp"
+#include "evaluate/inputs/external_predictions.hpp"
 #include "evaluate/evaluation_results.hpp"
 #include "predict/model.hpp"
 #include "render/reconstruction.hpp"

@@ -14,7 +14,7 @@ void amplitude_spectrum(std::span<const double> window, std::span<double> out, s
 std::vector<double> amplitude_spectrum(std::span<const double> window, std::size_t bins);
 
 // Euclidean distance of two amplitude spectra of the same, non-zero length: the evaluation's loss
-// per window (evaluate/spectral_distance.hpp), which haptex render also reports, so it lives below
+// per window (evaluate/measures/spectral_distance.hpp), which haptex render also reports, so it lives below
 // both. Float spectra are summed in double. Throws haptex::Error when the lengths differ or are zero.
 double spectrum_distance(std::span<const double> a, std::span<const double> b);
 double spectrum_distance(std::span<const float> a, std::span<const float> b);

@@ -1,4 +1,4 @@
-#include "evaluate/ar_refit.hpp"
+#include "evaluate/baselines/ar_refit.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,8 +20,8 @@
 #include "core/ar/poles.hpp"
 #include "core/ar/texture_renderer.hpp"
 #include "core/error.hpp"
-#include "evaluate/boundary_models.hpp"
-#include "evaluate/delaunay.hpp"
+#include "evaluate/baselines/boundary_models.hpp"
+#include "evaluate/baselines/delaunay.hpp"
 #include "tests/support/npy.hpp"
 
 namespace haptex::evaluate {

@@ -1,4 +1,4 @@
-#include "evaluate/hatt_published.hpp"
+#include "evaluate/baselines/hatt_published.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// The measures beside the paper's distance (evaluate/log_spectral_distance.hpp) and the windows
-// behind the reference predictors (evaluate/window_sets.hpp).
+// The measures beside the paper's distance (evaluate/measures/log_spectral_distance.hpp) and the windows
+// behind the reference predictors (evaluate/inputs/window_sets.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "core/error.hpp"
-#include "evaluate/log_spectral_distance.hpp"
-#include "evaluate/window_sets.hpp"
+#include "evaluate/measures/log_spectral_distance.hpp"
+#include "evaluate/inputs/window_sets.hpp"
 
 namespace haptex::evaluate {
 namespace {

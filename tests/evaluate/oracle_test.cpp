@@ -1,5 +1,5 @@
-// The oracle noise floor (evaluate/oracle.hpp) on recordings whose generator is known exactly.
-#include "evaluate/oracle.hpp"
+// The oracle noise floor (evaluate/floors/oracle.hpp) on recordings whose generator is known exactly.
+#include "evaluate/floors/oracle.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include "core/ar/gaussian_noise.hpp"
 #include "core/ar/texture_renderer.hpp"
 #include "core/error.hpp"
-#include "evaluate/spectral_distance.hpp"
+#include "evaluate/measures/spectral_distance.hpp"
 #include "tests/support/ar_fixture.hpp"
 
 namespace haptex::evaluate {

@@ -1,6 +1,6 @@
-// evaluate/paper_figures.hpp pins the paper's numbers (Heravi et al., ICRA 2020) to the experiments
+// evaluate/report/paper_figures.hpp pins the paper's numbers (Heravi et al., ICRA 2020) to the experiments
 // haptex repeats, and to nothing else.
-#include "evaluate/paper_figures.hpp"
+#include "evaluate/report/paper_figures.hpp"
 
 #include <gtest/gtest.h>
 

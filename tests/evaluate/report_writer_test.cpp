@@ -1,4 +1,4 @@
-#include "evaluate/report_writer.hpp"
+#include "evaluate/report/report_writer.hpp"
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -19,9 +19,9 @@
 #include "core/error.hpp"
 #include "core/json/schema.hpp"
 #include "core/temporary_name.hpp"
-#include "evaluate/report_csv.hpp"
-#include "evaluate/report_markdown.hpp"
-#include "evaluate/results_json.hpp"
+#include "evaluate/report/report_csv.hpp"
+#include "evaluate/report/report_markdown.hpp"
+#include "evaluate/report/results_json.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::evaluate {

@@ -1,4 +1,4 @@
-#include "evaluate/spectral_distance.hpp"
+#include "evaluate/measures/spectral_distance.hpp"
 
 #include <gtest/gtest.h>
 

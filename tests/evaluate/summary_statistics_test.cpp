@@ -1,4 +1,4 @@
-#include "evaluate/summary_statistics.hpp"
+#include "evaluate/measures/summary_statistics.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "evaluate/welch_test.hpp"
+#include "evaluate/measures/welch_test.hpp"
 
 #include <gtest/gtest.h>
 
