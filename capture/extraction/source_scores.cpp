@@ -94,10 +94,20 @@ class FirstReading {
     if (!start_ && int(head_.reference.images.size()) == settings_.reference_frames) finish_start(out);
     if (start_ && inter_frame_) calibrate_start();
     if (!start_)
-      throw input_error(path, "", "only " + std::to_string(usable_) + " usable frames; " +
+      throw input_error(path, "", "only " + std::to_string(usable_) + " usable frames" + unusable(out) + "; " +
                                       std::to_string(settings_.reference_frames) +
                                       " no-contact frames are needed for the reference and more for a press",
-                        "Give a longer video, or a no-contact image with --reference");
+                        out.black_frames > 0 && usable_ == 0 ? "Check that the sensor's light was on while it recorded"
+                                                             : "Give a longer video, or a no-contact image with --reference");
+  }
+
+  // Why the other frames were not usable: dark (a sensor whose light is off) or undecodable.
+  static std::string unusable(const SourceScores& out) {
+    std::string why;
+    if (out.black_frames > 0)
+      why += ", " + std::to_string(out.black_frames) + " are black, a mean grey under " + std::to_string(int(kBlackLevel)) + " of 255";
+    if (out.unreadable_frames > 0) why += ", " + std::to_string(out.unreadable_frames) + " that do not decode";
+    return why.empty() ? why : " (" + why.substr(2) + ")";
   }
 
   const std::optional<ContactReference>& start() const { return start_; }

@@ -169,6 +169,24 @@ TEST_F(Extract, NoPressAnywhereIsAFailureThatWritesNothing) {
   expect_nothing_written();
 }
 
+// A lab's example video whose sensor light was off (16 frames of mean grey 5.5, GelSight-lab's
+// EstimateModulus example.avi) was refused as "only 0 usable frames", which says nothing of why.
+TEST_F(Extract, AVideoOfBlackFramesSaysTheyAreBlack) {
+  const fs::path folder = dir_.path() / "gelsight" / "Dark" / "press_0";
+  fs::create_directories(folder);
+  for (int i = 0; i < 16; ++i)
+    cv::imwrite((folder / ("frame_" + std::to_string(100 + i) + ".png")).string(), cv::Mat(120, 160, CV_8UC3, cv::Scalar(6, 5, 5)));
+  try {
+    extract_presses({folder.string()}, out(), {});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("only 0 usable frames (16 are black, a mean grey under 10 of 255)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("light was on"), std::string::npos) << e.what();
+  }
+  expect_nothing_written();
+}
+
 TEST_F(Extract, AnUnreadableInputLeavesNothingBehind) {
   const std::string good = video("Cork", "press_0.mkv", 1);
   std::ofstream(dir_.file("videos/Cork/press_1.mkv")) << "not a video";
