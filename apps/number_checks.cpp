@@ -19,7 +19,10 @@ std::string judge(const std::string& input, double min, bool strict) {
   if (!std::isfinite(value) || std::abs(value) > FLT_MAX) return "must be a finite number (at most 3.4e38 in size), not " + input;
   if (value < min || (strict && value == min))
     return std::string("must be ") + (strict ? "above " : "at least ") + std::to_string(int(min)) + ", not " + input;
-  if (strict && value < FLT_MIN) return "must be at least 1.2e-38 (the least normal 32-bit float), not " + input;
+  // A subnormal would lose its digits in a 32-bit float (and a positive one becomes 0 in some kernels).
+  if (value != 0 && std::abs(value) < FLT_MIN)
+    return std::string("must be ") + (strict ? "at least 1.2e-38" : "0 or at least 1.2e-38 in size") +
+           " (the least normal 32-bit float), not " + input;
   return "";
 }
 

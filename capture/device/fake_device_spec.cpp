@@ -2,15 +2,19 @@
 
 #include <linux/videodev2.h>
 
+#include <cfloat>
 #include <optional>
 #include <sstream>
 
 #include "capture/device/fourcc.hpp"
 #include "core/error.hpp"
 #include "core/text/parse_number.hpp"
+#include "dataset/press_file.hpp"
 
 namespace haptex::capture {
 namespace {
+
+constexpr double kSlowest = 0.01, kFastest = 100;  // speed=X, times the rate
 
 const char* const kFakeUsage =
     "Write fake:size=WxH,format=MJPG,fps=N,presses=N,drop=P,error=P,corrupt=P,disconnect=N,"
@@ -67,10 +71,10 @@ std::vector<std::pair<std::string, std::string>> DeviceKeys::items(const std::st
 
 double DeviceKeys::number(const std::string& key, const std::string& text) const {
   // Decimal only ("0x1e" is no rate), at most 1e12: frame counts and rates are cast to integers, and
-  // no take runs that long.
+  // no take runs that long. No subnormal: README, "numbers ... that a 32-bit float holds".
   const std::optional<double> value = text::parse_number(text);
-  if (value && text == text::trim(text) && *value >= 0 && *value <= 1e12) return *value;
-  refuse(key, "'" + text + "' is not a number from 0 to 1e12");
+  if (value && text == text::trim(text) && (*value == 0 || *value >= FLT_MIN) && *value <= 1e12) return *value;
+  refuse(key, "'" + text + "' is not a number from 0 to 1e12 (0 or at least 1.2e-38)");
 }
 
 double DeviceKeys::percent(const std::string& key, const std::string& text) const {
@@ -93,8 +97,10 @@ bool DeviceKeys::apply_stream_key(FakeCameraConfig& c, const std::string& key, c
     if (colon == std::string::npos) refuse(key, "expected FRAME:MILLISECONDS");
     c.stalls.push_back({std::uint64_t(number(key, value.substr(0, colon))), int(number(key, value.substr(colon + 1)))});
   } else if (key == "speed") {
+    // Bounded so a frame's wall-clock due time stays a number of nanoseconds an int64 holds and the
+    // device's clock never stands still (review 4: speed=1e-30 spun without end).
     c.speed = number(key, value);
-    if (c.speed <= 0) refuse(key, "must be more than 0");
+    if (!(c.speed >= kSlowest && c.speed <= kFastest)) refuse(key, "'" + value + "' is not from 0.01 to 100 (times the rate)");
   } else if (key == "lockstep") {
     c.realtime = false;
   } else if (key == "seed") {
@@ -118,7 +124,8 @@ FakeDevice parse_fake_device(const std::string& device) {
     for (const auto& [key, value] : keys.items(device.substr(5))) apply(fake, mode, fps_given, keys, key, value);
   }
   if (!fps_given && (mode.width != 3280 || mode.height != 2464)) mode.fps = {30.0};
-  if (mode.fps.front() <= 0) keys.refuse("fps", "must be more than 0");
+  if (!(mode.fps.front() >= dataset::kLowestFps && mode.fps.front() <= dataset::kHighestFps))
+    keys.refuse("fps", "must be from 1 to 1000 frames per second, as a press file's own fps must be");
   fake.config.modes = {mode};
   return fake;
 }

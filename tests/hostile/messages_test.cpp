@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -186,6 +187,29 @@ TEST(Messages, AFakeCameraOfAbsurdSizeIsRefusedAndLeavesNoFolder) {
   expect_refusal(run_haptex({"capture", "record", "--device", "fake:size=100000x100000", "--material", "Cork", "-o", dir.file("s")}),
                  {"--device", "size", "at most 8192x8192"});
   EXPECT_FALSE(fs::exists(dir.file("s")));
+}
+
+// Review 4: speed=1e-30 made every frame's due time overflow, and the fake spun producing frames
+// without end, deaf to --seconds and to signals; fps=1e-40 ended in an internal schema error with a
+// press file no session.json listed.
+TEST(Messages, AFakeCameraRateOrSpeedOutOfRangeIsRefusedAndLeavesNoFolder) {
+  const TempDir dir;
+  for (const std::string key : {"speed=1e-30", "speed=1e-40", "speed=1000", "fps=1e-40", "fps=0.5", "fps=5000"}) {
+    SCOPED_TRACE(key);
+    expect_refusal(run_haptex({"capture", "record", "--device", "fake:size=160x120," + key, "--material", "Cork", "-o", dir.file("s")}),
+                   {"--device", key.substr(0, key.find('=')), "from"});
+    EXPECT_FALSE(fs::exists(dir.file("s")));
+  }
+}
+
+TEST(Messages, TheSlowestFakeCameraStillEndsTheTakeOnTime) {
+  const TempDir dir;
+  const auto start = std::chrono::steady_clock::now();
+  const CommandResult r = run_haptex({"capture", "record", "--device", "fake:size=160x120,speed=0.01", "--material", "Cork",
+                                      "-o", dir.file("s"), "--seconds", "1", "-q"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+  EXPECT_TRUE(fs::exists(dir.file("s/session.json")));
 }
 
 }  // namespace

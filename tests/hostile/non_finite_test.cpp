@@ -79,7 +79,8 @@ std::vector<std::vector<std::string>> commands_under(std::vector<std::string> pa
 // CLI11 reads "nan" and "inf" as numbers, and range checks let NaN through: every option whose help
 // says FLOAT, in every command, refuses them before any work; 1e39 too, which a 32-bit float holds as
 // inf. A POSITIVE one refuses 1e-320, which a 32-bit float holds as 0 (review 3: --trigger 1e-320
-// found a "press" in every frame).
+// found a "press" in every frame); every one refuses a subnormal 5e-40 (review 4: --normal-force 5e-40
+// and record --seconds 1e-40 were taken).
 TEST(NonFinite, NoFloatingPointOptionTakesNaNOrInfinity) {
   static const std::regex float_option("^ *(--[a-z-]+) FLOAT.*");
   int options = 0;
@@ -91,7 +92,7 @@ TEST(NonFinite, NoFloatingPointOptionTakesNaNOrInfinity) {
     for (std::string line; std::getline(help, line);) {
       if (!std::regex_match(line, m, float_option)) continue;
       ++options;
-      std::vector<std::string> values = {"nan", "inf", "-inf", "1e39", "-1e39"};
+      std::vector<std::string> values = {"nan", "inf", "-inf", "1e39", "-1e39", "5e-40", "-5e-40"};
       if (line.find("POSITIVE") != std::string::npos) values.push_back("1e-320");
       for (const std::string& value : values) {
         std::vector<std::string> args = command;

@@ -139,10 +139,13 @@ TEST_F(ReplayDevice, RefusesUnknownKeysAndBadValuesNamingThem) {
   expect_refused("replay:" + path + ",drop=-5", {"drop", "'-5' is not a number from 0 to 1e12"});
   expect_refused("replay:" + path + ",disconnect=", {"disconnect", "'' is not a number"});
   expect_refused("replay:" + path + ",disconnect=inf", {"disconnect", "'inf' is not a number from 0 to 1e12"});
+  expect_refused("replay:" + path + ",drop=1e-40", {"drop", "0 or at least 1.2e-38"});
   expect_refused("replay:" + path + ",drop=nan", {"drop", "'nan' is not a number"});
   expect_refused("replay:" + path + ",speed=1e999", {"speed", "'1e999' is not a number"});
   expect_refused("replay:" + path + ",stall=10", {"stall", "FRAME:MILLISECONDS"});
-  expect_refused("replay:" + path + ",speed=0", {"speed", "more than 0"});
+  expect_refused("replay:" + path + ",speed=0", {"speed", "from 0.01 to 100"});
+  expect_refused("replay:" + path + ",speed=1e-40", {"speed", "0 or at least 1.2e-38"});
+  expect_refused("replay:" + path + ",speed=1e-30", {"speed", "from 0.01 to 100"});
 }
 
 }  // namespace
