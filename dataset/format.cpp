@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/format_version.hpp"
+#include "core/h5/link_rule.hpp"
 
 namespace haptex::dataset {
 namespace {
@@ -83,15 +84,18 @@ void require_kind(const h5::File& file, Kind kind) {
 h5::File open_checked(const std::string& path, Kind kind) {
   h5::File file = h5::File::open(path);
   require_kind(file, kind);
+  h5::require_link_rule(file.root());
   return file;
 }
 
-OpenedFile open_any(const std::string& path, std::span<const Kind> kinds, const std::string& who, const std::string& fix) {
+OpenedFile open_any(const std::string& path, std::span<const Kind> kinds, const std::string& who, const std::string& fix,
+                    Links links) {
   h5::File file = h5::File::open(path);
   const std::string found = read_format(file);
   for (const Kind kind : kinds)
     if (family_of(found) == format_of(kind).family) {
       require_kind(file, kind);
+      if (links == Links::refuse) h5::require_link_rule(file.root());
       return {std::move(file), kind};
     }
   throw input_error(path, "/@" + std::string(h5::kFormatAttribute), "is '" + found + "': " + who + " " + format_list(kinds) + " files", fix);

@@ -30,9 +30,10 @@ std::string format_list(std::span<const Kind> kinds, std::string_view last_joint
 // is missing (not a haptex file) or not a string.
 std::string read_format(const h5::File& file);
 
-// Opens path and checks it is a file of `kind` in the current version. Throws haptex::Error
-// (bad_input) naming the file and /@haptex_format: not HDF5, not a haptex file, another kind, or
-// an older version (saying what changed and which command writes the current one).
+// Opens path and checks it is a file of `kind` in the current version whose every object keeps the
+// link rule (core/h5/link_rule.hpp). Throws haptex::Error (bad_input) naming the file and
+// /@haptex_format: not HDF5, not a haptex file, another kind, or an older version (saying what
+// changed and which command writes the current one); or the first object that breaks the rule.
 h5::File open_checked(const std::string& path, Kind kind);
 
 struct OpenedFile {
@@ -42,7 +43,10 @@ struct OpenedFile {
 // Opens path as a file of any of `kinds` (the one its family names), through open_checked, so an
 // older or newer version is refused as every reader refuses it. A file of another kind is refused
 // (bad_input) as "is 'model/3': <who> recordings/1, gelsight/2 or dataset/4 files. <fix>".
-OpenedFile open_any(const std::string& path, std::span<const Kind> kinds, const std::string& who, const std::string& fix);
+// Links::report leaves the link rule to the caller: qa, which reports every break (`layout.links`).
+enum class Links { refuse, report };
+OpenedFile open_any(const std::string& path, std::span<const Kind> kinds, const std::string& who, const std::string& fix,
+                    Links links = Links::refuse);
 
 
 // The root attributes every haptex file carries (core/h5/file.hpp, stamp_root) for `kind`.

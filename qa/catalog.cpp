@@ -29,8 +29,11 @@ const std::vector<CheckInfo>& all_checks() {
        "Rewrite the file with haptex; every signal of a recording must have `samples` rows"},
       {"layout.units", error, "datasets carry the `units` of their layout row (m/s^2, N, mm/s, mm)",
        "Convert the source again with the right units in its header or field map"},
-      {"layout.links", error, "every object is reached by one hard link: no soft or external link, nothing linked twice",
-       "Remove the extra link (h5py: del f[path]), or make the file again with the haptex command that wrote it"},
+      {"layout.links", error,
+       "every object is reached by one hard link and keeps its values in the file: no soft or external link, nothing linked "
+       "twice, no external or virtual storage (when it fails, no check that reads values runs)",
+       "Remove the extra link (h5py: del f[path]) or store the values in the file, or make the file again with the haptex "
+       "command that wrote it"},
       // recordings (also inside dataset files)
       {"signal.nan", error, "no NaN or Inf in any signal of a recording",
        "Fix or cut the broken stretch of the source recording and convert it again"},

@@ -1,5 +1,6 @@
 #include "qa/run_qa.hpp"
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <fstream>
@@ -33,9 +34,14 @@ void append(std::vector<CheckResult>& out, std::vector<CheckResult> more) {
   for (auto& r : more) out.push_back(std::move(r));
 }
 
+bool links_broken(const std::vector<CheckResult>& checks) {
+  return std::any_of(checks.begin(), checks.end(), [](const CheckResult& c) { return c.id == "layout.links" && c.status == Status::fail; });
+}
+
 Report check_hdf5(const QaOptions& options) {
   const dataset::OpenedFile opened =
-      dataset::open_any(options.file, kChecked, "qa checks", "Give one of those, or a split manifest (haptex info FILE tells what a file is)");
+      dataset::open_any(options.file, kChecked, "qa checks", "Give one of those, or a split manifest (haptex info FILE tells what a file is)",
+                        dataset::Links::report);
   const h5::Group root = opened.file.root();
   const std::string format = dataset::format_name(opened.kind);
   Report report{options.file, file_kind(opened.kind), options.split, {}};
@@ -43,6 +49,8 @@ Report check_hdf5(const QaOptions& options) {
     throw input_error(options.file, "", "--split goes with a dataset file, this is a " + format + " file",
                       "Run: haptex qa DATASET.h5 --split " + *options.split);
   append(report.checks, check_layout(root, format));
+  // The other checks read values, which such a file may keep anywhere (a FIFO, /dev/zero): docs/qa.md.
+  if (links_broken(report.checks)) return report;
   if (report.kind != FileKind::gelsight) append(report.checks, check_recordings(root));
   if (report.kind != FileKind::recordings) append(report.checks, check_gelsight(root));
   if (report.kind == FileKind::dataset) append(report.checks, check_dataset(root));

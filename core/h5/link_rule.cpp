@@ -1,5 +1,6 @@
 #include "core/h5/link_rule.hpp"
 
+#include "core/error.hpp"
 #include "core/h5/handle.hpp"
 
 namespace haptex::h5 {
@@ -17,6 +18,9 @@ void collect(hid_t group, const std::string& path, const std::string& file, Copi
     } else if (info.type == H5O_TYPE_GROUP) {
       Handle child(check_input(H5Gopen2(group, name.c_str(), H5P_DEFAULT), "open " + member, file));
       collect(child.get(), member, file, seen, report);
+    } else if (info.type == H5O_TYPE_DATASET) {
+      Handle dataset(check_input(H5Dopen2(group, name.c_str(), H5P_DEFAULT), "open " + member, file));
+      if (std::optional<LinkFault> fault = stored_outside(dataset.get(), member, file)) report.faults.emplace_back(member, *fault);
     }
   }
 }
@@ -57,6 +61,14 @@ std::optional<LinkFault> follow_link(hid_t parent, const std::string& name, cons
   return std::nullopt;
 }
 
+std::optional<LinkFault> stored_outside(hid_t dataset, const std::string& path, const std::string& file) {
+  Handle creation(check_input(H5Dget_create_plist(dataset), "read the layout of " + path, file));
+  if (H5Pget_external_count(creation.get()) <= 0 && H5Pget_layout(creation.get()) != H5D_VIRTUAL) return std::nullopt;
+  return LinkFault{"keeps its values outside the file (external or virtual storage), which no haptex file does, and is never read",
+                   "Store the values in the file itself (h5py: read them, del f[path], then write them), or make the file again "
+                   "with the haptex command that wrote it"};
+}
+
 LinkReport check_links(const Group& root) {
   CopiedObjects seen;
   H5O_info_t info;
@@ -65,6 +77,15 @@ LinkReport check_links(const Group& root) {
   LinkReport report;
   collect(root.id(), root.object_path(), root.file(), seen, report);
   return report;
+}
+
+void require_link_rule(const Group& root) {
+  const LinkReport report = check_links(root);
+  if (report.faults.empty()) return;
+  const auto& [path, fault] = report.faults.front();
+  const std::size_t more = report.faults.size() - 1;
+  throw input_error(root.file(), path, fault.what + (more ? " (and " + std::to_string(more) + " more such objects; 'haptex qa' lists them)" : ""),
+                    fault.fix);
 }
 
 }  // namespace haptex::h5

@@ -1,9 +1,12 @@
 #pragma once
-// The rule every haptex file keeps for its links: each object is reached by one hard link. A soft or
-// external link points anywhere (/etc/passwd through an external link), and a second hard link makes
-// one object count twice (a press read as two) or, back to a group above, a walk that never ends.
-// Group::copy_from (merge, align) refuses a copy that breaks it, and qa's `layout.links` reports every
-// link that does, so qa's verdict and merge's agree.
+// The rule every haptex file keeps for its links: each object is reached by one hard link, and each
+// dataset keeps its values in the file. A soft or external link points anywhere (/etc/passwd through
+// an external link); a second hard link makes one object count twice (a press read as two) or, back
+// to a group above, a walk that never ends; external raw storage or a virtual dataset reads whatever
+// it names, a FIFO (a read that never returns) or /dev/zero among them. Every reader opening a file
+// through dataset::open_checked refuses a file that breaks it before reading any value;
+// Group::open_dataset and Group::copy_from (merge, align) refuse such an object; qa's `layout.links`
+// reports every one, so qa's verdict and every reader's agree.
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,11 +35,20 @@ std::optional<LinkFault> soft_or_external(hid_t parent, const std::string& name,
 std::optional<LinkFault> follow_link(hid_t parent, const std::string& name, const std::string& path, const std::string& file,
                                      CopiedObjects& seen, H5O_info_t& info);
 
-// Every link below `root`: how many, and each that breaks the rule, by path.
+// When the open dataset `dataset` (at `path`) keeps its values outside the file, what is wrong with
+// it. Reads only its creation properties, never a value.
+std::optional<LinkFault> stored_outside(hid_t dataset, const std::string& path, const std::string& file);
+
+// Every link below `root`: how many, and each that breaks the rule (a link, or the storage of the
+// dataset it reaches), by path.
 struct LinkReport {
   std::size_t links = 0;
   std::vector<std::pair<std::string, LinkFault>> faults;
 };
 LinkReport check_links(const Group& root);
+
+// Throws haptex::Error (bad_input) naming the file, the first path that breaks the rule, what is
+// wrong and the fix (and how many more there are).
+void require_link_rule(const Group& root);
 
 }  // namespace haptex::h5

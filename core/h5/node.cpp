@@ -283,9 +283,9 @@ Dataset Group::open_dataset(std::string_view name) const {
   if (!has_dataset(name))
     throw input_error(file_, path, "dataset is missing", "Check the file's layout with 'haptex info' or 'haptex qa'");
   require_hard_link(id(), name, file_, path);
-  return Dataset(
-      Handle(check_input(H5Dopen2(id(), std::string(name).c_str(), H5P_DEFAULT), "open dataset", file_ + ":" + path)),
-      file_, path);
+  Handle dataset(check_input(H5Dopen2(id(), std::string(name).c_str(), H5P_DEFAULT), "open dataset", file_ + ":" + path));
+  if (const std::optional<LinkFault> fault = stored_outside(dataset.get(), path, file_)) throw input_error(file_, path, fault->what, fault->fix);
+  return Dataset(std::move(dataset), file_, path);
 }
 
 bool Group::has(std::string_view name) const {

@@ -93,12 +93,9 @@ struct Copy {
     Handle from(check_input(H5Dopen2(from_parent, name.c_str(), H5P_DEFAULT), "open " + source_path, source_file));
     Handle type(check_input(H5Dget_type(from.get()), "read the type of " + source_path, source_file));
     Handle space(check_input(H5Dget_space(from.get()), "read the shape of " + source_path, source_file));
+    if (const std::optional<LinkFault> fault = stored_outside(from.get(), source_path, source_file))
+      throw input_error(source_file, source_path, fault->what, fault->fix);
     Handle creation(check_input(H5Dget_create_plist(from.get()), "read the layout of " + source_path, source_file));
-    // Values stored outside the file (external raw files, a device among them; virtual datasets) are
-    // no haptex file's, and reading them would read whatever they point at.
-    if (H5Pget_external_count(creation.get()) > 0 || H5Pget_layout(creation.get()) == H5D_VIRTUAL)
-      throw input_error(source_file, source_path, "keeps its values outside the file (external or virtual storage), which no haptex file does",
-                        "Make the file again with the haptex command that wrote it");
     require_readable(type.get(), space.get(), source_path);
     Values values(type.get(), space.get());
     if (!values.empty()) {
