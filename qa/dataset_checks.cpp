@@ -183,7 +183,10 @@ CheckResult check_dataset_cache(const h5::Group& root, const WindowTable& t, con
 std::vector<CheckResult> check_dataset(const h5::Group& root) {
   std::string problem;
   const std::optional<WindowTable> table = load_window_table(root, problem);
-  if (!table) return {make_result("dataset.windows", Status::skip, problem), make_result("dataset.cache", Status::skip, problem)};
+  // A dataset file without a readable window table breaks its format: every reader refuses it.
+  if (!table)
+    return {make_result("dataset.windows", Status::fail, problem, {root.file() + ":/windows"}),
+            make_result("dataset.cache", Status::skip, problem)};
   const std::vector<WindowRun> runs = window_runs(root, *table);
   return {check_dataset_windows(root, *table, runs), check_dataset_cache(root, *table, runs)};
 }

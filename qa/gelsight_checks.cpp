@@ -8,6 +8,7 @@
 
 #include "capture/scoring/contact_score.hpp"
 #include "core/error.hpp"
+#include "dataset/channel_order.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/object_paths.hpp"
 #include "dataset/press_images.hpp"
@@ -200,31 +201,44 @@ CheckResult check_gelsight_source_damage(const std::vector<Press>& presses) {
   return tally.result();
 }
 
-CheckResult check_gelsight_channel_order(const std::vector<Press>& presses) {
-  CheckTally tally("gelsight.channel_order", "presses");
-  for (const auto& p : presses)
-    if (!p.channel_order_problem.empty()) tally.fail(p.path, p.channel_order_problem);
-    else tally.pass();
-  return tally.result();
-}
+namespace {
 
-CheckResult check_gelsight_images(const h5::Group& root) {
-  CheckTally tally("gelsight.images", "presses");
+// One check judging each press of the file alone: `problem_of` says what is wrong with it ("" when nothing).
+CheckResult per_press(const h5::Group& root, std::string_view id, const std::function<std::string(const h5::Group&)>& problem_of) {
+  CheckTally tally(id, "presses");
   for (const std::string& path : press_paths(root)) {
-    const h5::Group press = root.open_group(path.substr(1));
-    std::string problem;
-    for (const char* name : {dataset::layout::kReference, dataset::layout::kPeak, dataset::layout::kFrames}) {
-      if (!problem.empty() || !press.has_dataset(name)) continue;  // a missing dataset is layout.required's
-      try {
-        dataset::require_whole_press_images(press, name);
-      } catch (const Error& e) {
-        problem = e.what();
-      }
-    }
+    const std::string problem = problem_of(root.open_group(path.substr(1)));
     if (problem.empty()) tally.pass();
     else tally.fail(path, problem);
   }
   return tally.result();
+}
+
+// The message of the first haptex::Error `step` throws for one of a press's image datasets.
+std::string first_image_error(const h5::Group& press, const std::function<void(const char* name)>& step) {
+  for (const char* name : {dataset::layout::kReference, dataset::layout::kPeak, dataset::layout::kFrames}) {
+    if (!press.has_dataset(name)) continue;  // a missing dataset is layout.required's
+    try {
+      step(name);
+    } catch (const Error& e) {
+      return e.what();
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
+CheckResult check_gelsight_channel_order(const h5::Group& root) {
+  return per_press(root, "gelsight.channel_order", [](const h5::Group& press) {
+    return first_image_error(press, [&](const char* name) { dataset::read_channel_order(press, name); });
+  });
+}
+
+CheckResult check_gelsight_images(const h5::Group& root) {
+  return per_press(root, "gelsight.images", [](const h5::Group& press) {
+    return first_image_error(press, [&](const char* name) { dataset::require_whole_press_images(press, name); });
+  });
 }
 
 std::vector<CheckResult> check_gelsight(const h5::Group& root) {
@@ -237,7 +251,7 @@ std::vector<CheckResult> check_gelsight(const h5::Group& root) {
           check_gelsight_resolution(file),
           check_gelsight_press_count(file.per_material),
           check_gelsight_source_damage(file.presses),
-          check_gelsight_channel_order(file.presses),
+          check_gelsight_channel_order(root),
           check_gelsight_images(root)};
 }
 

@@ -28,7 +28,10 @@ void append(std::vector<CheckResult>& out, std::vector<CheckResult> more) {
 std::vector<CheckResult> check_integrity(const h5::Group& root, const std::string& format) {
   std::vector<CheckResult> results = check_layout(root, format);
   if (format != dataset::format_name(dataset::Kind::gelsight)) append(results, recording_integrity(root));
-  if (format != dataset::format_name(dataset::Kind::recordings)) results.push_back(check_gelsight_images(root));
+  if (format != dataset::format_name(dataset::Kind::recordings)) {
+    results.push_back(check_gelsight_channel_order(root));
+    results.push_back(check_gelsight_images(root));
+  }
   if (format == dataset::format_name(dataset::Kind::dataset)) append(results, check_dataset(root));
   return results;
 }

@@ -1,8 +1,9 @@
 #pragma once
 // The checks that say whether a file holds what its haptex_format promises, as opposed to whether
 // its data is good enough to train on: the layout (layout.*), finite signals at the format's rate
-// (signal.nan, signal.sample_rate), whole press images (gelsight.images) and a window table that
-// matches its recordings (dataset.windows, dataset.cache). `haptex merge` refuses a shard that fails any of them (docs/merge.md): it reads
+// (signal.nan, signal.sample_rate), press images in a known channel order (gelsight.channel_order)
+// and whole (gelsight.images), and a window table that matches its recordings (dataset.windows,
+// dataset.cache). `haptex merge` refuses a shard that fails any of them (docs/merge.md): it reads
 // what it copies as strictly as qa does. The quality checks stay qa's, run on the merged file.
 #include <string>
 #include <vector>

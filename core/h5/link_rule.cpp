@@ -8,6 +8,27 @@ namespace {
 
 std::string joined(const std::string& path, const std::string& name) { return path == "/" ? "/" + name : path + "/" + name; }
 
+// Attributes (and the values of dataset `object`) holding object references: links in all but name.
+void reference_faults(hid_t object, bool dataset, const std::string& path, const std::string& file, LinkReport& report) {
+  if (dataset) {
+    Handle type(check_input(H5Dget_type(object), "read the type of " + path, file));
+    if (std::optional<LinkFault> fault = holds_references(type.get())) report.faults.emplace_back(path, *fault);
+  }
+  H5O_info_t info;
+  check_input_status(H5Oget_info2(object, &info, H5O_INFO_NUM_ATTRS), "read the attributes of " + path, file);
+  for (hsize_t i = 0; i < info.num_attrs; ++i) {
+    Handle attr(check_input(H5Aopen_by_idx(object, ".", H5_INDEX_NAME, H5_ITER_INC, i, H5P_DEFAULT, H5P_DEFAULT),
+                            "open an attribute of " + path, file));
+    Handle type(check_input(H5Aget_type(attr.get()), "read an attribute's type of " + path, file));
+    if (std::optional<LinkFault> fault = holds_references(type.get())) {
+      const ssize_t length = H5Aget_name(attr.get(), 0, nullptr);
+      std::string name(std::size_t(length > 0 ? length : 0), '\0');
+      H5Aget_name(attr.get(), name.size() + 1, name.data());
+      report.faults.emplace_back(path + "@" + name, *fault);
+    }
+  }
+}
+
 void collect(hid_t group, const std::string& path, const std::string& file, CopiedObjects& seen, LinkReport& report) {
   for (const std::string& name : link_names(group, path, file)) {
     const std::string member = joined(path, name);
@@ -17,10 +38,12 @@ void collect(hid_t group, const std::string& path, const std::string& file, Copi
       report.faults.emplace_back(member, *fault);
     } else if (info.type == H5O_TYPE_GROUP) {
       Handle child(check_input(H5Gopen2(group, name.c_str(), H5P_DEFAULT), "open " + member, file));
+      reference_faults(child.get(), false, member, file, report);
       collect(child.get(), member, file, seen, report);
     } else if (info.type == H5O_TYPE_DATASET) {
       Handle dataset(check_input(H5Dopen2(group, name.c_str(), H5P_DEFAULT), "open " + member, file));
       if (std::optional<LinkFault> fault = stored_outside(dataset.get(), member, file)) report.faults.emplace_back(member, *fault);
+      reference_faults(dataset.get(), true, member, file, report);
     }
   }
 }
@@ -69,12 +92,19 @@ std::optional<LinkFault> stored_outside(hid_t dataset, const std::string& path, 
                    "with the haptex command that wrote it"};
 }
 
+std::optional<LinkFault> holds_references(hid_t type) {
+  if (H5Tdetect_class(type, H5T_REFERENCE) <= 0) return std::nullopt;
+  return LinkFault{"holds HDF5 object references, which no haptex file holds: they point at objects of the file they were written in",
+                   "Remove it, or make the file again with the haptex command that wrote it"};
+}
+
 LinkReport check_links(const Group& root) {
   CopiedObjects seen;
   H5O_info_t info;
   check_input_status(H5Oget_info2(root.id(), &info, H5O_INFO_BASIC), "read " + root.object_path(), root.file());
   seen.emplace(info.addr, root.object_path());
   LinkReport report;
+  reference_faults(root.id(), false, root.object_path(), root.file(), report);
   collect(root.id(), root.object_path(), root.file(), seen, report);
   return report;
 }

@@ -1,12 +1,13 @@
 #pragma once
-// The rule every haptex file keeps for its links: each object is reached by one hard link, and each
-// dataset keeps its values in the file. A soft or external link points anywhere (/etc/passwd through
-// an external link); a second hard link makes one object count twice (a press read as two) or, back
-// to a group above, a walk that never ends; external raw storage or a virtual dataset reads whatever
-// it names, a FIFO (a read that never returns) or /dev/zero among them. Every reader opening a file
-// through dataset::open_checked refuses a file that breaks it before reading any value;
-// Group::open_dataset and Group::copy_from (merge, align) refuse such an object; qa's `layout.links`
-// reports every one, so qa's verdict and every reader's agree.
+// The rule every haptex file keeps for its links: each object is reached by one hard link, each
+// dataset keeps its values in the file, and no value is an object reference. A soft or external link
+// points anywhere (/etc/passwd through an external link); a second hard link makes one object count
+// twice (a press read as two) or, back to a group above, a walk that never ends; external raw
+// storage or a virtual dataset reads whatever it names, a FIFO (a read that never returns) or
+// /dev/zero among them; a reference points at an object of the file it was written in. Every reader
+// opening a file through dataset::open_checked or open_any refuses a file that breaks it before
+// reading any value; Group::open_dataset and Group::copy_from (merge, align) refuse such an object;
+// qa's `layout.links` reports every one, so qa's verdict and every reader's agree.
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,9 @@ std::optional<LinkFault> soft_or_external(hid_t parent, const std::string& name,
 // (`info` is then unset). Throws haptex::Error (bad_input) when the link cannot be read.
 std::optional<LinkFault> follow_link(hid_t parent, const std::string& name, const std::string& path, const std::string& file,
                                      CopiedObjects& seen, H5O_info_t& info);
+
+// When values of HDF5 type `type` hold object references (links in all but name), what is wrong with them.
+std::optional<LinkFault> holds_references(hid_t type);
 
 // When the open dataset `dataset` (at `path`) keeps its values outside the file, what is wrong with
 // it. Reads only its creation properties, never a value.

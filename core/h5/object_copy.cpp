@@ -50,12 +50,9 @@ struct Copy {
   std::string source_file, target_file;
   CopiedObjects& seen;  // every object copied, by address (core/h5/link_rule.hpp)
 
-  // References point at objects of the file they were written in: copied, they would point nowhere
-  // (or anywhere) in the output. No haptex file holds them.
+  // Copied, a reference would point nowhere (or anywhere) in the output.
   void require_plain_type(hid_t type, const std::string& where) const {
-    if (H5Tdetect_class(type, H5T_REFERENCE) > 0)
-      throw input_error(source_file, where, "holds HDF5 object references, which no haptex file holds",
-                        "Remove it, or make the file again with the haptex command that wrote it");
+    if (const std::optional<LinkFault> fault = holds_references(type)) throw input_error(source_file, where, fault->what, fault->fix);
   }
 
   void require_readable(hid_t type, hid_t space, const std::string& where) const {

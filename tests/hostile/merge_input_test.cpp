@@ -280,6 +280,12 @@ std::vector<BrokenShard> broken_shards() {
            cv::imencode(".png", cv::Mat(120, 160, CV_16UC3, cv::Scalar(9000, 20000, 30000)), image);
          });
        }, {"/presses/0/frames[3]", "16 bits", "gelsight.images"}},
+      {"a press in channel order GBR (review 4: merge copied it)", p.gelsight, [](Edit& e, const std::string& m) {
+         e.group(m + "/presses/0").set_attr("channel_order", "GBR");
+       }, {"/presses/0/@channel_order", "unknown channel order 'GBR'", "gelsight.channel_order"}},
+      {"a window table of stride 0 (review 4: qa called it clean)", p.dataset, [](Edit& e, const std::string&) {
+         e.group("windows").set_attr("stride", std::int64_t(0));
+       }, {"/windows has no positive integer stride", "dataset.windows"}},
       {"a material hard-linked under a second name", p.recordings, [](Edit& e, const std::string& m) {
          H5Lcreate_hard(e.root().id(), m.c_str(), e.root().id(), "materials/zz_again", H5P_DEFAULT, H5P_DEFAULT);
        }, {"second link to"}, false},
@@ -318,6 +324,8 @@ TEST(MergeInput, AShardQaCallsBrokenIsRefused) {
     const TempDir dir;
     const std::string bad = broken_copy(dir, c);
     expect_nothing_written(run_haptex({"merge", bad, "-o", dir.file("out.h5")}), dir, c, bad);
+    // qa agrees: an error finding, or a refusal of what it cannot read (review 4: qa called a stride of 0 clean).
+    EXPECT_NE(run_haptex({"qa", bad}).exit_code, 0);
   }
 }
 
