@@ -11,7 +11,7 @@
 #include "apps/command.hpp"
 #include "apps/number_checks.hpp"
 #include "core/durable_file.hpp"
-#include "core/temporary_name.hpp"
+#include "core/output_set.hpp"
 #include "core/error.hpp"
 #include "core/output_is_input.hpp"
 #include "core/text/format.hpp"
@@ -94,11 +94,7 @@ class RenderCommand : public Command {
     if (!csv_.empty()) csv_file.emplace(csv_, force_);
     const render::WavSummary written = render::write_wav(wav_file, rendering.signal, wav);
     if (csv_file) write_text(*csv_file, render::vibration_csv_text(trajectory, rendering.signal));
-    {
-      const auto together = hold_temporaries();
-      wav_file.commit();
-      if (csv_file) csv_file->commit();
-    }
+    commit_together({&wav_file, csv_file ? &*csv_file : nullptr});
 
     const double seconds = double(rendering.signal.size()) / render::kWavSampleRate;
     const Report report{written, rendering, options, sc, distance, compute / seconds};

@@ -8,7 +8,7 @@
 #include "apps/output_options.hpp"
 #include "apps/command.hpp"
 #include "core/durable_file.hpp"
-#include "core/temporary_name.hpp"
+#include "core/output_set.hpp"
 #include "core/error.hpp"
 #include "core/owned_folder.hpp"
 #include "core/partial_directory.hpp"
@@ -58,16 +58,13 @@ class SplitCommand : public Command {
       plots_dir->fill([&](const std::string& dir) {
         plots = split::write_split_plots(dataset_, windows, splits, options_.sections, dir, plots_folder());
       });
-    // The manifest and its plots appear together or not at all (a full disk while writing either).
+    // The manifest and its plots appear together or not at all (a full disk while writing either, a
+    // folder appearing at the plots' name). --force --no-plots: plots an earlier split wrote describe
+    // the manifest replaced, so they go too; a folder of that name holding anything else stays.
     PartialFile manifest_file(output_, force_);
     json::write_file(manifest, "split.schema.json", manifest_file);
-    if (plots_dir) plots_dir->finish();
-    {
-      const auto together = hold_temporaries();
-      manifest_file.commit();
-      if (plots_dir) plots_dir->commit();
-    }
-    if (!plots_dir && force_) remove_earlier_plots();
+    EarlierOutput earlier_plots(plots_folder(), [](const std::string& dir) { return is_haptex_folder(dir, "haptex split"); });
+    commit_together({&manifest_file, plots_dir ? &*plots_dir : nullptr, !plots_dir && force_ ? &earlier_plots : nullptr});
     if (global.json) {
       std::cout << json::read_file(output_).dump(2) << "\n";
       return 0;
@@ -77,21 +74,6 @@ class SplitCommand : public Command {
   }
 
  private:
-  // --force --no-plots: plots an earlier split wrote describe the manifest just replaced, so they go
-  // too; a folder of that name holding anything else (or another command's) is left alone.
-  void remove_earlier_plots() const {
-    std::error_code ec;
-    if (!std::filesystem::is_directory(std::filesystem::symlink_status(plots_folder(), ec)) ||
-        !std::filesystem::is_regular_file(std::filesystem::path(plots_folder()) / kFileListName, ec))
-      return;
-    try {
-      check_only_haptex_files(plots_folder(), "haptex split");
-    } catch (const Error&) {
-      return;
-    }
-    std::filesystem::remove_all(plots_folder(), ec);
-  }
-
   std::string plots_folder() const { return std::filesystem::path(output_).replace_extension(".plots").string(); }
 
   void print(const std::vector<split::MaterialSplit>& splits, const split::PlotResult& plots) const {

@@ -15,7 +15,7 @@
 #include "core/h5/atomic_file.hpp"
 #include "core/output_is_input.hpp"
 #include "core/durable_file.hpp"
-#include "core/temporary_name.hpp"
+#include "core/output_set.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
@@ -72,7 +72,7 @@ class TrainCommand : public Command {
   }
 
   int run(const GlobalOptions& global) override {
-    if (log_.empty()) log_ = std::filesystem::path(output_).replace_extension(".training.json").string();
+    if (log_.empty()) log_ = default_log();
     if (same_output_path(log_, output_))
       throw input_error(log_, "", "--log names the model file itself", "Give the training log another name, or leave --log out");
     refuse_output_among_inputs(output_, input_.files());
@@ -106,13 +106,9 @@ class TrainCommand : public Command {
     json::check_replaceable_json(log_, force_, predict::kTrainingLogFormat);  // again: a file may have appeared there meanwhile
     PartialFile log_file(log_, force_);
     json::write_file(log, "training-log.schema.json", log_file);
-    model_file.finish();
-    log_file.finish();
-    {
-      const auto together = hold_temporaries();
-      model_file.commit();
-      log_file.commit();
-    }
+    // --force with --log elsewhere: the log beside the model it replaces describes that model, so it goes too.
+    EarlierOutput earlier_log(default_log(), [this](const std::string& path) { return describes_this_model(path); });
+    commit_together({&model_file, &log_file, force_ && !same_output_path(log_, default_log()) ? &earlier_log : nullptr});
     if (global.json)
       std::cout << log.dump(2) << "\n";
     else if (!global.quiet)
@@ -121,6 +117,18 @@ class TrainCommand : public Command {
   }
 
  private:
+  std::string default_log() const { return std::filesystem::path(output_).replace_extension(".training.json").string(); }
+
+  // A training log haptex wrote for the model at output_.
+  bool describes_this_model(const std::string& path) const {
+    try {
+      json::check_replaceable_json(path, true, predict::kTrainingLogFormat);
+      const nlohmann::json log = json::read_file(path);
+      return log.is_object() && log.value("model", nlohmann::json()) == nlohmann::json(output_);
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
 
   static void print_epoch(const predict::EpochReport& r) {
     if (r.val_accuracy >= 0)

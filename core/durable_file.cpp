@@ -95,9 +95,40 @@ void PartialFile::finish() {
   finished_ = true;
 }
 
-void PartialFile::commit() {
-  finish();
-  durable_rename(path_, final_path_, replace_);
+void PartialFile::commit() { commit_together({this}); }
+
+void PartialFile::check_place() const {
+  std::error_code ec;
+  if (!replace_ && fs::exists(fs::symlink_status(final_path_, ec)))
+    throw input_error(final_path_, "", "appeared while this run was writing it, and is kept: nothing of yours is replaced without --force",
+                      "Move it away and run again, or choose another output name");
+}
+
+void PartialFile::put_in_place() {
+  std::error_code ec;
+  if (!replace_ || !fs::exists(fs::symlink_status(final_path_, ec))) {
+    durable_rename(path_, final_path_, false);  // nothing to replace: whatever appears there meanwhile is kept
+  } else if (::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, final_path_.c_str(), RENAME_EXCHANGE) == 0) {
+    exchanged_ = true;
+    fsync_path(directory_of(final_path_), O_RDONLY | O_DIRECTORY);
+  } else if (errno == EINVAL) {
+    durable_rename(path_, final_path_, true);
+    replaced_ = true;
+  } else {
+    throw failure(path_ + ": cannot rename to " + final_path_ + ": " + std::strerror(errno));
+  }
+  placed_ = true;
+}
+
+void PartialFile::take_back() noexcept {
+  if (!placed_) return;
+  if (exchanged_) ::renameat2(AT_FDCWD, final_path_.c_str(), AT_FDCWD, path_.c_str(), RENAME_EXCHANGE);
+  else if (!replaced_) ::rename(final_path_.c_str(), path_.c_str());
+  placed_ = exchanged_ = false;
+}
+
+void PartialFile::drop_earlier() {
+  if (exchanged_) ::unlink(path_.c_str());  // the earlier file, swapped here
   committed_ = true;
   ::close(fd_);  // readers may lock the finished file now
   fd_ = -1;

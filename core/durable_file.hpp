@@ -5,6 +5,8 @@
 #include <string>
 #include <string_view>
 
+#include "core/output_set.hpp"
+
 namespace haptex {
 
 // Checks that path can be created: its directory exists and is writable, and it does not exist
@@ -28,29 +30,39 @@ void durable_rename(const std::string& from, const std::string& to, bool replace
 
 // A new temporary file for NAME (core/temporary_name.hpp), locked (flock) for as long as this object
 // lives, so two haptex runs writing the same output refuse instead of corrupting each other.
-class PartialFile {
+class PartialFile : public StagedOutput {
  public:
   // Throws bad_input: unwritable, or locked by another run. `replace`: --force was given, so a file at
   // the final name (checked as haptex's before the work) is replaced; without it nothing that exists
   // there when the file is renamed is ever replaced.
   PartialFile(const std::string& final_path, bool replace);
-  ~PartialFile();                                        // removes the file unless kept
+  ~PartialFile() override;                               // removes the file unless kept
   PartialFile(const PartialFile&) = delete;
   PartialFile& operator=(const PartialFile&) = delete;
 
   const std::string& path() const { return path_; }
   const std::string& final_path() const { return final_path_; }
   // fsync (failed: a full disk), without renaming: outputs that appear together finish every one of
-  // them before the first is renamed (docs/architecture.md, "Outputs are atomic").
-  void finish();
-  // finish() when not done, rename to the final path, fsync the directory; afterwards nothing is removed.
+  // them before the first is renamed (core/output_set.hpp).
+  void finish() override;
+  // Alone: commit_together({this}): rename to the final path, fsync the directory; afterwards nothing is removed.
   void commit();
+
+  // core/output_set.hpp. Without `replace`, a file at the final name refuses the output (it appeared
+  // while the run wrote). A file system without RENAME_EXCHANGE replaces an earlier file at once,
+  // and take_back then leaves the new one in place.
+  void check_place() const override;
+  void put_in_place() override;
+  void take_back() noexcept override;
+  void drop_earlier() override;
 
  private:
   friend void write_text(PartialFile& out, std::string_view text);
   std::string final_path_, path_;
   int fd_ = -1;
   bool replace_ = false, finished_ = false, committed_ = false;
+  // Renamed; swapped with an earlier file, now at path_; or replaced it at once (no RENAME_EXCHANGE).
+  bool placed_ = false, exchanged_ = false, replaced_ = false;
 };
 
 // The whole of `bytes` as a new file at path (created exclusively, O_EXCL | O_NOFOLLOW), for a file

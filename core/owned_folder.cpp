@@ -95,4 +95,17 @@ void check_only_haptex_files(const std::string& folder, std::string_view written
   if (ec) throw input_error(folder, "", "cannot list the folder (" + ec.message() + ")", "Check its permissions");
 }
 
+bool is_haptex_folder(const std::string& folder, std::string_view written_by) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(std::filesystem::symlink_status(folder, ec)) ||
+      !std::filesystem::is_regular_file(std::filesystem::path(folder) / kFileListName, ec))
+    return false;
+  try {
+    check_only_haptex_files(folder, written_by);
+  } catch (const Error&) {
+    return false;
+  }
+  return true;
+}
+
 }  // namespace haptex

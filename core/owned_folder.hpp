@@ -21,4 +21,8 @@ void write_file_list(const std::string& dir, std::string_view written_by);
 // empty or missing folder passes.
 void check_only_haptex_files(const std::string& folder, std::string_view written_by);
 
+// Whether `folder` is a folder `written_by` wrote that holds only its files (check_only_haptex_files,
+// a file list present): one --force may retire when the new run writes none (core/output_set.hpp).
+bool is_haptex_folder(const std::string& folder, std::string_view written_by);
+
 }  // namespace haptex

@@ -99,20 +99,41 @@ void PartialDirectory::finish() {
   finished_ = true;
 }
 
-void PartialDirectory::commit() {
-  finish();
+void PartialDirectory::commit() { commit_together({this}); }
+
+void PartialDirectory::check_place() const {
+  std::error_code ec;
+  if (fs::exists(fs::symlink_status(final_, ec))) check_destination(final_, options_);  // it appeared, or got a file of the user's
+}
+
+void PartialDirectory::put_in_place() {
   std::error_code ec;
   const bool replace = fs::exists(fs::symlink_status(final_, ec));
-  if (replace) check_destination(final_, options_);  // it appeared, or got a file of the user's, while we wrote
-  const int status = replace ? ::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, final_.c_str(), RENAME_EXCHANGE)
-                             : std::rename(path_.c_str(), final_.c_str());
+  int status = ::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, final_.c_str(), replace ? RENAME_EXCHANGE : RENAME_NOREPLACE);
+  if (status != 0 && !replace && errno == EINVAL) status = std::rename(path_.c_str(), final_.c_str());  // no RENAME_NOREPLACE here
+  if (status != 0 && !replace && errno == EEXIST)
+    throw input_error(final_, "", "appeared while this run was writing the " + options_.what + ", and is kept",
+                      "Move it away and run again, or choose another " + options_.option);
   if (status != 0)
     throw failure(path_ + ": cannot rename to " + final_ + ": " + std::strerror(errno) +
                   (replace ? " (remove the old " + options_.what + " and run again)" : ""));
-  committed_ = true;
+  placed_ = true;
+  exchanged_ = replace;
   fsync_path(parent_of(final_), O_RDONLY | O_DIRECTORY);
-  if (!replace) return;
-  fs::remove_all(path_, ec);  // the old folder, swapped here
+}
+
+void PartialDirectory::take_back() noexcept {
+  if (!placed_) return;
+  if (exchanged_) ::renameat2(AT_FDCWD, final_.c_str(), AT_FDCWD, path_.c_str(), RENAME_EXCHANGE);
+  else ::rename(final_.c_str(), path_.c_str());
+  placed_ = exchanged_ = false;
+}
+
+void PartialDirectory::drop_earlier() {
+  committed_ = true;
+  if (!exchanged_) return;
+  std::error_code ec;
+  fs::remove_all(path_, ec);  // the earlier folder, swapped here
   if (ec)
     throw failure("the new " + options_.what + " is complete in " + final_ + ", but the old one, moved to " + path_ +
                   ", could not be removed: " + ec.message());

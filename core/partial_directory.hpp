@@ -13,6 +13,8 @@
 #include <functional>
 #include <string>
 
+#include "core/output_set.hpp"
+
 namespace haptex {
 
 struct FolderOptions {
@@ -22,13 +24,13 @@ struct FolderOptions {
   std::string written_by = "haptex";      // the command, recorded in haptex-files.json
 };
 
-class PartialDirectory {
+class PartialDirectory : public StagedOutput {
  public:
   // Throws haptex::Error (bad_input) naming the folder: no usable name, its parent missing or not
   // writable, a file in its place, an existing non-empty folder without overwrite, a folder with
   // files haptex did not write, or another run writing it now.
   PartialDirectory(std::string final_path, FolderOptions options);
-  ~PartialDirectory();
+  ~PartialDirectory() override;
   PartialDirectory(const PartialDirectory&) = delete;
   PartialDirectory& operator=(const PartialDirectory&) = delete;
 
@@ -40,16 +42,23 @@ class PartialDirectory {
   void fill(const std::function<void(const std::string& dir)>& write) const;
   // Lists the files and syncs them all (failed: a full disk), without renaming: outputs that appear
   // together finish every one of them before the first is renamed. commit() finishes when not done.
-  void finish();
-  // Throws haptex::Error (bad_input) when DIR changed meanwhile so that it may no longer be
-  // replaced, (failed) when a sync or the rename fails.
+  void finish() override;
+  // Alone: commit_together({this}). Throws haptex::Error (bad_input) when DIR changed meanwhile so
+  // that it may no longer be replaced, (failed) when a sync or the rename fails.
   void commit();
+
+  // core/output_set.hpp: an earlier DIR is swapped out (RENAME_EXCHANGE) and removed by drop_earlier.
+  void check_place() const override;
+  void put_in_place() override;
+  void take_back() noexcept override;
+  void drop_earlier() override;
 
  private:
   std::string final_, path_;
   FolderOptions options_;
   int fd_ = -1;
   bool finished_ = false, committed_ = false;
+  bool placed_ = false, exchanged_ = false;  // renamed; swapped with an earlier folder, now at path_
 };
 
 }  // namespace haptex

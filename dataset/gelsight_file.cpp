@@ -85,7 +85,5 @@ int GelsightWriter::add_press(const std::string& material_name, const GelsightPr
   return j;
 }
 
-void GelsightWriter::finish() { file_.finish(); }
-void GelsightWriter::commit() { file_.commit(); }
 
 }  // namespace haptex::dataset

@@ -44,8 +44,9 @@ class GelsightWriter {
   // Adds a press to the material (created on first use with its name); returns its press number.
   // Throws haptex::Error (bad_input) when the name has no letter or digit to make an id from.
   int add_press(const std::string& material_name, const GelsightPress& press);
-  void finish();  // h5::AtomicFile::finish: written and synced, not yet renamed
-  void commit();
+  // The file as one output of a set (core/output_set.hpp); commit() renames it alone.
+  h5::AtomicFile& output() { return file_; }
+  void commit() { file_.commit(); }
   const std::string& path() const { return file_.final_path(); }
 
  private:

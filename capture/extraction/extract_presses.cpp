@@ -23,7 +23,8 @@
 #include "core/sha256.hpp"
 #include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
-#include "core/temporary_name.hpp"
+#include "core/output_set.hpp"
+#include "core/owned_folder.hpp"
 #include "dataset/decode_image.hpp"
 
 namespace haptex::capture {
@@ -149,17 +150,16 @@ class Extraction {
       commit_explain();  // the charts say why no press was found
       throw NoPressFound(no_press_message(), result_);
     }
-    // The file and its folders appear together or not at all (a full disk while writing any of them).
-    writer_.finish();
-    if (explain_) explain_->finish();
-    if (sheets_) sheets_->finish();
-    const auto together = hold_temporaries();
-    writer_.commit();
-    commit_explain();
-    if (sheets_) {
-      sheets_->commit();
-      result_.sheets_dir = sheets_->final_path();
-    }
+    // The file and its folders appear together or not at all (a full disk while writing any of them, a
+    // folder appearing at a folder's name). --force without sheets or --explain: folders an earlier
+    // extraction wrote for the file replaced describe it, so they go too; anything else there stays.
+    const auto extraction_folder = [](const std::string& dir) { return is_haptex_folder(dir, "haptex capture extract"); };
+    EarlierOutput earlier_sheets(default_sheets_dir(output_), extraction_folder), earlier_explain(default_explain_dir(output_), extraction_folder);
+    const bool retire = options_.overwrite;
+    commit_together({&writer_.output(), explain_.get(), sheets_.get(), !sheets_ && retire ? &earlier_sheets : nullptr,
+                     !explain_ && retire ? &earlier_explain : nullptr});
+    if (explain_) result_.explain_dir = explain_->final_path();
+    if (sheets_) result_.sheets_dir = sheets_->final_path();
     return result_;
   }
 

@@ -33,6 +33,7 @@ const std::string& checked(const std::string& final_path, bool overwrite, const 
 
 AtomicFile::AtomicFile(std::string final_path, bool overwrite, const std::string& format)
     : final_path_((checked(final_path, overwrite, format), std::move(final_path))),
+      format_(format),
       partial_(final_path_, overwrite),
       file_(File::create(partial_.path(), final_path_)) {}
 
@@ -51,9 +52,11 @@ void AtomicFile::finish() {
   partial_.finish();
 }
 
-void AtomicFile::commit() {
-  finish();
-  partial_.commit();
+void AtomicFile::commit() { commit_together({this}); }
+
+void AtomicFile::check_place() const {
+  partial_.check_place();
+  if (!format_.empty()) require_replaceable(final_path_, format_);
 }
 
 }  // namespace haptex::h5

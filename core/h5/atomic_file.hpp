@@ -16,14 +16,14 @@ namespace haptex::h5 {
 // refuses that), passes.
 void require_replaceable(const std::string& path, const std::string& format);
 
-class AtomicFile {
+class AtomicFile : public StagedOutput {
  public:
   // Refuses (haptex::Error, bad_input) when final_path exists and overwrite is false, or exists and
   // is not an earlier file of `format` (the haptex_format the caller will stamp: --force replaces only
   // those, require_replaceable), when its directory does not exist or is not writable, or when
   // another run is writing it. `format` may be left out only without overwrite.
   AtomicFile(std::string final_path, bool overwrite, const std::string& format = {});
-  ~AtomicFile();
+  ~AtomicFile() override;
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
 
@@ -33,12 +33,18 @@ class AtomicFile {
   const std::string& partial_path() const { return partial_.path(); }
   // Flushes, closes (every group and dataset handle of the file is invalid afterwards) and syncs
   // the file, without renaming it: outputs that appear together finish all before renaming any.
-  void finish();
-  // finish() when not done, then renames the file to its final name.
+  void finish() override;
+  // finish() when not done, then renames the file to its final name (commit_together({this})).
   void commit();
 
+  // core/output_set.hpp; check_place also refuses an earlier file that is no longer one of `format`.
+  void check_place() const override;
+  void put_in_place() override { partial_.put_in_place(); }
+  void take_back() noexcept override { partial_.take_back(); }
+  void drop_earlier() override { partial_.drop_earlier(); }
+
  private:
-  std::string final_path_;
+  std::string final_path_, format_;
   PartialFile partial_;
   File file_;
 };

@@ -362,6 +362,52 @@ TEST(Force, SplitWithoutPlotsTakesAwayTheEarlierOnes) {
   EXPECT_EQ(file_bytes(d.file("s.plots/mine.png")), "my figure");
 }
 
+// split, a `gnuplot` first on PATH that puts a file of the user's into the plot folder while the
+// plots are drawn (review 4, 3a and 3b: the manifest was renamed into place, then the plots refused).
+CommandResult split_while_a_plot_folder_appears(const TempDir& d, std::vector<std::string> args) {
+  fs::create_directory(d.file("bin"));
+  const std::string plots = d.file("s.plots");
+  std::ofstream(d.file("bin/gnuplot")) << "#!/bin/sh\nmkdir -p '" << plots << "' && echo precious > '" << plots
+                                       << "/mine.txt'\nexec /usr/bin/gnuplot \"$@\"\n";
+  fs::permissions(d.file("bin/gnuplot"), fs::perms::owner_all);
+  args.insert(args.begin(), {"env", "PATH=" + d.file("bin") + ":/usr/bin:/bin", haptex_binary(), "split", small_pipeline().dataset, "-o",
+                             d.file("s.json")});
+  return run_program(args);
+}
+
+TEST(Force, AManifestAppearsWithItsPlotsOrNotAtAll) {
+  const TempDir d;
+  expect_refusal(split_while_a_plot_folder_appears(d, {}), {d.file("s.plots"), "not empty"});
+  EXPECT_FALSE(fs::exists(d.file("s.json"))) << "a manifest without its plots";
+  EXPECT_EQ(file_bytes(d.file("s.plots/mine.txt")), "precious\n");
+  fs::remove_all(d.file("s.plots"));
+  ASSERT_EQ(run_haptex({"split", small_pipeline().dataset, "-o", d.file("s.json")}).exit_code, 0);
+  const std::string manifest = file_bytes(d.file("s.json"));
+  expect_refusal(split_while_a_plot_folder_appears(d, {"--force", "--seed", "5"}), {d.file("s.plots"), "mine.txt"});
+  EXPECT_EQ(file_bytes(d.file("s.json")), manifest) << "the earlier manifest, which the plots there describe";
+  EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
+}
+
+// --force without sheets or --explain: the folders an earlier extraction wrote describe the file
+// replaced, so they go; train --force --log elsewhere: the replaced model's log goes (review 4, 12).
+TEST(Force, CompanionsOfAReplacedOutputGoWithIt) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string videos = (fs::path(p.recordings).parent_path() / "synth" / "gelsight").string();
+  ASSERT_EQ(run_haptex({"capture", "extract", videos, "-o", d.file("g.h5"), "--explain", "-q"}).exit_code, 0);
+  ASSERT_TRUE(fs::exists(d.file("g_sheets")) && fs::exists(d.file("g_explain")));
+  ASSERT_EQ(run_haptex({"capture", "extract", videos + "/Woven 1", "-o", d.file("g.h5"), "--no-sheets", "--force", "-q"}).exit_code, 0);
+  EXPECT_FALSE(fs::exists(d.file("g_sheets")));
+  EXPECT_FALSE(fs::exists(d.file("g_explain")));
+  ASSERT_EQ(run_haptex(quick_train_args(p.dataset, p.split, d.file("m.h5"))).exit_code, 0);
+  ASSERT_TRUE(fs::exists(d.file("m.training.json")));
+  std::vector<std::string> again = quick_train_args(p.dataset, p.split, d.file("m.h5"));
+  again.insert(again.end(), {"--force", "--log", d.file("other.json")});
+  ASSERT_EQ(run_haptex(again).exit_code, 0);
+  EXPECT_FALSE(fs::exists(d.file("m.training.json"))) << "the log of the model replaced";
+  EXPECT_TRUE(fs::exists(d.file("other.json")));
+}
+
 // A dangling link at the output path is refused, with --force or without: it is not haptex's.
 TEST(Force, ADanglingLinkAtTheOutputIsRefused) {
   const TempDir d;

@@ -1,0 +1,82 @@
+#include "core/output_set.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/temporary_name.hpp"
+
+namespace haptex {
+namespace fs = std::filesystem;
+
+EarlierOutput::EarlierOutput(std::string path, std::function<bool(const std::string& path)> retire)
+    : path_(std::move(path)), retire_(std::move(retire)) {}
+
+EarlierOutput::~EarlierOutput() {
+  if (aside_.empty()) return;
+  std::error_code ec;
+  if (!moved_) fs::remove(aside_, ec);  // the fresh temporary, empty (or gone with what was moved onto it)
+  forget_temporary(aside_);
+  ::close(fd_);
+}
+
+void EarlierOutput::finish() {
+  // Outside hold_temporaries (commit_together), which no temporary may be made under: a fresh one of
+  // the earlier output's kind (an empty folder or file a rename may replace) to move it onto.
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(path_, ec);
+  if (!fs::exists(status) || !retire_(path_) || !aside_.empty()) return;
+  Temporary aside = fs::is_directory(status) ? create_temporary_folder(path_) : create_temporary_file(path_);
+  aside_ = aside.path;
+  fd_ = aside.fd;
+}
+
+void EarlierOutput::check_place() const {
+  std::error_code ec;
+  retiring_ = !aside_.empty() && fs::exists(fs::symlink_status(path_, ec)) && retire_(path_);
+}
+
+void EarlierOutput::put_in_place() {
+  if (!retiring_) return;
+  if (std::rename(path_.c_str(), aside_.c_str()) != 0)
+    throw failure(path_ + ": cannot move the earlier output aside to replace it: " + std::strerror(errno));
+  moved_ = true;
+}
+
+void EarlierOutput::take_back() noexcept {
+  // When something took its name meanwhile, the earlier output stays at aside_ (never removed).
+  if (moved_ && ::renameat2(AT_FDCWD, aside_.c_str(), AT_FDCWD, path_.c_str(), RENAME_NOREPLACE) == 0) moved_ = false;
+}
+
+void EarlierOutput::drop_earlier() {
+  if (!moved_) return;
+  std::error_code ec;
+  fs::remove_all(aside_, ec);
+  moved_ = false;
+}
+
+void commit_together(std::initializer_list<StagedOutput*> outputs) {
+  std::vector<StagedOutput*> members;
+  for (StagedOutput* output : outputs)
+    if (output) members.push_back(output);
+  for (StagedOutput* output : members) output->finish();
+  const auto together = hold_temporaries();
+  for (StagedOutput* output : members) output->check_place();
+  std::size_t placing = 0;
+  try {
+    for (; placing < members.size(); ++placing) members[placing]->put_in_place();
+  } catch (...) {
+    // The one that failed too: take_back undoes whatever of its rename was done, and nothing else.
+    for (std::size_t k = placing + 1; k-- > 0;) members[k]->take_back();
+    throw;
+  }
+  for (StagedOutput* output : members) output->drop_earlier();
+}
+
+}  // namespace haptex
