@@ -52,11 +52,16 @@ std::string part_that_overflows(const SpectrumTrace& trace, int net) {
   return layer.empty() ? target_scale_path() : layer;
 }
 
+bool absurd_spectra(const Eigen::Ref<const Eigen::MatrixXf>& spectra) {
+  return !spectra.allFinite() || (spectra.size() > 0 && spectra.cwiseAbs().maxCoeff() > kMostAmplitude);
+}
+
 std::string target_scale_path() { return dataset::root_path(dataset::layout::kNormalisation) + "/" + dataset::layout::kTargetScale; }
 
 Error non_finite_output(const std::string& path, const std::string& part, const std::string& input) {
   return input_error(path.empty() ? "(the model in memory)" : path, part,
-                     "gives a non-finite output for " + input + ": its weights, each finite, overflow 32-bit floats together",
+                     "gives a non-finite or absurd output (an amplitude past " + text::format("%g", double(kMostAmplitude)) +
+                         " m/s^2) for " + input + ": its weights, each finite, run away together",
                      "Train the model again (the training that wrote it diverged, or the file was edited)");
 }
 
@@ -70,7 +75,7 @@ void require_finite_outputs(const Model& m, const std::string& path) {
     if (!code.first_layer.allFinite())
       throw non_finite_output(path, dataset::layer_path(dataset::net_part_path(code.net, dataset::layout::kPredictor), 0), input);
     SpectrumTrace trace;
-    if (!predictor.trace_batch(code, normalised_actions(m.normalisation, actions), trace).allFinite())
+    if (absurd_spectra(predictor.trace_batch(code, normalised_actions(m.normalisation, actions), trace)))
       throw non_finite_output(path, part_that_overflows(trace, code.net), input);
   }
 }

@@ -29,6 +29,14 @@ void require_finite_outputs(const Model& model, const std::string& path);
 // where the overflow they lead to shows.
 inline constexpr float kRunaway = 1e15f;
 
+// The most a spectrum's amplitude may be, m/s^2 per bin: 1e5 g, beyond anything a hand-held tool
+// carries (HaTT's strongest vibrations are tens of m/s^2), and far below where render's synthesis,
+// which sums the bins, overflows float32. A model that predicts more has run away (review 4: finite
+// weights giving 1e35 passed predict and made render write NaN).
+inline constexpr float kMostAmplitude = 1e6f;
+// Spectra (bins x columns) that are not finite or past kMostAmplitude.
+bool absurd_spectra(const Eigen::Ref<const Eigen::MatrixXf>& spectra);
+
 // One forward pass through a part of the model (/nets/K/action_encoder, ...), layer by layer.
 struct TracedPart {
   std::string name;

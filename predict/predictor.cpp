@@ -102,7 +102,7 @@ bool Predictor::predict(const TextureCode& code, std::span<const float> action, 
   for (std::size_t i = 1; i < net.predictor.layers.size(); ++i) apply(net.predictor.layers[i], *in, layer_[k]), in = &layer_[k++];
   Eigen::Map<Eigen::VectorXf> out(spectrum.data(), Eigen::Index(spectrum.size()));
   out = in->cwiseProduct(n.target_scale);
-  if (!out.allFinite()) throw non_finite_output(model_.file, part_that_overflows(code.net, k), "this press and action");
+  if (absurd_spectra(out)) throw non_finite_output(model_.file, part_that_overflows(code.net, k), "this press and action");
   return saturated;
 }
 
@@ -120,7 +120,7 @@ std::string Predictor::part_that_overflows(int net, std::size_t layers) const {
 Eigen::MatrixXf Predictor::predict_batch(const TextureCode& code, const Eigen::MatrixXf& actions, std::size_t* out_of_range) const {
   SpectrumTrace trace;
   Eigen::MatrixXf spectra = trace_batch(code, normalised_actions(model_.normalisation, actions, out_of_range), trace);
-  if (!spectra.allFinite()) throw non_finite_output(model_.file, predict::part_that_overflows(trace, code.net), "this press and these actions");
+  if (absurd_spectra(spectra)) throw non_finite_output(model_.file, predict::part_that_overflows(trace, code.net), "this press and these actions");
   return spectra;
 }
 

@@ -176,6 +176,10 @@ TEST(NonFinite, AModelWhoseFiniteWeightsOverflowIsRefused) {
       {"nets/0/action_encoder/layers/1/bias", 3e38f, {"/nets/0/action_encoder/layers/1", "non-finite"}},
       {"normalisation/target_scale", 3e38f, {"/normalisation/target_scale", "non-finite"}},
       {"normalisation/descriptor_scale", 1e-45f, {"/normalisation/descriptor_scale", "at least 1.2e-38"}},
+      // Review 4, #6: finite spectra of 1e30 m/s^2 passed predict, and render wrote NaN (exit 1).
+      {"normalisation/target_scale", 1e30f, {"/normalisation/target_scale", "absurd", "past 1e+06 m/s^2"}},
+      {"nets/0/predictor/layers/0/weight", 1e30f, {"/nets/0/predictor/layers/0", "absurd"}},
+      {"nets/0/predictor/layers/1/bias", 1e20f, {"/nets/0/predictor/layers/1", "absurd"}},
   };
   for (const Overflow& c : cases) {
     SCOPED_TRACE(c.array);
