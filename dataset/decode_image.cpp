@@ -26,7 +26,7 @@ struct JpegState {
   jpeg_error_mgr errors{};
   std::jmp_buf jump{};
   bool created = false;
-  char damage[JMSG_LENGTH_MAX] = {};
+  char damage[JMSG_LENGTH_MAX] = {}, first_warning[JMSG_LENGTH_MAX] = {};
 };
 
 void jump_back(j_common_ptr info) {
@@ -37,9 +37,14 @@ void jump_back(j_common_ptr info) {
 
 // Bits that are no Huffman (or arithmetic) code, a lost restart marker, a scan that breaks the
 // sequence: the coded data was changed, and libjpeg draws garbage where it was. "Premature end of data
-// segment" and "extraneous bytes before marker" are not damage: OpenCV's MJPG encoder and many webcams
-// write them on whole frames (decode_image.hpp).
-bool tells_of_damage(int code) {
+// segment" is damage only when the marker that ended the data early is not the image's end: OpenCV's
+// MJPG encoder and many webcams close whole frames a few bits short of their end marker
+// (decode_image.hpp), while bytes changed mid-scan make a marker of their own there (review 4: a
+// JPEG with 200 bytes overwritten passed). "Extraneous bytes before marker" is never damage.
+bool tells_of_damage(j_common_ptr info) {
+  constexpr int kEndOfImage = 0xD9;
+  const int code = info->err->msg_code;
+  if (code == JWRN_HIT_MARKER) return reinterpret_cast<j_decompress_ptr>(info)->unread_marker != kEndOfImage;
   return code == JWRN_HUFF_BAD_CODE || code == JWRN_ARITH_BAD_CODE || code == JWRN_MUST_RESYNC || code == JWRN_NOT_SEQUENTIAL ||
          code == JWRN_BOGUS_PROGRESSION || code == JWRN_JPEG_EOF;
 }
@@ -48,7 +53,8 @@ void count_warning(j_common_ptr info, int level) {
   if (level >= 0) return;  // trace messages
   ++info->err->num_warnings;
   auto* s = static_cast<JpegState*>(info->client_data);
-  if (s->damage[0] == 0 && tells_of_damage(info->err->msg_code)) info->err->format_message(info, s->damage);
+  if (s->first_warning[0] == 0) info->err->format_message(info, s->first_warning);
+  if (s->damage[0] == 0 && tells_of_damage(info)) info->err->format_message(info, s->damage);
 }
 
 // The two functions that call libjpeg hold no C++ object of their own, so the jump skips no destructor.
@@ -109,7 +115,7 @@ cv::Mat decode_jpeg(std::span<const std::uint8_t> jpeg, DecodedColour colour, in
   if (!start(*s, jpeg, colour, reduction)) return {};
   cv::Mat image(int(s->info.output_height), int(s->info.output_width), colour == DecodedColour::grey ? CV_8UC1 : CV_8UC3);
   const bool read = read_rows(*s, image.data, image.step);
-  if (report) *report = {int(s->errors.num_warnings), s->damage};
+  if (report) *report = {int(s->errors.num_warnings), s->damage, s->first_warning};
   if (!read || s->damage[0] != 0) return {};
   return image;
 }

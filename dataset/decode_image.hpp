@@ -22,6 +22,7 @@ enum class DecodedColour { bgr, grey };
 struct JpegReport {
   int warnings = 0;
   std::string damage;
+  std::string first_warning;  // the text of the first warning, damage or not
 };
 
 // A JPEG decoded at 1/reduction of its size (1, 2, 4 or 8: libjpeg's DCT-domain scaling, OpenCV's

@@ -93,11 +93,13 @@ TEST(DecodeImage, JpegWarningsAreCountedNotPrinted) {
   EXPECT_EQ(stderr_of([&] { image = decode_jpeg(noisy, DecodedColour::bgr, 1, &report); }), "");
   EXPECT_EQ(report.warnings, 1);
   EXPECT_EQ(report.damage, "");
+  EXPECT_NE(report.first_warning.find("extraneous bytes"), std::string::npos) << report.first_warning;
   EXPECT_TRUE(same(image, decode_jpeg(clean)));
-  JpegReport none{-1, "x"};
+  JpegReport none{-1, "x", "y"};
   decode_jpeg(clean, DecodedColour::bgr, 1, &none);
   EXPECT_EQ(none.warnings, 0);
   EXPECT_EQ(none.damage, "");
+  EXPECT_EQ(none.first_warning, "");
 }
 
 // Coded data changed in transfer (every 97th byte after the scan header flipped; the end marker
