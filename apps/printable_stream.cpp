@@ -1,40 +1,52 @@
 #include "apps/printable_stream.hpp"
 
-#include <cstdio>
+#include "core/text/utf8.hpp"
 
 namespace haptex::apps {
+namespace {
 
-bool PrintableBuffer::put(const char* text) {
-  for (; *text; ++text)
-    if (target_->sputc(*text) == traits_type::eof()) return false;
-  return true;
+// The length of the UTF-8 character `lead` starts; 0 for a byte that starts none.
+std::size_t sequence_length(unsigned char lead) {
+  return lead >= 0xC2 && lead <= 0xDF ? 2 : lead >= 0xE0 && lead <= 0xEF ? 3 : lead >= 0xF0 && lead <= 0xF4 ? 4 : 0;
+}
+
+}  // namespace
+
+bool PrintableBuffer::put(std::string_view text) {
+  return target_->sputn(text.data(), std::streamsize(text.size())) == std::streamsize(text.size());
+}
+
+// The pending bytes as they came: not a whole character after all.
+bool PrintableBuffer::flush_pending() {
+  const bool ok = put(pending_);
+  pending_.clear();
+  return ok;
 }
 
 PrintableBuffer::int_type PrintableBuffer::overflow(int_type c) {
   if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
-  const auto byte = static_cast<unsigned char>(traits_type::to_char_type(c));
-  char escaped[8];
-  if (lead_c2_) {
-    lead_c2_ = false;
-    if (byte >= 0x80 && byte <= 0x9f) {
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", byte);
-      return put(escaped) ? c : traits_type::eof();
-    }
-    if (target_->sputc(char(0xc2)) == traits_type::eof()) return traits_type::eof();
+  const char ch = traits_type::to_char_type(c);
+  const auto byte = static_cast<unsigned char>(ch);
+  if (!pending_.empty() && (byte & 0xC0) != 0x80 && !flush_pending()) return traits_type::eof();
+  if (!pending_.empty()) {
+    pending_ += ch;
+    if (pending_.size() < expected_) return c;
+    const std::string character = std::move(pending_);
+    pending_.clear();
+    return put(text::printable(character, true)) ? c : traits_type::eof();
   }
-  if (byte == 0xc2) {
-    lead_c2_ = true;
+  if (byte >= 0x80 && sequence_length(byte) > 0) {
+    pending_ = std::string(1, ch);
+    expected_ = sequence_length(byte);
     return c;
   }
-  if ((byte < 0x20 && byte != '\n' && byte != '\t') || byte == 0x7f) {
-    std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
-    return put(escaped) ? c : traits_type::eof();
-  }
-  return target_->sputc(char(byte)) == traits_type::eof() ? traits_type::eof() : c;
+  // ASCII (controls escaped), or a stray byte, which passes as it came.
+  if (byte < 0x80 && text::acts_on_text(byte, true)) return put(text::printable(std::string(1, ch), true)) ? c : traits_type::eof();
+  return traits_type::eq_int_type(target_->sputc(ch), traits_type::eof()) ? traits_type::eof() : c;
 }
 
 int PrintableBuffer::sync() {
-  if (lead_c2_ && target_->sputc(char(0xc2)) != traits_type::eof()) lead_c2_ = false;
+  if (!pending_.empty()) flush_pending();
   return target_->pubsync();
 }
 

@@ -1,11 +1,14 @@
 #pragma once
 // Everything haptex prints passes through here (installed on std::cout and std::cerr by run_main): a
 // name taken from a file or the command line may hold a terminal's escape sequences, which must not
-// reach the terminal. Control characters (C0 but newline and tab; DEL; C1, which
-// UTF-8 writes as 0xC2 0x80..0x9F) are written as \xHH or \u00HH; everything else passes unchanged
-// (JSON output holds none: nlohmann escapes them itself).
+// reach the terminal. Every character text::acts_on_text names (controls but newline and tab; the
+// format characters that reorder or break text, U+202E RIGHT-TO-LEFT OVERRIDE among them) is written
+// as \xHH or \uHHHH; everything else passes unchanged (JSON output holds no control: nlohmann
+// escapes them itself). A UTF-8 character is held until its last byte has come.
 #include <ostream>
 #include <streambuf>
+#include <string>
+#include <string_view>
 
 namespace haptex::apps {
 
@@ -19,9 +22,11 @@ class PrintableBuffer : public std::streambuf {
   int sync() override;
 
  private:
-  bool put(const char* text);
+  bool put(std::string_view text);
+  bool flush_pending();
   std::streambuf* target_;
-  bool lead_c2_ = false;  // the last byte was 0xC2: a C1 control may follow
+  std::string pending_;       // the bytes of a UTF-8 character begun, not yet complete
+  std::size_t expected_ = 0;  // its length
 };
 
 // Installs PrintableBuffer on a stream for as long as it lives.

@@ -44,19 +44,23 @@ std::size_t invalid_utf8_offset(std::string_view text) {
   return std::string_view::npos;
 }
 
+bool acts_on_text(char32_t u, bool keep_newlines) {
+  if (keep_newlines && (u == '\n' || u == '\t')) return false;
+  return u < 0x20 || u == 0x7f || (u >= 0x80 && u <= 0x9f) || u == 0x061c || u == 0x180e || (u >= 0x200b && u <= 0x200f) ||
+         (u >= 0x2028 && u <= 0x202e) || (u >= 0x2060 && u <= 0x206f) || u == 0xfeff || (u >= 0xfff9 && u <= 0xfffb);
+}
+
 std::string printable(std::string_view text, bool keep_newlines) {
   static constexpr char kHex[] = "0123456789abcdef";
   std::string out;
   for (const Utf8Character& c : utf8_characters(text)) {
     const char32_t u = c.code_point;
-    const bool control = c.valid && (u < 0x20 || u == 0x7f || (u >= 0x80 && u <= 0x9f)) && !(keep_newlines && (u == '\n' || u == '\t'));
-    if (c.valid && !control) {
+    if (c.valid && !acts_on_text(u, keep_newlines)) {
       out += c.bytes;
-    } else if (control && u < 0x80) {
+    } else if (c.valid && u < 0x80) {
       out += {'\\', 'x', kHex[u >> 4], kHex[u & 15]};
-    } else if (control) {
-      out += "\\u00";
-      out += {kHex[u >> 4], kHex[u & 15]};
+    } else if (c.valid) {
+      out += {'\\', 'u', kHex[(u >> 12) & 15], kHex[(u >> 8) & 15], kHex[(u >> 4) & 15], kHex[u & 15]};
     } else {
       const auto b = static_cast<unsigned char>(c.bytes[0]);
       out += {'\\', 'x', kHex[b >> 4], kHex[b & 15]};

@@ -19,9 +19,16 @@ std::vector<Utf8Character> utf8_characters(std::string_view text);
 // Byte offset of the first byte that starts no valid UTF-8 character; npos when text is all UTF-8.
 std::size_t invalid_utf8_offset(std::string_view text);
 
-// text as a terminal may show it: each byte that is not UTF-8 as \xHH, and each control character
-// (C0, DEL, C1: a terminal's escape sequences start with one) as \xHH or \u00HH, newlines and tabs
-// too unless keep_newlines. Names and paths pass through it before they are printed.
+// Whether a terminal or a text viewer would act on code point u rather than show it: a control
+// character (C0, DEL, C1: a terminal's escape sequences start with one; newline and tab unless
+// keep_newlines) or an invisible format character that reorders or breaks the text around it (the
+// bidirectional marks, embeddings, overrides and isolates such as U+202E RIGHT-TO-LEFT OVERRIDE, the
+// line and paragraph separators U+2028 and U+2029, zero-width characters, U+FEFF).
+bool acts_on_text(char32_t u, bool keep_newlines = false);
+
+// text as a terminal may show it: each byte that is not UTF-8 as \xHH, each character acts_on_text
+// names as \xHH (below U+0080) or \uHHHH. Names and paths pass through it before they are printed,
+// and before they are written into a report.
 std::string printable(std::string_view text, bool keep_newlines = false);
 
 // Throws haptex::Error (bad input) naming file, what (e.g. "the material name") and the byte

@@ -12,6 +12,7 @@
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/signal/spectrum.hpp"
+#include "core/text/utf8.hpp"
 #include "dataset/window.hpp"
 #include "evaluate/report/results_json.hpp"
 
@@ -129,8 +130,9 @@ ReportLayout report_layout(const Evaluation& e) {
   return layout;
 }
 
-std::string csv_field(std::string_view text) {
-  if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
+std::string csv_field(std::string_view raw) {
+  const std::string text = text::printable(raw, true);  // as escaped() in report.md; a newline stays, quoted
+  if (text.find_first_of(",\"\r\n") == std::string_view::npos) return text;
   std::string quoted = "\"";
   for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/text/format.hpp"
+#include "core/text/utf8.hpp"
 #include "core/version.hpp"
 #include "evaluate/report/paper_figures.hpp"
 #include "evaluate/report/results_json.hpp"
@@ -14,8 +15,11 @@
 namespace haptex::evaluate {
 namespace {
 
-// Text in a table cell or running text: markdown's active characters escaped.
-std::string escaped(std::string_view text) {
+// Text in a table cell or running text: markdown's active characters escaped, and characters a
+// terminal or viewer would act on (an ESC sequence, U+202E) written as \xHH or \uHHHH
+// (text::printable; review 4: `cat report.md` retitled and cleared the terminal).
+std::string escaped(std::string_view raw) {
+  const std::string text = text::printable(raw);
   std::string s;
   for (char c : text) {
     if (c == '\n' || c == '\r') c = ' ';
@@ -26,7 +30,8 @@ std::string escaped(std::string_view text) {
 }
 
 // A path or hash as code in a table cell (a backtick cannot close it early; a pipe cannot end the cell).
-std::string code(std::string_view text) {
+std::string code(std::string_view raw) {
+  const std::string text = text::printable(raw);
   std::string s = "`";
   for (char c : text) s += c == '`' ? std::string("'") : c == '|' ? std::string("\\|") : std::string(1, c);
   return s + "`";
