@@ -12,6 +12,7 @@
 #include "apps/dataset_split_input.hpp"
 #include "apps/output_options.hpp"
 #include "apps/command.hpp"
+#include "apps/number_checks.hpp"
 #include "apps/terminal_progress.hpp"
 #include "core/error.hpp"
 #include "core/output_is_input.hpp"
@@ -46,7 +47,7 @@ class EvaluateCommand : public Command {
     app.add_option("--reconstruct", reconstruct_, "Phase reconstruction of the stitched-signal experiment")
         ->transform(CLI::IsMember({"fgla", "online", "noise", "none"}, CLI::ignore_case))->capture_default_str();
     app.add_option("--repeats", options_.repeats, "Baseline renderings (seeds) per test section")->capture_default_str()->check(CLI::Range(2, 1000));
-    app.add_option("--seed", options_.seed, "Random seed of the renderings and of FGLA's initial phase")->capture_default_str();
+    app.add_option("--seed", options_.seed, "Random seed of the renderings and of FGLA's initial phase")->check(seed_number())->capture_default_str();
     app.add_option("--threads", options_.threads, "Threads (0: every core)")->capture_default_str();
     app.add_option("--truth", options_.truth,
                    "truth.h5 of haptex synth hatt or synth materials: the oracle noise floor (and, for synth materials, "

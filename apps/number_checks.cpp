@@ -45,4 +45,15 @@ CLI::Validator odd_number() {
   }, "ODD");
 }
 
+CLI::Validator seed_number() {
+  // Seeds are written into manifests, logs and reports; past 2^53 a JSON number is no longer exact,
+  // and past 2^63 the schemas' integers end (review 4: split did all its work, then failed on its output).
+  constexpr unsigned long long kMostSeed = 1ull << 53;
+  return CLI::Validator([=](std::string& input) -> std::string {
+    const bool digits = !input.empty() && input.size() <= 20 && input.find_first_not_of("0123456789") == std::string::npos;
+    if (digits && std::strtoull(input.c_str(), nullptr, 10) <= kMostSeed) return "";  // an overflow gives ULLONG_MAX
+    return "a seed is a whole number from 0 to " + std::to_string(kMostSeed) + " (2^53, which JSON keeps exact), not " + input;
+  }, "SEED");
+}
+
 }  // namespace haptex::apps

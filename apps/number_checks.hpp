@@ -10,5 +10,6 @@ CLI::Validator finite_number();        // every floating-point option has it (ru
 CLI::Validator positive_number();      // finite and > 0, at least 1.2e-38 (a normal 32-bit float)
 CLI::Validator non_negative_number();  // finite and >= 0
 CLI::Validator odd_number();           // a whole number not divisible by 2
+CLI::Validator seed_number();          // a whole number from 0 to 2^53, which JSON (and so every record of it) keeps exact
 
 }  // namespace haptex::apps

@@ -55,7 +55,7 @@ class RenderCommand : public Command {
         ->check(CLI::Range(0.0, dataset::kLargestAccelerationMs2));
     app.add_flag("--steady", steady_, "online: play the predicted spectra as they are, without drawing each frame's magnitudes "
                                       "around them (steadier than any surface; docs/render.md)");
-    app.add_option("--seed", seed_, "fgla: seed of the random initial phase; online: of the frames' scatter; noise: of the noise")
+    app.add_option("--seed", seed_, "fgla: seed of the random initial phase; online: of the frames' scatter; noise: of the noise")->check(seed_number())
         ->capture_default_str();
   }
 

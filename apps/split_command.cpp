@@ -7,6 +7,7 @@
 
 #include "apps/output_options.hpp"
 #include "apps/command.hpp"
+#include "apps/number_checks.hpp"
 #include "core/durable_file.hpp"
 #include "core/output_set.hpp"
 #include "core/error.hpp"
@@ -33,7 +34,7 @@ class SplitCommand : public Command {
     app.add_option("--sections", options_.sections, "Sections per recording")->capture_default_str()->check(CLI::Range(3, 10000));
     app.add_option("--val", options_.val, "Validation sections")->capture_default_str()->check(CLI::Range(1, 10000));
     app.add_option("--test", options_.test, "Test sections")->capture_default_str()->check(CLI::Range(1, 10000));
-    app.add_option("--seed", options_.seed, "Random seed")->capture_default_str();
+    app.add_option("--seed", options_.seed, "Random seed")->check(seed_number())->capture_default_str();
     app.add_option("--min-coverage", options_.min_coverage, "Least share of val/test windows inside the training hull")
         ->capture_default_str()->check(CLI::Range(0.0, 1.0));
     app.add_option("--tries", options_.tries, "Assignments tried per material")->capture_default_str()->check(CLI::Range(1, 1000000));

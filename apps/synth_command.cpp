@@ -5,6 +5,7 @@
 
 #include "apps/output_options.hpp"
 #include "apps/command.hpp"
+#include "apps/number_checks.hpp"
 #include "apps/terminal_progress.hpp"
 #include "core/error.hpp"
 #include "core/text/utf8.hpp"
@@ -37,7 +38,7 @@ class SynthCommand : public Command {
     add_output_options(*hatt_, hatt_options_.out, hatt_options_.overwrite, "Output folder");
     hatt_->add_option("--recordings", hatt_options_.recordings, "Recordings per material")->capture_default_str()->check(CLI::Range(1, 100));
     hatt_->add_option("--seconds", hatt_options_.seconds, "Seconds per recording")->capture_default_str()->check(CLI::Range(0.2, 600.0));
-    hatt_->add_option("--seed", hatt_options_.seed, "Random seed")->capture_default_str();
+    hatt_->add_option("--seed", hatt_options_.seed, "Random seed")->check(seed_number())->capture_default_str();
 
     materials_ = app.add_subcommand("materials", "Procedural materials: height fields -> presses, recordings, truth spectra");
     materials_->add_option("-n", materials_options_.count, "Number of materials (default: the 8-material demo set)")
@@ -47,7 +48,7 @@ class SynthCommand : public Command {
     materials_->add_option("--presses", materials_options_.presses, "Presses per material")->capture_default_str()->check(CLI::Range(1, 100));
     materials_->add_option("--seconds", materials_options_.seconds, "Seconds per recording")->capture_default_str()->check(CLI::Range(0.2, 600.0));
     materials_->add_option("--size", size_, "GelSight frame size WIDTHxHEIGHT")->capture_default_str();
-    materials_->add_option("--seed", materials_options_.seed, "Random seed")->capture_default_str();
+    materials_->add_option("--seed", materials_options_.seed, "Random seed")->check(seed_number())->capture_default_str();
   }
 
   int run(const GlobalOptions& global) override {

@@ -67,7 +67,7 @@ class TrainCommand : public Command {
     app.add_option("--target-smoothing", options_.target_smoothing,
                    "Bins each training target is averaged over (odd; 1: none)")
         ->capture_default_str()->check(CLI::Range(1, 99) & odd_number());
-    app.add_option("--seed", options_.seed, "Random seed (same seed, same weights)")->capture_default_str();
+    app.add_option("--seed", options_.seed, "Random seed (same seed, same weights)")->check(seed_number())->capture_default_str();
     app.add_option("--threads", options_.threads, "Threads (0: every core); the weights do not depend on it")->capture_default_str();
   }
 
