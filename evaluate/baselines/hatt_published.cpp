@@ -9,6 +9,7 @@
 
 #include "convert/hatt_model_reader.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/naming.hpp"
 
 namespace haptex::evaluate {
@@ -32,7 +33,9 @@ std::vector<fs::path> xml_files(const fs::path& dir) {
   for (const auto& entry : fs::directory_iterator(dir)) {
     std::string ext = entry.path().extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (entry.is_regular_file() && ext == ".xml") files.push_back(entry.path());
+    if (ext != ".xml" || entry.is_directory()) continue;
+    require_regular_file(entry.path().string());  // a FIFO would block its read, a device never end: refused by name
+    files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
   return files;

@@ -96,6 +96,7 @@ TEST(SpecialFiles, AFifoOrADanglingLinkInsideAnInputFolderIsRefused) {
   fs::create_directories(d.file("hd"));
   fs::create_directories(d.file("ed"));
   fs::create_directories(d.file("md"));
+  fs::create_directories(d.file("ev"));
   for (const auto& e : fs::directory_iterator(synth / "recordings")) {
     fs::copy_file(e.path(), d.file("hd/" + e.path().filename().string()));
     break;
@@ -105,6 +106,10 @@ TEST(SpecialFiles, AFifoOrADanglingLinkInsideAnInputFolderIsRefused) {
       {d.file("hd/zz.xml.gz"), {"convert", "hatt", d.file("hd"), "-o", d.file("r.h5")}},
       {d.file("ed/p9.avi"), {"capture", "extract", d.file("ed"), "-o", d.file("g.h5")}},
       {d.file("md/Models_Foo.xml"), {"synth", "hatt", "--models", d.file("md"), "-o", d.file("syn")}},
+      // Review 4, #13: evaluate said "the directory holds no .xml files".
+      {d.file("ev/Models_Sandpaper 1.xml"), {"evaluate", small_pipeline().dataset, "--split", small_pipeline().split, "--model",
+                                             quick_model(), "--baseline", "hatt-published", "--hatt-models", d.file("ev"), "-o",
+                                             d.file("rep")}},
   };
   for (const auto& [fifo, args] : cases) {
     SCOPED_TRACE(fifo);
