@@ -227,16 +227,22 @@ ReferenceSummary TakeProcessor::reference_summary() const {
 }
 
 void TakeProcessor::end_of_take(const std::string& ended_by, const TakeTotals& totals, const std::string& error) {
-  if (writer_) {
+  if (writer_ && ended_by == "error") {
+    // The fault that ended the take (a full disk) may fail this press too: its partial file then goes,
+    // and the space with it, so the manifest can still say what ended the take (review 4, #14).
+    try {
+      close_press("end of take");
+    } catch (const std::exception&) {
+      writer_.reset();
+    }
+  } else if (writer_) {
     // A press cut off by the end of the take keeps every frame taken; its ended_by says why.
     const bool released = post_left_ >= 0;
-    const std::string why = released ? "release"
-                          : ended_by == "presses" ? "end of take"
-                          : ended_by;
-    close_press(why == "error" ? "end of take" : why);
+    close_press(released ? "release" : ended_by == "presses" ? "end of take" : ended_by);
   }
   final_totals_ = totals;
   final_totals_->corrupt_frames = corrupt_frames_;
+  if (ended_by == "error" && presses_.empty()) return;  // nothing saved: the folder goes (record_session)
   write_manifest(ended_by, error);
 }
 

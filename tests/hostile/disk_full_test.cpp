@@ -9,9 +9,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "core/temporary_name.hpp"
 #include "tests/hostile/hostile_support.hpp"
+#include "tests/support/mutations.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/small_pipeline.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -150,6 +152,12 @@ TEST(DiskFull, CaptureKeepsThePressesAlreadyWritten) {
   EXPECT_TRUE(temporaries_of(session + "/press_1.h5").empty());
   const CommandResult info = run_haptex({"info", session + "/press_0.h5"});
   EXPECT_EQ(info.exit_code, 0) << "the press already taken is whole: " << info.err;
+  // Review 4, #14: session.json still said the take was recording, and held no error.
+  const nlohmann::json manifest = read_json(session + "/session.json");
+  EXPECT_EQ(manifest["ended_by"], "error");
+  ASSERT_TRUE(manifest.contains("error"));
+  EXPECT_NE(manifest["error"].get<std::string>().find("the disk is full"), std::string::npos) << manifest["error"];
+  EXPECT_EQ(manifest["presses"].size(), 1u);
 }
 
 // A command whose outputs belong together (a model and its log, a manifest and its plot folder, a
