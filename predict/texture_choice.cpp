@@ -51,11 +51,11 @@ cv::Mat read_rgb(const std::string& path) {
   const std::vector<std::uint8_t> bytes = file_bytes(path);
   const std::string format = image_format(bytes);
   if (format != "png" && format != "jpeg")
-    throw input_error(path, "", "is not a PNG or JPEG file", "Save the sensor frame as PNG (lossless) or JPEG");
+    throw input_error(path, "", "is not a PNG or JPEG image", "Save the sensor frame as PNG (lossless) or JPEG");
   dataset::JpegReport report;
   cv::Mat image = format == "jpeg" ? dataset::decode_jpeg(bytes, dataset::DecodedColour::bgr, 1, &report) : dataset::decode_image(bytes);
   if (!report.first_warning.empty() || image.empty())
-    throw input_error(path, "", "does not decode whole" + (report.first_warning.empty() ? "" : " (libjpeg: " + report.first_warning + ")") +
+    throw input_error(path, "", "the image does not decode whole" + (report.first_warning.empty() ? "" : " (libjpeg: " + report.first_warning + ")") +
                                     ": its data is cut short or was changed",
                       "Give the frame as the sensor sent it, or save it again from a copy that is whole");
   check_pixels(path, std::uint64_t(image.cols), std::uint64_t(image.rows));

@@ -85,6 +85,10 @@ const std::vector<CheckInfo>& all_checks() {
       {"gelsight.channel_order", error,
        "every press states its images' channel order as RGB or BGR (`channel_order`), and its image datasets agree",
        "Set the press's channel_order to the order of its stored pixels (haptex writes RGB); its images are not judged until then"},
+      {"gelsight.frame_numbers", error,
+       "every press's frame numbers agree: frame_start <= contact_first <= peak_index <= contact_last <= frame_end, one contrast "
+       "score per frame from frame_start to frame_end, frame_indices consecutive within them and holding peak_index",
+       "Extract the press again from its video (haptex capture extract); the numbers were edited or damaged"},
       {"gelsight.images", error,
        "every stored image (reference, peak, frames) is a JPEG or PNG as its dataset's encoding says, its header stating the press's width and height, whole: each PNG chunk's CRC holds, each JPEG ends",
        "Extract the press again from its video (haptex capture extract); a damaged image is not judged by the other checks"},

@@ -235,6 +235,49 @@ CheckResult check_gelsight_channel_order(const h5::Group& root) {
   });
 }
 
+namespace {
+
+// What is wrong with a press's frame numbers (schemas/hdf5-layout.md, "Frame numbers"): "" when they
+// agree, or when one is missing or mistyped (layout.required and layout.dtype report those).
+std::string frame_number_problem(const h5::Group& press) {
+  namespace layout = dataset::layout;
+  const auto start = press.try_attr<std::int64_t>(layout::kFrameStart), end = press.try_attr<std::int64_t>(layout::kFrameEnd),
+             first = press.try_attr<std::int64_t>(layout::kContactFirst), last = press.try_attr<std::int64_t>(layout::kContactLast);
+  if (!start || !end || !first || !last || !press.has_dataset(layout::kPeakIndex) || !press.has_dataset(layout::kFrameIndices) ||
+      !press.has_dataset(layout::kContrast))
+    return "";
+  std::int64_t peak = 0;
+  std::vector<std::int64_t> indices;
+  std::size_t scores = 0;
+  try {
+    const std::vector<std::int64_t> peak_value = press.open_dataset(layout::kPeakIndex).read<std::int64_t>();
+    if (peak_value.size() != 1) return "";
+    peak = peak_value.front();
+    indices = press.open_dataset(layout::kFrameIndices).read<std::int64_t>();
+    scores = press.open_dataset(layout::kContrast).elements();
+  } catch (const Error&) {
+    return "";  // not integers, or not readable: the layout checks say which
+  }
+  const auto n = [](std::int64_t v) { return std::to_string(v); };
+  if (!(0 <= *start && *start <= *first && *first <= peak && peak <= *last && *last <= *end))
+    return "frame_start " + n(*start) + ", contact_first " + n(*first) + ", peak_index " + n(peak) + ", contact_last " + n(*last) +
+           " and frame_end " + n(*end) + " are not in that order, from 0";
+  if (std::uint64_t(*end - *start) + 1 != scores)
+    return "contrast holds " + std::to_string(scores) + " scores, but frames " + n(*start) + " to " + n(*end) + " are " +
+           std::to_string(std::uint64_t(*end - *start) + 1);
+  for (std::size_t i = 0; i < indices.size(); ++i)
+    if (indices[i] < *start || indices[i] > *end || (i > 0 && indices[i] != indices[i - 1] + 1))
+      return "frame_indices[" + std::to_string(i) + "] is " + n(indices[i]) + ": the frames are not consecutive within frames " +
+             n(*start) + " to " + n(*end);
+  if (indices.empty() || peak < indices.front() || peak > indices.back())
+    return "peak_index " + n(peak) + " is not among frame_indices";
+  return "";
+}
+
+}  // namespace
+
+CheckResult check_gelsight_frame_numbers(const h5::Group& root) { return per_press(root, "gelsight.frame_numbers", frame_number_problem); }
+
 CheckResult check_gelsight_images(const h5::Group& root) {
   return per_press(root, "gelsight.images", [](const h5::Group& press) {
     return first_image_error(press, [&](const char* name) { dataset::require_whole_press_images(press, name); });
@@ -252,6 +295,7 @@ std::vector<CheckResult> check_gelsight(const h5::Group& root) {
           check_gelsight_press_count(file.per_material),
           check_gelsight_source_damage(file.presses),
           check_gelsight_channel_order(root),
+          check_gelsight_frame_numbers(root),
           check_gelsight_images(root)};
 }
 

@@ -31,6 +31,7 @@ CheckResult check_gelsight_resolution(const GelsightPresses& file);
 CheckResult check_gelsight_press_count(const std::map<std::string, std::size_t>& per_material);
 CheckResult check_gelsight_source_damage(const std::vector<Press>& presses);
 CheckResult check_gelsight_channel_order(const h5::Group& root);
+CheckResult check_gelsight_frame_numbers(const h5::Group& root);
 // dataset::require_whole_press_images on every image, the check merge and align run on every shard.
 CheckResult check_gelsight_images(const h5::Group& root);
 

@@ -30,6 +30,7 @@ std::vector<CheckResult> check_integrity(const h5::Group& root, const std::strin
   if (format != dataset::format_name(dataset::Kind::gelsight)) append(results, recording_integrity(root));
   if (format != dataset::format_name(dataset::Kind::recordings)) {
     results.push_back(check_gelsight_channel_order(root));
+    results.push_back(check_gelsight_frame_numbers(root));
     results.push_back(check_gelsight_images(root));
   }
   if (format == dataset::format_name(dataset::Kind::dataset)) append(results, check_dataset(root));

@@ -20,15 +20,11 @@
 #include "core/partial_directory.hpp"
 #include "core/temporary_name.hpp"
 #include "tests/support/temp_dir.hpp"
+#include "tests/support/file_text.hpp"
 
 namespace haptex {
 namespace {
 namespace fs = std::filesystem;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
 
 // A member whose rename does `after` once it is done: the narrowest seam to a failure (or a signal)
 // between the renames of a set.
@@ -69,7 +65,7 @@ TEST(OutputSet, AFolderThatAppearsAtAMembersNameStopsTheSetBeforeAnyRename) {
     EXPECT_THROW(commit_together({&a, &b}), Error);
   }
   EXPECT_FALSE(fs::exists(manifest)) << "a manifest without its plots";
-  EXPECT_EQ(read_text(plots + "/mine.txt"), "precious");
+  EXPECT_EQ(test::file_text(plots + "/mine.txt"), "precious");
   EXPECT_TRUE(temporaries_of(manifest).empty() && temporaries_of(plots).empty());
 }
 
@@ -88,9 +84,9 @@ TEST(OutputSet, ARenameThatFailsTakesBackTheOnesDoneAndTheEarlierVersions) {
     Then b_then_fail(b, [&] { std::ofstream(log) << "appeared"; });  // c's rename (NOREPLACE) now fails
     EXPECT_THROW(commit_together({&a, &b_then_fail, &c}), Error);
   }
-  EXPECT_EQ(read_text(model), "old model");
-  EXPECT_EQ(read_text(plots + "/a.txt"), "old plots");
-  EXPECT_EQ(read_text(log), "appeared");
+  EXPECT_EQ(test::file_text(model), "old model");
+  EXPECT_EQ(test::file_text(plots + "/a.txt"), "old plots");
+  EXPECT_EQ(test::file_text(log), "appeared");
   EXPECT_TRUE(temporaries_of(model).empty() && temporaries_of(plots).empty() && temporaries_of(log).empty());
 }
 
@@ -106,7 +102,7 @@ TEST(OutputSet, AnEarlierOutputIsRetiredWithTheSetAndKeptWhenItFails) {
     Then fail(a, [] { throw failure("a rename failed"); });
     EXPECT_THROW(commit_together({&old_plots, &fail}), Error);
   }
-  EXPECT_EQ(read_text(plots + "/a.txt"), "old plots") << "put back";
+  EXPECT_EQ(test::file_text(plots + "/a.txt"), "old plots") << "put back";
   EXPECT_FALSE(fs::exists(manifest));
   {
     PartialFile a(manifest, false);
@@ -117,9 +113,9 @@ TEST(OutputSet, AnEarlierOutputIsRetiredWithTheSetAndKeptWhenItFails) {
     EarlierOutput users(mine, retire);
     commit_together({&a, &old_plots, &users});
   }
-  EXPECT_EQ(read_text(manifest), "second");
+  EXPECT_EQ(test::file_text(manifest), "second");
   EXPECT_FALSE(fs::exists(plots)) << "the plots of the manifest replaced";
-  EXPECT_EQ(read_text(mine + "/mine.txt"), "precious") << "not haptex's: left alone";
+  EXPECT_EQ(test::file_text(mine + "/mine.txt"), "precious") << "not haptex's: left alone";
   EXPECT_TRUE(temporaries_of(plots).empty());
 }
 
@@ -146,8 +142,8 @@ TEST(OutputSet, ASignalBetweenRenamesOfASetWaitsForTheWholeSet) {
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << "status " << status;
-  EXPECT_EQ(read_text(model), "model");
-  EXPECT_EQ(read_text(log), "log") << "the set was cut between its renames";
+  EXPECT_EQ(test::file_text(model), "model");
+  EXPECT_EQ(test::file_text(log), "log") << "the set was cut between its renames";
   EXPECT_TRUE(temporaries_of(model).empty() && temporaries_of(log).empty());
 }
 

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/temporary_name.hpp"
 #include "tests/support/temp_dir.hpp"
+#include "tests/support/file_text.hpp"
 
 namespace haptex {
 namespace {
@@ -19,11 +20,6 @@ namespace fs = std::filesystem;
 void write_text(const fs::path& path, const std::string& text) {
   fs::create_directories(path.parent_path());
   std::ofstream(path) << text;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), {}};
 }
 
 std::string refusal(const std::string& dir, const FolderOptions& options) {
@@ -50,8 +46,8 @@ TEST(PartialDirectory, AppearsWholeOnCommitWithItsFileList) {
     EXPECT_FALSE(fs::exists(out));
     partial.commit();
   }
-  EXPECT_EQ(read_text(fs::path(out) / "a.txt"), "new");
-  EXPECT_EQ(read_text(fs::path(out) / "sub" / "b.txt"), "deep");
+  EXPECT_EQ(test::file_text(fs::path(out) / "a.txt"), "new");
+  EXPECT_EQ(test::file_text(fs::path(out) / "sub" / "b.txt"), "deep");
   EXPECT_TRUE(fs::exists(fs::path(out) / "haptex-files.json"));
   EXPECT_TRUE(temporaries_of(out).empty());
 }
@@ -64,7 +60,7 @@ TEST(PartialDirectory, WithoutCommitLeavesTheOldFolderAsItWas) {
     PartialDirectory failed(out, {true});
     write_text(fs::path(failed.path()) / "a.txt", "half");
   }  // an exception half way: no commit
-  EXPECT_EQ(read_text(fs::path(out) / "a.txt"), "old");
+  EXPECT_EQ(test::file_text(fs::path(out) / "a.txt"), "old");
   EXPECT_TRUE(temporaries_of(out).empty());
 }
 
@@ -81,11 +77,11 @@ TEST(PartialDirectory, ReplacesOnlyWithForceAndOnlyWhatHaptexWrote) {
     again.commit();
   }
   EXPECT_FALSE(fs::exists(fs::path(out) / "old.txt")) << "replaced whole, nothing of the earlier run next to the new one";
-  EXPECT_EQ(read_text(fs::path(out) / "new.txt"), "new");
+  EXPECT_EQ(test::file_text(fs::path(out) / "new.txt"), "new");
   write_text(fs::path(out) / "mine.txt", "the user's");
   const std::string foreign = refusal(out, {true});
   EXPECT_NE(foreign.find("mine.txt"), std::string::npos) << foreign;
-  EXPECT_EQ(read_text(fs::path(out) / "mine.txt"), "the user's");
+  EXPECT_EQ(test::file_text(fs::path(out) / "mine.txt"), "the user's");
 }
 
 TEST(PartialDirectory, AFileOfTheUsersAppearingMeanwhileStopsTheCommit) {
@@ -95,7 +91,7 @@ TEST(PartialDirectory, AFileOfTheUsersAppearingMeanwhileStopsTheCommit) {
   PartialDirectory again(out, {true});
   write_text(fs::path(out) / "mine.txt", "the user's");
   EXPECT_THROW(again.commit(), Error);
-  EXPECT_EQ(read_text(fs::path(out) / "mine.txt"), "the user's");
+  EXPECT_EQ(test::file_text(fs::path(out) / "mine.txt"), "the user's");
 }
 
 TEST(PartialDirectory, RefusesASecondWriterAFileInItsPlaceAndAMissingParent) {

@@ -10,15 +10,11 @@
 #include "core/error.hpp"
 #include "core/temporary_name.hpp"
 #include "tests/support/temp_dir.hpp"
+#include "tests/support/file_text.hpp"
 
 namespace haptex {
 namespace {
 namespace fs = std::filesystem;
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
 
 TEST(PartialFile, AFileThatAppearsMeanwhileIsKeptWithoutForce) {
   const test::TempDir dir;
@@ -35,7 +31,7 @@ TEST(PartialFile, AFileThatAppearsMeanwhileIsKeptWithoutForce) {
       EXPECT_NE(std::string(e.what()).find(out + ": appeared while this run was writing it"), std::string::npos) << e.what();
     }
   }
-  EXPECT_EQ(read_text(out), "the user's notes");
+  EXPECT_EQ(test::file_text(out), "the user's notes");
   EXPECT_TRUE(temporaries_of(out).empty());
 }
 
@@ -48,10 +44,10 @@ TEST(PartialFile, WithForceTheFileIsReplacedAndWithoutOneANewFileAppears) {
     write_text(partial, "new");
     partial.commit();
   }
-  EXPECT_EQ(read_text(out), "new");
+  EXPECT_EQ(test::file_text(out), "new");
   const std::string fresh = dir.file("n.json");
   write_file_durably(fresh, "first", false);
-  EXPECT_EQ(read_text(fresh), "first");
+  EXPECT_EQ(test::file_text(fresh), "first");
   EXPECT_TRUE(temporaries_of(fresh).empty());
 }
 

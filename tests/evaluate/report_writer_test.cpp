@@ -23,6 +23,7 @@
 #include "evaluate/report/report_markdown.hpp"
 #include "evaluate/report/results_json.hpp"
 #include "tests/support/temp_dir.hpp"
+#include "tests/support/file_text.hpp"
 
 namespace haptex::evaluate {
 namespace {
@@ -137,16 +138,9 @@ Evaluation sample_evaluation() {
   return e;
 }
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // RFC 4180: quoted fields may hold commas, doubled quotes and line breaks.
 std::vector<std::vector<std::string>> read_csv(const fs::path& path) {
-  const std::string text = read_text(path);
+  const std::string text = test::file_text(path);
   std::vector<std::vector<std::string>> rows(1);
   std::string field;
   bool quoted = false;
@@ -235,7 +229,7 @@ void make_folder_with(const std::string& dir, const std::string& file, const std
 
 bool gnuplot_installed() { return process::program_on_path("gnuplot"); }
 
-bool is_png(const fs::path& path) { return read_text(path).starts_with(std::string("\x89PNG\r\n\x1a\n", 8)); }
+bool is_png(const fs::path& path) { return test::file_text(path).starts_with(std::string("\x89PNG\r\n\x1a\n", 8)); }
 
 Error::Kind kind_of_failure(const Evaluation& e, const std::string& dir, bool overwrite, std::string* message = nullptr) {
   try {
@@ -328,8 +322,8 @@ TEST(ReportWriter, CsvRowsReadBackToTheSameNumbers) {
   write_report(e, dir, false);
 
   const fs::path experiment = fs::path(dir) / "experiment-unified-new-actions.csv";
-  EXPECT_NE(read_text(experiment).find("\"Brick, 2\""), std::string::npos);
-  EXPECT_NE(read_text(experiment).find("\"Glass \"\"smooth\"\"\""), std::string::npos);
+  EXPECT_NE(test::file_text(experiment).find("\"Brick, 2\""), std::string::npos);
+  EXPECT_NE(test::file_text(experiment).find("\"Glass \"\"smooth\"\"\""), std::string::npos);
   const auto rows = read_table(experiment, kExperimentColumns);
   ASSERT_EQ(rows.size(), 5u);
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -376,7 +370,7 @@ TEST(ReportWriter, MarkdownGivesTotalsPaperFiguresAndTables) {
   test::TempDir tmp;
   const std::string dir = tmp.file("report");
   const ReportFiles files = write_report(sample_evaluation(), dir, false);
-  const std::string md = read_text(dir + "/report.md");
+  const std::string md = test::file_text(dir + "/report.md");
   EXPECT_NE(md.find("better on 3 of 5 materials, significantly on 2, significantly worse on 1"), std::string::npos);
   EXPECT_NE(md.find("better on 1 of 2 materials, significantly on 1, significantly worse on 0"), std::string::npos);
   EXPECT_NE(md.find("better on 1 of 1 material, significantly on 1, significantly worse on 0"), std::string::npos);
@@ -512,7 +506,7 @@ TEST(ReportWriter, MarkdownShowsTheFloorRealismAndWhatEachComparisonAsks) {
   test::TempDir tmp;
   const std::string dir = tmp.file("report");
   write_report(sample_evaluation(), dir, false);
-  const std::string md = read_text(dir + "/report.md");
+  const std::string md = test::file_text(dir + "/report.md");
   const auto has = [&md](const std::string& text) { return md.find(text) != std::string::npos; };
   // Per experiment: against the floor, the warning, and the materials worse than their mean spectrum.
   EXPECT_TRUE(has("**Against the noise floor (oracle):** within 10 % of the floor on 2 of 4 materials, within 15 % on 3; "
@@ -551,7 +545,7 @@ TEST(ReportWriter, TheSpeedChartReadsTheFloorFromItsCsv) {
   test::TempDir tmp;
   Evaluation e = sample_evaluation();
   write_report(e, tmp.file("oracle"), false);
-  const std::string oracle = read_text(tmp.file("oracle/speed.gnuplot"));
+  const std::string oracle = test::file_text(tmp.file("oracle/speed.gnuplot"));
   EXPECT_NE(oracle.find("set multiplot layout 1,2"), std::string::npos) << oracle;
   EXPECT_NE(oracle.find("stats 'floors.csv' using (finite(column('distance')) * column('windows')) nooutput"), std::string::npos) << oracle;
   EXPECT_NE(oracle.find("floor with lines dt 2 lc rgb '#666666' title 'oracle'"), std::string::npos) << oracle;
@@ -561,12 +555,12 @@ TEST(ReportWriter, TheSpeedChartReadsTheFloorFromItsCsv) {
 
   e.floor_kind = "estimate";
   write_report(e, tmp.file("estimate"), false);
-  EXPECT_NE(read_text(tmp.file("estimate/speed.gnuplot")).find("title 'floor (estimate)'"), std::string::npos);
+  EXPECT_NE(test::file_text(tmp.file("estimate/speed.gnuplot")).find("title 'floor (estimate)'"), std::string::npos);
 
   e.floors.clear();
   for (SpeedPoint& p : e.speed) p.kind = "spectrum";
   write_report(e, tmp.file("none"), false);
-  const std::string none = read_text(tmp.file("none/speed.gnuplot"));
+  const std::string none = test::file_text(tmp.file("none/speed.gnuplot"));
   EXPECT_NE(none.find("set multiplot layout 1,1"), std::string::npos) << "only the spectrum panel";
   EXPECT_EQ(none.find("floors.csv"), std::string::npos) << "no floor, no line";
   EXPECT_EQ(none.find("floor with lines"), std::string::npos);
@@ -616,7 +610,7 @@ TEST(ReportWriter, WithoutGnuplotTheScriptsAndANoteRemain) {
   EXPECT_TRUE(files.charts.empty());
   EXPECT_TRUE(fs::is_regular_file(fs::path(dir) / "speed.gnuplot"));
   EXPECT_FALSE(fs::exists(fs::path(dir) / "speed.png"));
-  const std::string md = read_text(dir + "/report.md");
+  const std::string md = test::file_text(dir + "/report.md");
   EXPECT_NE(md.find("gnuplot is not installed"), std::string::npos);
   EXPECT_NE(md.find("Chart not drawn"), std::string::npos);
   EXPECT_EQ(md.find("](speed.png)"), std::string::npos);
@@ -630,7 +624,7 @@ TEST(ReportWriter, AnExistingFolderIsRefusedWithoutOverwriteAndKept) {
   EXPECT_EQ(kind_of_failure(sample_evaluation(), dir, false, &message), Error::Kind::bad_input);
   EXPECT_NE(message.find(dir), std::string::npos) << message;
   EXPECT_NE(message.find("already exists"), std::string::npos) << message;
-  EXPECT_EQ(read_text(dir + "/old.txt"), "the old report");
+  EXPECT_EQ(test::file_text(dir + "/old.txt"), "the old report");
   EXPECT_FALSE(fs::exists(dir + "/report.md"));
   EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
   EXPECT_TRUE(temporaries_of(dir).empty());
@@ -650,7 +644,7 @@ TEST(ReportWriter, OverwriteReplacesTheOldReport) {
   write_old_report(dir);
   const ReportFiles files = write_report(sample_evaluation(), dir + "/", true);
   EXPECT_EQ(files.directory, dir);
-  EXPECT_EQ(read_text(dir + "/report.md").find("the old report"), std::string::npos);
+  EXPECT_EQ(test::file_text(dir + "/report.md").find("the old report"), std::string::npos);
   EXPECT_TRUE(fs::is_regular_file(dir + "/report.md"));
   EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
   EXPECT_TRUE(temporaries_of(dir).empty());
@@ -665,12 +659,12 @@ TEST(ReportWriter, OverwriteRefusesAFolderHoldingAFileItDidNotWrite) {
   std::string message;
   EXPECT_EQ(kind_of_failure(sample_evaluation(), dir, true, &message), Error::Kind::bad_input);
   EXPECT_NE(message.find("mine"), std::string::npos) << message;
-  EXPECT_EQ(read_text(dir + "/mine/notes.txt"), "my notes");
-  EXPECT_NE(read_text(dir + "/report.md").find("the old report"), std::string::npos);
+  EXPECT_EQ(test::file_text(dir + "/mine/notes.txt"), "my notes");
+  EXPECT_NE(test::file_text(dir + "/report.md").find("the old report"), std::string::npos);
   make_folder_with(tmp.file("not_a_report"), "data.csv", "1,2");
   EXPECT_EQ(kind_of_failure(sample_evaluation(), tmp.file("not_a_report"), true, &message), Error::Kind::bad_input);
   EXPECT_NE(message.find("haptex-files.json"), std::string::npos) << message;
-  EXPECT_EQ(read_text(tmp.file("not_a_report/data.csv")), "1,2");
+  EXPECT_EQ(test::file_text(tmp.file("not_a_report/data.csv")), "1,2");
 }
 
 TEST(ReportWriter, AFailureLeavesNoHalfReportAndKeepsTheOldOne) {
@@ -685,7 +679,7 @@ TEST(ReportWriter, AFailureLeavesNoHalfReportAndKeepsTheOldOne) {
   const std::string old = tmp.file("old");
   write_old_report(old);
   EXPECT_EQ(kind_of_failure(broken, old, true), Error::Kind::failed);
-  EXPECT_NE(read_text(old + "/report.md").find("the old report"), std::string::npos);
+  EXPECT_NE(test::file_text(old + "/report.md").find("the old report"), std::string::npos);
   EXPECT_TRUE(partial_leftovers(tmp.path()).empty());
 }
 
@@ -695,7 +689,7 @@ TEST(ReportWriter, AFolderOrLinkNamedLikeTheOldTemporaryIsLeftAlone) {
   make_folder_with(thesis, "chapter1.tex", "years of work");
   fs::create_directory_symlink(thesis, dir + ".partial");
   write_report(sample_evaluation(), dir, false);
-  EXPECT_EQ(read_text(thesis + "/chapter1.tex"), "years of work");
+  EXPECT_EQ(test::file_text(thesis + "/chapter1.tex"), "years of work");
   EXPECT_TRUE(fs::is_symlink(dir + ".partial"));
   EXPECT_TRUE(fs::exists(dir + "/report.md"));
   EXPECT_TRUE(temporaries_of(dir).empty());
@@ -709,7 +703,7 @@ TEST(ReportWriter, AReportAnotherRunIsWritingIsRefusedAndLeftAlone) {
   std::string message;
   EXPECT_EQ(kind_of_failure(sample_evaluation(), dir, false, &message), Error::Kind::bad_input);
   EXPECT_NE(message.find("another haptex run"), std::string::npos) << message;
-  EXPECT_EQ(read_text(other.path + "/speed.csv"), "being written");
+  EXPECT_EQ(test::file_text(other.path + "/speed.csv"), "being written");
   EXPECT_EQ(temporaries_of(dir), std::vector<std::string>{other.path});
   ::close(other.fd);
 }

@@ -89,7 +89,7 @@ TEST(CommandLine, NumbersAreReadAsPlainDecimals) {
   const SmallPipeline& p = small_pipeline();
   const TempDir d;
   expect_refusal(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--sections", "025"}), {"--sections", "'025'", "decimal"});
-  expect_refusal(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--seed", "-1"}), {"--seed", "'-1'", "0 or more"});
+  expect_refusal(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--seed", "-1"}), {"--seed", "not -1", "from 0 to"});
   expect_refusal(run_haptex({"train", p.dataset, "--split", p.split, "-o", d.file("m.h5"), "--epochs", "0x1"}), {"--epochs", "'0x1'"});
   expect_refusal(run_haptex({"capture", "record", "--device", "fake:lockstep", "--material", "Cork", "--fps", " 30", "-o", d.file("r")}),
                  {"--fps", "' 30'"});

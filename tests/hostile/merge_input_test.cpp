@@ -283,6 +283,9 @@ std::vector<BrokenShard> broken_shards() {
       {"a press in channel order GBR (review 4: merge copied it)", p.gelsight, [](Edit& e, const std::string& m) {
          e.group(m + "/presses/0").set_attr("channel_order", "GBR");
        }, {"/presses/0/@channel_order", "unknown channel order 'GBR'", "gelsight.channel_order"}},
+      {"a contact that ends past the press's last frame (review 4: a peak_index of 2^62 passed qa)", p.gelsight,
+       [](Edit& e, const std::string& m) { e.group(m + "/presses/0").set_attr("contact_last", std::int64_t(1) << 62); },
+       {"/presses/0", "are not in that order", "gelsight.frame_numbers"}},
       {"a window table of stride 0 (review 4: qa called it clean)", p.dataset, [](Edit& e, const std::string&) {
          e.group("windows").set_attr("stride", std::int64_t(0));
        }, {"/windows has no positive integer stride", "dataset.windows"}},

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <limits>
 #include <regex>
@@ -76,6 +77,16 @@ std::vector<std::vector<std::string>> commands_under(std::vector<std::string> pa
   return found;
 }
 
+// Calls `each` with every command path and each line of its --help.
+void for_each_help_line(const std::function<void(const std::vector<std::string>& command, const std::string& line)>& each) {
+  for (const auto& command : commands_under({})) {
+    std::vector<std::string> help_args = command;
+    help_args.push_back("--help");
+    std::istringstream help(run_haptex(help_args).out);
+    for (std::string line; std::getline(help, line);) each(command, line);
+  }
+}
+
 // CLI11 reads "nan" and "inf" as numbers, and range checks let NaN through: every option whose help
 // says FLOAT, in every command, refuses them before any work; 1e39 too, which a 32-bit float holds as
 // inf. A POSITIVE one refuses 1e-320, which a 32-bit float holds as 0 (review 3: --trigger 1e-320
@@ -84,33 +95,28 @@ std::vector<std::vector<std::string>> commands_under(std::vector<std::string> pa
 TEST(NonFinite, NoFloatingPointOptionTakesNaNOrInfinity) {
   static const std::regex float_option("^ *(--[a-z-]+) FLOAT.*");
   int options = 0;
-  for (const auto& command : commands_under({})) {
-    std::vector<std::string> help_args = command;
-    help_args.push_back("--help");
-    std::istringstream help(run_haptex(help_args).out);
+  for_each_help_line([&](const std::vector<std::string>& command, const std::string& line) {
     std::smatch m;
-    for (std::string line; std::getline(help, line);) {
-      if (!std::regex_match(line, m, float_option)) continue;
-      ++options;
-      std::vector<std::string> values = {"nan", "inf", "-inf", "1e39", "-1e39", "5e-40", "-5e-40"};
-      if (line.find("POSITIVE") != std::string::npos) values.push_back("1e-320");
-      for (const std::string& value : values) {
-        std::vector<std::string> args = command;
-        args.push_back(m[1].str() + "=" + value);
-        SCOPED_TRACE(args.front() + " " + args.back());
-        const CommandResult r = run_haptex(args);
-        EXPECT_EQ(r.exit_code, 2) << r.err;
-        EXPECT_NE(r.err.find(m[1].str() + ": "), std::string::npos) << r.err;
-        if (value == "nan") {
-          EXPECT_NE(r.err.find("must be a finite number"), std::string::npos) << r.err;
-        }
-        if (value == "1e-320") {
-          EXPECT_NE(r.err.find("at least 1.2e-38"), std::string::npos) << r.err;
-        }
-        EXPECT_FALSE(std::regex_search(r.err, std::regex("[0-9]{20}"))) << "no bound of 309 digits: " << r.err;
+    if (!std::regex_match(line, m, float_option)) return;
+    ++options;
+    std::vector<std::string> values = {"nan", "inf", "-inf", "1e39", "-1e39", "5e-40", "-5e-40"};
+    if (line.find("POSITIVE") != std::string::npos) values.push_back("1e-320");
+    for (const std::string& value : values) {
+      std::vector<std::string> args = command;
+      args.push_back(m[1].str() + "=" + value);
+      SCOPED_TRACE(args.front() + " " + args.back());
+      const CommandResult r = run_haptex(args);
+      EXPECT_EQ(r.exit_code, 2) << r.err;
+      EXPECT_NE(r.err.find(m[1].str() + ": "), std::string::npos) << r.err;
+      if (value == "nan") {
+        EXPECT_NE(r.err.find("must be a finite number"), std::string::npos) << r.err;
       }
+      if (value == "1e-320") {
+        EXPECT_NE(r.err.find("at least 1.2e-38"), std::string::npos) << r.err;
+      }
+      EXPECT_FALSE(std::regex_search(r.err, std::regex("[0-9]{20}"))) << "no bound of 309 digits: " << r.err;
     }
-  }
+  });
   EXPECT_GE(options, 9) << "the help lists the floating-point options";
 }
 
@@ -119,24 +125,17 @@ TEST(NonFinite, NoFloatingPointOptionTakesNaNOrInfinity) {
 TEST(NonFinite, EverySeedIsAWholeNumberJsonKeepsExact) {
   static const std::regex seed_option("^ *--seed [A-Z0-9]*:SEED.*");
   int options = 0;
-  for (const auto& command : commands_under({})) {
-    std::vector<std::string> help_args = command;
-    help_args.push_back("--help");
-    std::istringstream help(run_haptex(help_args).out);
-    for (std::string line; std::getline(help, line);) {
-      if (line.find("--seed") != std::string::npos) {
-        EXPECT_TRUE(std::regex_match(line, seed_option)) << line;
-      }
-      if (!std::regex_match(line, seed_option)) continue;
-      ++options;
-      for (const std::string value : {"9223372036854775808", "18446744073709551616", "9007199254740993", "-1", "0x10"}) {
-        std::vector<std::string> args = command;
-        args.push_back("--seed=" + value);
-        SCOPED_TRACE(args.front() + " " + args.back());
-        expect_refusal(run_haptex(args), {"--seed", "0 to 9007199254740992"});
-      }
+  for_each_help_line([&](const std::vector<std::string>& command, const std::string& line) {
+    if (line.find("--seed") == std::string::npos) return;
+    EXPECT_TRUE(std::regex_match(line, seed_option)) << line;
+    ++options;
+    for (const std::string value : {"9223372036854775808", "18446744073709551616", "9007199254740993", "-1", "0x10"}) {
+      std::vector<std::string> args = command;
+      args.push_back("--seed=" + value);
+      SCOPED_TRACE(args.front() + " " + args.back());
+      expect_refusal(run_haptex(args), {"--seed", "0 to 9007199254740992"});
     }
-  }
+  });
   EXPECT_GE(options, 6) << "split, train, render, evaluate, synth hatt and synth materials";
 }
 

@@ -54,7 +54,7 @@ TEST(PressImage, AFrameThatIsDamagedTinyStretchedOrNeitherPngNorJpegIsRefused) {
   expect_refusal(predict_from(dir.file("damaged.jpg")), {dir.file("damaged.jpg"), "does not decode whole", "libjpeg: Corrupt JPEG data"});
   expect_refusal(predict_from(dir.file("tiny.png")), {dir.file("tiny.png"), "1 x 1 pixels", "no sensor frame"});
   expect_refusal(predict_from(dir.file("line.png")), {dir.file("line.png"), "20000 x 1 pixels", "no sensor frame"});
-  expect_refusal(predict_from(dir.file("frame.tiff")), {dir.file("frame.tiff"), "not a PNG or JPEG"});
+  expect_refusal(predict_from(dir.file("frame.tiff")), {dir.file("frame.tiff"), "not a PNG or JPEG image"});
   expect_refusal(predict_from(dir.file("frame.bmp")), {dir.file("frame.bmp"), "not a PNG or JPEG"});
   const CommandResult r = run_haptex({"predict", quick_model(), "--image", dir.file("ok.png"), "--reference", dir.file("damaged.jpg"),
                                       "--normal-force", "1", "--speed", "100"});

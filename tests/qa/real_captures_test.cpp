@@ -31,9 +31,11 @@ std::string gelsight_file(const TempDir& dir, const std::string& material, const
     p.source_sha256 = std::string(64, '0');
     p.reference = reference;
     p.peak = cv::imread(path.string(), cv::IMREAD_COLOR);
+    // A still image as a video of 12 like frames, its numbers agreeing (gelsight.frame_numbers).
     p.frames.assign(12, p.peak);
-    p.frame_indices.assign(12, 0);
-    p.contrast = {contact.score(capture::scoring_image(p.peak))};
+    p.frame_indices = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
+    p.contrast.assign(12, contact.score(capture::scoring_image(p.peak)));
+    p.frame_start = 0, p.frame_end = 11, p.contact_first = 0, p.contact_last = 11, p.peak_index = 5;
     p.peak_score = p.contrast[0];
     p.reference_note = "image " + reference_path.string();
     p.noise = contact.noise();

@@ -21,6 +21,7 @@
 #include "tests/support/mutations.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/synth/press_frames.hpp"
+#include "tests/support/file_text.hpp"
 
 namespace haptex::test {
 namespace fs = std::filesystem;
@@ -107,11 +108,6 @@ std::string build_stamp() {
   return haptex_binary() + " " + mtime(haptex_binary()) + " " + mtime(test_program()) + "\n";
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 SmallPipeline files_in(const fs::path& root) {
   return {(root / "r.h5").string(), (root / "g.h5").string(), (root / "d.h5").string(), (root / "split.json").string(),
           (root / "synth" / "truth.h5").string()};
@@ -149,7 +145,7 @@ const SmallPipeline& small_pipeline() {
       if (lock < 0 || ::flock(lock, LOCK_EX) != 0) throw std::runtime_error("cannot lock " + root.string() + ".lock");
       try {
         const std::string stamp = build_stamp();
-        if (read_text(root / "stamp") != stamp) {
+        if (file_text(root / "stamp") != stamp) {
           fs::remove_all(root);
           fs::create_directories(root);
           build(root);
