@@ -8,6 +8,7 @@
 #include <map>
 
 #include "core/error.hpp"
+#include "core/h5/link_rule.hpp"
 #include "core/json/schema.hpp"
 #include "core/sha256.hpp"
 #include "dataset/layout.hpp"
@@ -126,6 +127,7 @@ SplitDataset open_split_dataset(const SplitManifest& m, const std::string& manif
     return d;
   }
   d.file = h5::File::open(*dataset_path);
+  h5::require_link_rule(d.file->root());  // its window table is looked up by name (core/h5/link_rule.hpp)
   d.table = load_window_table(d.file->root(), d.table_problem);
   if (!d.table) d.table_problem = "the dataset's window table is unreadable: " + d.table_problem;
   else d.materials.insert(d.table->materials.begin(), d.table->materials.end());

@@ -202,7 +202,9 @@ struct FakeCamera::State {
     const Clock::time_point deadline = Clock::now() + std::chrono::milliseconds(timeout_ms);
     for (;;) {
       const Clock::time_point now = Clock::now();
-      while (streaming && !disconnected && !scene_ended && wall_due(next_frame) <= now) produce_one();
+      // Frames falling due are made until the poll's deadline, never past it: a scene slow to render
+      // (a large frame) must not keep the recorder from its loop, which reads --seconds and Ctrl-C.
+      while (streaming && !disconnected && !scene_ended && wall_due(next_frame) <= now && Clock::now() < deadline) produce_one();
       if (streaming && scene_ended) queue_last_buffer();
       if (!done.empty() || last_dequeued) return POLLIN | POLLRDNORM;
       if (disconnected) return POLLERR | POLLHUP;

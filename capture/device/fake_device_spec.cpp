@@ -28,8 +28,9 @@ void apply(FakeDevice& fake, FakeMode& mode, bool& fps_given, const DeviceKeys& 
     const auto x = value.find('x');
     if (x == std::string::npos) keys.refuse(key, "expected WIDTHxHEIGHT");
     const double width = keys.number(key, value.substr(0, x)), height = keys.number(key, value.substr(x + 1));
-    // 8192: above any tactile sensor's frame (a GelSight Mini's is 3280 x 2464), and a frame's bytes stay far from overflow.
-    if (width > 8192 || height > 8192) keys.refuse(key, "the fake camera makes frames of at most 8192x8192");
+    // 4096: above any tactile sensor's frame (a GelSight Mini's is 3280 x 2464), and the float images
+    // the fake renders its frames from stay under 1 GB (review 5: 8192x8192 took minutes to start).
+    if (width > 4096 || height > 4096) keys.refuse(key, "the fake camera makes frames of at most 4096x4096");
     mode.width = std::uint32_t(width);
     mode.height = std::uint32_t(height);
     if (mode.width < 16 || mode.height < 16 || mode.width % 2) keys.refuse(key, "expected an even width and a size of at least 16x16");

@@ -88,13 +88,14 @@ std::vector<std::uint8_t> bgr_to_yuyv(const cv::Mat& bgr) {
   return out;
 }
 
+struct FakeScene::Images : SceneImages {
+  using SceneImages::SceneImages;
+};
+
 FakeScene::FakeScene(std::uint32_t fourcc, int width, int height, const PressSchedule& schedule, std::uint64_t seed)
-    : fourcc_(fourcc), width_(width), height_(height), seed_(seed), schedule_(schedule) {
-  black_payload_ = encode(cv::Mat::zeros(height, width, CV_8UC3));
-  const SceneImages images(width, height, seed);
-  for (int level = 0; level <= kDepthLevels; ++level)
-    for (int noise = 0; noise < 2; ++noise) payloads_.push_back(encode(images.render(level, noise)));
-}
+    : fourcc_(fourcc), width_(width), height_(height), seed_(seed), schedule_(schedule), payloads_((kDepthLevels + 1) * 2 + 1) {}
+
+FakeScene::~FakeScene() = default;
 
 std::uint64_t FakeScene::press_period() const {
   return std::uint64_t(schedule_.rise_frames + schedule_.hold_frames + schedule_.release_frames + schedule_.gap_frames);
@@ -126,9 +127,19 @@ std::vector<std::uint8_t> FakeScene::encode(const cv::Mat& bgr) const {
 }
 
 const std::vector<std::uint8_t>& FakeScene::payload(std::uint64_t frame) const {
-  if (black(frame)) return black_payload_;
-  const int level = int(std::lround(depth(frame) * kDepthLevels));
-  return payloads_[std::size_t(level * 2 + int(frame & 1))];
+  const std::size_t black_index = payloads_.size() - 1;
+  const int level = black(frame) ? 0 : int(std::lround(depth(frame) * kDepthLevels));
+  const std::size_t index = black(frame) ? black_index : std::size_t(level * 2 + int(frame & 1));
+  std::vector<std::uint8_t>& bytes = payloads_[index];
+  if (!bytes.empty()) return bytes;
+  if (index == black_index) {
+    bytes = encode(cv::Mat::zeros(height_, width_, CV_8UC3));
+  } else {
+    if (!images_) images_ = std::make_unique<Images>(width_, height_, seed_);
+    bytes = encode(images_->render(level, int(frame & 1)));
+  }
+  if (++rendered_ == payloads_.size()) images_.reset();
+  return bytes;
 }
 
 }  // namespace haptex::capture

@@ -4,6 +4,7 @@
 // real UVC sensors send. Payloads are encoded once per press depth and reused, so the fake camera
 // can serve 3280 x 2464 MJPG at 25 fps with almost no CPU of its own.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -23,6 +24,7 @@ struct PressSchedule {
 class FakeScene : public CameraScene {
  public:
   FakeScene(std::uint32_t fourcc, int width, int height, const PressSchedule& schedule, std::uint64_t seed = 1);
+  ~FakeScene() override;
 
   // Never ends: payload(k) for every k.
   const std::vector<std::uint8_t>* frame(std::uint64_t k) override { return &payload(k); }
@@ -48,10 +50,14 @@ class FakeScene : public CameraScene {
   int width_, height_;
   std::uint64_t seed_;
   PressSchedule schedule_;
-  std::vector<std::uint8_t> black_payload_;
-  // Every payload, rendered once up front: index level * 2 + noise pattern. The float images they
-  // are made from (hundreds of MB at 3280 x 2464) are freed right after.
-  std::vector<std::vector<std::uint8_t>> payloads_;
+  // Every payload, rendered when first asked for (index level * 2 + noise pattern; the black one
+  // last), so STREAMON returns at once and the recorder's loop, which reads Ctrl-C, runs between
+  // renderings (review 5: the default fake spent seconds rendering all up front, deaf to signals).
+  // The float images they are made from (hundreds of MB at 3280 x 2464) are freed once all are made.
+  struct Images;
+  mutable std::unique_ptr<Images> images_;
+  mutable std::vector<std::vector<std::uint8_t>> payloads_;
+  mutable std::size_t rendered_ = 0;
 };
 
 // One frame of the scene, BGR: the gel pressed to depth level 0..kDepthLevels, with noise pattern 0 or 1.

@@ -19,7 +19,7 @@ std::string_view replacement(char32_t c) {
     case U'"': return "\u201d";
     case U'`': return "\u2018";
     case U'\\': return "/";
-    default: return c < 0x20 || c == 0x7f ? " " : "";
+    default: return text::acts_on_text(c) ? " " : "";  // controls and text-reordering format characters
   }
 }
 

@@ -46,8 +46,9 @@ std::size_t invalid_utf8_offset(std::string_view text) {
 
 bool acts_on_text(char32_t u, bool keep_newlines) {
   if (keep_newlines && (u == '\n' || u == '\t')) return false;
-  return u < 0x20 || u == 0x7f || (u >= 0x80 && u <= 0x9f) || u == 0x061c || u == 0x180e || (u >= 0x200b && u <= 0x200f) ||
-         (u >= 0x2028 && u <= 0x202e) || (u >= 0x2060 && u <= 0x206f) || u == 0xfeff || (u >= 0xfff9 && u <= 0xfffb);
+  return u < 0x20 || u == 0x7f || (u >= 0x80 && u <= 0x9f) || u == 0xad || u == 0x061c || u == 0x180e || (u >= 0x200b && u <= 0x200f) ||
+         (u >= 0x2028 && u <= 0x202e) || (u >= 0x2060 && u <= 0x206f) || u == 0xfeff || (u >= 0xfff9 && u <= 0xfffb) ||
+         (u >= 0xe0000 && u <= 0xe007f);
 }
 
 std::string printable(std::string_view text, bool keep_newlines) {
@@ -59,8 +60,11 @@ std::string printable(std::string_view text, bool keep_newlines) {
       out += c.bytes;
     } else if (c.valid && u < 0x80) {
       out += {'\\', 'x', kHex[u >> 4], kHex[u & 15]};
-    } else if (c.valid) {
+    } else if (c.valid && u <= 0xffff) {
       out += {'\\', 'u', kHex[(u >> 12) & 15], kHex[(u >> 8) & 15], kHex[(u >> 4) & 15], kHex[u & 15]};
+    } else if (c.valid) {
+      out += {'\\', 'U', '0', '0', kHex[(u >> 20) & 15], kHex[(u >> 16) & 15], kHex[(u >> 12) & 15], kHex[(u >> 8) & 15],
+              kHex[(u >> 4) & 15], kHex[u & 15]};
     } else {
       const auto b = static_cast<unsigned char>(c.bytes[0]);
       out += {'\\', 'x', kHex[b >> 4], kHex[b & 15]};

@@ -23,11 +23,12 @@ std::size_t invalid_utf8_offset(std::string_view text);
 // character (C0, DEL, C1: a terminal's escape sequences start with one; newline and tab unless
 // keep_newlines) or an invisible format character that reorders or breaks the text around it (the
 // bidirectional marks, embeddings, overrides and isolates such as U+202E RIGHT-TO-LEFT OVERRIDE, the
-// line and paragraph separators U+2028 and U+2029, zero-width characters, U+FEFF).
+// line and paragraph separators U+2028 and U+2029, zero-width characters, the soft hyphen, U+FEFF,
+// and the tag characters U+E0000..U+E007F, which carry invisible text).
 bool acts_on_text(char32_t u, bool keep_newlines = false);
 
 // text as a terminal may show it: each byte that is not UTF-8 as \xHH, each character acts_on_text
-// names as \xHH (below U+0080) or \uHHHH. Names and paths pass through it before they are printed,
+// names as \xHH (below U+0080), \uHHHH or \UHHHHHHHH. Names and paths pass through it before they are printed,
 // and before they are written into a report.
 std::string printable(std::string_view text, bool keep_newlines = false);
 

@@ -131,7 +131,7 @@ ReportLayout report_layout(const Evaluation& e) {
 }
 
 std::string csv_field(std::string_view raw) {
-  const std::string text = text::printable(raw, true);  // as escaped() in report.md; a newline stays, quoted
+  const std::string text = text::printable(raw);  // as in report.md: a newline or tab too, so no line splits where a name does
   if (text.find_first_of(",\"\r\n") == std::string_view::npos) return text;
   std::string quoted = "\"";
   for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);

@@ -179,13 +179,13 @@ TEST(BadValues, InfoShowsControlCharactersEscaped) {
   fs::copy_file(small_pipeline().dataset, dataset);
   const std::string material = material_ids(dataset).front();
   // Review 4, #7: U+202E RIGHT-TO-LEFT OVERRIDE and U+2028 LINE SEPARATOR were printed as they were.
-  Edit(dataset).group("materials/" + material).set_attr("name", "felt\x1b]0;pwned\x07\x1b[2J \u202eRLO \u2028LS \u0085NEL");
+  Edit(dataset).group("materials/" + material).set_attr("name", "felt\x1b]0;pwned\x07\x1b[2J \u202eRLO \u2028LS \u0085NEL \u00adSHY \U000E0041TAG");
   const CommandResult r = run_haptex({"info", dataset});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << "an escape sequence reached the terminal";
   EXPECT_NE(r.out.find("felt\\x1b]0;pwned\\x07"), std::string::npos) << r.out;
-  for (const char* raw : {"\u202e", "\u2028", "\u0085"}) EXPECT_EQ(r.out.find(raw), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("\\u202eRLO \\u2028LS \\u0085NEL"), std::string::npos) << r.out;
+  for (const char* raw : {"\u202e", "\u2028", "\u0085", "\u00ad", "\U000E0041"}) EXPECT_EQ(r.out.find(raw), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\\u202eRLO \\u2028LS \\u0085NEL \\u00adSHY \\U000e0041TAG"), std::string::npos) << r.out;
 }
 
 // Review 4, #7: evaluate wrote a material name's ESC and BEL into report.md and every CSV, so `cat
@@ -194,7 +194,7 @@ TEST(BadValues, AReportHoldsNoTerminalEscapeFromAName) {
   const TempDir d;
   const std::string dataset = d.file("d.h5");
   fs::copy_file(small_pipeline().dataset, dataset);
-  Edit(dataset).group("materials/" + material_ids(dataset).front()).set_attr("name", "Wov\x1b]0;pwned\x07en\x1b[2J\u202e");
+  Edit(dataset).group("materials/" + material_ids(dataset).front()).set_attr("name", "Wov\x1b]0;pwned\x07en\x1b[2J\u202e\t\nx");
   ASSERT_EQ(run_haptex({"split", dataset, "-o", d.file("s.json"), "--no-plots", "-q"}).exit_code, 0);
   ASSERT_EQ(run_haptex(quick_train_args(dataset, d.file("s.json"), d.file("m.h5"))).exit_code, 0);
   const CommandResult r = run_haptex({"evaluate", dataset, "--split", d.file("s.json"), "--model", d.file("m.h5"), "-o", d.file("rep"),
@@ -208,6 +208,7 @@ TEST(BadValues, AReportHoldsNoTerminalEscapeFromAName) {
     const std::string text = file_bytes(entry.path().string());
     EXPECT_EQ(text.find_first_of("\x1b\x07"), std::string::npos) << name;
     EXPECT_EQ(text.find("\u202e"), std::string::npos) << name;
+    EXPECT_EQ(text.find("\t\nx"), std::string::npos) << name << ": a line splits where the name does";
   }
   EXPECT_GE(files, 3);
   EXPECT_NE(file_bytes(d.file("rep/report.md")).find("Wov\\\\x1b"), std::string::npos) << "the name, escaped and markdown-escaped";

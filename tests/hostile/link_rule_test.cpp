@@ -67,6 +67,13 @@ std::vector<Breach> breaches(const TempDir& dir) {
       {"zero", [](const std::string& f, const std::string& a) { store_outside(f, a, "/dev/zero", values_of(f, a)); }, "outside the file"},
       {"virtual", [](const std::string& f, const std::string& a) { make_virtual(f, a, small_pipeline().dataset, values_of(f, a)); },
        "outside the file"},
+      // Review 5: info and qa followed an external link to a FIFO and hung.
+      {"external", [fifo](const std::string& f, const std::string& a) {
+         Edit edit(f);
+         const std::string lp = a.substr(0, a.rfind('/')) + "/speed_lp";
+         edit.remove(lp);
+         H5Lcreate_external(fifo.c_str(), "/x", edit.root().id(), lp.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+       }, "an external link"},
       {"soft", [](const std::string& f, const std::string& a) {
          Edit edit(f);
          const std::string lp = a.substr(0, a.rfind('/')) + "/speed_lp", speed = "/" + a.substr(0, a.rfind('/')) + "/speed";
@@ -110,7 +117,8 @@ TEST(LinkRule, EveryReaderOfADatasetFileRefusesABreachBeforeReadingAValue) {
     EXPECT_EQ(qa.exit_code, 1) << qa.err;
     EXPECT_NE(qa.out.find("layout.links"), std::string::npos) << qa.out;
     EXPECT_NE(qa.out.find(breach.says), std::string::npos) << qa.out;
-    EXPECT_EQ(qa.out.find("signal.nan"), std::string::npos) << "no check reads values: " << qa.out;
+    EXPECT_EQ(qa.out.find("signal.nan"), std::string::npos) << "no other check runs: " << qa.out;
+    expect_refusal(run_bounded({"info", file}), {file, breach.says});
     const std::string out = dir.file(breach.name + "_out"), split = split_naming(dir, file);
     for (const std::vector<std::string>& command : std::vector<std::vector<std::string>>{
              {"split", file, "-o", out + ".json", "--no-plots"},

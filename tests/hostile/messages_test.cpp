@@ -185,7 +185,7 @@ TEST(Messages, QaSaysWhichWindowStartsWhereItShouldNot) {
 TEST(Messages, AFakeCameraOfAbsurdSizeIsRefusedAndLeavesNoFolder) {
   const TempDir dir;
   expect_refusal(run_haptex({"capture", "record", "--device", "fake:size=100000x100000", "--material", "Cork", "-o", dir.file("s")}),
-                 {"--device", "size", "at most 8192x8192"});
+                 {"--device", "size", "at most 4096x4096"});
   EXPECT_FALSE(fs::exists(dir.file("s")));
 }
 
@@ -202,14 +202,19 @@ TEST(Messages, AFakeCameraRateOrSpeedOutOfRangeIsRefusedAndLeavesNoFolder) {
   }
 }
 
-TEST(Messages, TheSlowestFakeCameraStillEndsTheTakeOnTime) {
-  const TempDir dir;
-  const auto start = std::chrono::steady_clock::now();
-  const CommandResult r = run_haptex({"capture", "record", "--device", "fake:size=160x120,speed=0.01", "--material", "Cork",
-                                      "-o", dir.file("s"), "--seconds", "1", "-q"});
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
-  EXPECT_TRUE(fs::exists(dir.file("s/session.json")));
+// Review 5: the default fake (3280 x 2464) rendered all its frames at STREAMON, 20 s before the
+// recorder's loop, which reads --seconds and Ctrl-C, first ran; it renders each when first needed now.
+TEST(Messages, TheSlowestAndTheLargestFakeCamerasStillEndTheTakeOnTime) {
+  for (const std::string device : {"fake:size=160x120,speed=0.01", "fake"}) {
+    SCOPED_TRACE(device);
+    const TempDir dir;
+    const auto start = std::chrono::steady_clock::now();
+    const CommandResult r = run_haptex({"capture", "record", "--device", device, "--material", "Cork", "-o", dir.file("s"), "--seconds",
+                                        "1", "-q"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+    EXPECT_TRUE(fs::exists(dir.file("s/session.json")) || fs::exists(dir.file("s")) == false) << "a take of no press leaves no folder";
+  }
 }
 
 }  // namespace
