@@ -39,9 +39,26 @@ std::vector<std::size_t> line_starts(const std::vector<char>& bytes) {
 
 }  // namespace
 
+// The offset of the first character reference to NUL (&#0;, &#x00;), which XML 1.0 does not allow and
+// pugixml would decode into a string that ends there ("Wo&#0;ven" read as "Wo"); npos when none.
+static std::size_t nul_reference(std::string_view text) {
+  for (std::size_t at = text.find("&#"); at != std::string_view::npos; at = text.find("&#", at + 2)) {
+    std::size_t i = at + 2;
+    if (i < text.size() && (text[i] == 'x' || text[i] == 'X')) ++i;
+    const std::size_t digits = i;
+    while (i < text.size() && text[i] == '0') ++i;
+    if (i > digits && i < text.size() && text[i] == ';') return at;
+  }
+  return std::string_view::npos;
+}
+
 XmlFile::XmlFile(std::string source, std::vector<char> bytes, std::string sha256)
     : source_(std::move(source)), bytes_(std::move(bytes)), sha256_(std::move(sha256)) {
   line_starts_ = line_starts(bytes_);
+  if (const std::size_t at = nul_reference(std::string_view(bytes_.data(), bytes_.size())); at != std::string_view::npos)
+    throw input_error(source_, "line " + std::to_string(line_of(std::ptrdiff_t(at))),
+                      "a character reference to NUL (&#0;), which XML does not allow and no name may hold",
+                      "Remove it from the file");
   // Minimal parsing keeps the <value> text in place; the doctype node is kept only so it can be refused.
   const unsigned flags = pugi::parse_minimal | pugi::parse_escapes | pugi::parse_doctype;
   const pugi::xml_parse_result result = doc_.load_buffer_inplace(bytes_.data(), bytes_.size(), flags);

@@ -8,6 +8,8 @@
 
 #include "core/error.hpp"
 #include "core/h5/link_rule.hpp"
+#include "core/naming.hpp"
+#include "dataset/object_paths.hpp"
 #include "dataset/layout.hpp"
 #include "qa/checkers.hpp"
 #include "qa/h5_inspect.hpp"
@@ -173,8 +175,15 @@ void judge_shape(const h5::Group& root, const LayoutRow& row, const FoundObject&
   else tally.pass();
 }
 
-CheckResult check_layout_required(const std::vector<RowFindings>& rows) {
+CheckResult check_layout_required(const h5::Group& root, const std::vector<RowFindings>& rows) {
   CheckTally tally("layout.required", "objects and attributes");
+  // {material} is a material id (core/naming.hpp): merge and align join materials by it (review 5:
+  // "Woven_1" and "wovén_1" passed qa, which merge refused and align joined to the wrong presses).
+  if (root.has_group(dataset::layout::kMaterials))
+    for (const std::string& id : root.open_group(dataset::layout::kMaterials).children())
+      if (material_id(id) != id)
+        tally.fail(dataset::material_path(id), "is not named by a material id (lower case letters, digits and '_'; '" + material_id(id) +
+                                                   "' for this name)");
   for (const auto& [row, missing, not_groups, found] : rows) {
     const std::string line = "schemas/hdf5-layout.md line " + std::to_string(row->line) + ": " + row->path;
     for (const auto& path : missing) tally.fail(path, "missing (" + line + ")");
@@ -246,7 +255,7 @@ std::vector<CheckResult> check_layout(const h5::Group& root, const std::string& 
   }
   const std::vector<LayoutRow> rows = rows_for_format(embedded_layout(), format);
   const std::vector<RowFindings> found = find_rows(root, rows);
-  return {check_layout_required(found), check_layout_dtype(found), check_layout_shape(root, found),
+  return {check_layout_required(root, found), check_layout_dtype(found), check_layout_shape(root, found),
           check_layout_units(found), std::move(links)};
 }
 

@@ -188,6 +188,25 @@ TEST(BadValues, InfoShowsControlCharactersEscaped) {
   EXPECT_NE(r.out.find("\\u202eRLO \\u2028LS \\u0085NEL \\u00adSHY \\U000e0041TAG"), std::string::npos) << r.out;
 }
 
+// Review 5, #8: "Wo&#0;ven" in a HaTT recording became the material "Wo".
+TEST(BadValues, ANulCharacterReferenceInXmlIsRefused) {
+  if (!python_has("gzip")) GTEST_SKIP() << "python3 is missing";
+  const TempDir d;
+  const fs::path synth = fs::path(small_pipeline().recordings).parent_path() / "synth" / "recordings";
+  fs::path source;
+  for (const auto& e : fs::directory_iterator(synth))
+    if (e.path().filename().string().find(".xml") != std::string::npos) source = e.path();
+  ASSERT_FALSE(source.empty());
+  const CommandResult made = run_python({"-c",
+                                         "import gzip,re,sys; t=gzip.open(sys.argv[1]).read().decode();"
+                                         "t=re.sub(r'<material>([^<]*)</material>', lambda m: '<material>'+m.group(1)[:2]+'&#0;'+m.group(1)[2:]+'</material>', t, 1);"
+                                         "open(sys.argv[2],'w').write(t)",
+                                         source.string(), d.file("nul_1.xml")});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  expect_refusal(run_haptex({"convert", "hatt", d.file("nul_1.xml"), "-o", d.file("r.h5")}), {d.file("nul_1.xml"), "line ", "&#0;"});
+  EXPECT_FALSE(fs::exists(d.file("r.h5")));
+}
+
 // Review 4, #7: evaluate wrote a material name's ESC and BEL into report.md and every CSV, so `cat
 // report.md` retitled and cleared the terminal.
 TEST(BadValues, AReportHoldsNoTerminalEscapeFromAName) {

@@ -286,6 +286,9 @@ std::vector<BrokenShard> broken_shards() {
       {"a contact that ends past the press's last frame (review 4: a peak_index of 2^62 passed qa)", p.gelsight,
        [](Edit& e, const std::string& m) { e.group(m + "/presses/0").set_attr("contact_last", std::int64_t(1) << 62); },
        {"/presses/0", "are not in that order", "gelsight.frame_numbers"}},
+      {"a material group named by no material id (review 5: qa called it clean, align took it)", p.recordings,
+       [](Edit& e, const std::string& m) { H5Lmove(e.root().id(), m.c_str(), e.root().id(), "materials/Wov\u00e9n_1", H5P_DEFAULT, H5P_DEFAULT); },
+       {"/materials/Wov\u00e9n_1", "material id"}},
       {"a window table of stride 0 (review 4: qa called it clean)", p.dataset, [](Edit& e, const std::string&) {
          e.group("windows").set_attr("stride", std::int64_t(0));
        }, {"/windows has no positive integer stride", "dataset.windows"}},
