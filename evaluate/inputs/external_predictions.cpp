@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
+#include "core/h5/link_rule.hpp"
 #include "core/input_file.hpp"
 #include "core/sha256.hpp"
 #include "core/text/format.hpp"
@@ -190,6 +191,7 @@ ExternalPredictions read_external_predictions(const PredictionsInput& input, con
   require_regular_file(input.path);  // a FIFO or a device is named as such
   const h5::File file = r.attribute("", "an HDF5 file haptex can read", [&] { return h5::File::open(input.path); });
   const h5::Group root = file.root();
+  h5::require_link_rule(root);  // before any lookup by name: an external link to a FIFO would hang it (review 5)
   const std::string format = "/@" + std::string(kPredictionsFormatAttribute);
   if (const std::string found = r.text(root, kPredictionsFormatAttribute, format); found != kPredictionsFormat)
     throw r.error(format, "is '" + found.substr(0, 80) + "', expected '" + std::string(kPredictionsFormat) + "'",

@@ -3,6 +3,8 @@
 // non-finite or negative values; bad compute times and signals; names the report cannot use.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -124,6 +126,16 @@ TEST(PredictionsRefusals, LinksInPlaceOfDataAreRefused) {
   }
   expect_refusal(evaluate(dir, {"x=" + file}), {file, "/spectra", "link"});
   EXPECT_FALSE(fs::exists(dir.file("report")));
+  // Review 5: an external link to a FIFO hung evaluate, which followed it while looking /spectra up.
+  ASSERT_EQ(::mkfifo(dir.file("fifo").c_str(), 0600), 0);
+  const std::string to_fifo = dir.file("to_fifo.h5");
+  write_predictions(to_fifo, p);
+  {
+    h5::File f = h5::File::open(to_fifo, true);
+    ASSERT_GE(H5Lcreate_external(dir.file("fifo").c_str(), "/spectra", f.root().id(), "spectra", H5P_DEFAULT, H5P_DEFAULT), 0);
+    f.close();
+  }
+  expect_refusal(evaluate(dir, {"x=" + to_fifo}), {to_fifo, "/spectra", "external link"});
 }
 
 TEST(PredictionsRefusals, AttributesOfAnotherTypeAreRefusedWithThisFilesFix) {
