@@ -99,8 +99,13 @@ void PartialFile::commit() { commit_together({this}); }
 
 void PartialFile::check_place() const {
   std::error_code ec;
-  if (!replace_ && fs::exists(fs::symlink_status(final_path_, ec)))
+  const fs::file_status status = fs::symlink_status(final_path_, ec);
+  if (!replace_ && fs::exists(status))
     throw input_error(final_path_, "", "appeared while this run was writing it, and is kept: nothing of yours is replaced without --force",
+                      "Move it away and run again, or choose another output name");
+  // --force swaps out only a file (checked as haptex's before the work), never a folder or a link that took its place.
+  if (replace_ && fs::exists(status) && !fs::is_regular_file(status))
+    throw input_error(final_path_, "", "is no longer a file (a folder or a link took its place while this run wrote), and is kept",
                       "Move it away and run again, or choose another output name");
 }
 

@@ -119,6 +119,23 @@ TEST(OutputSet, AnEarlierOutputIsRetiredWithTheSetAndKeptWhenItFails) {
   EXPECT_TRUE(temporaries_of(plots).empty());
 }
 
+// --force swaps out an earlier file, never a folder that took its name while the run wrote.
+TEST(OutputSet, ForceNeverSwapsOutAFolderThatTookTheFilesName) {
+  const test::TempDir dir;
+  const std::string model = dir.file("m.h5");
+  std::ofstream(model) << "old model";
+  {
+    PartialFile a(model, true);
+    write_text(a, "new model");
+    fs::remove(model);
+    fs::create_directory(model);
+    std::ofstream(model + "/mine.txt") << "precious";
+    EXPECT_THROW(commit_together({&a}), Error);
+  }
+  EXPECT_EQ(test::file_text(model + "/mine.txt"), "precious");
+  EXPECT_TRUE(temporaries_of(model).empty());
+}
+
 // Review 3, #3: SIGTERM between the renames of outputs that belong together (a model and its
 // training log) left the model without its log. The signal waits until both are in place, then ends
 // the run by itself. A child process takes the signal, as a run would.
