@@ -111,6 +111,14 @@ TEST(PredictionsRefusals, TheGoodFileUnderAHostileNameIsScored) {
   EXPECT_EQ(speed.find('\r'), std::string::npos) << speed;
 }
 
+// Puts /spectra of `file` behind an external link to /spectra in `target`.
+bool link_spectra(const std::string& file, const std::string& target) {
+  h5::File f = h5::File::open(file, true);
+  const bool made = H5Lcreate_external(target.c_str(), "/spectra", f.root().id(), "spectra", H5P_DEFAULT, H5P_DEFAULT) >= 0;
+  f.close();
+  return made;
+}
+
 // Links are refused: an external link would score data the file's SHA-256 in the report does not cover.
 TEST(PredictionsRefusals, LinksInPlaceOfDataAreRefused) {
   const TempDir dir;
@@ -119,22 +127,14 @@ TEST(PredictionsRefusals, LinksInPlaceOfDataAreRefused) {
   p.shape.clear();
   const std::string file = dir.file("linked.h5");
   write_predictions(file, p);
-  {
-    h5::File f = h5::File::open(file, true);
-    ASSERT_GE(H5Lcreate_external(dir.file("target.h5").c_str(), "/spectra", f.root().id(), "spectra", H5P_DEFAULT, H5P_DEFAULT), 0);
-    f.close();
-  }
+  ASSERT_TRUE(link_spectra(file, dir.file("target.h5")));
   expect_refusal(evaluate(dir, {"x=" + file}), {file, "/spectra", "link"});
   EXPECT_FALSE(fs::exists(dir.file("report")));
   // Review 5: an external link to a FIFO hung evaluate, which followed it while looking /spectra up.
   ASSERT_EQ(::mkfifo(dir.file("fifo").c_str(), 0600), 0);
   const std::string to_fifo = dir.file("to_fifo.h5");
   write_predictions(to_fifo, p);
-  {
-    h5::File f = h5::File::open(to_fifo, true);
-    ASSERT_GE(H5Lcreate_external(dir.file("fifo").c_str(), "/spectra", f.root().id(), "spectra", H5P_DEFAULT, H5P_DEFAULT), 0);
-    f.close();
-  }
+  ASSERT_TRUE(link_spectra(to_fifo, dir.file("fifo")));
   expect_refusal(evaluate(dir, {"x=" + to_fifo}), {to_fifo, "/spectra", "external link"});
 }
 
