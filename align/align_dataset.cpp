@@ -57,8 +57,8 @@ AlignResult align_dataset(const AlignOptions& o, const Progress& progress) {
   const h5::File recordings_file = dataset::open_checked(o.recordings, dataset::Kind::recordings),
                  gelsight_file = dataset::open_checked(o.gelsight, dataset::Kind::gelsight);
   const h5::Group recordings_root = recordings_file.root(), gelsight_root = gelsight_file.root();
-  qa::require_integrity(recordings_root, dataset::format_name(dataset::Kind::recordings));
-  qa::require_integrity(gelsight_root, dataset::format_name(dataset::Kind::gelsight));
+  qa::require_integrity(recordings_root, dataset::Kind::recordings);
+  qa::require_integrity(gelsight_root, dataset::Kind::gelsight);
   AlignResult result;
   result.match = match_materials(materials_of(recordings_root, kRecordings), materials_of(gelsight_root, kPresses),
                                  o.names_file.empty() ? std::map<std::string, std::string>{} : load_name_map(o.names_file),

@@ -21,7 +21,7 @@ std::vector<Shard> open_shards(const std::vector<std::string>& paths, bool check
   std::vector<Shard> shards;
   for (const std::string& path : paths) {
     shards.push_back(open_shard(path));
-    if (check_integrity) qa::require_integrity(shards.back().file.root(), dataset::format_name(shards.back().kind));
+    if (check_integrity) qa::require_integrity(shards.back().file.root(), shards.back().kind);
   }
   require_joinable(shards);
   return shards;

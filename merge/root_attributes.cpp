@@ -1,21 +1,16 @@
 #include "merge/root_attributes.hpp"
 
 #include <algorithm>
-#include <array>
+#include <string_view>
 
 #include "core/sha256.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/root_content.hpp"
 
 namespace haptex::merge {
 namespace {
 
 using namespace dataset::layout;
-
-constexpr std::array<RootAttribute, 1> kRecordings{{{kFieldMap, Join::lines}}};
-constexpr std::array<RootAttribute, 4> kDataset{{{kRecordingsFile, Join::lines},
-                                                {kRecordingsSha256, Join::digest},
-                                                {kGelsightFile, Join::lines},
-                                                {kGelsightSha256, Join::digest}}};
 
 // The values without repeats, in their first order.
 std::vector<std::string> distinct(const std::vector<std::string>& values) {
@@ -27,12 +22,13 @@ std::vector<std::string> distinct(const std::vector<std::string>& values) {
 
 }  // namespace
 
-std::span<const RootAttribute> root_attributes(dataset::Kind kind) {
-  switch (kind) {
-    case dataset::Kind::recordings: return kRecordings;
-    case dataset::Kind::dataset: return kDataset;
-    default: return {};  // gelsight files carry the stamp only
+std::vector<RootAttribute> root_attributes(dataset::Kind kind) {
+  std::vector<RootAttribute> attributes;
+  for (const char* name : dataset::root_attribute_names(kind)) {
+    const std::string_view n = name;
+    attributes.push_back({name, n == kRecordingsSha256 || n == kGelsightSha256 ? Join::digest : Join::lines});
   }
+  return attributes;
 }
 
 std::string join_values(Join join, const std::vector<std::string>& values) {

@@ -3,7 +3,6 @@
 // file's are made from its shards' (docs/merge.md, "Provenance"). A merged file came from several
 // inputs, so an attribute naming one input becomes the list of them, and a hash of one input a hash
 // that changes whenever any of them does; each shard's own values are kept under /shards.
-#include <span>
 #include <string>
 #include <vector>
 
@@ -22,8 +21,9 @@ struct RootAttribute {
   Join join;
 };
 
-// The root attributes of `kind` beside the stamp (schemas/hdf5-layout.md); all are strings.
-std::span<const RootAttribute> root_attributes(dataset::Kind kind);
+// The root attributes of `kind` beside the stamp (dataset/root_content.hpp), each with its join: a
+// hash of inputs is joined into one hash, anything else into lines.
+std::vector<RootAttribute> root_attributes(dataset::Kind kind);
 
 // The merged value of one attribute from the values of the shards that contribute materials.
 std::string join_values(Join join, const std::vector<std::string>& values);

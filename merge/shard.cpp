@@ -8,6 +8,7 @@
 #include "core/naming.hpp"
 #include "core/text/utf8.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/root_content.hpp"
 #include "merge/root_attributes.hpp"
 
 namespace haptex::merge {
@@ -18,26 +19,12 @@ using namespace dataset::layout;
 constexpr std::array kMergeable{dataset::Kind::recordings, dataset::Kind::gelsight, dataset::Kind::dataset};
 constexpr const char* kWriteAgain = "Write the file again with the haptex command that made it";
 
-bool is_known_attribute(dataset::Kind kind, const std::string& name) {
-  for (const char* stamp : h5::kStampAttributes)
-    if (name == stamp) return true;
-  for (const RootAttribute& a : root_attributes(kind))
-    if (name == a.name) return true;
-  return false;
-}
-
 // Anything else at the root has no rule to join it by, and leaving it out would lose it unsaid.
 void refuse_unknown_root_content(const std::string& path, const h5::Group& root, dataset::Kind kind) {
-  for (const std::string& name : root.attr_names())
-    if (!is_known_attribute(kind, name))
-      throw input_error(path, "/@" + name, "is not an attribute haptex writes in a " + dataset::format_name(kind) + " file, so merge cannot tell how to join it",
-                        "Remove it from a copy of the shard (h5py: del f.attrs['" + name + "']) and merge the copy");
-  for (const std::string& name : root.children()) {
-    const bool known = name == kMaterials || name == kShards || (kind == dataset::Kind::dataset && name == kWindows);
-    if (!known || !root.has_group(name))
-      throw input_error(path, "/" + name, "is not an object haptex writes at the root of a " + dataset::format_name(kind) + " file, so merge cannot tell how to join it",
-                        "Remove it from a copy of the shard (h5py: del f['" + name + "']) and merge the copy");
-  }
+  const std::vector<dataset::StrayRootContent> stray = dataset::stray_root_content(root, kind);
+  if (!stray.empty())
+    throw input_error(path, stray.front().where, stray.front().what + ", so merge cannot tell how to join it",
+                      "Remove it from a copy of the shard (" + stray.front().remove + ") and merge the copy");
 }
 
 std::vector<std::string> material_ids(const std::string& path, const h5::Group& root) {

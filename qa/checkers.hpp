@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/h5/node.hpp"
+#include "dataset/format.hpp"
 #include "qa/check.hpp"
 #include "split/manifest_reader.hpp"
 
@@ -22,7 +23,7 @@ using split::SplitMaterial;
 using split::SplitSet;
 
 // layout.*: the file against the tables of schemas/hdf5-layout.md for its haptex_format.
-std::vector<CheckResult> check_layout(const h5::Group& root, const std::string& format);
+std::vector<CheckResult> check_layout(const h5::Group& root, dataset::Kind kind);
 
 // signal.*, filter.* and recordings.duplicate over every recording of a recordings or dataset file
 // (qa/recording_checks.hpp).

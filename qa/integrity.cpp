@@ -25,20 +25,20 @@ void append(std::vector<CheckResult>& out, std::vector<CheckResult> more) {
 
 }  // namespace
 
-std::vector<CheckResult> check_integrity(const h5::Group& root, const std::string& format) {
-  std::vector<CheckResult> results = check_layout(root, format);
-  if (format != dataset::format_name(dataset::Kind::gelsight)) append(results, recording_integrity(root));
-  if (format != dataset::format_name(dataset::Kind::recordings)) {
+std::vector<CheckResult> check_integrity(const h5::Group& root, dataset::Kind kind) {
+  std::vector<CheckResult> results = check_layout(root, kind);
+  if (kind != dataset::Kind::gelsight) append(results, recording_integrity(root));
+  if (kind != dataset::Kind::recordings) {
     results.push_back(check_gelsight_channel_order(root));
     results.push_back(check_gelsight_frame_numbers(root));
     results.push_back(check_gelsight_images(root));
   }
-  if (format == dataset::format_name(dataset::Kind::dataset)) append(results, check_dataset(root));
+  if (kind == dataset::Kind::dataset) append(results, check_dataset(root));
   return results;
 }
 
-void require_integrity(const h5::Group& root, const std::string& format) {
-  for (const CheckResult& r : check_integrity(root, format))
+void require_integrity(const h5::Group& root, dataset::Kind kind) {
+  for (const CheckResult& r : check_integrity(root, kind))
     if (r.status == Status::fail)
       throw input_error(root.file(), "", r.message + " (qa check " + r.id + ")",
                         r.hint + "; `haptex qa " + root.file() + "` lists every finding");

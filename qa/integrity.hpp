@@ -9,15 +9,16 @@
 #include <vector>
 
 #include "core/h5/node.hpp"
+#include "dataset/format.hpp"
 #include "qa/check.hpp"
 
 namespace haptex::qa {
 
 // The integrity checks of a recordings, gelsight or dataset file, in catalog order.
-std::vector<CheckResult> check_integrity(const h5::Group& root, const std::string& format);
+std::vector<CheckResult> check_integrity(const h5::Group& root, dataset::Kind kind);
 
 // Throws haptex::Error (bad_input) naming the file, the first failed place, the check and the fix
 // when check_integrity finds anything.
-void require_integrity(const h5::Group& root, const std::string& format);
+void require_integrity(const h5::Group& root, dataset::Kind kind);
 
 }  // namespace haptex::qa

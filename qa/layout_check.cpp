@@ -11,6 +11,7 @@
 #include "core/naming.hpp"
 #include "dataset/object_paths.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/root_content.hpp"
 #include "qa/checkers.hpp"
 #include "qa/h5_inspect.hpp"
 #include "qa/layout_spec.hpp"
@@ -175,8 +176,10 @@ void judge_shape(const h5::Group& root, const LayoutRow& row, const FoundObject&
   else tally.pass();
 }
 
-CheckResult check_layout_required(const h5::Group& root, const std::vector<RowFindings>& rows) {
+CheckResult check_layout_required(const h5::Group& root, dataset::Kind kind, const std::vector<RowFindings>& rows) {
   CheckTally tally("layout.required", "objects and attributes");
+  for (const dataset::StrayRootContent& stray : dataset::stray_root_content(root, kind))
+    tally.fail(stray.where, stray.what + "; merge and align refuse it (remove it: " + stray.remove + ")");
   // {material} is a material id (core/naming.hpp): merge and align join materials by it (review 5:
   // "Woven_1" and "wovén_1" passed qa, which merge refused and align joined to the wrong presses).
   if (root.has_group(dataset::layout::kMaterials))
@@ -244,7 +247,7 @@ CheckResult check_layout_links(const h5::Group& root) {
 
 }  // namespace
 
-std::vector<CheckResult> check_layout(const h5::Group& root, const std::string& format) {
+std::vector<CheckResult> check_layout(const h5::Group& root, dataset::Kind kind) {
   // The links first: looking objects up by name follows links, and an external one opens the file it
   // names, a FIFO among them (review 5). When they break the rule, nothing is looked up.
   CheckResult links = check_layout_links(root);
@@ -253,9 +256,9 @@ std::vector<CheckResult> check_layout(const h5::Group& root, const std::string& 
     return {make_result("layout.required", Status::skip, why), make_result("layout.dtype", Status::skip, why),
             make_result("layout.shape", Status::skip, why), make_result("layout.units", Status::skip, why), std::move(links)};
   }
-  const std::vector<LayoutRow> rows = rows_for_format(embedded_layout(), format);
+  const std::vector<LayoutRow> rows = rows_for_format(embedded_layout(), dataset::format_name(kind));
   const std::vector<RowFindings> found = find_rows(root, rows);
-  return {check_layout_required(root, found), check_layout_dtype(found), check_layout_shape(root, found),
+  return {check_layout_required(root, kind, found), check_layout_dtype(found), check_layout_shape(root, found),
           check_layout_units(found), std::move(links)};
 }
 

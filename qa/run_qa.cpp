@@ -48,7 +48,7 @@ Report check_hdf5(const QaOptions& options) {
   if (options.split && report.kind != FileKind::dataset)
     throw input_error(options.file, "", "--split goes with a dataset file, this is a " + format + " file",
                       "Run: haptex qa DATASET.h5 --split " + *options.split);
-  append(report.checks, check_layout(root, format));
+  append(report.checks, check_layout(root, opened.kind));
   // The other checks read values, which such a file may keep anywhere (a FIFO, /dev/zero): docs/qa.md.
   if (links_broken(report.checks)) return report;
   if (report.kind != FileKind::gelsight) append(report.checks, check_recordings(root));

@@ -289,6 +289,16 @@ std::vector<BrokenShard> broken_shards() {
       {"a material group named by no material id (review 5: qa called it clean, align took it)", p.recordings,
        [](Edit& e, const std::string& m) { H5Lmove(e.root().id(), m.c_str(), e.root().id(), "materials/Wov\u00e9n_1", H5P_DEFAULT, H5P_DEFAULT); },
        {"/materials/Wov\u00e9n_1", "material id"}},
+      // Review 5, finding 13: qa called these clean, merge refused them.
+      {"a group at the root haptex does not write", p.recordings, [](Edit& e, const std::string&) { e.root().create_group("junk"); },
+       {"/junk", "is not an object haptex writes at the root"}},
+      {"a committed datatype at the root", p.gelsight, [](Edit& e, const std::string&) {
+         const hid_t type = H5Tcopy(H5T_NATIVE_FLOAT);
+         H5Tcommit2(e.root().id(), "mytype", type, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+         H5Tclose(type);
+       }, {"/mytype", "is not an object haptex writes at the root"}},
+      {"a root attribute haptex does not write", p.recordings, [](Edit& e, const std::string&) { e.root().set_attr("comment", "mine"); },
+       {"/@comment", "is not an attribute haptex writes"}},
       {"a window table of stride 0 (review 4: qa called it clean)", p.dataset, [](Edit& e, const std::string&) {
          e.group("windows").set_attr("stride", std::int64_t(0));
        }, {"/windows has no positive integer stride", "dataset.windows"}},

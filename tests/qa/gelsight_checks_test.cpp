@@ -234,7 +234,7 @@ TEST_F(GelsightMutation, AnObjectLinkedTwiceIsLayoutLinks) {
   EXPECT_NE(r.find("layout.links")->message.find("/materials/woven_1/presses/4/peak: is a second link to /materials/woven_1/presses/3/peak"),
             std::string::npos)
       << r.find("layout.links")->message;
-  EXPECT_THROW(qa::require_integrity(h5::File::open(file_).root(), dataset::format_name(dataset::Kind::gelsight)), Error) << "merge and align refuse it too";
+  EXPECT_THROW(qa::require_integrity(h5::File::open(file_).root(), dataset::Kind::gelsight), Error) << "merge and align refuse it too";
 }
 
 }  // namespace
