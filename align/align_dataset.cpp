@@ -62,7 +62,7 @@ AlignResult align_dataset(const AlignOptions& o, const Progress& progress) {
   AlignResult result;
   result.match = match_materials(materials_of(recordings_root, kRecordings), materials_of(gelsight_root, kPresses),
                                  o.names_file.empty() ? std::map<std::string, std::string>{} : load_name_map(o.names_file),
-                                 o.names_file);
+                                 o.names_file.empty() ? o.gelsight : o.names_file);  // the file whose names joined them
   if (result.match.pairs.empty())
     throw input_error(o.gelsight, "/" + std::string(kMaterials), "no material is in both files", "Check the names, or join them with --names map.json");
 

@@ -1,12 +1,18 @@
 #pragma once
-// Material names as users write them ("Brick 2", "Sandpaper_100") and the ids haptex files use.
+// Material names as users write them ("Brick 2", "Sandpaper_100", "木材 1") and the ids haptex files
+// use: lower case ASCII letters, digits and '_'.
 #include <string>
 #include <string_view>
 
 namespace haptex {
 
-// Lower case; every run of characters other than letters and digits becomes one '_';
-// no leading or trailing '_'. "Brick 2" -> "brick_2", "Sandpaper-100" -> "sandpaper_100".
+// Lower case; every run of spaces, punctuation and invisible characters becomes one '_'; no leading
+// or trailing '_'. "Brick 2" -> "brick_2", "Sandpaper-100" -> "sandpaper_100". A letter beyond ASCII
+// keeps its place as 'u' and its code point in hex, a word of its own, after case folding where
+// Latin, Greek and Cyrillic have one: "Café 1" -> "caf_u00e9_1", "CAFÉ 1" too, "Cafè 1" ->
+// "caf_u00e8_1", "木材 1" -> "u6728_u6750_1". So names differ in their id whenever they differ in more
+// than case, spaces and punctuation (review 5: "木材 1" and "金属 1" both became "1" and were merged).
+// An id is its own id.
 std::string material_id(std::string_view name);
 
 }  // namespace haptex

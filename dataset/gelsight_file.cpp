@@ -61,7 +61,7 @@ int GelsightWriter::add_press(const std::string& material_name, const GelsightPr
   if (id.empty())
     throw input_error(p.source_file, "material name",
                       "'" + material_name + "' has no letters or digits to make a material id from",
-                      "Name the material's folder (or --material) with at least one ASCII letter or digit");
+                      "Name the material's folder (or --material) with at least one letter or digit");
   h5::Group materials = file_.root().require_group(layout::kMaterials);
   const bool first = !materials.has_group(id);
   h5::Group material = materials.require_group(id);
