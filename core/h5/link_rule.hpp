@@ -24,6 +24,8 @@ struct LinkFault {
 // The names of a group's links, in name order; throws haptex::Error (bad_input) naming `file` and
 // `group_path` when they cannot be listed.
 std::vector<std::string> link_names(hid_t group, const std::string& group_path, const std::string& file);
+// The names of an object's attributes, in name order, the same way.
+std::vector<std::string> attribute_names(hid_t object, const std::string& object_path, const std::string& file);
 
 // When the link `name` in `parent` (at `path` in `file`) is soft or external, what is wrong with it.
 // Every reader refuses to open one (Group::open_group, open_dataset): it may point anywhere, another

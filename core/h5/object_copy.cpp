@@ -61,15 +61,9 @@ struct Copy {
   }
 
   void attributes(hid_t from, hid_t to, const std::string& source_path, const std::string& target_path) const {
-    H5O_info_t info;
-    check_input_status(H5Oget_info2(from, &info, H5O_INFO_NUM_ATTRS), "read the attributes of " + source_path, source_file);
-    for (hsize_t i = 0; i < info.num_attrs; ++i) {
-      Handle attr(check_input(H5Aopen_by_idx(from, ".", H5_INDEX_NAME, H5_ITER_INC, i, H5P_DEFAULT, H5P_DEFAULT),
-                              "open an attribute of " + source_path, source_file));
-      const ssize_t length = H5Aget_name(attr.get(), 0, nullptr);
-      std::string name(std::size_t(length > 0 ? length : 0), '\0');
-      H5Aget_name(attr.get(), name.size() + 1, name.data());
+    for (const std::string& name : attribute_names(from, source_path, source_file)) {
       const std::string where = source_path + "@" + name;
+      Handle attr(check_input(H5Aopen(from, name.c_str(), H5P_DEFAULT), "open " + where, source_file));
       Handle type(check_input(H5Aget_type(attr.get()), "read the type of " + where, source_file));
       Handle space(check_input(H5Aget_space(attr.get()), "read the shape of " + where, source_file));
       require_readable(type.get(), space.get(), where);
