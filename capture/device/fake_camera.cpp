@@ -172,6 +172,7 @@ struct FakeCamera::State {
   }
 
   short poll_lockstep(int timeout_ms) {
+    const std::int64_t timeout_ns = std::int64_t(timeout_ms) * 1000000, deadline_ns = lockstep_now_ns + timeout_ns;
     for (;;) {
       if (!done.empty() || last_dequeued) return POLLIN | POLLRDNORM;  // after LAST: readable, DQBUF says EPIPE
       if (disconnected) return POLLERR | POLLHUP;
@@ -182,10 +183,10 @@ struct FakeCamera::State {
         continue;
       }
       const std::int64_t due = frame_time_ns(next_frame);
-      const std::int64_t timeout_ns = std::int64_t(timeout_ms) * 1000000;
-      // A stall longer than the poll timeout is seen as timeouts, each one moving the clock on.
-      if (due - lockstep_now_ns > timeout_ns) {
-        lockstep_now_ns += timeout_ns;
+      // A stall longer than the poll timeout, or frames all dropped until it passed, is seen as a
+      // timeout that moves the clock on (review 6: with drop=100 one poll produced frames forever).
+      if (due > deadline_ns) {
+        lockstep_now_ns = deadline_ns;
         return 0;
       }
       if (queued.empty()) return 0;  // the host holds every buffer: nothing can arrive

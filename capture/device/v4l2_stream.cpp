@@ -102,6 +102,8 @@ V4l2Stream::Dequeue V4l2Stream::dequeue(Frame& out) {
   if (error == EPIPE) return Dequeue::ended;  // the LAST buffer was dequeued before
   if (error == EIO) {
     ++stats_.error_buffers;
+    out.bytes.clear();
+    out.timestamp_ns = 0;
     return ++consecutive_queue_errors_ >= kQueueErrorsBeforeDisconnect ? Dequeue::disconnected : Dequeue::skipped;
   }
   if (error != 0) throw failure(device_.path() + ": VIDIOC_DQBUF failed: " + std::strerror(error));
@@ -123,6 +125,8 @@ V4l2Stream::Dequeue V4l2Stream::dequeue(Frame& out) {
   if (b.index < buffers_.size()) queue(b.index);
   if (bad) {
     ++stats_.error_buffers;
+    out.bytes.clear();
+    out.timestamp_ns = timestamp_ns;
     return Dequeue::skipped;
   }
   ++stats_.frames;
@@ -134,7 +138,7 @@ StreamStatus V4l2Stream::next(Frame& out) {
     if (ended_) return StreamStatus::ended;  // a LAST buffer that carried the final frame
     switch (dequeue(out)) {
       case Dequeue::frame: return StreamStatus::frame;
-      case Dequeue::skipped: continue;
+      case Dequeue::skipped: return StreamStatus::no_frame;
       case Dequeue::disconnected: return StreamStatus::disconnected;
       case Dequeue::ended: return StreamStatus::ended;
       case Dequeue::empty: break;
@@ -150,6 +154,7 @@ StreamStatus V4l2Stream::next(Frame& out) {
     if ((p.revents & (POLLERR | POLLHUP)) && !(p.revents & POLLIN)) {
       const Dequeue d = dequeue(out);  // ENODEV says so directly; otherwise count towards the error state
       if (d == Dequeue::frame) return StreamStatus::frame;
+      if (d == Dequeue::skipped) return StreamStatus::no_frame;
       if (d == Dequeue::disconnected) return StreamStatus::disconnected;
       if (d == Dequeue::ended) return StreamStatus::ended;
       if (d == Dequeue::empty && ++consecutive_queue_errors_ >= kQueueErrorsBeforeDisconnect)

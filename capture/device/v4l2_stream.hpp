@@ -20,7 +20,10 @@ struct StreamStats {
 
 // `ended`: the device said it will send no more (a buffer flagged V4L2_BUF_FLAG_LAST, then EPIPE), as
 // a finite source does; a camera never does. A replayed file ends so (capture/replay/).
-enum class StreamStatus { frame, timeout, disconnected, ended };
+// no_frame: a buffer came back holding no usable frame (flagged as an error, or empty); its time is in
+// the Frame's timestamp_ns (0 when the driver gave none), so the caller can count the time without a
+// frame and look at its stop flag (review 6: a sensor sending only error buffers held the take forever).
+enum class StreamStatus { frame, no_frame, timeout, disconnected, ended };
 
 class V4l2Stream {
  public:

@@ -77,6 +77,13 @@ std::string error_text(std::exception_ptr error) {
   }
 }
 
+// Frames that may wait to be scored: 512 MB of them (a live sensor's second or more), 16 to 1024.
+std::size_t queue_capacity(const StreamFormat& format) {
+  constexpr double kQueueBytes = 512.0 * 1024 * 1024;
+  const double frame_bytes = std::max({double(format.size_image), 2.0 * format.width * format.height, 1.0});
+  return std::size_t(std::clamp(kQueueBytes / frame_bytes, 16.0, 1024.0));
+}
+
 // The capture thread's loop; returns why the take ended.
 std::string capture_loop(V4l2Stream& stream, FrameQueue<TakeFrame>& queue, const Worker& worker,
                          const RecorderOptions& options, const std::atomic<bool>* stop, DeliveredRate& rate) {
@@ -84,7 +91,7 @@ std::string capture_loop(V4l2Stream& stream, FrameQueue<TakeFrame>& queue, const
   // Time without a frame, counted in poll timeouts (each one waited that long) rather than read
   // from the clock, so a stall means the same to a fake camera whose time is simulated.
   double quiet_seconds = 0;
-  std::int64_t index = 0;
+  std::int64_t index = 0, last_buffer_ns = 0;
   for (;;) {
     const Clock::time_point now = Clock::now();
     if (stop && stop->load()) return "interrupted";
@@ -94,8 +101,15 @@ std::string capture_loop(V4l2Stream& stream, FrameQueue<TakeFrame>& queue, const
     switch (stream.next(frame)) {
       case StreamStatus::frame:
         rate.observe(frame.timestamp_ns);
+        last_buffer_ns = frame.timestamp_ns;
         queue.push({std::move(frame), index++, stream.stats().error_buffers, stream.stats().poll_timeouts});
         quiet_seconds = 0;
+        break;
+      case StreamStatus::no_frame:  // the buffer's time passed without a frame; one period when it has none
+        quiet_seconds += frame.timestamp_ns > last_buffer_ns && last_buffer_ns > 0 ? double(frame.timestamp_ns - last_buffer_ns) / 1e9
+                                                                                 : 1.0 / std::max(stream.format().fps(), 1.0);
+        if (frame.timestamp_ns > 0) last_buffer_ns = frame.timestamp_ns;
+        if (quiet_seconds >= options.stall_seconds) return "stalled";
         break;
       case StreamStatus::timeout:
         quiet_seconds += stream.poll_timeout_ms() / 1000.0;
@@ -137,7 +151,7 @@ RecordingResult record_take(V4l2Stream& stream, const SessionDescription& sessio
   const double cpu_start = cpu_seconds();
   const Clock::time_point wall_start = Clock::now();
   TakeProcessor processor(session, output_dir, options, progress);
-  FrameQueue<TakeFrame> queue;
+  FrameQueue<TakeFrame> queue(queue_capacity(stream.format()));
   std::string ended_by;
   DeliveredRate rate;
   {

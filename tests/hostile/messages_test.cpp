@@ -251,5 +251,29 @@ TEST(Messages, TheSlowestAndTheLargestFakeCamerasStillEndTheTakeOnTime) {
   }
 }
 
+// Review 6: a sensor sending only error buffers (or, in lockstep, dropping every frame) held the take
+// forever, deaf to TERM; kill -9 then left an empty folder. Now no frame for 2 s ends it as a stall,
+// with the manifest written. And a lockstep take with no press grew memory without bound (8.7 GB in a
+// minute): the frames waiting to be scored are bounded now (totals.max_queue_depth).
+TEST(Messages, ASensorSendingNoUsableFrameEndsAsAStall) {
+  for (const std::string device : {"fake:size=160x120,error=100", "fake:size=160x120,error=100,lockstep", "fake:size=160x120,drop=100,lockstep"}) {
+    SCOPED_TRACE(device);
+    const TempDir dir;
+    const CommandResult r = run_program({"timeout", "-s", "KILL", "60", haptex_binary(), "capture", "record", "--device", device, "--material",
+                                         "Cork", "-o", dir.file("s"), "-q"});
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("stopped sending frames"), std::string::npos) << r.err;
+    ASSERT_TRUE(fs::exists(dir.file("s/session.json")));
+    EXPECT_EQ(read_json(dir.file("s/session.json"))["ended_by"], "stalled");
+  }
+  const TempDir dir;
+  const CommandResult r = run_program({"timeout", "-s", "KILL", "60", haptex_binary(), "capture", "record", "--device",
+                                       "fake:size=160x120,lockstep,presses=0", "--material", "Cork", "-o", dir.file("s"), "--seconds", "3", "-q"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json totals = read_json(dir.file("s/session.json"))["totals"];
+  EXPECT_LE(totals["max_queue_depth"].get<int>(), 1024) << totals.dump();
+  EXPECT_GT(totals["frames"].get<int>(), 1024) << "the source outran the scorer, so the bound was met: " << totals.dump();
+}
+
 }  // namespace
 }  // namespace haptex::test

@@ -27,6 +27,7 @@ Streamed stream_frames(V4l2Stream& stream, std::size_t frames) {
     Frame f;
     out.last = stream.next(f);
     if (out.last == StreamStatus::disconnected || out.last == StreamStatus::ended) break;
+    if (out.last == StreamStatus::no_frame) continue;
     if (out.last == StreamStatus::timeout) {
       ++out.timeouts;
       ++quiet;
