@@ -82,6 +82,8 @@ const std::vector<CheckInfo>& all_checks() {
       {"gelsight.source_damage", warning,
        "every press's source decoded whole (`source_frames_unreadable` is 0: no frame failed or went missing)",
        "Copy the video again from the sensor's machine (a damaged frame is never kept, but the press may be cut short)"},
+      {"gelsight.duplicate", error, "no two presses are the same press of one source file (`source_sha256` and `press_in_source`)",
+       "Extract again without the repeated video (given twice, through a link, or copied); duplicates leak between train and test"},
       {"gelsight.channel_order", error,
        "every press states its images' channel order as RGB or BGR (`channel_order`), and its image datasets agree",
        "Set the press's channel_order to the order of its stored pixels (haptex writes RGB); its images are not judged until then"},

@@ -229,6 +229,24 @@ std::string first_image_error(const h5::Group& press, const std::function<void(c
 
 }  // namespace
 
+CheckResult check_gelsight_duplicate(const h5::Group& root) {
+  CheckTally tally("gelsight.duplicate", "presses");
+  std::map<std::pair<std::string, std::int64_t>, std::string> first;  // (source SHA-256, press in it) -> press path
+  for (const std::string& path : press_paths(root)) {
+    const h5::Group press = root.open_group(path.substr(1));
+    const auto sha = press.try_attr<std::string>(dataset::layout::kSourceSha256);
+    const auto number = press.try_attr<std::int64_t>(dataset::layout::kPressInSource);
+    if (!sha || sha->empty() || !number) {
+      tally.skip(path + ": no source_sha256 or press_in_source to compare");
+      continue;
+    }
+    const auto [at, added] = first.emplace(std::make_pair(*sha, *number), path);
+    if (added) tally.pass();
+    else tally.fail(path, "is press " + std::to_string(*number) + " of the same source file (SHA-256 " + sha->substr(0, 12) + "...) as " + at->second);
+  }
+  return tally.result();
+}
+
 CheckResult check_gelsight_channel_order(const h5::Group& root) {
   return per_press(root, "gelsight.channel_order", [](const h5::Group& press) {
     return first_image_error(press, [&](const char* name) { dataset::read_channel_order(press, name); });
@@ -294,6 +312,7 @@ std::vector<CheckResult> check_gelsight(const h5::Group& root) {
           check_gelsight_resolution(file),
           check_gelsight_press_count(file.per_material),
           check_gelsight_source_damage(file.presses),
+          check_gelsight_duplicate(root),
           check_gelsight_channel_order(root),
           check_gelsight_frame_numbers(root),
           check_gelsight_images(root)};

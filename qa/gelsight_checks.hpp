@@ -30,6 +30,8 @@ CheckResult check_gelsight_blur(const std::vector<Press>& presses, const NoConta
 CheckResult check_gelsight_resolution(const GelsightPresses& file);
 CheckResult check_gelsight_press_count(const std::map<std::string, std::size_t>& per_material);
 CheckResult check_gelsight_source_damage(const std::vector<Press>& presses);
+// The same press of the same source twice (a video given twice, or through a link or a copy).
+CheckResult check_gelsight_duplicate(const h5::Group& root);
 CheckResult check_gelsight_channel_order(const h5::Group& root);
 CheckResult check_gelsight_frame_numbers(const h5::Group& root);
 // dataset::require_whole_press_images on every image, the check merge and align run on every shard.

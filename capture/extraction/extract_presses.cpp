@@ -6,6 +6,7 @@
 #include <fstream>
 #include <future>
 #include <limits>
+#include <map>
 #include <set>
 
 #include "capture/extraction/capture_inputs.hpp"
@@ -138,6 +139,7 @@ class Extraction {
     if (a.plans.empty()) result_.sources_without_press.push_back(a.input->path);
     result_.detections.push_back(detection_of(a.input->path, a.scores, int(a.plans.size())));
     if (explain_) explain(a);
+    if (!a.plans.empty()) require_new_source(a);
     read_press_frames(*a.source, a.plans, [&](const PressPlan& plan, PressFrames frames) {
       write_press(a.material, *a.source, a.scores, a.sha, plan, std::move(frames));
     });
@@ -180,6 +182,23 @@ class Extraction {
     d.chart = (fs::path(explain_->final_path()) / name).string();
     write_png(*explain_, name, score_chart_png(a.input->path + ": " + std::to_string(a.plans.size()) + " press(es)",
                                                chart_of(a.scores, a.plans, d)));
+  }
+
+  // Review 6: a video given twice (or once more through a linked folder, or copied) gave the same
+  // presses twice, which split put in train and val; and folders "Woven 1" and "woven-1" (the second
+  // holding sandpaper) were poured into one material. Both are refused, naming the two sources.
+  void require_new_source(const Analysed& a) {
+    const std::string& path = a.input->path;
+    if (const auto [at, added] = source_by_sha_.emplace(a.sha, path); !added)
+      throw input_error(path, "", "is the same file as " + at->second + " (SHA-256 " + a.sha.substr(0, 12) +
+                                      "...): given twice, through a link, or copied, its presses would be taken twice and could land in "
+                                      "both the training and the test set",
+                        "Give each video once");
+    const auto [at, added] = spelling_.emplace(material_id(a.material), std::make_pair(a.material, path));
+    if (!added && at->second.first != a.material)
+      throw input_error(path, "", "its material '" + a.material + "' and '" + at->second.first + "' (of " + at->second.second +
+                                      ") make one material id, " + at->first,
+                        "Name the two folders (or --material) alike if they hold one material, or with different letters or digits if not");
   }
 
   std::string no_press_message() const {
@@ -264,6 +283,8 @@ class Extraction {
   dataset::GelsightWriter writer_;
   std::unique_ptr<PartialDirectory> sheets_, explain_;
   std::set<std::string> explain_names_;
+  std::map<std::string, std::string> source_by_sha_;                      // SHA-256 -> the source first with it
+  std::map<std::string, std::pair<std::string, std::string>> spelling_;  // material id -> (name, the source first with it)
   ExtractResult result_;
 };
 

@@ -2,6 +2,7 @@
 // haptex qa) runs in split before it writes, and in train and evaluate before they read: a leaky,
 // out-of-range or empty split is exit code 2 naming the material and the sections.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <filesystem>
 #include <functional>
@@ -63,6 +64,51 @@ TEST(LeakySplit, SplitRefusesAMaterialWithOneHalfSecondRecording) {
   EXPECT_EQ(r.exit_code, 2) << r.err << r.out;
   EXPECT_NE(r.err.find("nothing in"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(files.dir.file("split.json")));
+}
+
+// Review 6: capture extract took a video given twice (or once more through a linked folder) as more
+// presses, which split put in train and val, and poured folders "Woven 1" and "woven-1" into one
+// material; qa called both files clean.
+TEST(LeakySplit, ExtractRefusesAVideoTwiceAndTwoSpellingsOfOneMaterial) {
+  const TempDir dir;
+  ASSERT_EQ(run_haptex({"synth", "materials", "-n", "2", "--presses", "2", "--recordings", "1", "--seconds", "0.5", "--size", "64x48",
+                        "-o", dir.file("s")}).exit_code, 0);
+  const std::string woven = dir.file("s/gelsight/Polished 1"), video = woven + "/press_0.avi";
+  fs::create_directories(dir.file("linked"));
+  fs::create_directory_symlink(woven, dir.file("linked/Polished 1 link"));
+  fs::copy(woven, dir.file("linked/Polished 1"));
+  fs::create_directories(dir.file("spelled"));
+  fs::copy(dir.file("s/gelsight/Sandpaper 1"), dir.file("spelled/polished-1"));
+  fs::copy(woven, dir.file("spelled/Polished 1"));
+  const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
+      {{video, video}, {"is the same file as", video, "Give each video once"}},
+      {{woven, video}, {"is the same file as", "Give each video once"}},
+      {{dir.file("linked")}, {"is the same file as", "Polished 1 link"}},
+      {{dir.file("spelled")}, {"make one material id, polished_1", "'polished-1'", "'Polished 1'"}},
+  };
+  for (const auto& [inputs, says] : cases) {
+    SCOPED_TRACE(says.front() + " " + inputs.front());
+    std::vector<std::string> args{"capture", "extract"};
+    args.insert(args.end(), inputs.begin(), inputs.end());
+    for (const char* more : {"--no-sheets", "-o"}) args.push_back(more);
+    args.push_back(dir.file("g.h5"));
+    expect_refusal(run_haptex(args), says);
+    EXPECT_FALSE(fs::exists(dir.file("g.h5")));
+  }
+
+  // A press copied within a file (as a merge of two extractions of one video would): qa's gelsight.duplicate.
+  const std::string copied = copy_into(dir, small_pipeline().gelsight, "g.h5");
+  {
+    Edit edit(copied);
+    const std::string presses = "materials/" + material_ids(copied).front() + "/presses";
+    const std::size_t count = edit.group(presses).children().size();
+    ASSERT_GE(H5Ocopy(edit.root().id(), (presses + "/0").c_str(), edit.root().id(), (presses + "/" + std::to_string(count)).c_str(),
+                      H5P_DEFAULT, H5P_DEFAULT), 0);
+  }
+  const CommandResult qa = run_haptex({"qa", copied});
+  EXPECT_EQ(qa.exit_code, 1);
+  EXPECT_NE(qa.out.find("gelsight.duplicate"), std::string::npos) << qa.out;
+  EXPECT_NE(qa.out.find("of the same source file"), std::string::npos) << qa.out;
 }
 
 }  // namespace

@@ -27,11 +27,11 @@ TEST(GoodFiles, RecordingsPassEveryCheck) {
 
 // The synthetic gel's references are too smooth for gelsight.blur (docs/qa.md).
 TEST(GoodFiles, GelsightPassesEveryCheck) {
-  expect_clean(qa::run_qa({small_pipeline().gelsight, {}}), qa::FileKind::gelsight, 15, {"gelsight.blur"});
+  expect_clean(qa::run_qa({small_pipeline().gelsight, {}}), qa::FileKind::gelsight, 16, {"gelsight.blur"});
 }
 
 TEST(GoodFiles, DatasetWithItsSplitPassesEveryCheck) {
-  expect_clean(qa::run_qa({small_pipeline().dataset, small_pipeline().split}), qa::FileKind::dataset, 5 + 12 + 10 + 2 + 9,
+  expect_clean(qa::run_qa({small_pipeline().dataset, small_pipeline().split}), qa::FileKind::dataset, 5 + 12 + 11 + 2 + 9,
                {"gelsight.blur"});
 }
 

@@ -4,6 +4,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "align/align_dataset.hpp"
+#include "core/sha256.hpp"
 #include "dataset/gelsight_file.hpp"
 #include "convert/convert_recordings.hpp"
 #include "tests/support/sample_recording.hpp"
@@ -11,10 +12,11 @@
 namespace haptex::test {
 namespace {
 
-dataset::GelsightPress tiny_press(int size, int seed) {
+// `source` tells the presses' videos apart: each is its own (qa's gelsight.duplicate).
+dataset::GelsightPress tiny_press(int size, int seed, int source) {
   dataset::GelsightPress p;
-  p.source_file = "press.mkv";
-  p.source_sha256 = std::string(64, 'a');
+  p.source_file = "press_" + std::to_string(source) + ".mkv";
+  p.source_sha256 = sha256_hex(p.source_file);
   p.reference = cv::Mat(size, size, CV_8UC3, cv::Scalar(100, 110, 120));
   p.peak = p.reference.clone();
   cv::circle(p.peak, {size / 2, size / 2}, size / 4, cv::Scalar(150 + seed, 90, 60), -1);
@@ -47,9 +49,9 @@ void make_pipeline_inputs(PipelineFiles& in, const PipelineSpec& spec) {
   convert::convert_recordings({in.dir.file("xml")}, in.recordings, {});
   dataset::GelsightWriter writer(in.gelsight, false, "test");
   for (int j = 0; j < 5; ++j) {
-    writer.add_press("Book", tiny_press(j == 4 && spec.odd_press_size ? spec.odd_press_size : 32, j));
-    writer.add_press("sandpaper 100", tiny_press(32, j));
-    writer.add_press("Glass", tiny_press(32, j));
+    writer.add_press("Book", tiny_press(j == 4 && spec.odd_press_size ? spec.odd_press_size : 32, j, 3 * j));
+    writer.add_press("sandpaper 100", tiny_press(32, j, 3 * j + 1));
+    writer.add_press("Glass", tiny_press(32, j, 3 * j + 2));
   }
   writer.commit();
 }

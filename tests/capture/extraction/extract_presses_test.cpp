@@ -278,7 +278,7 @@ TEST_F(Extract, SequencesOnSeveralThreadsGiveTheSameFileAsOneAtATime) {
 
 TEST_F(Extract, FoldersOfFrameImagesAreVideos) {
   write_png_sequence(dir_.path() / "gelsight" / "Woven 1" / "press_0", 1, 50);
-  write_png_sequence(dir_.path() / "gelsight" / "Woven 1" / "press_1", 1, 50);
+  write_png_sequence(dir_.path() / "gelsight" / "Woven 1" / "press_1", 1, 51);  // one frame more: another video
   std::ofstream(dir_.file("gelsight/Woven 1/press_0.json")) << "{}";  // sidecars are ignored
   const ExtractResult r = extract_presses({dir_.file("gelsight")}, out(), {});
   ASSERT_EQ(r.presses.size(), 2u);
