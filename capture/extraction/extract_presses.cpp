@@ -9,6 +9,8 @@
 #include <map>
 #include <set>
 
+#include <opencv2/imgproc.hpp>
+
 #include "capture/extraction/capture_inputs.hpp"
 #include "capture/extraction/contact_sheet.hpp"
 #include "dataset/gelsight_file.hpp"
@@ -48,15 +50,27 @@ std::string chart_stem(const std::string& source) {
   return id.empty() ? "source" : id;
 }
 
+// Three significant digits: thresholds and scores as a person reads them.
+std::string figure(double v) { return text::format("%.3g", v); }
+
 cv::Mat load_reference(const std::string& path) {
   cv::Mat image = dataset::read_image_file(path);
   if (image.empty())
     throw input_error(path, "", "cannot read the reference image", "Give a PNG or JPEG no-contact frame of the sensor");
+  // Review 6: an all-black or all-white image was taken, every frame then counted as contact.
+  cv::Mat grey;
+  cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
+  cv::Scalar mean, spread;
+  cv::meanStdDev(grey, mean, spread);
+  if (mean[0] < kBlackLevel)
+    throw input_error(path, "", "is black (a mean grey of " + figure(mean[0]) + " of 255), no frame of a lit sensor",
+                      "Give a no-contact frame taken with the sensor's light on");
+  if (spread[0] < 1.0)
+    throw input_error(path, "", "is one flat grey (" + figure(mean[0]) + " of 255 everywhere), no frame of a sensor's gel",
+                      "Give a no-contact frame of the sensor, as it recorded it");
   return image;
 }
 
-// Three significant digits: thresholds and scores as a person reads them.
-std::string figure(double v) { return text::format("%.3g", v); }
 
 SourceDetection detection_of(const std::string& path, const SourceScores& scores, int presses) {
   const ContactReference& c = *scores.contact;
@@ -126,10 +140,20 @@ class Extraction {
     a.material = input.material.empty() ? a.source->material() : input.material;
     text::require_utf8(a.material, input.path, "the material name (--material, the folder's name or the press file's)");
     a.scores = score_source(*a.source, settings_);
+    require_trigger_over_level(input.path, *a.scores.contact);
     a.plans = plan_presses(a.scores.scores, a.scores.contact->segmenter(settings_.segmenter), settings_.frames_per_press,
                            settings_.margin_frames, a.scores.end_level);
     a.sha = a.plans.empty() ? "" : a.source->sha256();
     return a;
+  }
+
+  // Review 6: --trigger 0.3 under a level of 0.48 made every frame contact and wrote presses whose
+  // peak lay outside their own contact, which qa, merge and align then refused as damaged.
+  void require_trigger_over_level(const std::string& path, const ContactReference& contact) const {
+    if (!settings_.trigger || contact.trigger() > contact.level()) return;
+    throw input_error(path, "--trigger", figure(*settings_.trigger) + " is not above this source's no-contact level, " + figure(contact.level()) +
+                                             ": its no-contact frames would count as contact",
+                      "Give a --trigger above " + figure(contact.level()) + ", or leave it out (the footage sets one)");
   }
 
   // The kept frames are read and stored a press at a time, so memory holds about one press.

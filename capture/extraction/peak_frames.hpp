@@ -17,6 +17,10 @@
 
 namespace haptex::capture {
 
+// Sensors send a few black frames right after stream start; a mean grey this dark (of 255) is not a
+// gel image, in a video or as a --reference.
+inline constexpr double kBlackLevel = 10.0;
+
 struct ExtractSettings {
   int reference_frames = 10;   // leading no-contact frames averaged into the reference
   int frames_per_press = 12;   // the peak and its neighbours

@@ -15,8 +15,6 @@ namespace haptex::capture {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-// Sensors send a few black frames right after stream start; a mean this dark is not a gel image.
-constexpr double kBlackLevel = 10.0;
 
 // Usable frames (past the black start-up frames, decoded) and their scoring images.
 struct Stretch {

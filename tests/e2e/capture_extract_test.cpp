@@ -197,7 +197,9 @@ TEST_F(ExtractCli, BadInputIsRefusedWithOneMessageAndNothingWritten) {
   std::ofstream(dir_.file("gelsight/Cork/press_2.mkv")) << "truncated";
   refused({dir_.file("gelsight"), "-o", out()}, {"press_2.mkv", "OpenCV cannot open this as a video"});
   fs::remove(dir_.file("gelsight/Cork/press_2.mkv"));
-  cv::imwrite(dir_.file("ref.png"), cv::Mat(10, 10, CV_8UC3, cv::Scalar::all(100)));
+  cv::Mat small(10, 10, CV_8UC3);
+  cv::randu(small, 60, 200);  // a gel-like image, but of another size than the videos'
+  cv::imwrite(dir_.file("ref.png"), small);
   refused({dir_.file("gelsight"), "-o", out(), "--reference", dir_.file("ref.png")}, {"ref.png", "10x10", "160x120"});
   refused({dir_.file("gelsight"), "-o", dir_.file("no/such/dir/g.h5")}, {"does not exist"});
   refused({dir_.file("gelsight"), "-o", out(), "--reference-frames", "3"}, {"--reference-frames", "10 to 250"});

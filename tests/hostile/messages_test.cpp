@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
 #include "core/sha256.hpp"
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/mutations.hpp"
@@ -249,6 +252,24 @@ TEST(Messages, TheSlowestAndTheLargestFakeCamerasStillEndTheTakeOnTime) {
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
     EXPECT_TRUE(fs::exists(dir.file("s/session.json")) || fs::exists(dir.file("s")) == false) << "a take of no press leaves no folder";
   }
+}
+
+// Review 6: --trigger under the no-contact level wrote presses whose peak lay outside their contact
+// (qa, merge and align then refused the file as damaged), and an all-black or all-white --reference
+// made every frame contact; both were exit 0.
+TEST(Messages, ExtractRefusesATriggerUnderTheLevelAndAFlatReference) {
+  const TempDir dir;
+  ASSERT_EQ(run_haptex({"synth", "materials", "-n", "1", "--presses", "1", "--recordings", "1", "--seconds", "0.5", "--size", "64x48",
+                        "-o", dir.file("s")}).exit_code, 0);
+  const std::string material = (*fs::directory_iterator(dir.file("s/gelsight"))).path().string();
+  expect_refusal(run_haptex({"capture", "extract", material, "--trigger", "0.001", "--no-sheets", "-o", dir.file("g.h5")}),
+                 {"--trigger", "is not above this source's no-contact level"});
+  for (const auto& [name, colour, says] : {std::tuple{"black.png", 0, "is black"}, std::tuple{"white.png", 255, "one flat grey"}}) {
+    cv::imwrite(dir.file(name), cv::Mat(48, 64, CV_8UC3, cv::Scalar::all(colour)));
+    expect_refusal(run_haptex({"capture", "extract", material, "--reference", dir.file(name), "--no-sheets", "-o", dir.file("g.h5")}),
+                   {dir.file(name), says});
+  }
+  EXPECT_FALSE(fs::exists(dir.file("g.h5")));
 }
 
 // Review 6: a sensor sending only error buffers (or, in lockstep, dropping every frame) held the take

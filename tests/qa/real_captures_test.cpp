@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/sha256.hpp"
 #include "dataset/gelsight_file.hpp"
 #include "capture/scoring/contact_score.hpp"
 #include "capture/scoring/scoring_image.hpp"
@@ -28,7 +29,7 @@ std::string gelsight_file(const TempDir& dir, const std::string& material, const
   for (const auto& path : presses) {
     dataset::GelsightPress p;
     p.source_file = path.string();
-    p.source_sha256 = std::string(64, '0');
+    p.source_sha256 = sha256_file(path.string());
     p.reference = reference;
     p.peak = cv::imread(path.string(), cv::IMREAD_COLOR);
     // A still image as a video of 12 like frames, its numbers agreeing (gelsight.frame_numbers).
