@@ -93,7 +93,7 @@ class CaptureExtract : public CaptureSubcommand {
                             {"chart", d.chart.empty() ? nlohmann::json() : nlohmann::json(d.chart)},
                             {"noise", d.noise}, {"pixel_threshold", d.pixel_threshold}, {"no_contact_level", d.level}, {"jitter", d.jitter},
                             {"trigger", d.trigger}, {"release", d.release}, {"highest_score", d.highest_score},
-                            {"highest_frame", d.highest_frame},
+                            {"highest_frame", d.highest_frame}, {"presses_left_out", d.presses_left_out},
                             {"signal_to_noise", std::isfinite(snr) ? nlohmann::json(snr) : nlohmann::json()}});
     }
     std::cout << nlohmann::json{{"output", written ? nlohmann::json(output_) : nlohmann::json()}, {"presses", presses},

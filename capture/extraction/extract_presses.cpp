@@ -129,6 +129,7 @@ class Extraction {
     std::string material, sha;
     SourceScores scores;
     std::vector<PressPlan> plans;
+    int left_out = 0;  // presses with frames that do not decode around their peak
   };
 
   Analysed analyse(const CaptureInput& input) const {
@@ -142,7 +143,7 @@ class Extraction {
     a.scores = score_source(*a.source, settings_);
     require_trigger_over_level(input.path, *a.scores.contact);
     a.plans = plan_presses(a.scores.scores, a.scores.contact->segmenter(settings_.segmenter), settings_.frames_per_press,
-                           settings_.margin_frames, a.scores.end_level);
+                           settings_.margin_frames, a.scores.end_level, &a.left_out);
     a.sha = a.plans.empty() ? "" : a.source->sha256();
     return a;
   }
@@ -162,6 +163,7 @@ class Extraction {
     result_.frames_unreadable += a.scores.unreadable_frames + a.source->frames_missing();
     if (a.plans.empty()) result_.sources_without_press.push_back(a.input->path);
     result_.detections.push_back(detection_of(a.input->path, a.scores, int(a.plans.size())));
+    result_.detections.back().presses_left_out = a.left_out;
     if (explain_) explain(a);
     if (!a.plans.empty()) require_new_source(a);
     read_press_frames(*a.source, a.plans, [&](const PressPlan& plan, PressFrames frames) {
@@ -325,6 +327,8 @@ std::string describe(const SourceDetection& d) {
   if (d.jitter > 0) s += "; signal-to-noise " + figure(d.signal_to_noise()) + ", a press needs " + figure((d.trigger - d.level) / d.jitter);
   s += "); reference: " + d.reference;
   if (d.pixel_threshold > 0) s += "; per-pixel threshold " + figure(d.pixel_threshold) + " grey levels";
+  if (d.presses_left_out > 0)
+    s += "; " + std::to_string(d.presses_left_out) + " press(es) left out: frames around the peak do not decode, so no whole run of frames holds it";
   return s;
 }
 

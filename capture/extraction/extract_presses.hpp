@@ -47,6 +47,8 @@ struct SourceDetection {
   float highest_score = 0;  // the source's strongest frame
   std::int64_t highest_frame = -1;
   std::string chart;  // its --explain chart, or empty
+  // Presses found but left out: no run of frames_per_press decoded frames holds their peak.
+  int presses_left_out = 0;
   // The strongest frame's excess over the no-contact level in units of the score's jitter: the
   // score's signal-to-noise. A press needs (trigger - level) / jitter, 5 or more by default. Infinite
   // when the jitter is 0 (a given image, copied frames).

@@ -20,13 +20,22 @@ double window_total(const std::vector<float>& scores, std::int64_t start, int co
   return total;
 }
 
+// Whether some run of `count` frames in [lo, hi] holding the peak decoded whole.
+bool decodable_window(const std::vector<float>& scores, std::int64_t peak, std::int64_t lo, std::int64_t hi, std::int64_t count) {
+  for (std::int64_t s = std::max(lo, peak - count + 1); s <= std::min(peak, hi - count + 1); ++s)
+    if (std::isfinite(window_total(scores, s, int(count)))) return true;
+  return false;
+}
+
+// The kept frames: empty when no run of `count` decoded frames holds the peak.
 std::vector<std::int64_t> choose_window(const std::vector<float>& scores, std::int64_t peak, std::int64_t lo,
                                         std::int64_t hi, int count) {
   const std::int64_t n = hi - lo + 1;
-  if (n < count) {  // the press's range is too short: look in the whole source
+  if (n < count || !decodable_window(scores, peak, lo, hi, count)) {  // look in the whole source
     lo = 0;
     hi = std::int64_t(scores.size()) - 1;
   }
+  if (!decodable_window(scores, peak, lo, hi, std::min<std::int64_t>(count, hi - lo + 1))) return {};
   count = int(std::min<std::int64_t>(count, hi - lo + 1));
   std::int64_t best = std::clamp<std::int64_t>(peak - count / 2, lo, hi - count + 1);
   double best_total = window_total(scores, best, count);
@@ -70,7 +79,8 @@ std::vector<PressInterval> without_settled_end(std::vector<PressInterval> presse
 }  // namespace
 
 std::vector<PressPlan> plan_presses(const std::vector<float>& scores, const SegmenterSettings& segmenter,
-                                    int frames_per_press, int margin_frames, float end_level) {
+                                    int frames_per_press, int margin_frames, float end_level, int* left_out) {
+  if (left_out) *left_out = 0;
   const std::vector<PressInterval> presses = without_settled_end(segment_presses(scores, segmenter), scores, segmenter, end_level);
   const std::int64_t last_frame = std::int64_t(scores.size()) - 1;
   std::vector<PressPlan> plans;
@@ -84,6 +94,10 @@ std::vector<PressPlan> plan_presses(const std::vector<float>& scores, const Segm
     plan.range_last = std::min<std::int64_t>(presses[k].last + margin_frames,
                                              k + 1 < presses.size() ? (presses[k].last + presses[k + 1].first) / 2 : last_frame);
     plan.frame_indices = choose_window(scores, presses[k].peak, plan.range_first, plan.range_last, frames_per_press);
+    if (plan.frame_indices.empty()) {  // frames that do not decode around the peak: the press is left out, and said to be
+      if (left_out) ++*left_out;
+      continue;
+    }
     plan.range_first = std::min(plan.range_first, plan.frame_indices.front());
     plan.range_last = std::max(plan.range_last, plan.frame_indices.back());
     plans.push_back(std::move(plan));

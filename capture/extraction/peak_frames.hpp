@@ -68,12 +68,14 @@ struct PressPlan {
 
 // The presses in the scores, with the frames each keeps: the run of frames_per_press consecutive
 // frames that contains the peak and scores highest in total, inside the press's own range when it
-// is long enough (so neighbouring presses never share frames).
+// is long enough (so neighbouring presses never share frames), all decoded (else anywhere in the
+// source; a press with no such run is left out and counted in *left_out, review 6: one damaged
+// frame beside a peak refused the whole video).
 // With an end_level (SourceScores), a last press that lasts to the end hovering at the trigger is the
 // video's settled end, not a press (peak_frames.cpp, without_settled_end).
 std::vector<PressPlan> plan_presses(const std::vector<float>& scores, const SegmenterSettings& segmenter,
                                     int frames_per_press, int margin_frames,
-                                    float end_level = std::numeric_limits<float>::quiet_NaN());
+                                    float end_level = std::numeric_limits<float>::quiet_NaN(), int* left_out = nullptr);
 
 // A press's kept frames (frame_indices order) and its peak, decoded (BGR), and the source's own bytes
 // of each when it gave them for all (else the byte lists are empty).

@@ -11,6 +11,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/h5/file.hpp"
 #include "core/sha256.hpp"
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/mutations.hpp"
@@ -270,6 +271,35 @@ TEST(Messages, ExtractRefusesATriggerUnderTheLevelAndAFlatReference) {
                    {dir.file(name), says});
   }
   EXPECT_FALSE(fs::exists(dir.file("g.h5")));
+}
+
+// Review 6: one frame of an MJPG video that does not decode (its JPEG states another size), next to
+// the press's peak, refused the whole video (exit 2, "the frame does not decode"). Now frames that do
+// not decode are never kept: a press no run of 12 decoded frames can hold is left out and said to be.
+TEST(Messages, AFrameThatDoesNotDecodeBesideThePeakLeavesThePressOutNotTheVideo) {
+  const TempDir dir;
+  ASSERT_EQ(run_haptex({"synth", "materials", "-n", "1", "--presses", "1", "--recordings", "1", "--seconds", "0.5", "--size", "64x48",
+                        "-o", dir.file("s")}).exit_code, 0);
+  const fs::path video = *fs::directory_iterator(*fs::directory_iterator(dir.file("s/gelsight")));
+  const CommandResult clean = run_haptex({"--json", "capture", "extract", video.string(), "--no-sheets", "-o", dir.file("clean.h5")});
+  ASSERT_EQ(clean.exit_code, 0) << clean.err;
+  const std::int64_t peak = nlohmann::json::parse(clean.out)["presses"][0]["peak_index"];
+  std::string bytes = file_bytes(video.string());
+  std::size_t sof = 0;
+  for (std::int64_t frame = 0; frame <= peak - 2; ++frame) sof = bytes.find("\xFF\xC0", sof + 1);
+  ASSERT_NE(sof, std::string::npos);
+  bytes[sof + 5] = 0x01;  // the frame's height, high byte: 256 more rows than the video's
+  const std::string damaged = dir.file("damaged.avi");
+  std::ofstream(damaged, std::ios::binary) << bytes;
+  const CommandResult r = run_haptex({"--json", "capture", "extract", damaged, "--material", "Cork", "--no-sheets", "-o", dir.file("g.h5")});
+  EXPECT_NE(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.find("the frame does not decode"), std::string::npos) << r.err;
+  if (r.exit_code == 0) {  // a run of 12 decoded frames holds the peak: it is kept, the damaged frame is not
+    const h5::File kept = h5::File::open(dir.file("g.h5"));
+    for (std::int64_t index : kept.root().open_dataset("materials/cork/presses/0/frame_indices").read<std::int64_t>()) EXPECT_NE(index, peak - 2);
+  } else {
+    EXPECT_NE(r.err.find("1 press(es) left out: frames around the peak do not decode"), std::string::npos) << r.err;
+  }
 }
 
 // Review 6: a sensor sending only error buffers (or, in lockstep, dropping every frame) held the take
