@@ -645,6 +645,10 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
     throw input_error(o.truth, "/@sample_rate_hz", "is " + std::to_string(truth->sample_rate_hz) + " Hz, not the evaluation's 10 kHz",
                       "Give the truth.h5 written with the recordings of this dataset");
   const std::vector<MaterialSignals> signals = read_section_signals(split);
+  if (truth && !truth_knows_any(*truth, signals))
+    throw input_error(o.truth, "", "knows none of the test recordings of " + split.dataset_path +
+                                       " (by their source SHA-256): it was written by another synth run, so its noise-free spectra are of other recordings",
+                      "Give the truth.h5 of the synth run that made this dataset's recordings, or leave --truth out");
   const std::vector<GridSection> sections = grid_sections(signals);
   std::vector<ExternalPredictions> external;
   for (const PredictionsInput& input : o.predictions) {

@@ -150,6 +150,14 @@ std::vector<double> grid_power_at(const dataset::TruthGrid& grid, double speed, 
   return out;
 }
 
+bool truth_knows_any(const dataset::Truth& truth, const std::vector<MaterialSignals>& signals) {
+  for (const MaterialSignals& m : signals)
+    if (const dataset::MaterialTruth* t = truth.find(m.id))
+      for (const SectionSignals& s : m.test)
+        if (find_recording(*t, s.source_sha256)) return true;
+  return false;
+}
+
 std::optional<MaterialOracle> material_oracle(const dataset::Truth& truth, const std::string& truth_path, const MaterialSignals& m,
                                               const std::vector<std::vector<std::vector<double>>>& recorded, std::uint64_t seed) {
   const dataset::MaterialTruth* t = truth.find(m.id);

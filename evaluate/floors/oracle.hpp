@@ -33,6 +33,10 @@ struct MaterialOracle {
 // @source_sha256). recorded: per test section, the recording's spectra on section_grid.
 // Throws haptex::Error (bad_input) naming truth_path when the truth's action is shorter than a
 // section or its model file does not parse.
+// Whether the truth knows one of the test sections' recordings (by source SHA-256): a truth.h5 of
+// another synth run knows none (review 6: it was compared with the models all the same).
+bool truth_knows_any(const dataset::Truth& truth, const std::vector<MaterialSignals>& signals);
+
 std::optional<MaterialOracle> material_oracle(const dataset::Truth& truth, const std::string& truth_path, const MaterialSignals& m,
                                               const std::vector<std::vector<std::vector<double>>>& recorded, std::uint64_t seed);
 

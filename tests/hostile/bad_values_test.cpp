@@ -2,6 +2,8 @@
 // and the fix, with exit code 2 and nothing written.
 #include <gtest/gtest.h>
 
+#include "core/sha256.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -95,6 +97,28 @@ TEST(BadValues, EvaluateRefusesATruthBeyondAnyVibration) {
                    {truth, what == "noise" ? "/@accel_noise_m_s2" : "/spectrum", "up to"});
     EXPECT_FALSE(fs::exists(d.file("rep")));
   }
+}
+
+// Review 6: a truth.h5 of another synth run (it knows none of the dataset's recordings) was noted,
+// and the models were still compared with its noise-free spectra of other recordings (exit 0).
+TEST(BadValues, EvaluateRefusesATruthOfAnotherRun) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string truth = d.file("truth.h5");
+  fs::copy_file(p.truth, truth);
+  {
+    Edit edit(truth);
+    for (const std::string& material : material_ids(truth)) {
+      h5::Group recordings = edit.group("materials/" + material + "/recordings");
+      for (const std::string& k : recordings.children()) {
+        edit.remove("materials/" + material + "/recordings/" + k + "@source_sha256");
+        recordings.open_group(k).set_attr("source_sha256", sha256_hex(std::string("another run ") + material + k));
+      }
+    }
+  }
+  expect_refusal(run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", quick_model(), "--truth", truth, "-o", d.file("rep")}),
+                 {truth, "knows none of the test recordings", "another synth run"});
+  EXPECT_FALSE(fs::exists(d.file("rep")));
 }
 
 TEST(BadValues, ReplayRefusesAPressFileWithoutAFrameRate) {
