@@ -18,6 +18,7 @@
 #include "capture/device/system_kernel.hpp"
 #include "capture/recording/press_recorder.hpp"
 #include "capture/replay/replay_device.hpp"
+#include "apps/number_checks.hpp"
 #include "core/text/parse_number.hpp"
 #include "core/error.hpp"
 #include "core/text/shell_quote.hpp"
@@ -74,7 +75,7 @@ class CaptureRecord : public CaptureSubcommand {
     add_output_options(*app, request_.output_dir, request_.overwrite, "Session folder for the press files and session.json");
     app->add_option("--format", format_, "Pixel format (default: MJPG when offered)");
     app->add_option("--size", size_, "Frame size WIDTHxHEIGHT (default: the largest)");
-    app->add_option("--fps", fps_, "Frame rate (default: the highest at that size)");
+    app->add_option("--fps", fps_, "Frame rate (default: the highest at that size)")->check(positive_number());
     app->add_option("--control", controls_, "NAME=VALUE for a V4L2 control (old or new kernel names), e.g. exposure_time_absolute=150")
         ->take_all();
     app->add_option("--seconds", options_.seconds, "End the take after this long (0: no limit)")->capture_default_str();

@@ -1,14 +1,15 @@
 #include <cerrno>
 #include <cstdio>
 #include <filesystem>
-#include <regex>
 #include <iostream>
+#include <optional>
 
 #include "apps/command.hpp"
 #include "apps/number_checks.hpp"
 #include "apps/printable_stream.hpp"
 #include "apps/provenance.hpp"
 #include "core/durable_file.hpp"
+#include "core/text/parse_number.hpp"
 #include "core/error.hpp"
 #include "core/freed_memory.hpp"
 #include "core/temporary_name.hpp"
@@ -34,12 +35,14 @@ void require_finite_numbers(CLI::App& app) {
 // CLI11 reads 025 as octal 21, 0x10 as 16 and " 30" as 30, and wraps -1 into an unsigned 2^64-1:
 // a number on the command line is plain decimal, as a user means it (issue 32, review 2).
 void check_decimal(const CLI::Option& option, const std::string& value) {
-  static const std::regex whole("[+-]?(0|[1-9][0-9]*)"), natural("\\+?(0|[1-9][0-9]*)"),
-      real("[+-]?((0|[1-9][0-9]*)(\\.[0-9]*)?|\\.[0-9]+)([eE][+-]?[0-9]+)?");
   const std::string described = option.get_type_name();  // "UINT:INT in [3 - 10000]" with a range check
   const std::string type = described.substr(0, described.find(':'));
-  const std::regex* form = type == "INT" ? &whole : type == "UINT" ? &natural : type == "FLOAT" ? &real : nullptr;
-  if (form && !std::regex_match(value, *form))
+  using text::Decimal;
+  const std::optional<Decimal> form = type == "INT"     ? std::optional(Decimal::whole)
+                                      : type == "UINT"  ? std::optional(Decimal::natural)
+                                      : type == "FLOAT" ? std::optional(Decimal::real)
+                                                        : std::nullopt;
+  if (form && !text::is_plain_decimal(value, *form))
     throw input_error(option.get_name(), "", "'" + value + "' is not a plain decimal " + (type == "FLOAT" ? "number" : type == "UINT" ? "whole number of 0 or more" : "whole number") +
                                                  " (no leading zeros, 0x, spaces)",
                       "Write it in decimal, e.g. " + option.get_name() + " 25");
@@ -114,7 +117,10 @@ int run_main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "haptex: " << e.what() << "\nRun 'haptex --help' or 'haptex <command> --help' for usage.\n";
+    // A number too large for its option (review 6: --presses 2147483648) says what fits.
+    const bool too_large = dynamic_cast<const CLI::ConversionError*>(&e) != nullptr;
+    std::cerr << "haptex: " << e.what() << (too_large ? ": not a number this option holds (a whole number up to 2147483647, or as its help says)" : "")
+              << "\nRun 'haptex --help' or 'haptex <command> --help' for usage.\n";
     return 2;
   }
 

@@ -71,11 +71,11 @@ std::vector<std::pair<std::string, std::string>> DeviceKeys::items(const std::st
 }
 
 double DeviceKeys::number(const std::string& key, const std::string& text) const {
-  // Decimal only ("0x1e" is no rate), at most 1e12: frame counts and rates are cast to integers, and
+  // Plain decimal only ("0x1e" is no rate, "025" no 25), at most 1e12: frame counts and rates are cast to integers, and
   // no take runs that long. No subnormal: README, "numbers ... that a 32-bit float holds".
   const std::optional<double> value = text::parse_number(text);
-  if (value && text == text::trim(text) && (*value == 0 || *value >= FLT_MIN) && *value <= 1e12) return *value;
-  refuse(key, "'" + text + "' is not a number from 0 to 1e12 (0 or at least 1.2e-38)");
+  if (value && text::is_plain_decimal(text, text::Decimal::real) && (*value == 0 || *value >= FLT_MIN) && *value <= 1e12) return *value;
+  refuse(key, "'" + text + "' is not a number from 0 to 1e12 in plain decimals (0 or at least 1.2e-38; no leading zeros)");
 }
 
 double DeviceKeys::percent(const std::string& key, const std::string& text) const {

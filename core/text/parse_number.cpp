@@ -1,6 +1,7 @@
 #include "core/text/parse_number.hpp"
 
 #include <charconv>
+#include <regex>
 #include <cmath>
 
 namespace haptex::text {
@@ -22,7 +23,15 @@ std::optional<double> parse_number(std::string_view text) {
   return value;
 }
 
+bool is_plain_decimal(std::string_view text, Decimal kind) {
+  static const std::regex whole("[+-]?(0|[1-9][0-9]*)"), natural("\\+?(0|[1-9][0-9]*)"),
+      real("[+-]?((0|[1-9][0-9]*)(\\.[0-9]*)?|\\.[0-9]+)([eE][+-]?[0-9]+)?");
+  const std::regex& form = kind == Decimal::whole ? whole : kind == Decimal::natural ? natural : real;
+  return std::regex_match(text.begin(), text.end(), form);
+}
+
 std::optional<long long> parse_whole_number(std::string_view text) {
+  if (!is_plain_decimal(text, Decimal::whole)) return std::nullopt;
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);
   if (text.empty() || text.front() == '+') return std::nullopt;
   long long value = 0;

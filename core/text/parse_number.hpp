@@ -11,8 +11,12 @@ std::string_view trim(std::string_view text);
 // The number in text (surrounding white space and a leading '+' allowed), nullopt when the
 // text is not exactly one number. NaN and Inf parse; callers reject them with their own message.
 std::optional<double> parse_number(std::string_view text);
-// The decimal integer that is all of text (a leading '-' or '+' allowed; no spaces, no 0x, no
-// exponent, no fraction), nullopt otherwise or when it does not fit in 64 bits.
+// Numbers on the command line and in device specs are plain decimals, as a user means them: no
+// leading zero (CLI11 reads 025 as octal 21), no 0x, no spaces (issue 32, reviews 2 and 6).
+enum class Decimal { whole, natural, real };  // [+-]123, [+]123, [+-]1.5e3
+bool is_plain_decimal(std::string_view text, Decimal kind);
+// The plain decimal integer that is all of text (a leading '-' or '+' allowed; no spaces, no 0x, no
+// leading zero, no exponent, no fraction), nullopt otherwise or when it does not fit in 64 bits.
 std::optional<long long> parse_whole_number(std::string_view text);
 // Values haptex stores become 32-bit floats (recordings, datasets, models): a magnitude over the
 // largest one would be stored as inf, so readers refuse it.

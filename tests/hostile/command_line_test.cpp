@@ -95,6 +95,16 @@ TEST(CommandLine, NumbersAreReadAsPlainDecimals) {
                  {"--fps", "' 30'"});
   expect_refusal(run_haptex({"capture", "record", "--device", "fake:lockstep", "--material", "Cork", "--seconds", "0x1", "-o", d.file("r")}),
                  {"--seconds", "'0x1'"});
+  // Review 6: a device spec's drop=025 was 25 %, --size 0160x120 was 160x120, --fps 0 passed silently,
+  // and --presses 2147483648 got CLI11's "Could not convert" alone.
+  for (const std::string device : {"fake:size=160x120,drop=025,lockstep", "fake:size=0160x120,lockstep"})
+    expect_refusal(run_haptex({"capture", "record", "--device", device, "--material", "Cork", "-o", d.file("r")}), {"'0", "in plain decimals"});
+  expect_refusal(run_haptex({"capture", "record", "--device", "fake:lockstep", "--material", "Cork", "--size", "0160x120", "-o", d.file("r")}),
+                 {"--size 0160x120", "expected WIDTHxHEIGHT"});
+  expect_refusal(run_haptex({"capture", "record", "--device", "fake:lockstep", "--material", "Cork", "--fps", "0", "-o", d.file("r")}),
+                 {"--fps", "must be above 0"});
+  expect_refusal(run_haptex({"capture", "record", "--device", "fake:lockstep", "--material", "Cork", "--presses", "2147483648", "-o", d.file("r")}),
+                 {"--presses", "a whole number up to 2147483647"});
   EXPECT_EQ(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--sections", "25", "--seed", "0", "--no-plots"}).exit_code, 0)
       << "plain decimals still work";
   // A material name with no letter or digit makes no material id: refused before a press is taken.
