@@ -3,6 +3,7 @@
 #include <charconv>
 #include <optional>
 
+#include "core/text/parse_number.hpp"
 #include "core/version.hpp"
 
 namespace haptex {
@@ -11,6 +12,9 @@ namespace {
 std::optional<int> version_of(std::string_view name, std::string_view family) {
   if (name.size() <= family.size() + 1 || name.substr(0, family.size()) != family || name[family.size()] != '/') return std::nullopt;
   const std::string_view number = name.substr(family.size() + 1);
+  // A version haptex writes: 1, 2, ... in plain decimal (review 6: "recordings/-1" and "recordings/01"
+  // passed as earlier versions).
+  if (!text::is_plain_decimal(number, text::Decimal::natural) || number.front() == '+' || number == "0") return std::nullopt;
   int version = 0;
   const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), version);
   if (error != std::errc() || end != number.data() + number.size()) return std::nullopt;

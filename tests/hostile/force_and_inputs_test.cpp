@@ -270,6 +270,15 @@ TEST(Force, OnlyAnEarlierOutputOfTheSameKindIsReplaced) {
     EXPECT_EQ(before, (std::vector<std::string>{file_bytes(newer_model), file_bytes(gelsight), file_bytes(recordings)}));
   }
   EXPECT_FALSE(fs::exists(d.file("m.h5")));
+  // Review 6: a mark no haptex writes ("recordings/-1", "recordings/01") passed as an earlier version.
+  for (const std::string mark : {"recordings/-1", "recordings/01", "recordings/0"}) {
+    SCOPED_TRACE(mark);
+    const std::string odd = copy_into(d, p.recordings, "odd.h5");
+    Edit(odd).root().set_attr("haptex_format", mark);
+    const std::string before = file_bytes(odd);
+    expect_refusal(run_haptex({"merge", p.recordings, "-o", odd, "--force"}), {odd, "is a " + mark + " file", "same kind"});
+    EXPECT_EQ(file_bytes(odd), before);
+  }
 }
 
 TEST(Force, TrainRefusesALogThatIsTheModel) {
