@@ -13,6 +13,7 @@
 
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
+#include "core/text/utf8.hpp"
 #include "core/version.hpp"
 
 namespace haptex::render {
@@ -98,7 +99,7 @@ WavSummary write_wav(PartialFile& out, std::span<const double> signal_m_s2, cons
   summary.comment = kFullScaleKey + number(summary.full_scale_m_s2) +
                     "; acceleration in m/s^2 = sample (-1..1 of full scale) x " + number(summary.full_scale_m_s2) +
                     "; 10 kHz, peak " + number(summary.peak_m_s2) + " m/s^2" +
-                    (options.source.empty() ? std::string() : "; " + options.source);
+                    (options.source.empty() ? std::string() : "; " + text::printable(options.source));
 
   SF_INFO info{};
   info.samplerate = kWavSampleRate;
@@ -110,9 +111,12 @@ WavSummary write_wav(PartialFile& out, std::span<const double> signal_m_s2, cons
                   (errno == ENOSPC ? std::string("the disk is full") : std::string(sf_strerror(nullptr)) + " (" + out.path() + ")"));
   sf_command(file.get(), SFC_SET_CLIPPING, nullptr, SF_TRUE);  // a rounding past 1.0 saturates, never wraps
   const std::string software = std::string("haptex ") + kVersion;
+  // Names in the strings as a terminal may show them (review 6: a trajectory's path put ESC, a newline
+  // and U+202E into the comment, which sox --i and mediainfo print raw).
+  const std::string title = text::printable(options.title);
   if (sf_set_string(file.get(), SF_STR_COMMENT, summary.comment.c_str()) != 0 ||
       sf_set_string(file.get(), SF_STR_SOFTWARE, software.c_str()) != 0 ||
-      (!options.title.empty() && sf_set_string(file.get(), SF_STR_TITLE, options.title.c_str()) != 0))
+      (!title.empty() && sf_set_string(file.get(), SF_STR_TITLE, title.c_str()) != 0))
     throw failure(path + ": cannot store the WAV's strings: " + sf_strerror(file.get()));
   std::vector<double> scaled(signal_m_s2.size());
   for (std::size_t i = 0; i < scaled.size(); ++i) scaled[i] = signal_m_s2[i] / summary.full_scale_m_s2;

@@ -13,6 +13,7 @@
 #include "tests/support/quick_models.hpp"
 #include "tests/support/small_pipeline.hpp"
 #include "tests/support/temp_dir.hpp"
+#include "tests/support/wav_file.hpp"
 
 namespace haptex::test {
 namespace {
@@ -297,6 +298,13 @@ TEST(BadValues, ANewlineOrTabInANameIsPrintedEscaped) {
     EXPECT_EQ((r.out + r.err).find("a\n"), std::string::npos) << r.out << r.err;
     EXPECT_NE(r.out.find("a\\x0a\\x09b"), std::string::npos) << r.out;
   }
+  // Review 6: the WAV's comment (naming the trajectory) kept them raw; sox --i and mediainfo print it.
+  fs::copy_file(d.file("traj.csv"), d.file(name + ".csv.traj"));
+  ASSERT_EQ(run_haptex({"render", quick_model(), "--material", small_material(), "--trajectory", d.file(name + ".csv.traj"), "-o", d.file("t.wav")})
+                .exit_code, 0);
+  const std::string comment = read_wav_file(d.file("t.wav")).comment;
+  EXPECT_EQ(comment.find("a\n"), std::string::npos) << comment;
+  EXPECT_NE(comment.find("a\\x0a\\x09b"), std::string::npos) << comment;
   const CommandResult missing = run_haptex({"qa", d.file("no\nsuch.h5")});
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("no\\x0asuch.h5"), std::string::npos) << missing.err;
