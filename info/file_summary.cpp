@@ -80,6 +80,13 @@ FileSummary summarize_file(const std::string& path) {
     const h5::Group materials = root.open_group(kMaterials);
     for (const std::string& id : materials.children())
       if (materials.has_group(id)) summary.materials.push_back(summarize_material(materials.open_group(id), id));
+    // A model names its materials in two lists (review 6: predict said "use one of the ids haptex
+    // info lists", and info listed none).
+    if (materials.has_dataset(dataset::layout::kMaterialIds) && materials.has_dataset(dataset::layout::kMaterialNames)) {
+      const std::vector<std::string> ids = materials.open_dataset(dataset::layout::kMaterialIds).read_strings(),
+                                     names = materials.open_dataset(dataset::layout::kMaterialNames).read_strings();
+      for (std::size_t i = 0; i < ids.size(); ++i) summary.materials.push_back({ids[i], i < names.size() ? names[i] : ids[i], {}});
+    }
   }
   collect_datasets(root, "", summary.other_datasets);
   return summary;

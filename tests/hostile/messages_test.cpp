@@ -12,6 +12,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/h5/file.hpp"
+#include "core/json/schema.hpp"
 #include "core/sha256.hpp"
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/mutations.hpp"
@@ -300,6 +301,19 @@ TEST(Messages, AFrameThatDoesNotDecodeBesideThePeakLeavesThePressOutNotTheVideo)
   } else {
     EXPECT_NE(r.err.find("1 press(es) left out: frames around the peak do not decode"), std::string::npos) << r.err;
   }
+}
+
+// Review 6: predict's "use one of the ids haptex info lists" pointed at an info that listed none for
+// a model.
+TEST(Messages, InfoListsTheMaterialsAModelKnows) {
+  const CommandResult r = run_haptex({"info", quick_model(), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json doc = nlohmann::json::parse(r.out);
+  EXPECT_NO_THROW(json::validate(doc, "info.schema.json", "info output"));
+  std::vector<std::string> ids;
+  for (const auto& m : doc["materials"]) ids.push_back(m["id"]);
+  EXPECT_EQ(ids, material_ids(small_pipeline().dataset));
+  EXPECT_NE(run_haptex({"info", quick_model()}).out.find(small_material() + " ("), std::string::npos);
 }
 
 // Review 6: a sensor sending only error buffers (or, in lockstep, dropping every frame) held the take
