@@ -142,6 +142,7 @@ class Extraction {
     text::require_utf8(a.material, input.path, "the material name (--material, the folder's name or the press file's)");
     a.scores = score_source(*a.source, settings_);
     require_trigger_over_level(input.path, *a.scores.contact);
+    require_a_decoded_frame(input.path, a.scores);
     a.plans = plan_presses(a.scores.scores, a.scores.contact->segmenter(settings_.segmenter), settings_.frames_per_press,
                            settings_.margin_frames, a.scores.end_level, &a.left_out);
     a.sha = a.plans.empty() ? "" : a.source->sha256();
@@ -155,6 +156,16 @@ class Extraction {
     throw input_error(path, "--trigger", figure(*settings_.trigger) + " is not above this source's no-contact level, " + figure(contact.level()) +
                                              ": its no-contact frames would count as contact",
                       "Give a --trigger above " + figure(contact.level()) + ", or leave it out (the footage sets one)");
+  }
+
+  // Review 5: a press file whose every JPEG stated 60000x60000 was "no press found" (exit 1, "give a
+  // lower --trigger"); a source of which no frame decodes is damaged input.
+  static void require_a_decoded_frame(const std::string& path, const SourceScores& scores) {
+    if (scores.unreadable_frames == 0 || std::any_of(scores.scores.begin(), scores.scores.end(), [](float s) { return std::isfinite(s); }))
+      return;
+    throw input_error(path, "", "no frame of it decodes (" + std::to_string(scores.unreadable_frames) +
+                                    " frames damaged, or of another size than the file states)",
+                      "Copy the file again from the machine that recorded it");
   }
 
   // The kept frames are read and stored a press at a time, so memory holds about one press.

@@ -7,6 +7,8 @@
 #include "capture/device/fake_scene.hpp"
 #include "capture/replay/video_scene.hpp"
 #include "capture/scoring/scoring_image.hpp"
+#include "core/error.hpp"
+#include "core/image_header.hpp"
 #include "dataset/decode_image.hpp"
 #include "dataset/layout.hpp"
 
@@ -14,6 +16,19 @@ namespace haptex::capture {
 
 FakeMode press_file_replay_mode(const std::string& path) {
   const dataset::PressFile frames(path);
+  // Review 5: frames whose JPEGs state 60000x60000 replayed as "MJPG 320x240" and gave no press, exit
+  // 0; extraction refuses a file of which no frame decodes, and so does replay (a frame the recorder
+  // stored cut off is empty, and others may be).
+  const auto of_the_file = [&](std::size_t i) {
+    const std::optional<ImageSize> s = image_header_size(frames.bytes(i));
+    return s && int(s->width) == frames.size().width && int(s->height) == frames.size().height;
+  };
+  bool any = false;
+  for (std::size_t i = 0; i < frames.count() && !any; ++i) any = of_the_file(i);
+  if (frames.count() > 0 && !any)
+    throw input_error(path, "/frames", "holds no image of the press file's " + std::to_string(frames.size().width) + "x" +
+                                           std::to_string(frames.size().height) + " frames (damaged, or of another size)",
+                      "Copy the file again from the machine that recorded it");
   FakeMode mode;
   mode.fourcc = frames.encoding() == "jpeg" ? V4L2_PIX_FMT_MJPEG : V4L2_PIX_FMT_YUYV;
   mode.width = std::uint32_t(frames.size().width);

@@ -100,6 +100,33 @@ TEST(BadValues, EvaluateRefusesATruthBeyondAnyVibration) {
   }
 }
 
+// Review 5: a press file whose every JPEG states 60000x60000 was "no press found" to extract (exit 1,
+// "give a lower --trigger") and replayed as 320x240 with no press (exit 0). Damaged input: exit 2.
+TEST(BadValues, APressFileOfWhichNoFrameDecodesIsRefused) {
+  const TempDir d;
+  ASSERT_EQ(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "--presses", "1", "-o",
+                        d.file("s")}).exit_code, 0);
+  const std::string press = d.file("big.h5");
+  fs::copy_file(d.file("s/press_0.h5"), press);
+  {
+    Edit edit(press);
+    const std::size_t frames = std::size_t(edit.dataset("frames").shape().at(0));
+    for (std::size_t i = 0; i < frames; ++i)
+      edit.change_image("frames", i, [](std::vector<std::uint8_t>& jpeg) {
+        for (std::size_t k = 0; k + 8 < jpeg.size(); ++k)
+          if (jpeg[k] == 0xFF && jpeg[k + 1] == 0xC0) {  // the frame header: height, width at 5..8
+            jpeg[k + 5] = 0xEA, jpeg[k + 6] = 0x60, jpeg[k + 7] = 0xEA, jpeg[k + 8] = 0x60;
+            break;
+          }
+      });
+  }
+  expect_refusal(run_haptex({"capture", "extract", press, "--no-sheets", "-o", d.file("g.h5")}), {press, "no frame of it decodes"});
+  expect_refusal(run_haptex({"capture", "record", "--device", "replay:" + press + ",lockstep", "--material", "Cork", "-o", d.file("r")}),
+                 {press, "/frames", "holds no image of the press file's 160x120 frames"});
+  EXPECT_FALSE(fs::exists(d.file("g.h5")));
+  EXPECT_FALSE(fs::exists(d.file("r")));
+}
+
 // Review 6: a truth.h5 of another synth run (it knows none of the dataset's recordings) was noted,
 // and the models were still compared with its noise-free spectra of other recordings (exit 0).
 TEST(BadValues, EvaluateRefusesATruthOfAnotherRun) {

@@ -53,8 +53,8 @@ void Edit::change_image(const std::string& path, std::size_t index, const std::f
   const auto attrs = string_attrs(dataset(path));
   remove(path);
   const auto slash = path.rfind('/');
-  h5::Group parent = group(path.substr(0, slash));
-  dataset::VlenBytesWriter writer(parent, path.substr(slash + 1));
+  h5::Group parent = slash == std::string::npos ? root() : group(path.substr(0, slash));
+  dataset::VlenBytesWriter writer(parent, slash == std::string::npos ? path : path.substr(slash + 1));
   for (const auto& image : images) writer.append(image);
   restore(writer.dataset(), attrs);
 }
