@@ -52,15 +52,28 @@ Trajectory read_trajectory(const std::string& path) {
   if (!in) throw input_error(path, "", "cannot open the trajectory", "Check the path");
   std::string line;
   if (!std::getline(in, line)) throw input_error(path, "line 1", "the file is empty", "Write a header: time_s,force,speed");
-  const std::vector<std::string> header = fields(line);
+  // A spreadsheet's CSV may start with a UTF-8 byte order mark and quote its column names (review 5
+  // and 6: "the header names no force or no speed column").
+  if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+  std::vector<std::string> header = fields(line);
+  for (std::string& name : header)
+    if (name.size() >= 2 && name.front() == '"' && name.back() == '"') name = name.substr(1, name.size() - 2);
   const int f = column(path, header, {"force", "force_n"}), s = column(path, header, {"speed", "speed_mm_s"}),
             t = column(path, header, {"time_s"});
   if (f < 0 || s < 0)
     throw input_error(path, "line 1", "the header names no force or no speed column", "Name the columns force (N) and speed (mm/s)");
   Trajectory out;
   double previous_time = NAN;
+  std::size_t blank = 0;  // the first blank line, while only blank lines follow it
   for (std::size_t number = 2; std::getline(in, line); ++number) {
-    if (line.empty() || line == "\r") continue;
+    if (line.empty() || line == "\r") {
+      if (!blank) blank = number;
+      continue;
+    }
+    // Each row is the next 0.1 ms: a blank one among them would shift every later sample (review 5).
+    if (blank)
+      throw input_error(path, "line " + std::to_string(blank), "is blank, among the samples (each row is the next 0.1 ms)",
+                        "Remove the blank line, or give the sample it stands for");
     const std::vector<std::string> v = fields(line);
     const std::string where = "line " + std::to_string(number);
     if (v.size() > header.size())

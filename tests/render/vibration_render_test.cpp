@@ -11,11 +11,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 
 #include "core/error.hpp"
 #include "core/temporary_name.hpp"
 #include "predict/train.hpp"
+#include "predict/trajectory.hpp"
 #include "render/wav_writer.hpp"
 #include "tests/predict/synthetic_problem.hpp"
 #include "tests/support/allocation_counter.hpp"
@@ -335,6 +337,24 @@ TEST(RenderVibrationCsv, OneRowPerSampleInMetresPerSecondSquared) {
   EXPECT_THROW(write_vibration_csv(dir.file("v.csv"), t, x, false), Error);
   EXPECT_THROW(write_vibration_csv(dir.file("w.csv"), t, std::vector<double>(249, 0.0), false), Error);
   EXPECT_FALSE(fs::exists(dir.file("w.csv")));
+}
+
+// Review 5: a blank line among 2000 rows was skipped, shifting every later sample by 0.1 ms; a header
+// with a byte order mark (or, review 6, quoted names) named "no force or no speed column".
+TEST(Trajectory, ABlankLineAmongTheSamplesIsRefusedASpreadsheetsHeaderIsRead) {
+  const test::TempDir dir;
+  std::ofstream(dir.file("blank.csv")) << "force,speed\n1,100\n\n2,100\n";
+  try {
+    predict::read_trajectory(dir.file("blank.csv"));
+    FAIL() << "a blank line among the samples was taken";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("line 3: is blank, among the samples"), std::string::npos) << e.what();
+  }
+  std::ofstream(dir.file("sheet.csv")) << "\xEF\xBB\xBF\"force\",\"speed\"\r\n1,100\r\n2,150\r\n\r\n";
+  const predict::Trajectory sheet = predict::read_trajectory(dir.file("sheet.csv"));
+  EXPECT_EQ(sheet.force, (std::vector<float>{1, 2})) << "trailing blank lines end the samples";
+  EXPECT_EQ(sheet.speed, (std::vector<float>{100, 150}));
 }
 
 }  // namespace
