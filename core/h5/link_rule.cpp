@@ -10,6 +10,13 @@ namespace {
 // object's header by reading every one before it, so 40 000 of them took info minutes (review 5).
 constexpr hsize_t kMostAttributes = 1000;
 
+// A callback of H5Literate (links) or H5Aiterate2 (attributes) that collects the names it is given.
+template <typename Info>
+herr_t add_name(hid_t, const char* name, const Info*, void* names) {
+  static_cast<std::vector<std::string>*>(names)->emplace_back(name);
+  return 0;
+}
+
 std::string joined(const std::string& path, const std::string& name) { return path == "/" ? "/" + name : path + "/" + name; }
 
 // Attributes (and the values of dataset `object`) holding object references: links in all but name.
@@ -58,27 +65,14 @@ std::vector<std::string> link_names(hid_t group, const std::string& group_path, 
   // One pass: looking each name up by its index (H5Lget_name_by_idx) builds the group's sorted name
   // table on every call, quadratic in its links (review 5: 40 000 groups took qa 19 s).
   std::vector<std::string> names;
-  const herr_t status = H5Literate(
-      group, H5_INDEX_NAME, H5_ITER_INC, nullptr,
-      [](hid_t, const char* name, const H5L_info_t*, void* out) -> herr_t {
-        static_cast<std::vector<std::string>*>(out)->emplace_back(name);
-        return 0;
-      },
-      &names);
-  check_input_status(status, "list " + group_path, file);
+  check_input_status(H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, nullptr, add_name<H5L_info_t>, &names), "list " + group_path, file);
   return names;
 }
 
 std::vector<std::string> attribute_names(hid_t object, const std::string& object_path, const std::string& file) {
   std::vector<std::string> names;  // in one pass, as link_names
-  const herr_t status = H5Aiterate2(
-      object, H5_INDEX_NAME, H5_ITER_INC, nullptr,
-      [](hid_t, const char* name, const H5A_info_t*, void* out) -> herr_t {
-        static_cast<std::vector<std::string>*>(out)->emplace_back(name);
-        return 0;
-      },
-      &names);
-  check_input_status(status, "list the attributes of " + object_path, file);
+  check_input_status(H5Aiterate2(object, H5_INDEX_NAME, H5_ITER_INC, nullptr, add_name<H5A_info_t>, &names),
+                     "list the attributes of " + object_path, file);
   return names;
 }
 

@@ -119,16 +119,16 @@ TEST(Messages, ANameThatIsNotUtf8IsRefusedAtTheDoor) {
 // material without a word. Now each name keeps its own id (core/naming.hpp).
 TEST(Messages, MaterialsWhoseNamesDifferOnlyBeyondAsciiStayApart) {
   const TempDir dir;
-  ASSERT_EQ(run_haptex({"synth", "materials", "-n", "1", "--presses", "1", "--recordings", "1", "--seconds", "0.5", "--size", "64x48",
+  ASSERT_EQ(run_haptex({"synth", "materials", "-n", "1", "--presses", "4", "--recordings", "1", "--seconds", "0.5", "--size", "160x120",
                         "-o", dir.file("s")}).exit_code, 0);
   const std::vector<std::string> names{"\u6728\u6750 1", "\u91d1\u5c5e 1", "Caf\u00e9 1", "Caf\u00e8 1"};
-  const fs::path video = *fs::directory_iterator(*fs::directory_iterator(dir.file("s/gelsight")));
+  const fs::path material = *fs::directory_iterator(dir.file("s/gelsight"));  // four presses: one video each
   const fs::path xml = *fs::directory_iterator(dir.file("s/recordings"));
   std::string text = read_recording_text(xml.string());
   const auto open = text.find("<material>") + 10, length = text.find("</material>") - open;
   for (std::size_t i = 0; i < names.size(); ++i) {
     fs::create_directories(dir.path() / "presses" / names[i]);
-    fs::copy_file(video, dir.path() / "presses" / names[i] / "press.avi");
+    fs::copy_file(material / ("press_" + std::to_string(i) + ".avi"), dir.path() / "presses" / names[i] / "press.avi");
     fs::create_directories(dir.file("recordings"));
     write_recording_text(dir.file("recordings/" + std::to_string(i) + ".xml"), std::string(text).replace(open, length, names[i]));
   }
