@@ -40,19 +40,21 @@ void check_output_path(const std::string& path, bool overwrite) {
   const std::string dir = directory_of(path);
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
-    throw input_error(path, "", "the output directory " + dir + " does not exist", "Create it first or choose another -o");
+    throw input_error(path, "", "the output directory " + dir + " does not exist", "Create it first, or name the output elsewhere");
   if (::access(dir.c_str(), W_OK) != 0)
     throw input_error(path, "", "the output directory " + dir + " is not writable",
-                      "Choose a directory you can write to with -o");
+                      "Name the output in a directory you can write to");
   require_name_fits(path);
   const fs::file_status link = fs::symlink_status(path, ec);
   if (fs::is_symlink(link) && !fs::exists(path, ec))
-    throw input_error(path, "", "the output path is a symbolic link to nothing", "Remove the link, or choose another -o");
+    throw input_error(path, "", "the output path is a symbolic link to nothing", "Remove the link, or name the output elsewhere");
   if (!fs::exists(path, ec)) return;
+  // Every output comes here (-o, --log, --csv ...): the message names the path, not the option
+  // (review 5: train --log FOLDER said "Name a file with -o").
   if (!fs::is_regular_file(path, ec))
-    throw input_error(path, "", "the output path exists and is not a file", "Name a file with -o");
+    throw input_error(path, "", "the output path exists and is not a file", "Name a file for this output, not a folder");
   if (!overwrite)
-    throw input_error(path, "", "the output file already exists", "Remove it, choose another -o, or pass --force");
+    throw input_error(path, "", "the output file already exists", "Remove it, give the output another name, or pass --force");
 }
 
 void check_replaceable_output(const std::string& path, bool overwrite, const std::string& what,

@@ -106,7 +106,10 @@ struct Reader {
     const h5::Dataset d = floats(g, name);
     const h5::Shape shape = d.shape();
     if (shape.size() != 1 || (expected >= 0 && Eigen::Index(shape[0]) != expected) || shape[0] > hsize_t(kLargestLayer))
-      throw input_error(path, d.object_path(), "has shape " + h5::shape_text(shape) + ", expected (" + std::to_string(expected) + ")", kRetrain);
+      throw input_error(path, d.object_path(),
+                        "has shape " + h5::shape_text(shape) + ", expected " +
+                            (expected >= 0 ? "(" + std::to_string(expected) + ")" : "a 1-D array of at most " + std::to_string(kLargestLayer)),
+                        kRetrain);
     const std::vector<float> v = d.read<float>();
     check(d, v, kind);
     return Eigen::Map<const Eigen::VectorXf>(v.data(), Eigen::Index(v.size()));
@@ -116,7 +119,10 @@ struct Reader {
     const h5::Dataset d = floats(g, name);
     const h5::Shape shape = d.shape();
     if (shape.size() != 2 || shape[0] > hsize_t(kLargestLayer) || shape[1] > hsize_t(kLargestLayer))
-      throw input_error(path, d.object_path(), "has shape " + h5::shape_text(shape) + ", expected a 2-D array", kRetrain);
+      throw input_error(path, d.object_path(),
+                        "has shape " + h5::shape_text(shape) + ", expected a 2-D array of at most " + std::to_string(kLargestLayer) + " x " +
+                            std::to_string(kLargestLayer),
+                        kRetrain);
     const std::vector<float> v = d.read<float>();
     check(d, v, Values::finite);
     return Eigen::Map<const RowMajor>(v.data(), Eigen::Index(shape[0]), Eigen::Index(shape[1]));

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/h5/link_rule.hpp"
+#include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
 
 namespace haptex::h5 {
@@ -199,7 +200,7 @@ std::size_t Dataset::elements() const {
 void require_readable_size(double count, std::size_t element_size, const std::string& file, const std::string& where) {
   if (count * double(element_size) <= double(kMostBytesRead)) return;
   throw input_error(file, where,
-                    "declares " + std::to_string(count) + " values of " + std::to_string(element_size) + " bytes, more than haptex reads at once (" +
+                    "declares " + text::format("%.0f", count) + " values of " + std::to_string(element_size) + " bytes, more than haptex reads at once (" +
                         std::to_string(kMostBytesRead >> 30) + " GiB)",
                     "The file is damaged or not what haptex wrote: make it again with the haptex command that wrote it");
 }

@@ -171,7 +171,7 @@ TEST(MergeInput, ALinkLoopOrAnAbsurdSizeIsRefused) {
     const hid_t d = H5Dcreate2(edit.root().id(), (material + "/huge").c_str(), H5T_NATIVE_FLOAT, space, H5P_DEFAULT, list, H5P_DEFAULT);
     H5Dclose(d), H5Pclose(list), H5Sclose(space);
   }
-  expect_refusal(run_haptex({"merge", good_shard(dir), huge, "-o", dir.file("out.h5")}), {huge, "/huge", "more than haptex reads at once"});
+  expect_refusal(run_haptex({"merge", good_shard(dir), huge, "-o", dir.file("out.h5")}), {huge, "/huge", "declares 100000000000 values of 4 bytes", "more than haptex reads at once"});
   const std::string external = second_material_of(dir, small_pipeline().recordings, "external_storage.h5");
   {
     const std::string material = "materials/" + material_ids(external).front();
