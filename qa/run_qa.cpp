@@ -69,13 +69,21 @@ Report run_qa(const QaOptions& options) {
                       "Run: haptex qa DATASET.h5 --split MANIFEST.json, or haptex qa MANIFEST.json");
   // Not HDF5: a split manifest (JSON) or nothing qa can read.
   std::ifstream in(options.file);
-  char first = 0;
-  while (in.get(first) && std::isspace(static_cast<unsigned char>(first))) {
-  }
-  if (first != '{')
+  std::string head(4096, '\0');
+  head.resize(std::size_t(in.read(head.data(), std::streamsize(head.size())).gcount()));
+  std::string_view text = head;
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a byte order mark, which train's JSON reader skips too (review 5)
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos || text[first] != '{')
     throw input_error(options.file, "", "neither an HDF5 file nor a JSON split manifest",
                       "Give a recordings, gelsight or dataset file, or a split manifest");
   const SplitManifestDocument manifest = split::read_split_manifest(options.file);
+  // Another haptex JSON file (a training log) is the wrong kind, as a model file is (review 5: its
+  // fields were reported as a manifest's schema errors).
+  if (const auto format = manifest.json.find("format");
+      format != manifest.json.end() && format->is_string() && format->get<std::string>().rfind("split/", 0) != 0)
+    throw input_error(options.file, "/format", "is '" + format->get<std::string>() + "', not a split manifest",
+                      "Give a recordings, gelsight or dataset file, or a split manifest");
   Report report{options.file, FileKind::split, std::nullopt, {}};
   append(report.checks, check_split(manifest, split::locate_dataset(manifest)));
   return report;

@@ -303,6 +303,19 @@ TEST(Messages, AFrameThatDoesNotDecodeBesideThePeakLeavesThePressOutNotTheVideo)
   }
 }
 
+// Review 5: qa refused a split manifest with a UTF-8 byte order mark that train took, and checked a
+// training log as if it were a split manifest (its fields as schema errors).
+TEST(Messages, QaReadsAManifestWithAByteOrderMarkAndRefusesATrainingLog) {
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  std::ofstream(dir.file("bom.json"), std::ios::binary) << "\xEF\xBB\xBF" << file_bytes(p.split);
+  const CommandResult plain = run_haptex({"qa", p.split}), bom = run_haptex({"qa", dir.file("bom.json")});
+  EXPECT_EQ(bom.exit_code, plain.exit_code) << bom.err;
+  EXPECT_NE(bom.out.find("verdict: clean"), std::string::npos) << bom.out << bom.err;
+  std::ofstream(dir.file("m.training.json")) << R"({"format": "training-log/1", "model": "m.h5", "epochs": []})";
+  expect_refusal(run_haptex({"qa", dir.file("m.training.json")}), {"/format", "is 'training-log/1', not a split manifest"});
+}
+
 // Review 6: predict's "use one of the ids haptex info lists" pointed at an info that listed none for
 // a model.
 TEST(Messages, InfoListsTheMaterialsAModelKnows) {
