@@ -121,6 +121,10 @@ class RenderCommand : public Command {
     o.reconstruction = render::parse_reconstruction(live_ && reconstruction_ == "fgla" ? "online" : reconstruction_);
     o.as_played = live_;
     o.fgla.seed = o.noise.seed = o.online.seed = seed_;
+    // Review 6: --steady was taken with fgla and noise, where it does nothing.
+    if (steady_ && o.reconstruction != render::Reconstruction::online)
+      throw Error(Error::Kind::bad_input, "render: --steady: only the online reconstruction draws each frame's magnitudes; use it with "
+                                          "--reconstruct online (or --live)");
     o.online.scatter = !steady_;
     o.online.look_ahead = std::size_t(look_ahead_);
     if (iterations_ >= 0) o.fgla.iterations = o.online.iterations = std::size_t(iterations_);

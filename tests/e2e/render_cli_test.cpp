@@ -273,6 +273,9 @@ TEST(RenderCli, BadInputsExitTwoNamingTheFileAndLeaveNothing) {
   expect_bad_input(run_haptex(render_args(short_traj, out)), short_traj, dir);
   expect_bad_input(run_haptex(render_args(traj, out, {"--live", "--reconstruct", "fgla"})), "--live", dir);
   expect_bad_input(run_haptex(render_args(traj, out, {"--reconstruct", "online", "--iterations", "0"})), "online", dir);
+  // Review 6: --steady was taken where it does nothing.
+  for (const char* reconstruction : {"fgla", "noise"})
+    expect_bad_input(run_haptex(render_args(traj, out, {"--reconstruct", reconstruction, "--steady"})), "--steady", dir);
   expect_bad_input(run_haptex(render_args(traj, out, {"--full-scale", "1e-9"})), out, dir);
 
   // An existing output is kept without --force, replaced with it.
