@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/sha256.hpp"
 #include "core/text/parse_number.hpp"
+#include "core/text/utf8.hpp"
 
 namespace haptex::convert {
 namespace {
@@ -34,7 +35,7 @@ std::string column_name(std::string_view cell) {
 class Lines {
  public:
   explicit Lines(const std::vector<char>& buffer) : text_(buffer.data(), buffer.size()) {
-    if (text_.substr(0, 3) == "\xEF\xBB\xBF") text_.remove_prefix(3);  // UTF-8 byte order mark
+    text_ = text::without_byte_order_mark(text_);
   }
   bool next(std::string_view& line) {
     if (position_ >= text_.size()) return false;

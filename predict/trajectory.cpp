@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/text/parse_number.hpp"
+#include "core/text/utf8.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "dataset/window.hpp"
@@ -54,8 +55,7 @@ Trajectory read_trajectory(const std::string& path) {
   if (!std::getline(in, line)) throw input_error(path, "line 1", "the file is empty", "Write a header: time_s,force,speed");
   // A spreadsheet's CSV may start with a UTF-8 byte order mark and quote its column names (review 5
   // and 6: "the header names no force or no speed column").
-  if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
-  std::vector<std::string> header = fields(line);
+  std::vector<std::string> header = fields(std::string(text::without_byte_order_mark(line)));
   for (std::string& name : header)
     if (name.size() >= 2 && name.front() == '"' && name.back() == '"') name = name.substr(1, name.size() - 2);
   const int f = column(path, header, {"force", "force_n"}), s = column(path, header, {"speed", "speed_mm_s"}),

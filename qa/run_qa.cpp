@@ -8,6 +8,7 @@
 #include "dataset/format.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "core/text/utf8.hpp"
 #include "core/h5/file.hpp"
 #include "qa/checkers.hpp"
 #include "qa/layout_spec.hpp"
@@ -71,8 +72,7 @@ Report run_qa(const QaOptions& options) {
   std::ifstream in(options.file);
   std::string head(4096, '\0');
   head.resize(std::size_t(in.read(head.data(), std::streamsize(head.size())).gcount()));
-  std::string_view text = head;
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a byte order mark, which train's JSON reader skips too (review 5)
+  const std::string_view text = text::without_byte_order_mark(head);  // as train's JSON reader does (review 5)
   const std::size_t first = text.find_first_not_of(" \t\r\n");
   if (first == std::string_view::npos || text[first] != '{')
     throw input_error(options.file, "", "neither an HDF5 file nor a JSON split manifest",

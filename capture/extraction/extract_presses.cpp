@@ -71,7 +71,6 @@ cv::Mat load_reference(const std::string& path) {
   return image;
 }
 
-
 SourceDetection detection_of(const std::string& path, const SourceScores& scores, int presses) {
   const ContactReference& c = *scores.contact;
   SourceDetection d{path,      scores.reference_note, reference_kind_name(scores.reference_kind), presses, c.noise(),

@@ -51,6 +51,10 @@ bool acts_on_text(char32_t u, bool keep_newlines) {
          (u >= 0xe0000 && u <= 0xe007f);
 }
 
+std::string_view without_byte_order_mark(std::string_view text) {
+  return text.starts_with("\xEF\xBB\xBF") ? text.substr(3) : text;
+}
+
 std::string printable(std::string_view text, bool keep_newlines) {
   static constexpr char kHex[] = "0123456789abcdef";
   std::string out;

@@ -32,6 +32,10 @@ bool acts_on_text(char32_t u, bool keep_newlines = false);
 // and before they are written into a report.
 std::string printable(std::string_view text, bool keep_newlines = false);
 
+// text without a leading UTF-8 byte order mark, which spreadsheets and some editors write before
+// CSV and JSON (nlohmann's parser skips it too).
+std::string_view without_byte_order_mark(std::string_view text);
+
 // Throws haptex::Error (bad input) naming file, what (e.g. "the material name") and the byte
 // offset when text is not UTF-8, or holds a NUL (which HDF5 and C strings would cut the name at).
 void require_utf8(std::string_view text, const std::string& file, const std::string& what);
