@@ -3,7 +3,6 @@
 #include <charconv>
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <set>
 #include <sstream>
 
 #include "convert/input_limits.hpp"
@@ -45,11 +44,7 @@ std::string names_text(const std::string& path) {
 }
 
 std::map<int, std::string> from_json(const std::string& path) {
-  // A key given twice is refused, as the CSV form refuses an id given twice (a JSON parser keeps the last).
-  std::set<std::string> keys;
-  const nlohmann::json doc = json::parse_text(names_text(path), path, [&](const std::string& key) {
-    if (!keys.insert(key).second) throw input_error(path, "/" + key, "the key is given twice", "Name each texture once");
-  });
+  const nlohmann::json doc = json::parse_text(names_text(path), path);  // refuses a key given twice
   if (!doc.is_object()) throw input_error(path, "/", "the file is not a JSON object", kFix);
   std::map<int, std::string> names;
   for (const auto& [key, value] : doc.items()) {

@@ -6,6 +6,8 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
+#include <vector>
 #include <nlohmann/json.hpp>
 #include <valijson/adapters/nlohmann_json_adapter.hpp>
 #include <valijson/schema.hpp>
@@ -61,13 +63,55 @@ std::string nul_at(const nlohmann::json& doc, const std::string& pointer) {
   return "";
 }
 
+// Where the parser is: one level per open object or array, so that a key given twice is named by
+// its JSON pointer (nlohmann keeps the last of two equal keys without a word).
+class OpenLevels {
+ public:
+  void open(bool array) { levels_.push_back({array, {}, {}, 0}); }
+  void close() {
+    levels_.pop_back();
+    finished_value();
+  }
+  void finished_value() {
+    if (!levels_.empty() && levels_.back().array) ++levels_.back().index;
+  }
+  // Throws when the innermost object already has `key`.
+  void key(const std::string& key, const std::string& file) {
+    Level& level = levels_.back();
+    if (!level.keys.insert(key).second)
+      throw input_error(file, pointer() + "/" + key, "the key is given twice",
+                        "Give each key once: a JSON reader keeps only one of the two, and which one differs between readers");
+    level.key = key;
+  }
+
+ private:
+  struct Level {
+    bool array;
+    std::set<std::string> keys;
+    std::string key;
+    std::size_t index;
+  };
+  std::string pointer() const {
+    std::string at;
+    for (std::size_t i = 0; i + 1 < levels_.size(); ++i)
+      at += "/" + (levels_[i].array ? std::to_string(levels_[i].index) : levels_[i].key);
+    return at;
+  }
+  std::vector<Level> levels_;
+};
+
 }  // namespace
 
-nlohmann::json parse_text(std::string_view text, const std::string& file, const std::function<void(const std::string& key)>& on_key) {
-  const auto check = [&](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+nlohmann::json parse_text(std::string_view text, const std::string& file) {
+  using Event = nlohmann::json::parse_event_t;
+  OpenLevels levels;
+  const auto check = [&](int depth, Event event, nlohmann::json& parsed) {
     if (depth > kDeepestJson)
       throw input_error(file, "", "nests deeper than " + std::to_string(kDeepestJson) + " levels", "No haptex document nests so deep: give the right file");
-    if (event == nlohmann::json::parse_event_t::key && depth == 1 && on_key) on_key(parsed.get<std::string>());
+    if (event == Event::object_start || event == Event::array_start) levels.open(event == Event::array_start);
+    if (event == Event::object_end || event == Event::array_end) levels.close();
+    if (event == Event::key) levels.key(parsed.get<std::string>(), file);
+    if (event == Event::value) levels.finished_value();
     return true;
   };
   try {

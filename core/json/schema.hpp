@@ -4,7 +4,6 @@
 
 #include <string>
 #include <cstdint>
-#include <functional>
 #include <string_view>
 
 #include "core/durable_file.hpp"
@@ -18,12 +17,11 @@ nlohmann::json read_file(const std::string& path);
 // document. Throws haptex::Error (bad_input) naming `file`: not JSON (the byte), a number beyond
 // 64-bit floats ("1e400"), nesting deeper than kDeepestJson levels (a validator walking it would
 // run out of stack; no haptex document nests past 6), or a NUL character in a key or a string (C
-// strings downstream would cut it off). `on_key`, when given, sees every key of the top-level object
-// (the names reader refuses one given twice: the parser keeps the last).
+// strings downstream would cut it off), or a key given twice in one object (the parser would keep
+// the last without a word; the error names its JSON pointer).
 inline constexpr int kDeepestJson = 64;
 inline constexpr std::uintmax_t kLargestJsonBytes = 64u << 20;  // read_file refuses a larger file
-nlohmann::json parse_text(std::string_view text, const std::string& file,
-                          const std::function<void(const std::string& key)>& on_key = {});
+nlohmann::json parse_text(std::string_view text, const std::string& file);
 
 // The checks before writing a JSON document of `format` ("split/1") at path: check_output_path, and
 // with overwrite an existing file is replaced only when it is a JSON file (of at most 64 MiB) whose

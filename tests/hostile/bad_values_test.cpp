@@ -225,6 +225,21 @@ TEST(BadValues, ANulInAManifestNameIsRefused) {
                  {"/materials/0/name", "NUL"});
 }
 
+// A key given twice was kept as the last one without a word, in every JSON reader (issue 32, reviews 5
+// and 6): the CSV forms refuse a column given twice, and readers differ in which of the two they keep.
+TEST(BadValues, AJsonKeyGivenTwiceIsRefusedWhereItIs) {
+  const TempDir d;
+  std::string text = read_json(small_pipeline().split).dump();
+  const std::size_t first_material = text.find("\"materials\":[{");
+  ASSERT_NE(first_material, std::string::npos);
+  text.insert(first_material + std::string("\"materials\":[{").size(), "\"name\":\"Other\",");
+  std::ofstream(d.file("twice.json")) << text;
+  expect_refusal(run_haptex({"qa", d.file("twice.json")}), {d.file("twice.json"), "/materials/0/name", "given twice"});
+  expect_refusal(run_haptex({"windows", small_pipeline().dataset, "--split", d.file("twice.json"), "-o", d.file("w.h5")}),
+                 {"/materials/0/name", "given twice"});
+  EXPECT_FALSE(std::filesystem::exists(d.file("w.h5")));
+}
+
 TEST(BadValues, InfoShowsControlCharactersEscaped) {
   const TempDir d;
   const std::string dataset = d.file("d.h5");
