@@ -33,18 +33,18 @@ void check_count(const XmlFile& r, pugi::xml_node count_node, std::size_t declar
 
 void read_header(const XmlFile& r, pugi::xml_node root, ar::ModelSet& set) {
   if (auto texture = r.integer_attribute(root, "texture")) set.texture = int(*texture);
-  set.material = root.child_value("material");
-  if (root.child("AccelUnits")) set.accel_units = root.child_value("AccelUnits");
-  if (root.child("SpeedUnits")) set.speed_units = root.child_value("SpeedUnits");
-  if (root.child("ForceUnits")) set.force_units = root.child_value("ForceUnits");
+  set.material = r.text(r.child(root, "material"));
+  if (auto units = r.child(root, "AccelUnits")) set.accel_units = r.text(units);
+  if (auto units = r.child(root, "SpeedUnits")) set.speed_units = r.text(units);
+  if (auto units = r.child(root, "ForceUnits")) set.force_units = r.text(units);
   set.sample_rate_hz = number_child(r, root, "SampleRate");
   if (!(set.sample_rate_hz > 0.0))
-    throw r.error(root.child("SampleRate"), "the sample rate must be positive", "Write the rate in Hz");
+    throw r.error(r.child(root, "SampleRate"), "the sample rate must be positive", "Write the rate in Hz");
   set.mu = number_child(r, root, "mu");
   set.max_speed = number_child(r, root, "maxSpeed");
   set.max_force = number_child(r, root, "maxForce");
   set.num_ar_coeff = int(count_child(r, root, "numARCoeff"));
-  if (root.child("numMACoeff")) set.num_ma_coeff = int(count_child(r, root, "numMACoeff"));
+  if (r.child(root, "numMACoeff")) set.num_ma_coeff = int(count_child(r, root, "numMACoeff"));
 }
 
 void read_vertices(const XmlFile& r, pugi::xml_node root, std::size_t num_mod, ar::ModelSet& set) {
@@ -52,7 +52,7 @@ void read_vertices(const XmlFile& r, pugi::xml_node root, std::size_t num_mod, a
   const pugi::xml_node forces = require(r, root, "forceList");
   set.speed_list = r.values(speeds, "value");
   set.force_list = r.values(forces, "value");
-  const pugi::xml_node count_node = root.child("numMod");
+  const pugi::xml_node count_node = r.child(root, "numMod");
   check_count(r, count_node, num_mod, set.speed_list.size(), "<value> elements in <speedList>");
   check_count(r, count_node, num_mod, set.force_list.size(), "<value> elements in <forceList>");
 }
@@ -72,12 +72,12 @@ void read_triangles(const XmlFile& r, pugi::xml_node root, std::size_t num_mod, 
     if (n != 3) throw r.error(tri, "a triangle has " + std::to_string(n) + " vertices", "List exactly 3 model indices");
     set.triangles.push_back(vertex);
   }
-  check_count(r, root.child("numTri"), count_child(r, root, "numTri"), set.triangles.size(), "<tri> elements");
+  check_count(r, r.child(root, "numTri"), count_child(r, root, "numTri"), set.triangles.size(), "<tri> elements");
 }
 
 ar::ArModel read_model(const XmlFile& r, pugi::xml_node node, std::size_t order) {
   ar::ArModel m;
-  if (node.child("modNum")) m.number = int(r.integer(node.child("modNum")));
+  if (auto number = r.child(node, "modNum")) m.number = int(r.integer(number));
   const pugi::xml_node coeff = require(r, node, "ARcoeff");
   const pugi::xml_node lsf = require(r, node, "ARlsf");
   m.ar_coeff = r.values(coeff, "value");
@@ -88,10 +88,10 @@ ar::ArModel read_model(const XmlFile& r, pugi::xml_node node, std::size_t order)
   if (m.ar_coeff.size() != order + 1)
     throw r.error(coeff, "has " + std::to_string(m.ar_coeff.size()) + " values but numARCoeff + 1 is " + std::to_string(order + 1),
                   "Give the leading 1 and numARCoeff coefficients");
-  if (node.child("MAcoeff")) m.ma_coeff = r.values(node.child("MAcoeff"), "value");
-  if (node.child("MAlsf")) m.ma_lsf = r.values(node.child("MAlsf"), "value");
+  if (auto ma = r.child(node, "MAcoeff")) m.ma_coeff = r.values(ma, "value");
+  if (auto ma = r.child(node, "MAlsf")) m.ma_lsf = r.values(ma, "value");
   m.variance = number_child(r, node, "var");
-  if (node.child("gain")) m.gain = r.number(node.child("gain"));
+  if (auto gain = r.child(node, "gain")) m.gain = r.number(gain);
   m.speed = number_child(r, node, "speedMod");
   m.force = number_child(r, node, "forceMod");
   return m;
@@ -109,7 +109,7 @@ ar::ModelSet read_model_set(const XmlFile& r) {
   read_triangles(r, root, num_mod, set);
   for (pugi::xml_node m = root.child("model"); m; m = m.next_sibling("model"))
     set.models.push_back(read_model(r, m, std::size_t(set.num_ar_coeff)));
-  check_count(r, root.child("numMod"), num_mod, set.models.size(), "<model> elements");
+  check_count(r, r.child(root, "numMod"), num_mod, set.models.size(), "<model> elements");
   return set;
 }
 

@@ -15,7 +15,7 @@ namespace {
 void read_identity(const XmlFile& xml, const pugi::xml_node& root, const FieldMap& map, Recording& recording) {
   const pugi::xml_node material =
       xml.require(root, map.material, "Add <" + map.material + ">surface name</" + map.material + ">");
-  recording.material = std::string(trim(material.child_value()));
+  recording.material = xml.text(material);
   text::require_utf8(recording.material, xml.source(), xml.where(material));
   if (recording.material.empty())
     throw xml.error(material, "the material name is empty",
@@ -44,7 +44,7 @@ Recording read_hatt_recording_xml(const std::string& path, const FieldMap& map, 
 
   std::map<std::string, pugi::xml_node> channel_nodes;
   for (const auto& [channel, element] : map.channels) {
-    const pugi::xml_node array = root.child(element.c_str());
+    const pugi::xml_node array = xml.child(root, element);
     if (!array && !is_required_channel(channel)) continue;
     if (!array)
       throw xml.error(root, "channel <" + element + "> (" + channel + ") is missing",
@@ -53,8 +53,8 @@ Recording read_hatt_recording_xml(const std::string& path, const FieldMap& map, 
     channel_nodes[channel] = array;
   }
   for (const auto& [quantity, element] : map.units) {
-    const pugi::xml_node node = root.child(element.c_str());
-    if (node) apply_units(recording, quantity, std::string(trim(node.child_value())), xml.where(node));
+    const pugi::xml_node node = xml.child(root, element);
+    if (node) apply_units(recording, quantity, xml.text(node), xml.where(node));
     else recording.units[quantity] = kExpectedUnits.at(quantity);  // the format's documented default
   }
   const auto where = [&](const std::string& channel) {

@@ -60,7 +60,7 @@ XmlFile::XmlFile(std::string source, std::vector<char> bytes, std::string sha256
                       "a character reference to NUL (&#0;), which XML does not allow and no name may hold",
                       "Remove it from the file");
   // Minimal parsing keeps the <value> text in place; the doctype node is kept only so it can be refused.
-  const unsigned flags = pugi::parse_minimal | pugi::parse_escapes | pugi::parse_doctype;
+  const unsigned flags = pugi::parse_minimal | pugi::parse_escapes | pugi::parse_doctype | pugi::parse_cdata;
   const pugi::xml_parse_result result = doc_.load_buffer_inplace(bytes_.data(), bytes_.size(), flags);
   if (!result)
     throw input_error(source_, "line " + std::to_string(line_of(result.offset)),
@@ -74,6 +74,10 @@ XmlFile::XmlFile(std::string source, std::vector<char> bytes, std::string sha256
                         "the file has a DTD or entity declaration (<!DOCTYPE ...>)",
                         "haptex refuses DTDs and never expands entities; remove the <!DOCTYPE> block");
   if (!root()) throw input_error(source_, "", "the file has no document element", "Give an XML file with content");
+  // XML has one document element; pugixml would read a second one and every lookup would skip it.
+  for (pugi::xml_node node = root().next_sibling(); node; node = node.next_sibling())
+    if (node.type() == pugi::node_element)
+      throw error(node, "is a second document element after " + where(root()), "An XML file holds one document: give each its own file");
 }
 
 std::size_t XmlFile::line_of(std::ptrdiff_t offset) const {
@@ -91,10 +95,28 @@ Error XmlFile::error(const pugi::xml_node& node, const std::string& what, const 
   return input_error(source_, where(node), what, fix);
 }
 
+pugi::xml_node XmlFile::child(const pugi::xml_node& parent, const std::string& name) const {
+  const pugi::xml_node first = parent.child(name.c_str());
+  if (const pugi::xml_node second = first.next_sibling(name.c_str()))
+    throw error(second, "is the second <" + name + "> in <" + parent.name() + "> (the first is " + where(first) + ")",
+                "Keep one: haptex cannot know which of the two holds the data");
+  return first;
+}
+
 pugi::xml_node XmlFile::require(const pugi::xml_node& parent, const std::string& name, const std::string& fix) const {
-  pugi::xml_node child = parent.child(name.c_str());
-  if (!child) throw error(parent, "element <" + name + "> is missing", fix);
-  return child;
+  pugi::xml_node only = child(parent, name);
+  if (!only) throw error(parent, "element <" + name + "> is missing", fix);
+  return only;
+}
+
+std::string XmlFile::text(const pugi::xml_node& node) const {
+  std::string text;
+  for (const pugi::xml_node& part : node.children()) {
+    if (part.type() == pugi::node_element)
+      throw error(node, "holds element <" + std::string(part.name()) + ">, where text is expected", "Write the text alone");
+    if (part.type() == pugi::node_pcdata || part.type() == pugi::node_cdata) text += part.value();
+  }
+  return std::string(trim(text));
 }
 
 double XmlFile::number(const pugi::xml_node& node) const {

@@ -26,8 +26,13 @@ class XmlFile {
   // "<name> at line N"
   std::string where(const pugi::xml_node& node) const;
   Error error(const pugi::xml_node& node, const std::string& what, const std::string& fix) const;
-  // The child, or an error at the parent saying it is missing, with the fix.
+  // The one child called `name` (null when there is none), or an error when there are two: which of
+  // them holds the data is not knowable, so neither is taken.
+  pugi::xml_node child(const pugi::xml_node& parent, const std::string& name) const;
+  // The one child, or an error at the parent saying it is missing, with the fix.
   pugi::xml_node require(const pugi::xml_node& parent, const std::string& name, const std::string& fix) const;
+  // The node's text, CDATA sections included, trimmed; an error when it holds an element.
+  std::string text(const pugi::xml_node& node) const;
   // The node's text as a finite number / an integer, or an error at the node.
   double number(const pugi::xml_node& node) const;
   long integer(const pugi::xml_node& node) const;

@@ -11,6 +11,7 @@
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/mutations.hpp"
 #include "tests/support/quick_models.hpp"
+#include "tests/support/sample_recording.hpp"
 #include "tests/support/small_pipeline.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "tests/support/wav_file.hpp"
@@ -272,6 +273,39 @@ TEST(BadValues, ANulCharacterReferenceInXmlIsRefused) {
   ASSERT_EQ(made.exit_code, 0) << made.err;
   expect_refusal(run_haptex({"convert", "hatt", d.file("nul_1.xml"), "-o", d.file("r.h5")}), {d.file("nul_1.xml"), "line ", "&#0;"});
   EXPECT_FALSE(fs::exists(d.file("r.h5")));
+}
+
+// Reviews 5 and 6: a second <material> or <speed> element was skipped without a word (which one holds
+// the data is not knowable), so was a second document element, and a CDATA name read as empty.
+TEST(BadValues, AnXmlElementGivenTwiceIsRefusedAndCdataIsText) {
+  const TempDir d;
+  test::SampleRecordingSpec spec;
+  spec.seconds = 0.5;
+  const std::string xml = test::sample_recording_xml(spec);
+  const auto write = [&](const std::string& name, const std::string& text) {
+    test::write_text_file(d.file(name), text);
+    return d.file(name);
+  };
+  const auto with = [&](const std::string& before, const std::string& after) {
+    std::string text = xml;
+    const std::size_t at = text.find(before);
+    EXPECT_NE(at, std::string::npos) << before;
+    return text.replace(at, before.size(), after);
+  };
+  const std::string speed = xml.substr(xml.find("<speed"), xml.find("</speed>") + 8 - xml.find("<speed"));
+  const std::string two_speeds = write("speed_1.xml", with(speed, speed + "\n" + speed));
+  expect_refusal(run_haptex({"convert", "hatt", two_speeds, "-o", d.file("r.h5")}), {two_speeds, "second <speed>", "line "});
+  const std::string two_names = write("name_1.xml", with("<material>", "<material>Cork</material>\n<material>"));
+  expect_refusal(run_haptex({"convert", "hatt", two_names, "-o", d.file("r.h5")}), {two_names, "second <material>"});
+  const std::string two_documents = write("doc_1.xml", xml + "\n" + xml.substr(xml.find("<recordedData")));
+  expect_refusal(run_haptex({"convert", "hatt", two_documents, "-o", d.file("r.h5")}), {two_documents, "second document element"});
+  EXPECT_FALSE(fs::exists(d.file("r.h5")));
+
+  const std::string name = spec.material;
+  const std::string cdata = write("cdata_1.xml", with("<material>" + name + "</material>", "<material><![CDATA[" + name + "]]></material>"));
+  const CommandResult converted = run_haptex({"convert", "hatt", cdata, "-o", d.file("r.h5")});
+  ASSERT_EQ(converted.exit_code, 0) << converted.err;
+  EXPECT_NE(run_haptex({"info", d.file("r.h5")}).out.find(name), std::string::npos);
 }
 
 // Review 4, #7: evaluate wrote a material name's ESC and BEL into report.md and every CSV, so `cat
