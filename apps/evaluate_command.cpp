@@ -64,6 +64,10 @@ class EvaluateCommand : public Command {
       options_.reconstruct = render::parse_reconstruction(reconstruct_);
     if (options_.baseline == evaluate::Baseline::hatt_published && options_.hatt_models.empty())
       throw Error(Error::Kind::bad_input, "evaluate: --baseline hatt-published needs --hatt-models DIR (the toolkit's Models_*.xml)");
+    if (options_.baseline != evaluate::Baseline::hatt_published && !options_.hatt_models.empty())
+      throw Error(Error::Kind::bad_input,
+                  "evaluate: --hatt-models is read only by --baseline hatt-published (the baseline now is ar-refit, fitted "
+                  "from train+val); add --baseline hatt-published, or drop --hatt-models");
     for (const std::string& argument : predictions_) options_.predictions.push_back(evaluate::parse_predictions_argument(argument));
     std::vector<std::string> inputs = models_;
     for (const evaluate::PredictionsInput& p : options_.predictions) inputs.push_back(p.path);

@@ -150,6 +150,12 @@ TEST(EvaluateCli, PublishedBaselineNeedsItsFolderAndAMatchingModelFile) {
   EXPECT_NE(none.err.find(dir.file("models")), std::string::npos) << none.err;
   EXPECT_FALSE(fs::exists(dir.file("report")));
   EXPECT_TRUE(temporaries_of(dir.file("report")).empty());
+  // Review 5: --hatt-models without that baseline was passed over, and the report compared with the refit.
+  const CommandResult unread = run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", models().unified,
+                                           "--hatt-models", dir.file("models"), "-o", dir.file("report")});
+  EXPECT_EQ(unread.exit_code, 2);
+  EXPECT_NE(unread.err.find("--baseline hatt-published"), std::string::npos) << unread.err;
+  EXPECT_FALSE(fs::exists(dir.file("report")));
 }
 
 }  // namespace
