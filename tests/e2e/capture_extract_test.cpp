@@ -77,6 +77,20 @@ TEST_F(ExtractCli, JsonListsEveryPress) {
   EXPECT_FALSE(fs::exists(dir_.file("gelsight_sheets")));
 }
 
+// Review 5: --frames-per-press 5 wrote a file that qa (and so align and merge) refused, the layout
+// saying 12 frames.
+TEST_F(ExtractCli, AnyFramesPerPressGivesAFileOfTheLayout) {
+  const CommandResult r = run_haptex({"capture", "extract", dir_.file("gelsight/Cork"), "-o", out(), "--no-sheets", "--frames-per-press", "5"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const CommandResult qa = run_haptex({"qa", out()});  // 2 presses: too few to split, so qa's verdict is "errors"
+  EXPECT_TRUE(std::regex_search(qa.out, std::regex("layout.shape +error +pass"))) << qa.out;
+  EXPECT_TRUE(std::regex_search(qa.out, std::regex("gelsight.frame_numbers +error +pass"))) << qa.out;
+  if (!python_has("h5py")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const CommandResult shape = run_python({"-c", "import h5py,sys; g=h5py.File(sys.argv[1])['materials/cork/presses/1']; "
+                                          "print(g['frames'].shape, g['frame_indices'].shape)", out()});
+  EXPECT_EQ(shape.out, "(5,) (5,)\n") << shape.err;
+}
+
 TEST_F(ExtractCli, H5pyReadsTheDocumentedLayout) {
   if (!python_has("h5py"))
     GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
