@@ -89,9 +89,9 @@ class RenderCommand : public Command {
     wav.title = texture_.material.empty() ? texture_.image : texture_.material;
     wav.source = global.command_line + ", " + method(options);
     // Both outputs are written, then both committed: a full disk never leaves a WAV without its CSV.
-    PartialFile wav_file(output_, force_);
+    PartialFile wav_file(output_, force_, [](const std::string& p) { render::check_wav_output(p, true); });
     std::optional<PartialFile> csv_file;
-    if (!csv_.empty()) csv_file.emplace(csv_, force_);
+    if (!csv_.empty()) csv_file.emplace(csv_, force_, [](const std::string& p) { render::check_vibration_csv_output(p, true); });
     const render::WavSummary written = render::write_wav(wav_file, rendering.signal, wav);
     if (csv_file) write_text(*csv_file, render::vibration_csv_text(trajectory, rendering.signal));
     commit_together({&wav_file, csv_file ? &*csv_file : nullptr});

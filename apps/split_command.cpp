@@ -62,7 +62,7 @@ class SplitCommand : public Command {
     // The manifest and its plots appear together or not at all (a full disk while writing either, a
     // folder appearing at the plots' name). --force --no-plots: plots an earlier split wrote describe
     // the manifest replaced, so they go too; a folder of that name holding anything else stays.
-    PartialFile manifest_file(output_, force_);
+    PartialFile manifest_file(output_, force_, [](const std::string& p) { json::check_replaceable_json(p, true, split::kManifestFormat); });
     json::write_file(manifest, "split.schema.json", manifest_file);
     EarlierOutput earlier_plots(plots_folder(), [](const std::string& dir) { return is_haptex_folder(dir, "haptex split"); });
     commit_together({&manifest_file, plots_dir ? &*plots_dir : nullptr, !plots_dir && force_ ? &earlier_plots : nullptr});

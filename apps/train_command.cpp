@@ -103,8 +103,7 @@ class TrainCommand : public Command {
                                 {"split", {{"path", input_.split}, {"sha256", split.manifest_sha256}}},
                                 {"options", options_.to_json()}, {"epochs", epochs}, {"metrics", model.metrics},
                                 {"parameters", parameters(model)}, {"seconds", seconds}};
-    json::check_replaceable_json(log_, force_, predict::kTrainingLogFormat);  // again: a file may have appeared there meanwhile
-    PartialFile log_file(log_, force_);
+    PartialFile log_file(log_, force_, [](const std::string& p) { json::check_replaceable_json(p, true, predict::kTrainingLogFormat); });
     json::write_file(log, "training-log.schema.json", log_file);
     // --force with --log elsewhere: the log beside the model it replaces describes that model, so it goes too.
     EarlierOutput earlier_log(default_log(), [this](const std::string& path) { return describes_this_model(path); });

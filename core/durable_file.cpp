@@ -79,7 +79,8 @@ void durable_rename(const std::string& from, const std::string& to, bool replace
   fsync_path(directory_of(to), O_RDONLY | O_DIRECTORY);
 }
 
-PartialFile::PartialFile(const std::string& final_path, bool replace) : final_path_(final_path), replace_(replace) {
+PartialFile::PartialFile(const std::string& final_path, bool replace, ReplaceableCheck still_replaceable)
+    : final_path_(final_path), still_replaceable_(std::move(still_replaceable)), replace_(replace) {
   Temporary t = create_temporary_file(final_path);
   path_ = std::move(t.path);
   fd_ = t.fd;
@@ -109,6 +110,7 @@ void PartialFile::check_place() const {
   if (replace_ && fs::exists(status) && !fs::is_regular_file(status))
     throw input_error(final_path_, "", "is no longer a file (a folder or a link took its place while this run wrote), and is kept",
                       "Move it away and run again, or choose another output name");
+  if (replace_ && fs::exists(status) && still_replaceable_) still_replaceable_(final_path_);
 }
 
 void PartialFile::put_in_place() {
@@ -173,8 +175,9 @@ void write_text(PartialFile& out, std::string_view text) {
   write_all(out.fd_, text, out.final_path());
 }
 
-void write_file_durably(const std::string& path, std::string_view text, bool replace) {
-  PartialFile partial(path, replace);
+void write_file_durably(const std::string& path, std::string_view text, bool replace,
+                        PartialFile::ReplaceableCheck still_replaceable) {
+  PartialFile partial(path, replace, std::move(still_replaceable));
   write_text(partial, text);
   partial.commit();
 }

@@ -2,6 +2,7 @@
 // The file-system half of haptex's atomic writes (docs/architecture.md, "Outputs are atomic"): every
 // output is written to a temporary name beside it (core/temporary_name.hpp), synced, and renamed, so a
 // crash never leaves a half file under the final name.
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -34,8 +35,11 @@ class PartialFile : public StagedOutput {
  public:
   // Throws bad_input: unwritable, or locked by another run. `replace`: --force was given, so a file at
   // the final name (checked as haptex's before the work) is replaced; without it nothing that exists
-  // there when the file is renamed is ever replaced.
-  PartialFile(const std::string& final_path, bool replace);
+  // there when the file is renamed is ever replaced. `still_replaceable`, with replace, checks that
+  // file again just before the swap (check_replaceable_output, json::check_replaceable_json), so one
+  // of the user's that took its place meanwhile is kept.
+  using ReplaceableCheck = std::function<void(const std::string& final_path)>;
+  PartialFile(const std::string& final_path, bool replace, ReplaceableCheck still_replaceable = {});
   ~PartialFile() override;                               // removes the file unless kept
   PartialFile(const PartialFile&) = delete;
   PartialFile& operator=(const PartialFile&) = delete;
@@ -60,6 +64,7 @@ class PartialFile : public StagedOutput {
   friend void write_text(PartialFile& out, std::string_view text);
   std::string final_path_, path_;
   int fd_ = -1;
+  ReplaceableCheck still_replaceable_;
   bool replace_ = false, finished_ = false, committed_ = false;
   // Renamed; swapped with an earlier file, now at path_; or replaced it at once (no RENAME_EXCHANGE).
   bool placed_ = false, exchanged_ = false, replaced_ = false;
@@ -76,6 +81,7 @@ void write_text(PartialFile& out, std::string_view text);
 
 // The whole of `text` as a new file at path, through PartialFile: the final name appears only once
 // everything is written and synced. Throws haptex::Error (failed) naming the file when writing fails.
-void write_file_durably(const std::string& path, std::string_view text, bool replace);
+void write_file_durably(const std::string& path, std::string_view text, bool replace,
+                        PartialFile::ReplaceableCheck still_replaceable = {});
 
 }  // namespace haptex

@@ -129,7 +129,8 @@ std::string vibration_csv_text(const predict::Trajectory& trajectory, std::span<
 void write_vibration_csv(const std::string& path, const predict::Trajectory& trajectory, std::span<const double> signal,
                          bool overwrite) {
   check_vibration_csv_output(path, overwrite);
-  write_file_durably(path, vibration_csv_text(trajectory, signal), overwrite);
+  write_file_durably(path, vibration_csv_text(trajectory, signal), overwrite,
+                     [](const std::string& p) { check_vibration_csv_output(p, true); });
 }
 
 bool is_vibration_csv(const std::string& path) {

@@ -75,7 +75,7 @@ void check_wav_output(const std::string& path, bool overwrite) {
 
 WavSummary write_wav(const std::string& path, std::span<const double> signal_m_s2, const WavOptions& options) {
   check_wav_output(path, options.overwrite);
-  PartialFile partial(path, options.overwrite);
+  PartialFile partial(path, options.overwrite, [](const std::string& p) { check_wav_output(p, true); });
   const WavSummary summary = write_wav(partial, signal_m_s2, options);
   partial.commit();
   return summary;

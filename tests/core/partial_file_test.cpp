@@ -51,5 +51,38 @@ TEST(PartialFile, WithForceTheFileIsReplacedAndWithoutOneANewFileAppears) {
   EXPECT_TRUE(temporaries_of(fresh).empty());
 }
 
+// Review 5: --force checked a JSON, WAV or CSV output as haptex's before the work only, so a user's
+// file that took its place while the run wrote was replaced.
+TEST(PartialFile, WithForceAFileThatIsNoLongerHaptexsIsKept) {
+  const test::TempDir dir;
+  const std::string out = dir.file("s.json");
+  std::ofstream(out) << "{\"format\": \"split/1\"}";
+  const auto still_haptexs = [](const std::string& path) {
+    if (test::file_text(path).find("split/1") == std::string::npos)
+      throw input_error(path, "", "--force replaces only a split manifest, and this file is not one", "Move it away");
+  };
+  {
+    PartialFile partial(out, true, still_haptexs);
+    write_text(partial, "new");
+    std::ofstream(out) << "the user's thesis";  // takes the place of haptex's file while the run writes
+    try {
+      partial.commit();
+      ADD_FAILURE() << "the user's file was replaced";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+      EXPECT_NE(std::string(e.what()).find("this file is not one"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(test::file_text(out), "the user's thesis");
+  EXPECT_TRUE(temporaries_of(out).empty());
+  {
+    std::ofstream(out) << "{\"format\": \"split/1\"}";
+    PartialFile partial(out, true, still_haptexs);
+    write_text(partial, "new");
+    partial.commit();
+  }
+  EXPECT_EQ(test::file_text(out), "new");
+}
+
 }  // namespace
 }  // namespace haptex

@@ -6,8 +6,13 @@
 #include <filesystem>
 #include <functional>
 #include <fstream>
+#include <thread>
+#include <chrono>
+#include <csignal>
+#include <sys/wait.h>
 
 #include "core/sha256.hpp"
+#include "core/temporary_name.hpp"
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/mutations.hpp"
 #include "tests/support/quick_models.hpp"
@@ -279,6 +284,60 @@ TEST(Force, OnlyAnEarlierOutputOfTheSameKindIsReplaced) {
     expect_refusal(run_haptex({"merge", p.recordings, "-o", odd, "--force"}), {odd, "is a " + mark + " file", "same kind"});
     EXPECT_EQ(file_bytes(odd), before);
   }
+}
+
+// Review 5: --force checked an earlier training log as haptex's before the training only; a file of
+// the user's that took its place meanwhile was replaced at the end. It is checked again at the swap.
+TEST(Force, AFileThatTakesTheOutputsPlaceDuringTheRunIsKept) {
+  const TempDir d;
+  const std::string model = d.file("m.h5"), log = d.file("m.training.json"), progress = d.file("progress.txt");
+  std::vector<std::string> args = {"train", small_pipeline().dataset, "--split", small_pipeline().split, "-o", model,
+                                   "--epochs", "100", "--latent", "8", "--hidden", "16", "-v"};
+  ASSERT_EQ(run_haptex(args).exit_code, 0);  // haptex's model and log, which --force may replace
+  const std::string earlier_model = file_bytes(model);
+  args.push_back("--force");
+  const int pid = start_haptex(args, "/dev/null", progress);
+  while (file_bytes(progress).find("epoch") == std::string::npos && file_bytes(progress).find("error") == std::string::npos)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  std::ofstream(log) << "the user's notes";  // the training has dozens of epochs to go
+  const int status = wait_for(pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2) << file_bytes(progress);
+  EXPECT_NE(file_bytes(progress).find(log + ": --force replaces only"), std::string::npos) << file_bytes(progress);
+  EXPECT_EQ(file_bytes(log), "the user's notes");
+  EXPECT_EQ(file_bytes(model), earlier_model);  // the model appears with its log or not at all
+  EXPECT_TRUE(partial_files(d.path().string()).empty());
+}
+
+// Review 5: split --force checked its earlier manifest as haptex's before the work only, so a file of
+// the user's that took its place while the run wrote was replaced. The run is stopped while its plot
+// folder is still a temporary (so the manifest is not yet in place), the file is swapped, and it goes on.
+TEST(Force, SplitKeepsAFileThatTookTheManifestsPlaceDuringTheRun) {
+  const TempDir d;
+  const std::string manifest = d.file("s.json"), plots = d.file("s.plots"), err = d.file("err.txt");
+  const std::vector<std::string> args = {"split", small_pipeline().dataset, "-o", manifest, "--force"};
+  ASSERT_EQ(run_haptex(args).exit_code, 0);  // haptex's manifest, which --force may replace
+  bool swapped = false;
+  for (int attempt = 0; attempt < 20 && !swapped; ++attempt) {
+    const int pid = start_haptex(args, "/dev/null", err);
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (temporaries_of(plots).empty() && ::waitpid(pid, nullptr, WNOHANG) == 0 && std::chrono::steady_clock::now() < give_up) {
+    }
+    if (::kill(pid, SIGSTOP) == 0 && !temporaries_of(plots).empty()) {
+      std::ofstream(manifest) << "the user's notes";
+      swapped = true;
+    }
+    ::kill(pid, SIGCONT);
+    const int status = wait_for(pid);
+    if (!swapped) continue;  // the run finished before it was caught: again
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 2) << file_bytes(err);
+    EXPECT_NE(file_bytes(err).find(manifest + ": "), std::string::npos) << file_bytes(err);
+    EXPECT_EQ(file_bytes(manifest), "the user's notes");
+    EXPECT_TRUE(temporaries_of(plots).empty());
+    EXPECT_TRUE(temporaries_of(manifest).empty());
+  }
+  EXPECT_TRUE(swapped) << "no run of split was caught while it wrote";
 }
 
 TEST(Force, TrainRefusesALogThatIsTheModel) {
