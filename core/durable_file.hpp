@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "core/output_set.hpp"
+#include "core/temporary_name.hpp"
 
 namespace haptex {
 
@@ -46,6 +47,15 @@ class PartialFile : public StagedOutput {
 
   const std::string& path() const { return path_; }
   const std::string& final_path() const { return final_path_; }
+  // open(path()), for a library that opens the temporary by name (HDF5, libsndfile), run while the
+  // temporaries are held (hold_temporaries): a Ctrl-C then removes the file either before (and the
+  // run ends without opening it) or after the library holds it open, never in between, where the
+  // library would make it anew under the name and leave it behind.
+  template <class Open>
+  auto open_by_name(Open&& open) const {
+    const auto held = hold_temporaries();
+    return open(path_);
+  }
   // fsync (failed: a full disk), without renaming: outputs that appear together finish every one of
   // them before the first is renamed (core/output_set.hpp).
   void finish() override;

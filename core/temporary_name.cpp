@@ -105,13 +105,25 @@ sigset_t ending_signals() {
   return set;
 }
 
+// Removes a temporary while the run's other threads may still write into it. A file is unlinked:
+// whatever holds it open writes on into nothing (libraries that open it by name do so while the
+// temporaries are held: PartialFile::open_by_name). A folder is first renamed, so that a file made
+// in it by name from then on fails to find it; then removed, again if a file made just before the
+// rename kept it from going.
+bool remove_temporary(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(path, ec))) return fs::remove(path, ec);
+  std::string doomed = path;
+  doomed.replace(doomed.size() - kSuffix.size() - kRandomLetters, kRandomLetters, "REMOVING");  // still a temporary's name
+  if (::renameat2(AT_FDCWD, path.c_str(), AT_FDCWD, doomed.c_str(), RENAME_NOREPLACE) != 0) doomed = path;
+  for (int attempt = 0; attempt < 3 && fs::exists(fs::symlink_status(doomed, ec)); ++attempt) fs::remove_all(doomed, ec);
+  return !fs::exists(fs::symlink_status(doomed, ec));
+}
+
 [[noreturn]] void remove_listed_and_end(int signal) {
   listed_lock().lock();  // never released: nothing is made from here on
   std::size_t removed = 0;
-  for (const std::string& path : listed()) {
-    std::error_code ignored;
-    removed += fs::remove_all(path, ignored) > 0 ? 1 : 0;
-  }
+  for (const std::string& path : listed()) removed += remove_temporary(path) ? 1 : 0;
   std::fprintf(stderr, "haptex: %s: stopped; %zu unfinished output%s removed\n", strsignal(signal), removed,
                removed == 1 ? "" : "s");
   std::fflush(stderr);

@@ -105,7 +105,7 @@ WavSummary write_wav(PartialFile& out, std::span<const double> signal_m_s2, cons
   info.samplerate = kWavSampleRate;
   info.channels = 1;
   info.format = SF_FORMAT_WAV | SF_FORMAT_PCM_24;
-  std::unique_ptr<SNDFILE, SndfileCloser> file(sf_open(out.path().c_str(), SFM_WRITE, &info));
+  std::unique_ptr<SNDFILE, SndfileCloser> file(out.open_by_name([&](const std::string& path) { return sf_open(path.c_str(), SFM_WRITE, &info); }));
   if (!file)
     throw failure(path + ": cannot write it: " +
                   (errno == ENOSPC ? std::string("the disk is full") : std::string(sf_strerror(nullptr)) + " (" + out.path() + ")"));

@@ -35,7 +35,7 @@ AtomicFile::AtomicFile(std::string final_path, bool overwrite, const std::string
     : final_path_((checked(final_path, overwrite, format), std::move(final_path))),
       format_(format),
       partial_(final_path_, overwrite),
-      file_(File::create(partial_.path(), final_path_)) {}
+      file_(partial_.open_by_name([&](const std::string& path) { return File::create(path, final_path_); })) {}
 
 AtomicFile::~AtomicFile() {
   try {
