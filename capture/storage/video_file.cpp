@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <mutex>
 
+#include "capture/storage/avi_frame_rate.hpp"
 #include "core/error.hpp"
 
 namespace haptex::capture {
@@ -44,7 +45,8 @@ VideoProbe probe_video_file(const std::string& path) {
                       "Check it plays (ffprobe " + path + "); re-export it as FFV1 .mkv or MJPG .avi");
   VideoProbe probe;
   probe.size = first.size();
-  const double fps = video.get(cv::CAP_PROP_FPS);
+  // An AVI that states no rate is reported at FFmpeg's guess of 25 fps: its own headers decide.
+  const double fps = avi_frame_rate(path).value_or(video.get(cv::CAP_PROP_FPS));
   probe.fps = fps > 0 && fps < 1000 ? fps : 0.0;
   const auto fourcc = std::uint32_t(video.get(cv::CAP_PROP_FOURCC));
   probe.lossless = fourcc == 0;  // raw frames

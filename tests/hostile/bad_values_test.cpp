@@ -167,6 +167,33 @@ TEST(BadValues, ReplayRefusesAPressFileWithoutAFrameRate) {
   }
 }
 
+// Review 6, #9: an AVI whose headers state no frame rate was replayed at FFmpeg's guess of 25 fps,
+// and extraction stored that guess as the source's rate.
+TEST(BadValues, AnAviThatStatesNoFrameRateIsNotGivenOne) {
+  const TempDir d;
+  const fs::path synth = fs::path(small_pipeline().recordings).parent_path() / "synth" / "gelsight";
+  const std::string avi = d.file("no_rate.avi");
+  fs::copy_file(synth / "Woven 1" / "press_0.avi", avi);
+  std::string bytes = file_bytes(avi);
+  const std::size_t avih = bytes.find("avih"), strh = bytes.find("strh");
+  ASSERT_NE(avih, std::string::npos);
+  ASSERT_TRUE(strh != std::string::npos && bytes.compare(strh + 8, 4, "vids") == 0);
+  bytes.replace(avih + 8, 4, std::string(4, '\0'));   // dwMicroSecPerFrame
+  bytes.replace(strh + 8 + 24, 4, std::string(4, '\0'));  // dwRate
+  std::ofstream(avi, std::ios::binary) << bytes;
+  expect_refusal(run_haptex({"capture", "record", "--device", "replay:" + avi + ",lockstep", "--material", "Cork", "-o", d.file("r")}),
+                 {avi, "does not say its frame rate", "fps=N"});
+  EXPECT_FALSE(fs::exists(d.file("r")));
+  const CommandResult given = run_haptex({"capture", "record", "--device", "replay:" + avi + ",lockstep,fps=30", "--material", "Cork",
+                                          "-o", d.file("r")});
+  EXPECT_EQ(given.exit_code, 0) << given.err;
+  ASSERT_EQ(run_haptex({"capture", "extract", avi, "--material", "Cork", "-o", d.file("g.h5"), "--no-sheets"}).exit_code, 0);
+  if (!python_has("h5py")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const CommandResult stored = run_python({"-c", "import h5py,sys; print('fps' in h5py.File(sys.argv[1])['materials/cork/presses/0'].attrs)",
+                                           d.file("g.h5")});
+  EXPECT_EQ(stored.out, "False\n") << stored.err;  // the source states none (schemas/hdf5-layout.md)
+}
+
 TEST(BadValues, APredictCsvWithExtraFieldsOrTwoForceColumnsIsRefused) {
   const TempDir d;
   std::ofstream(d.file("extra.csv")) << "force,speed\n1,100\n1,100,7\n";
