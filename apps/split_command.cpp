@@ -16,6 +16,7 @@
 #include "core/output_is_input.hpp"
 #include "core/json/schema.hpp"
 #include "core/text/utf8.hpp"
+#include "evaluate/measures/summary_statistics.hpp"
 #include "split/split_manifest.hpp"
 #include "split/split_plots.hpp"
 #include "qa/sound_split.hpp"
@@ -82,7 +83,7 @@ class SplitCommand : public Command {
     for (const auto& s : splits) worst.push_back(s.worst());
     std::sort(worst.begin(), worst.end());
     std::cout << "wrote " << text::printable(output_) << ": " << splits.size() << " materials; worst-case coverage min "
-              << std::setprecision(3) << worst.front() << ", median " << worst[worst.size() / 2] << ", max " << worst.back() << "\n";
+              << std::setprecision(3) << worst.front() << ", median " << evaluate::percentile(worst, 50) << ", max " << worst.back() << "\n";
     for (const auto& s : splits)
       std::cout << "  " << std::left << std::setw(24) << s.id << std::right << " windows " << s.train_windows << "/"
                 << s.val_windows << "/" << s.test_windows << "  coverage val " << std::setprecision(3) << s.val_coverage
