@@ -146,9 +146,12 @@ class RenderCommand : public Command {
   void print_summary(const Report& r) const {
     const double seconds = double(r.wav.samples) / render::kWavSampleRate;
     const std::string sc = std::isnan(r.convergence_db) ? std::string("SC n/a (under 0.1 s)") : text::format("SC %.1f dB", r.convergence_db);
-    std::cout << text::format("wrote %s%s: %zu samples, %.3f s, peak %.4g m/s^2, full scale %.9g m/s^2 (24-bit PCM), %s, %s, %.3g s compute per s of vibration\n",
+    // Under a second, the start-up of the render outweighs the vibration: a rate per second would mislead.
+    const std::string compute = seconds >= 1 ? text::format("%.3g s compute per s of vibration", r.compute_per_second)
+                                             : text::format("%.3g s compute", r.compute_per_second * seconds);
+    std::cout << text::format("wrote %s%s: %zu samples, %.3f s, peak %.4g m/s^2, full scale %.9g m/s^2 (24-bit PCM), %s, %s, %s\n",
                 text::printable(output_).c_str(), csv_.empty() ? "" : (" and " + text::printable(csv_)).c_str(), r.wav.samples, seconds, r.wav.peak_m_s2,
-                r.wav.full_scale_m_s2, method(r.options).c_str(), sc.c_str(), r.compute_per_second);
+                r.wav.full_scale_m_s2, method(r.options).c_str(), sc.c_str(), compute.c_str());
   }
 
   void print_notes(const Report& r) const {

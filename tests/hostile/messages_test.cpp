@@ -353,5 +353,20 @@ TEST(Messages, ASensorSendingNoUsableFrameEndsAsAStall) {
   EXPECT_GT(totals["frames"].get<int>(), 1024) << "the source outran the scorer, so the bound was met: " << totals.dump();
 }
 
+// Review 6, #14: a 10-sample render said "9.55 s compute per s of vibration": under a second the
+// start-up outweighs the vibration, so the time itself is given.
+TEST(Messages, AShortRenderGivesItsComputeTimeNotARate) {
+  const TempDir d;
+  std::ofstream trajectory(d.file("t.csv"));
+  trajectory << "force,speed\n";
+  for (int i = 0; i < 10; ++i) trajectory << "1,100\n";
+  trajectory.close();
+  const CommandResult r = run_haptex({"render", quick_model(), "--material", small_material(), "--trajectory", d.file("t.csv"), "-o",
+                                      d.file("v.wav")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find("per s of vibration"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("s compute\n"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace haptex::test
