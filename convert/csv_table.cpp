@@ -71,13 +71,25 @@ CsvTable read_csv_table(const std::string& path, std::uintmax_t max_bytes,
   for (auto field : split_fields(line)) {
     table.header.push_back(column_name(field));
     const std::string& name = table.header.back();
-    const bool wanted = keep(name) && !table.columns.count(name);
+    // Which of two columns of one name holds the data is not knowable (CSV readers differ: Python's
+    // csv.DictReader keeps the last, pandas both), so a column haptex reads may be named once only.
+    if (keep(name) && table.columns.count(name))
+      throw input_error(path, "line 1, column '" + name + "'", "the header names the column twice",
+                        "Keep one: haptex cannot know which of the two holds the data");
+    const bool wanted = keep(name);
     kept.push_back(wanted ? &table.columns[name] : nullptr);
     kept_lines.push_back(wanted ? &table.lines[name] : nullptr);
     may_be_empty.push_back(sparse && sparse(name));
   }
+  std::size_t blank = 0;  // the first blank line since the last row: only the end of a file may hold them
   while (lines.next(line)) {
-    if (line.find_first_not_of(" \t") == std::string_view::npos) continue;
+    if (line.find_first_not_of(" \t") == std::string_view::npos) {
+      blank = blank ? blank : lines.number();
+      continue;
+    }
+    if (blank)
+      throw input_error(path, "line " + std::to_string(blank), "is blank, between rows of samples",
+                        "Remove it, or fill in the row that is missing: every sample is a row");
     const auto fields = split_fields(line);
     const std::string where = "line " + std::to_string(lines.number());
     if (fields.size() != table.header.size())

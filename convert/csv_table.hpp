@@ -18,8 +18,9 @@ struct CsvTable {
 
 // Reads `path` (refused over max_bytes), keeping the columns whose header name `keep` accepts; in
 // columns `sparse` accepts, an empty cell is no sample (a channel logged slower than the others).
-// Throws haptex::Error (bad_input) for an empty file, a row with another number of fields than the
-// header, and a kept cell that is not a finite number.
+// Throws haptex::Error (bad_input) for an empty file, a kept column named twice, a blank line
+// between rows (only the end may hold them), a row with another number of fields than the header,
+// and a kept cell that is not a number parse_stored_number takes.
 CsvTable read_csv_table(const std::string& path, std::uintmax_t max_bytes,
                         const std::function<bool(const std::string&)>& keep,
                         const std::function<bool(const std::string&)>& sparse = {});

@@ -43,6 +43,7 @@ std::optional<long long> parse_whole_number(std::string_view text) {
 std::optional<double> parse_stored_number(std::string_view text) {
   const std::optional<double> value = parse_number(text);
   if (!value || !std::isfinite(*value) || std::abs(*value) > kLargestStored) return std::nullopt;
+  if (*value != 0 && std::abs(*value) < kSmallestStored) return std::nullopt;
   return value;
 }
 
@@ -50,14 +51,15 @@ std::string describe_bad_number(std::string_view text, bool) {
   const std::string quoted = "'" + std::string(text.substr(0, 40)) + (text.size() > 40 ? "...'" : "'");
   if (const std::optional<double> value = parse_number(text)) {
     if (!std::isfinite(*value)) return quoted + " is not a finite number (NaN or Inf)";
-    return quoted + " is beyond 3.4e38, the largest magnitude of the 32-bit floats haptex stores";
+    if (std::abs(*value) > kLargestStored) return quoted + " is beyond 3.4e38, the largest magnitude of the 32-bit floats haptex stores";
+    return quoted + " is under 1.2e-38, the least magnitude the 32-bit floats haptex stores keep with all its digits (write 0 for none)";
   }
   std::string_view t = trim(text);
   if (!t.empty() && t.front() == '+') t.remove_prefix(1);
   double ignored = 0;
   const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), ignored);
   if (error == std::errc::result_out_of_range && end == t.data() + t.size())
-    return quoted + " is out of range for a 64-bit float (magnitudes from about 2.2e-308 to 1.8e308, or 0)";
+    return quoted + " is outside the 32-bit floats haptex stores (magnitudes from 1.2e-38 to 3.4e38, or 0)";
   return quoted + " is not a number";
 }
 

@@ -21,7 +21,10 @@ std::optional<long long> parse_whole_number(std::string_view text);
 // Values haptex stores become 32-bit floats (recordings, datasets, models): a magnitude over the
 // largest one would be stored as inf, so readers refuse it.
 inline constexpr double kLargestStored = 3.4028234663852886e38;
-// parse_number, for a finite value of at most kLargestStored in magnitude only.
+// The least magnitude but 0 a 32-bit float holds with all its digits (FLT_MIN): smaller ones are
+// subnormal, stored with their digits lost or as 0, so readers refuse them as they refuse one too large.
+inline constexpr double kSmallestStored = 1.1754943508222875e-38;
+// parse_number, for a finite value of kSmallestStored to kLargestStored in magnitude, or 0, only.
 std::optional<double> parse_stored_number(std::string_view text);
 // Why text is no number parse_stored_number takes, for messages: "'abc' is not a number", "'1e-400' is
 // out of range for a 64-bit float ...", "'nan' is not a finite number (NaN or Inf)", "'1e39' is beyond

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "tests/hostile/hostile_support.hpp"
@@ -333,6 +334,40 @@ TEST(BadValues, AnXmlElementGivenTwiceIsRefusedAndCdataIsText) {
   const CommandResult converted = run_haptex({"convert", "hatt", cdata, "-o", d.file("r.h5")});
   ASSERT_EQ(converted.exit_code, 0) << converted.err;
   EXPECT_NE(run_haptex({"info", d.file("r.h5")}).out.find(name), std::string::npos);
+}
+
+// Review 7: a CSV column named twice was read from its first copy without a word (Python's
+// csv.DictReader keeps the last), a blank line between rows was passed over, and 1e-40 was stored
+// with its digits lost.
+TEST(BadValues, ACsvRecordingWithAColumnTwiceABlankRowOrASubnormalIsRefused) {
+  const TempDir d;
+  test::SampleRecordingSpec spec;
+  spec.seconds = 0.5;
+  const std::string csv = test::sample_recording_csv(spec);
+  const std::size_t header_end = csv.find('\n'), second_row = csv.find('\n', header_end + 1) + 1;
+  const std::string header = csv.substr(0, header_end);
+  const std::string first_column = header.substr(0, header.find(','));
+  const auto write = [&](const std::string& name, const std::string& text) {
+    test::write_text_file(d.file(name), text);
+    return d.file(name);
+  };
+  // The header's first column once more at its end, and a value for it in every row.
+  std::string twice;
+  std::istringstream rows(csv);
+  for (std::string line; std::getline(rows, line);) twice += line + "," + (twice.empty() ? first_column : "0") + "\n";
+  const std::string column_twice = write("twice_1.csv", twice);
+  expect_refusal(run_haptex({"convert", "hatt", column_twice, "-o", d.file("r.h5")}),
+                 {column_twice, "line 1, column '" + first_column + "'", "twice"});
+  const std::string blank = write("blank_1.csv", csv.substr(0, second_row) + "\n" + csv.substr(second_row));
+  expect_refusal(run_haptex({"convert", "hatt", blank, "-o", d.file("r.h5")}), {blank, "line 3", "blank"});
+  std::string tiny_text = csv;
+  const std::size_t cell = tiny_text.find(',', second_row) + 1;
+  tiny_text.replace(cell, tiny_text.find(',', cell) - cell, "1e-40");
+  const std::string tiny = write("tiny_1.csv", tiny_text);
+  expect_refusal(run_haptex({"convert", "hatt", tiny, "-o", d.file("r.h5")}), {tiny, "line 3", "under 1.2e-38"});
+  EXPECT_FALSE(fs::exists(d.file("r.h5")));
+  const std::string trailing = write("end_1.csv", csv + "\n\n");  // blank lines at the end are no row
+  EXPECT_EQ(run_haptex({"convert", "hatt", trailing, "-o", d.file("r.h5")}).exit_code, 0);
 }
 
 // Review 4, #7: evaluate wrote a material name's ESC and BEL into report.md and every CSV, so `cat
