@@ -35,9 +35,9 @@ void require_finite_texture(const Model& m, const std::string& path) {
     throw non_finite_output(path, dataset::root_path(dataset::layout::kClassifier), "the training materials' latents");
 }
 
-bool runs_away(const Eigen::MatrixXf& out) { return !out.allFinite() || out.cwiseAbs().maxCoeff() > kRunaway; }
-
 }  // namespace
+
+bool runs_away(const Eigen::Ref<const Eigen::MatrixXf>& out) { return !out.allFinite() || out.cwiseAbs().maxCoeff() > kRunaway; }
 
 std::string first_runaway_layer(const std::vector<TracedPart>& parts) {
   for (const TracedPart& part : parts)
@@ -46,10 +46,21 @@ std::string first_runaway_layer(const std::vector<TracedPart>& parts) {
   return "";
 }
 
+std::string part_that_overflows(int net, std::size_t action_layers, std::size_t layers,
+                                const std::function<bool(std::size_t k)>& ran_away) {
+  for (std::size_t k = 0; k < layers; ++k)
+    if (ran_away(k))
+      return k < action_layers ? dataset::layer_path(dataset::net_part_path(net, dataset::layout::kActionEncoder), k)
+                               : dataset::layer_path(dataset::net_part_path(net, dataset::layout::kPredictor), k - action_layers);
+  return target_scale_path();
+}
+
 std::string part_that_overflows(const SpectrumTrace& trace, int net) {
-  const std::string layer = first_runaway_layer({{dataset::net_part_path(net, dataset::layout::kActionEncoder), trace.action},
-                                                 {dataset::net_part_path(net, dataset::layout::kPredictor), trace.predictor}});
-  return layer.empty() ? target_scale_path() : layer;
+  // out[0] of each part is its input.
+  const std::size_t action_layers = trace.action.out.size() - 1, layers = action_layers + trace.predictor.out.size() - 1;
+  return part_that_overflows(net, action_layers, layers, [&](std::size_t k) {
+    return runs_away(k < action_layers ? trace.action.out[k + 1] : trace.predictor.out[k - action_layers + 1]);
+  });
 }
 
 bool absurd_spectra(const Eigen::Ref<const Eigen::MatrixXf>& spectra) {

@@ -4,6 +4,7 @@
 // query can reach and refuses the file if any output is not finite, naming the layer where values
 // ran away (or the normalisation that overflowed moderate outputs); Predictor checks each spectrum it
 // returns as well, for inputs beyond the probes (a far-off new press).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,8 +49,14 @@ struct TracedPart {
 std::string first_runaway_layer(const std::vector<TracedPart>& parts);
 // "/normalisation/target_scale".
 std::string target_scale_path();
-// Where non-finite spectra of /nets/`net` come from: the first of its layers that ran away, else
+// Whether a layer's output is not finite or runs past kRunaway.
+bool runs_away(const Eigen::Ref<const Eigen::MatrixXf>& out);
+// Where non-finite spectra of /nets/`net` come from: the first of its `layers` layers, the action
+// encoder's `action_layers` and then the predictor's, whose output ran away (`ran_away(k)`), else
 // /normalisation/target_scale, which made moderate outputs overflow.
+std::string part_that_overflows(int net, std::size_t action_layers, std::size_t layers,
+                                const std::function<bool(std::size_t k)>& ran_away);
+// The same for a traced pass.
 std::string part_that_overflows(const SpectrumTrace& trace, int net);
 
 }  // namespace haptex::predict

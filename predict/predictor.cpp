@@ -106,15 +106,10 @@ bool Predictor::predict(const TextureCode& code, std::span<const float> action, 
   return saturated;
 }
 
-// As part_that_overflows (model_probe.hpp), for predict()'s first `layers` outputs (the action
-// encoder's layers, then the predictor's).
+// part_that_overflows (model_probe.hpp) for predict()'s first `layers` outputs.
 std::string Predictor::part_that_overflows(int net, std::size_t layers) const {
-  const std::size_t action_layers = model_.nets[std::size_t(net)].action.layers.size();
-  for (std::size_t k = 0; k < layers; ++k)
-    if (!layer_[k].allFinite() || layer_[k].cwiseAbs().maxCoeff() > kRunaway)
-      return k < action_layers ? dataset::layer_path(dataset::net_part_path(net, dataset::layout::kActionEncoder), k)
-                               : dataset::layer_path(dataset::net_part_path(net, dataset::layout::kPredictor), k - action_layers);
-  return target_scale_path();
+  return predict::part_that_overflows(net, model_.nets[std::size_t(net)].action.layers.size(), layers,
+                                      [&](std::size_t k) { return runs_away(layer_[k]); });
 }
 
 Eigen::MatrixXf Predictor::predict_batch(const TextureCode& code, const Eigen::MatrixXf& actions, std::size_t* out_of_range) const {
