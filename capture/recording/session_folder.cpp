@@ -13,6 +13,7 @@
 #include "core/h5/atomic_file.hpp"
 #include "core/json/schema.hpp"
 #include "core/output_is_input.hpp"
+#include "core/temporary_name.hpp"
 #include "core/version.hpp"
 #include "dataset/format.hpp"
 
@@ -92,13 +93,49 @@ void check_session_dir(const std::string& dir, bool overwrite, const std::vector
   for (const fs::path& old : old_session_files(dir)) refuse_output_among_inputs(old.string(), inputs);
 }
 
-void prepare_session_dir(const std::string& dir, bool overwrite, const std::vector<std::string>& inputs) {
+EarlierSession::EarlierSession(std::string dir, const std::vector<fs::path>& files) : dir_(std::move(dir)) {
+  // Beside the folder, on its file system ("rec/" and "." name the folder itself).
+  std::string folder = fs::absolute(dir_).lexically_normal().string();
+  while (folder.size() > 1 && folder.back() == '/') folder.pop_back();
+  Temporary aside = create_temporary_folder(folder);
+  aside_ = aside.path, lock_ = aside.fd;
+  for (const fs::path& file : files) {
+    std::error_code ec;
+    fs::rename(file, fs::path(aside_) / file.filename(), ec);
+    if (ec) {
+      settle();  // no press file is new yet: what was moved goes back
+      throw failure(file.string() + ": cannot set the old session's file aside: " + ec.message());
+    }
+  }
+}
+
+EarlierSession::~EarlierSession() { settle(); }
+
+void EarlierSession::settle() noexcept {
+  if (aside_.empty()) return;
+  std::error_code ec;
+  bool pressed = false;  // a press file in the folder now is the new take's
+  for (const auto& entry : fs::directory_iterator(dir_, ec))
+    pressed = pressed || std::regex_match(entry.path().filename().string(), kPressFile);
+  if (pressed) {
+    fs::remove_all(aside_, ec);
+  } else {
+    fs::remove(fs::path(dir_) / "session.json", ec);  // the new take's, listing no press
+    for (const auto& entry : fs::directory_iterator(aside_, ec)) fs::rename(entry.path(), fs::path(dir_) / entry.path().filename(), ec);
+    fs::remove(aside_, ec);  // only when every file went back
+  }
+  forget_temporary(aside_);
+  ::close(lock_);
+  aside_.clear();
+}
+
+std::unique_ptr<EarlierSession> prepare_session_dir(const std::string& dir, bool overwrite, const std::vector<std::string>& inputs) {
   check_session_dir(dir, overwrite, inputs);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw input_error(dir, "", "cannot create the session folder: " + ec.message(), "Choose a folder you can write to with -o");
-  if (!session_files(dir).empty())
-    for (const fs::path& p : old_session_files(dir)) fs::remove(p);
+  if (session_files(dir).empty()) return nullptr;
+  return std::make_unique<EarlierSession>(dir, old_session_files(dir));
 }
 
 }  // namespace haptex::capture

@@ -5,6 +5,8 @@
 // (each one a file haptex wrote). A folder holding anything else, a session.json that is not haptex's,
 // a press file it does not list, a link, or one of the take's inputs (a replayed press file), is refused
 // naming the file, and nothing is deleted.
+#include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,7 +15,27 @@ namespace haptex::capture {
 // Refuses (haptex::Error, bad_input) a folder that cannot be made or already holds a session (unless
 // overwrite, within the rule above), touching nothing. `inputs`: files the take reads.
 void check_session_dir(const std::string& dir, bool overwrite, const std::vector<std::string>& inputs = {});
-// The same checks, then creates the folder and, with overwrite, removes the old session's files.
-void prepare_session_dir(const std::string& dir, bool overwrite, const std::vector<std::string>& inputs = {});
+// An old session's files, set aside (in a temporary folder beside the session folder) while a --force
+// take records: its recordings cannot be made again, so they go only once the new take has saved a
+// press. Settled when destroyed: the new take saved a press, and the old files are removed; it saved
+// none (Ctrl-C, an unplugged sensor, a stall before the first press), and they are put back in place
+// of its empty session.json.
+class EarlierSession {
+ public:
+  EarlierSession(std::string dir, const std::vector<std::filesystem::path>& files);
+  ~EarlierSession();
+  EarlierSession(const EarlierSession&) = delete;
+  EarlierSession& operator=(const EarlierSession&) = delete;
+
+ private:
+  void settle() noexcept;
+  std::string dir_, aside_;
+  int lock_ = -1;
+};
+
+// The same checks, then creates the folder; with overwrite, sets an old session's files aside
+// (null when there is none).
+std::unique_ptr<EarlierSession> prepare_session_dir(const std::string& dir, bool overwrite,
+                                                    const std::vector<std::string>& inputs = {});
 
 }  // namespace haptex::capture

@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <csignal>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include "tests/hostile/hostile_support.hpp"
@@ -85,6 +87,26 @@ TEST(SessionFolder, ForceReplacesTheOldSession) {
   const CommandResult r = record(kFake, o, true, "Felt");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(file_bytes(o + "/session.json"))["material"], "Felt");
+}
+
+// Review 8: --force deleted the old session's presses as the take started, so a take that ended before
+// its first press (an unplugged sensor, Ctrl-C) left an empty session and the old recordings gone.
+TEST(SessionFolder, ForceKeepsTheOldSessionUntilTheNewTakeSavesAPress) {
+  const TempDir d;
+  const std::string o = d.file("o");
+  ASSERT_EQ(record(kFake, o, false).exit_code, 0);
+  const std::string old_press = file_bytes(o + "/press_0.h5"), old_manifest = file_bytes(o + "/session.json");
+  const CommandResult unplugged = record("fake:size=160x120,lockstep,disconnect=5", o, true, "Felt");
+  EXPECT_EQ(unplugged.exit_code, 1) << unplugged.err;
+  EXPECT_EQ(file_bytes(o + "/press_0.h5"), old_press);
+  EXPECT_EQ(file_bytes(o + "/session.json"), old_manifest);
+  const int pid = start_haptex({"capture", "record", "--device", "fake:size=160x120", "--material", "Felt", "-o", o, "--force"});
+  ::usleep(500000);  // the fake camera presses after its first seconds
+  ::kill(pid, SIGTERM);
+  wait_for(pid);
+  EXPECT_EQ(file_bytes(o + "/press_0.h5"), old_press);
+  EXPECT_EQ(file_bytes(o + "/session.json"), old_manifest);
+  EXPECT_EQ(std::distance(fs::directory_iterator(d.path()), fs::directory_iterator()), 1) << "the old session was left aside";
 }
 
 // The recorded command, split as a POSIX shell splits it (shlex), gives back every word: a name with
