@@ -9,6 +9,7 @@
 #include "core/input_file.hpp"
 #include "core/sha256.hpp"
 #include "core/text/format.hpp"
+#include "core/text/utf8.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/window.hpp"
 
@@ -135,11 +136,9 @@ struct Reader {
 };
 
 // An argument as typed, cut to `most` bytes, with the bytes a terminal cannot show as '?'.
+// The argument as a terminal may show it (README: names escaped, \xHH and \uHHHH), cut to `most` bytes.
 std::string shown(const std::string& argument, std::size_t most) {
-  std::string out = argument.substr(0, most);
-  for (char& c : out)
-    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e) c = '?';
-  return out;
+  return text::printable(std::string_view(argument).substr(0, most)) + (argument.size() > most ? "..." : "");
 }
 
 // Text shown in a report cell, a CSV field and a chart label: line breaks and other control characters become spaces.

@@ -205,6 +205,9 @@ TEST(PredictionsRefusals, NamesTheReportCannotUseAreRefused) {
   }
   const CommandResult binary = evaluate(dir, {"caf\xff=" + file});
   EXPECT_EQ(binary.err.find('\xff'), std::string::npos) << "the message echoes a byte that is not UTF-8";
+  // Review 8: control and text-reordering characters were shown as '?', so the wrong one could not be told.
+  expect_refusal(evaluate(dir, {"x\ny=" + file}), {"'x\\x0ay'"});
+  expect_refusal(evaluate(dir, {"r\u202eevil=" + file}), {"'r\\u202eevil'"});
   expect_refusal(evaluate(dir, {"same=" + file, "same=" + file}), {"named 'same'"});
   expect_refusal(evaluate(dir, {"knn=" + file, "KNN=" + file}), {"alike but for case"});
   // The report folder may not be one of the inputs.
