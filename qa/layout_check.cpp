@@ -118,10 +118,9 @@ const char* attribute_for(const std::string& symbol) {
   return nullptr;
 }
 
-std::optional<hsize_t> int_attribute(const h5::Group& root, const std::string& group, const char* name) {
-  const std::optional<std::int64_t> n = open_node(root, group).try_attr<std::int64_t>(name);
-  if (n && *n >= 0) return hsize_t(*n);
-  return std::nullopt;
+// A negative count stays what it is: no dataset has that extent, so the shape is reported wrong.
+std::optional<std::int64_t> int_attribute(const h5::Group& root, const std::string& group, const char* name) {
+  return open_node(root, group).try_attr<std::int64_t>(name);
 }
 
 // Per group and shape symbol, how many of the group's datasets have each extent there.
@@ -140,19 +139,19 @@ ExtentVotes count_extents(const std::vector<RowFindings>& rows) {
 // What a shape symbol stands for in a group: a number as written; N, H and W the group's attribute
 // (when it has it as an integer); any other letter the extent most of the group's datasets have
 // there (so the odd dataset out is the one reported).
-std::optional<hsize_t> extent_of(const h5::Group& root, const std::string& group, const std::string& symbol,
-                                 const ExtentVotes& votes) {
-  if (is_number(symbol)) return std::stoull(symbol);
+std::optional<std::int64_t> extent_of(const h5::Group& root, const std::string& group, const std::string& symbol,
+                                      const ExtentVotes& votes) {
+  if (is_number(symbol)) return std::stoll(symbol);
   if (const char* attr = attribute_for(symbol))
     if (const auto n = int_attribute(root, group, attr)) return n;
-  std::optional<hsize_t> want;
+  std::optional<std::int64_t> want;
   const auto in_group = votes.find(group);
   if (in_group == votes.end()) return want;
   const auto candidates = in_group->second.find(symbol);
   if (candidates == in_group->second.end()) return want;
   int best = -1;
   for (const auto& [extent, count] : candidates->second)
-    if (count > best) best = count, want = extent;
+    if (count > best) best = count, want = std::int64_t(extent);
   return want;
 }
 
@@ -165,10 +164,10 @@ void judge_shape(const h5::Group& root, const LayoutRow& row, const FoundObject&
   bool ok = true, known = true;
   std::vector<std::string> expected;
   for (std::size_t i = 0; i < d.shape.size(); ++i) {
-    const std::optional<hsize_t> want = extent_of(root, group, row.shape[i], votes);
+    const std::optional<std::int64_t> want = extent_of(root, group, row.shape[i], votes);
     if (!want) known = false;
     expected.push_back(want ? std::to_string(*want) : row.shape[i]);
-    if (want && d.shape[i] != *want) ok = false;
+    if (want && (*want < 0 || d.shape[i] != hsize_t(*want))) ok = false;
   }
   if (!known) tally.skip(d.where + ": extent of " + shape_text(row.shape) + " unknown");
   else if (!ok)

@@ -100,6 +100,12 @@ std::vector<BadShard> bad_shards() {
          corrupt_first_chunk(copy, "materials/" + material_ids(copy).front() + "/recordings/0/accel");
          return copy;
        }, {"/recordings/0/accel", "could not read"}},
+      // Review 8: a negative sample count left the extent unknown, so the shape check passed.
+      {"a negative sample count", [&](const TempDir& d) {
+         const std::string copy = second_material_of(d, p.recordings, "negative.h5");
+         Edit(copy).group("materials/" + material_ids(copy).front() + "/recordings/0").set_attr("samples", std::int64_t(-30000));
+         return copy;
+       }, {"layout.shape", "expected (-30000)"}},
   };
 }
 
