@@ -48,6 +48,10 @@ class SplitCommand : public Command {
     refuse_output_among_inputs(output_, {dataset_});
     refuse_output_among_inputs(plots_folder(), {dataset_});
     json::check_replaceable_json(output_, force_, split::kManifestFormat);
+    const auto split_folder = [](const std::string& dir) { return is_haptex_folder(dir, "haptex split"); };
+    if (no_plots_ && force_)
+      EarlierOutput::require_retirable(plots_folder(), split_folder, "the plot folder",
+                                       "Move your files out of it (or the folder away), or run without --no-plots");
     // The plots go into a folder written whole (refused now, before any work, when it may not be replaced).
     std::optional<PartialDirectory> plots_dir;
     if (!no_plots_) plots_dir.emplace(plots_folder(), FolderOptions{force_, "plot folder", "-o", "haptex split"});
@@ -65,7 +69,7 @@ class SplitCommand : public Command {
     // the manifest replaced, so they go too; a folder of that name holding anything else stays.
     PartialFile manifest_file(output_, force_, [](const std::string& p) { json::check_replaceable_json(p, true, split::kManifestFormat); });
     json::write_file(manifest, "split.schema.json", manifest_file);
-    EarlierOutput earlier_plots(plots_folder(), [](const std::string& dir) { return is_haptex_folder(dir, "haptex split"); });
+    EarlierOutput earlier_plots(plots_folder(), split_folder);
     commit_together({&manifest_file, plots_dir ? &*plots_dir : nullptr, !plots_dir && force_ ? &earlier_plots : nullptr});
     if (global.json) {
       std::cout << json::read_file(output_).dump(2) << "\n";

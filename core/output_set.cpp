@@ -15,6 +15,15 @@
 namespace haptex {
 namespace fs = std::filesystem;
 
+void EarlierOutput::require_retirable(const std::string& path, const std::function<bool(const std::string& path)>& retire,
+                                      const std::string& what, const std::string& fix) {
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(path, ec)) || retire(path)) return;
+  throw input_error(path, "", "is " + what + " of the output --force replaces, and holds what haptex did not write: it would stay "
+                                  "beside a new output it no longer describes",
+                    fix);
+}
+
 EarlierOutput::EarlierOutput(std::string path, std::function<bool(const std::string& path)> retire)
     : path_(std::move(path)), retire_(std::move(retire)) {}
 

@@ -38,6 +38,12 @@ class StagedOutput {
 // `retire` says it is not haptex's to remove (asked in finish and again in check_place).
 class EarlierOutput : public StagedOutput {
  public:
+  // Before any work: refuses (bad_input, naming path) an earlier output at path that `retire` says is
+  // not haptex's to remove (a file of the user's among the old plots), since the new output would
+  // appear beside an old companion it no longer matches. `what` names it ("the plot folder").
+  static void require_retirable(const std::string& path, const std::function<bool(const std::string& path)>& retire,
+                                const std::string& what, const std::string& fix);
+
   EarlierOutput(std::string path, std::function<bool(const std::string& path)> retire);
   ~EarlierOutput() override;
   EarlierOutput(const EarlierOutput&) = delete;

@@ -34,6 +34,10 @@ namespace haptex::capture {
 namespace fs = std::filesystem;
 namespace {
 
+// Folders an earlier extraction wrote, which --force retires with the file they describe.
+bool extraction_folder(const std::string& dir) { return is_haptex_folder(dir, "haptex capture extract"); }
+
+
 // One PNG (a contact sheet, a score chart) into a folder being built.
 void write_png(const PartialDirectory& folder, const std::string& name, const std::vector<std::uint8_t>& png) {
   folder.fill([&](const std::string& dir) {
@@ -191,7 +195,6 @@ class Extraction {
     // The file and its folders appear together or not at all (a full disk while writing any of them, a
     // folder appearing at a folder's name). --force without sheets or --explain: folders an earlier
     // extraction wrote for the file replaced describe it, so they go too; anything else there stays.
-    const auto extraction_folder = [](const std::string& dir) { return is_haptex_folder(dir, "haptex capture extract"); };
     EarlierOutput earlier_sheets(default_sheets_dir(output_), extraction_folder), earlier_explain(default_explain_dir(output_), extraction_folder);
     const bool retire = options_.overwrite;
     commit_together({&writer_.output(), explain_.get(), sheets_.get(), !sheets_ && retire ? &earlier_sheets : nullptr,
@@ -366,6 +369,12 @@ ExtractResult extract_presses(const std::vector<std::string>& inputs, const std:
   refuse_output_among_inputs(output, found);
   if (options.sheets) refuse_output_among_inputs(options.sheets_dir.empty() ? default_sheets_dir(output) : options.sheets_dir, found);
   if (options.explain) refuse_output_among_inputs(default_explain_dir(output), found);
+  if (options.overwrite && !options.sheets)
+    EarlierOutput::require_retirable(default_sheets_dir(output), extraction_folder, "the contact sheet folder",
+                                     "Move your files out of it (or the folder away), or write sheets again");
+  if (options.overwrite && !options.explain)
+    EarlierOutput::require_retirable(default_explain_dir(output), extraction_folder, "the score chart folder",
+                                     "Move your files out of it (or the folder away), or add --explain");
   Extraction extraction(output, options);
   // Videos and image sequences are analysed a few at a time on as many threads, the next few while
   // the last are written, and written in their order, so the output is the same whatever the cores.

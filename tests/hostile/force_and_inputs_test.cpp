@@ -424,10 +424,25 @@ TEST(Force, SplitWithoutPlotsTakesAwayTheEarlierOnes) {
   ASSERT_TRUE(fs::exists(d.file("s.plots")));
   ASSERT_EQ(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--force", "--no-plots"}).exit_code, 0);
   EXPECT_FALSE(fs::exists(d.file("s.plots")));
-  fs::create_directory(d.file("s.plots"));
+  // Review 8: a plot folder --force cannot take away (a file of the user's in it) stayed, silently,
+  // beside a manifest it no longer described. It is refused before any work.
+  ASSERT_EQ(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--force"}).exit_code, 0);
   std::ofstream(d.file("s.plots/mine.png")) << "my figure";
-  ASSERT_EQ(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--force", "--no-plots"}).exit_code, 0);
+  const std::string manifest = file_bytes(d.file("s.json"));
+  expect_refusal(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--force", "--no-plots", "--seed", "7"}),
+                 {d.file("s.plots"), "the plot folder", "no longer describes"});
   EXPECT_EQ(file_bytes(d.file("s.plots/mine.png")), "my figure");
+  EXPECT_EQ(file_bytes(d.file("s.json")), manifest);
+}
+
+TEST(Force, ExtractWithoutSheetsRefusesOldSheetsItCannotTakeAway) {
+  const TempDir d;
+  const std::string videos = (fs::path(small_pipeline().recordings).parent_path() / "synth" / "gelsight" / "Woven 1").string();
+  ASSERT_EQ(run_haptex({"capture", "extract", videos, "-o", d.file("g.h5")}).exit_code, 0);
+  std::ofstream(d.file("g_sheets/notes.txt")) << "my notes";
+  expect_refusal(run_haptex({"capture", "extract", videos, "-o", d.file("g.h5"), "--force", "--no-sheets"}),
+                 {d.file("g_sheets"), "the contact sheet folder"});
+  EXPECT_EQ(file_bytes(d.file("g_sheets/notes.txt")), "my notes");
 }
 
 // split, a `gnuplot` first on PATH that puts a file of the user's into the plot folder while the
