@@ -286,6 +286,7 @@ def write_predictions(path, grid, spectra, source, query_seconds=None, signals=N
         if len(signals) != len(sections) or any(len(x) < covered for x, (_, _, _, covered) in zip(signals, sections)):
             raise HaptexFileError(f"{path}: give one signal per grid section ({len(sections)}), each covering its windows (grid_sections)")
     partial = _temporary_file(path)
+    restore = _remove_on_signals(partial)
     try:
         with h5py.File(partial, "w") as f:
             f.attrs["predictions_format"] = PREDICTIONS_FORMAT
@@ -301,21 +302,75 @@ def write_predictions(path, grid, spectra, source, query_seconds=None, signals=N
                     g.create_dataset(str(k), data=np.asarray(x, dtype=np.float32))
                 if signal_seconds is not None:
                     g.attrs["seconds"] = float(signal_seconds)
+            f.flush()  # raises on a failed write, which closing would only print
         with open(partial, "rb") as f:
             os.fsync(f.fileno())
-        # h5py reports a failed flush at close (a full disk) only on stderr: read the file back.
-        try:
-            with h5py.File(partial, "r") as f:
-                whole = f["spectra"].shape == spectra.shape and f.attrs["predictions_format"] == PREDICTIONS_FORMAT
-        except (OSError, KeyError):
-            whole = False
-        if not whole:
+        # h5py reports a failed write (a full disk) only on stderr, and unwritten rows read back as 0:
+        # the file is read back whole and compared with what was meant.
+        if not _holds(partial, spectra, signals):
             raise OSError(errno.ENOSPC, f"{path}: could not be written completely (the disk is full?)")
-        os.replace(partial, path)
+        _put_in_place(partial, path, inputs, overwrite)
         partial = None
     finally:
         if partial is not None:
             os.remove(partial)
+        restore()
+
+
+def _holds(partial, spectra, signals):
+    """Whether the file at partial holds the format mark, the spectra and the signals written."""
+    try:
+        with h5py.File(partial, "r") as f:
+            if f.attrs["predictions_format"] != PREDICTIONS_FORMAT or not np.array_equal(f["spectra"][...], spectra):
+                return False
+            return signals is None or all(np.array_equal(f["signals"][str(k)][...], np.asarray(x, dtype=np.float32))
+                                          for k, x in enumerate(signals))
+    except (OSError, KeyError):
+        return False
+
+
+def _put_in_place(partial, path, inputs, overwrite):
+    """Renames partial to path. Without overwrite a file that appeared at path meanwhile is kept (a hard
+    link never replaces, as RENAME_NOREPLACE); with it, path is checked again just before the swap."""
+    if not overwrite:
+        try:
+            os.link(partial, path)
+        except FileExistsError:
+            raise HaptexFileError(f"{path}: appeared while this run was writing it, and is kept: "
+                                  "move it away and run again, or choose another output name") from None
+        except OSError:  # a file system without hard links: the last look, then the rename
+            check_output(path, inputs, overwrite)
+            os.rename(partial, path)
+            return
+        os.remove(partial)
+        return
+    check_output(path, inputs, overwrite)
+    os.replace(partial, path)
+
+
+def _remove_on_signals(partial):
+    """Until the returned function is called, Ctrl-C, TERM and HUP remove partial and then end the
+    process by the same signal (README: only kill -9 or a crash leaves a .partial behind). A signal
+    the process ignores (nohup, `cmd &`) stays ignored."""
+    import signal
+    before = {}
+
+    def end(number, _frame):
+        try:
+            os.remove(partial)
+        except FileNotFoundError:
+            pass
+        signal.signal(number, signal.SIG_DFL)
+        os.kill(os.getpid(), number)
+
+    for number in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+        if signal.getsignal(number) != signal.SIG_IGN:
+            before[number] = signal.signal(number, end)
+
+    def restore():
+        for number, handler in before.items():
+            signal.signal(number, handler)
+    return restore
 
 
 def check_output(path, inputs=(), overwrite=False):
@@ -324,8 +379,10 @@ def check_output(path, inputs=(), overwrite=False):
         raise HaptexFileError("the output name is empty: name a file with -o")
     try:
         path.encode("utf-8")
-    except UnicodeEncodeError:
-        raise HaptexFileError(f"{path!r}: the output name is not valid UTF-8: name it in UTF-8") from None
+    except UnicodeEncodeError as e:
+        byte = os.fsencode(path[e.start:e.start + 1])[0]
+        raise HaptexFileError(f"{path!r}: the output name is not valid UTF-8 (byte 0x{byte:02x} at character {e.start}): "
+                              "name it in UTF-8") from None
     for given in inputs:
         if os.path.exists(path) and os.path.exists(given) and os.path.samefile(path, given):
             raise HaptexFileError(f"{path}: is also an input ({given}): choose another output name")
@@ -337,12 +394,23 @@ def check_output(path, inputs=(), overwrite=False):
         raise HaptexFileError(f"{path}: the output file already exists: remove it, choose another -o, or pass --force")
     try:
         with h5py.File(_regular_file(path), "r") as f:
-            ours = f.attrs.get("predictions_format") is not None
+            found = f.attrs.get("predictions_format")
     except OSError:
-        ours = False
-    if not ours or os.path.islink(path):
+        found = None
+    found = found.decode("utf-8", "replace") if isinstance(found, bytes) else found
+    if isinstance(found, str) and _version(found) is not None and _version(found) > _version(PREDICTIONS_FORMAT):
+        raise HaptexFileError(f"{path}: is {found}, written by a newer haptex than {PREDICTIONS_FORMAT}: "
+                              "--force does not replace it; choose another output name")
+    if not isinstance(found, str) or _version(found) is None or os.path.islink(path):
         raise HaptexFileError(f"{path}: --force replaces only an earlier predictions file, and this is not one: "
                               "choose another output name, or move the file away yourself")
+
+
+def _version(mark):
+    """N of a "predictions/N" mark as haptex writes it (no sign, no leading zero), else None."""
+    import re
+    found = re.fullmatch(r"predictions/([1-9][0-9]*)", mark)
+    return int(found.group(1)) if found else None
 
 
 def _temporary_file(path):

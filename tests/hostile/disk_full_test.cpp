@@ -215,6 +215,22 @@ TEST(DiskFull, OutputsThatBelongTogetherAppearTogetherOrNotAtAll) {
 }
 
 // A take whose first press does not fit leaves no empty session folder behind.
+// Review 8: on a full disk the Python writer printed "wrote" and exit 0, leaving spectra rows of zeros
+// (h5py reports a failed write only on stderr, and the read-back looked at the shape alone).
+TEST(DiskFull, ThePythonPredictionsWriterSaysSoAndLeavesNothing) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const SmallDisk disk("8k");  // room for the file's first blocks, not its spectra
+  if (!disk.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (needs root with CAP_SYS_ADMIN)";
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  ASSERT_EQ(run_haptex({"windows", p.dataset, "--split", p.split, "-o", d.file("w.h5")}).exit_code, 0);
+  const CommandResult r = run_python({std::string(HAPTEX_SCHEMA_DIR) + "/../python/examples/knn_baseline.py", p.dataset, p.split,
+                                      d.file("w.h5"), "-o", disk.file("k.h5")});
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_EQ(r.out.find("wrote"), std::string::npos) << r.out;
+  EXPECT_EQ(disk.listing(), std::vector<std::string>{});
+}
+
 TEST(DiskFull, CaptureThatSavedNothingLeavesNoFolder) {
   const SmallDisk disk("200k");
   if (!disk.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (needs root with CAP_SYS_ADMIN)";

@@ -78,6 +78,45 @@ TEST(PythonExamples, KnnForceReplacesOnlyAnEarlierPredictionsFile) {
   EXPECT_TRUE(temporaries_of(preds).empty());
 }
 
+// Review 8: the writer replaced a newer haptex's predictions file with --force, replaced a file that
+// appeared at the name while it wrote without --force, and left its .partial on TERM. The two faults
+// are timed by wrapping os.fsync, which the writer calls once the temporary is written.
+TEST(PythonExamples, TheWriterKeepsNewerFilesAndFilesThatAppearAndLeavesNothingOnTerm) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const Knn knn;
+  const TempDir d;
+  const std::string newer = d.file("newer.h5");
+  ASSERT_EQ(knn.run(newer).exit_code, 0);
+  ASSERT_EQ(run_python({"-c", "import h5py,sys; h5py.File(sys.argv[1],'a').attrs['predictions_format']='predictions/9'", newer}).exit_code, 0);
+  const std::string before = file_bytes(newer);
+  const CommandResult refused = knn.run(newer, true);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("newer haptex"), std::string::npos) << refused.err;
+  EXPECT_EQ(file_bytes(newer), before);
+
+  const SmallPipeline& p = small_pipeline();
+  const auto write_with = [&](const std::string& out, const std::string& at_fsync) {
+    return run_python({"-c",
+                       "import os,signal,sys; sys.path.insert(0, sys.argv[1]); import numpy as np, haptex_data as hd\n"
+                       "split, grid = hd.read_split_and_grid(sys.argv[2], sys.argv[3]); out = sys.argv[4]; real = os.fsync\n"
+                       "def hooked(fd):\n    real(fd)\n    " + at_fsync + "\n"
+                       "os.fsync = hooked\n"
+                       "hd.write_predictions(out, grid, np.ones((len(grid), 100), np.float32), 'test')\n",
+                       std::string(HAPTEX_SCHEMA_DIR) + "/../python", p.split, knn.windows, out});
+  };
+  const std::string appears = d.file("appears.h5");
+  const CommandResult kept = write_with(appears, "open(out, 'w').write('my notes') if not os.path.exists(out) else None");
+  EXPECT_NE(kept.exit_code, 0);
+  EXPECT_NE(kept.err.find("appeared while this run was writing it"), std::string::npos) << kept.err;
+  EXPECT_EQ(file_bytes(appears), "my notes");
+  EXPECT_TRUE(temporaries_of(appears).empty());
+  const std::string ended = d.file("ended.h5");
+  const CommandResult term = write_with(ended, "os.kill(os.getpid(), signal.SIGTERM)");
+  EXPECT_NE(term.exit_code, 0);
+  EXPECT_FALSE(fs::exists(ended));
+  EXPECT_TRUE(temporaries_of(ended).empty()) << "the .partial was left";
+}
+
 TEST(PythonExamples, TorchMissingIsASentence) {
   if (python_has("torch")) GTEST_SKIP() << "torch is installed here";
   const CommandResult r = run_python({kExamples + "torch_mlp.py", "d.h5", "s.json", "w.h5", "-o", "p.h5"});
