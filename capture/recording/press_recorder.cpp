@@ -229,7 +229,7 @@ RecordingResult record_session(KernelInterface& kernel, const SessionRequest& re
   std::error_code ec;
   const bool made_folder = !std::filesystem::exists(std::filesystem::symlink_status(request.output_dir, ec));
   // Only now, so a refused device leaves nothing; an old session comes back unless the take saves a press.
-  const std::unique_ptr<EarlierSession> earlier = prepare_session_dir(request.output_dir, request.overwrite, request.inputs);
+  const PreparedSessionDir prepared = prepare_session_dir(request.output_dir, request.overwrite, request.inputs);
   if (warn && !session.link_warning.empty()) warn(session.link_warning);  // before the user starts pressing
   try {
     return record_take(stream, session, request.output_dir, options, stop, progress);

@@ -1,6 +1,11 @@
 #include "capture/recording/session_folder.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include <algorithm>
 #include <filesystem>
@@ -85,6 +90,7 @@ void check_session_dir(const std::string& dir, bool overwrite, const std::vector
     existing = existing.parent_path();
   if (::access(existing.c_str(), W_OK) != 0)
     throw input_error(dir, "", existing.string() + " is not writable", "Choose a folder you can write to with -o");
+  if (fs::is_directory(dir, ec)) SessionDirLock free_now(dir);  // a take recording there is refused before the sensor opens
   const auto existing_files = session_files(dir);
   if (existing_files.empty()) return;
   if (!overwrite)
@@ -129,13 +135,27 @@ void EarlierSession::settle() noexcept {
   aside_.clear();
 }
 
-std::unique_ptr<EarlierSession> prepare_session_dir(const std::string& dir, bool overwrite, const std::vector<std::string>& inputs) {
+SessionDirLock::SessionDirLock(const std::string& dir) {
+  fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd_ < 0) throw input_error(dir, "", std::string("cannot open the session folder: ") + std::strerror(errno), "Choose a folder you can write to with -o");
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    throw input_error(dir, "", "another haptex take is recording into this folder right now",
+                      "Wait for it to end, or record into another folder with -o");
+  }
+}
+
+SessionDirLock::~SessionDirLock() { ::close(fd_); }
+
+PreparedSessionDir prepare_session_dir(const std::string& dir, bool overwrite, const std::vector<std::string>& inputs) {
   check_session_dir(dir, overwrite, inputs);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw input_error(dir, "", "cannot create the session folder: " + ec.message(), "Choose a folder you can write to with -o");
-  if (session_files(dir).empty()) return nullptr;
-  return std::make_unique<EarlierSession>(dir, old_session_files(dir));
+  PreparedSessionDir prepared;
+  prepared.lock = std::make_unique<SessionDirLock>(dir);
+  if (!session_files(dir).empty()) prepared.earlier = std::make_unique<EarlierSession>(dir, old_session_files(dir));
+  return prepared;
 }
 
 }  // namespace haptex::capture

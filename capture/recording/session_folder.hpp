@@ -33,9 +33,28 @@ class EarlierSession {
   int lock_ = -1;
 };
 
-// The same checks, then creates the folder; with overwrite, sets an old session's files aside
-// (null when there is none).
-std::unique_ptr<EarlierSession> prepare_session_dir(const std::string& dir, bool overwrite,
-                                                    const std::vector<std::string>& inputs = {});
+// The session folder locked (flock) while a take records into it, so a second take into the same
+// folder, with or without --force, is refused instead of setting the running take's files aside.
+class SessionDirLock {
+ public:
+  // Throws haptex::Error (bad_input) naming dir when another take holds it.
+  explicit SessionDirLock(const std::string& dir);
+  ~SessionDirLock();
+  SessionDirLock(const SessionDirLock&) = delete;
+  SessionDirLock& operator=(const SessionDirLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+// A folder ready for a take: locked, and an old session set aside (when --force found one).
+// Members go in reverse order: the old session is settled before the lock is let go.
+struct PreparedSessionDir {
+  std::unique_ptr<SessionDirLock> lock;
+  std::unique_ptr<EarlierSession> earlier;
+};
+
+// The same checks, then creates and locks the folder; with overwrite, sets an old session's files aside.
+PreparedSessionDir prepare_session_dir(const std::string& dir, bool overwrite, const std::vector<std::string>& inputs = {});
 
 }  // namespace haptex::capture

@@ -109,6 +109,22 @@ TEST(SessionFolder, ForceKeepsTheOldSessionUntilTheNewTakeSavesAPress) {
   EXPECT_EQ(std::distance(fs::directory_iterator(d.path()), fs::directory_iterator()), 1) << "the old session was left aside";
 }
 
+// Review 8: a second take into a folder whose take was still recording, with --force, deleted the
+// running take's files; the running take then exited 0 with its presses gone.
+TEST(SessionFolder, ASecondTakeIntoAFolderBeingRecordedIsRefused) {
+  const TempDir d;
+  const std::string o = d.file("o");
+  const int pid = start_haptex({"capture", "record", "--device", "fake:size=160x120", "--material", "Cork", "-o", o});
+  for (int i = 0; i < 200 && !fs::exists(o + "/session.json"); ++i) ::usleep(50000);
+  ASSERT_TRUE(fs::exists(o + "/session.json")) << "the first take did not start";
+  const std::string manifest = file_bytes(o + "/session.json");
+  expect_refusal(record(kFake, o, true, "Felt"), {o, "another haptex take is recording into this folder"});
+  EXPECT_TRUE(fs::exists(o + "/session.json"));
+  ::kill(pid, SIGTERM);
+  wait_for(pid);
+  EXPECT_EQ(nlohmann::json::parse(file_bytes(o + "/session.json"))["material"], "Cork");
+}
+
 // The recorded command, split as a POSIX shell splits it (shlex), gives back every word: a name with
 // quotes, back-quotes or $ stays a name when the line is pasted.
 // A press file found inside an input folder is an input: extract never writes over it, by its name or
