@@ -8,10 +8,12 @@
 
 #include "capture/scoring/contact_score.hpp"
 #include "core/error.hpp"
+#include "core/sha256.hpp"
 #include "dataset/channel_order.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/object_paths.hpp"
 #include "dataset/press_images.hpp"
+#include "dataset/vlen_bytes.hpp"
 #include "qa/checkers.hpp"
 #include "qa/thresholds.hpp"
 
@@ -229,20 +231,43 @@ std::string first_image_error(const h5::Group& press, const std::function<void(c
 
 }  // namespace
 
+namespace {
+
+// The SHA-256 of a press's stored peak image, "" when it cannot be read (gelsight.images says why).
+std::string peak_bytes_sha(const h5::Group& press) {
+  try {
+    const std::vector<std::uint8_t> bytes = dataset::read_vlen_bytes(press.open_dataset(dataset::layout::kPeak), 0);
+    return sha256_hex(std::span(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  } catch (const Error&) {
+    return "";
+  }
+}
+
+}  // namespace
+
 CheckResult check_gelsight_duplicate(const h5::Group& root) {
   CheckTally tally("gelsight.duplicate", "presses");
   std::map<std::pair<std::string, std::int64_t>, std::string> first;  // (source SHA-256, press in it) -> press path
+  std::map<std::string, std::string> first_peak;                      // peak image's SHA-256 -> press path
   for (const std::string& path : press_paths(root)) {
     const h5::Group press = root.open_group(path.substr(1));
     const auto sha = press.try_attr<std::string>(dataset::layout::kSourceSha256);
     const auto number = press.try_attr<std::int64_t>(dataset::layout::kPressInSource);
+    // Review 8: a copy of a video with other bytes (4 bytes appended, remuxed) has another SHA-256 but
+    // the same frames; no two presses of a sensor give one peak image byte for byte (its noise differs).
+    const std::string peak = peak_bytes_sha(press);
     if (!sha || sha->empty() || !number) {
       tally.skip(path + ": no source_sha256 or press_in_source to compare");
       continue;
     }
     const auto [at, added] = first.emplace(std::make_pair(*sha, *number), path);
-    if (added) tally.pass();
-    else tally.fail(path, "is press " + std::to_string(*number) + " of the same source file (SHA-256 " + sha->substr(0, 12) + "...) as " + at->second);
+    const auto [same_peak, new_peak] = peak.empty() ? std::make_pair(first_peak.end(), true) : first_peak.emplace(peak, path);
+    if (!added)
+      tally.fail(path, "is press " + std::to_string(*number) + " of the same source file (SHA-256 " + sha->substr(0, 12) + "...) as " + at->second);
+    else if (!new_peak)
+      tally.fail(path, "has the peak image of " + same_peak->second + " byte for byte: the same footage twice (a copy of its video)");
+    else
+      tally.pass();
   }
   return tally.result();
 }

@@ -5,6 +5,7 @@
 #include <hdf5.h>
 
 #include <filesystem>
+#include <fstream>
 #include <functional>
 
 #include "tests/hostile/hostile_support.hpp"
@@ -80,11 +81,16 @@ TEST(LeakySplit, ExtractRefusesAVideoTwiceAndTwoSpellingsOfOneMaterial) {
   fs::create_directories(dir.file("spelled"));
   fs::copy(dir.file("s/gelsight/Sandpaper 1"), dir.file("spelled/polished-1"));
   fs::copy(woven, dir.file("spelled/Polished 1"));
+  // Review 8: a copy with 4 bytes appended had its own SHA-256 and passed; its frames are the same.
+  const std::string appended = dir.file("appended.avi");
+  fs::copy_file(video, appended);
+  std::ofstream(appended, std::ios::app) << "JUNK";
   const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
       {{video, video}, {"is the same file as", video, "Give each video once"}},
       {{woven, video}, {"is the same file as", "Give each video once"}},
       {{dir.file("linked")}, {"is the same file as", "Polished 1 link"}},
       {{dir.file("spelled")}, {"make one material id, polished_1", "'polished-1'", "'Polished 1'"}},
+      {{video, appended, "--material", "Polished 1"}, {appended, "pixel for pixel the peak of " + video, "Give each recording once"}},
   };
   for (const auto& [inputs, says] : cases) {
     SCOPED_TRACE(says.front() + " " + inputs.front());
@@ -109,6 +115,16 @@ TEST(LeakySplit, ExtractRefusesAVideoTwiceAndTwoSpellingsOfOneMaterial) {
   EXPECT_EQ(qa.exit_code, 1);
   EXPECT_NE(qa.out.find("gelsight.duplicate"), std::string::npos) << qa.out;
   EXPECT_NE(qa.out.find("of the same source file"), std::string::npos) << qa.out;
+  // The copy from a video with other bytes: another source SHA-256, the same peak image (review 8).
+  {
+    Edit edit(copied);
+    const std::string presses = "materials/" + material_ids(copied).front() + "/presses";
+    const std::size_t last = edit.group(presses).children().size() - 1;
+    edit.group(presses + "/" + std::to_string(last)).set_attr("source_sha256", std::string(64, 'a'));
+  }
+  const CommandResult copy = run_haptex({"qa", copied});
+  EXPECT_EQ(copy.exit_code, 1);
+  EXPECT_NE(copy.out.find("has the peak image of"), std::string::npos) << copy.out;
 }
 
 }  // namespace
