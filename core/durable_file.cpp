@@ -55,6 +55,11 @@ void check_output_path(const std::string& path, bool overwrite) {
     throw input_error(path, "", "the output path exists and is not a file", "Name a file for this output, not a folder");
   if (!overwrite)
     throw input_error(path, "", "the output file already exists", "Remove it, give the output another name, or pass --force");
+  // --force swaps out a file, never a link (the swap would replace the link, not what it names): said
+  // now, before the work, not when the run is done (review 8).
+  if (fs::is_symlink(link))
+    throw input_error(path, "", "the output path is a symbolic link, which --force does not replace",
+                      "Name the file it points to, or remove the link");
 }
 
 void check_replaceable_output(const std::string& path, bool overwrite, const std::string& what,

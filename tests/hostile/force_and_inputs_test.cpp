@@ -504,5 +504,26 @@ TEST(Force, ADanglingLinkAtTheOutputIsRefused) {
   expect_refusal(run_haptex({"split", small_pipeline().dataset, "-o", d.file("x.plots")}), {"names the plot folder"});
 }
 
+// Review 8: --force on an output that is a link to haptex's own file did the whole job, then refused
+// saying that a link "took its place while this run wrote". It is refused before any work.
+TEST(Force, ALinkAtTheOutputIsRefusedBeforeAnyWork) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  ASSERT_EQ(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--no-plots"}).exit_code, 0);
+  const std::string merged = d.file("m.h5");
+  ASSERT_EQ(run_haptex({"merge", p.recordings, "-o", merged}).exit_code, 0);
+  fs::create_symlink(d.file("s.json"), d.file("s_link.json"));
+  fs::create_symlink(merged, d.file("m_link.h5"));
+  const std::vector<std::vector<std::string>> commands = {
+      {"split", p.dataset, "-o", d.file("s_link.json"), "--no-plots", "--force"},
+      {"merge", p.recordings, "-o", d.file("m_link.h5"), "--force"},
+  };
+  for (const auto& command : commands) {
+    SCOPED_TRACE(command.front());
+    expect_refusal(run_haptex(command), {"is a symbolic link, which --force does not replace"});
+  }
+  EXPECT_TRUE(fs::is_symlink(d.file("s_link.json")) && fs::is_symlink(d.file("m_link.h5")));
+}
+
 }  // namespace
 }  // namespace haptex::test
