@@ -240,19 +240,6 @@ class Extraction {
                         "Name the two folders (or --material) alike if they hold one material, or with different letters or digits if not");
   }
 
-  // Review 8: a copy of a video with other bytes (4 bytes appended, remuxed) passed the SHA-256 rule
-  // above with the same frames. No two presses of a sensor have one peak pixel for pixel (its noise).
-  void require_new_peak(const std::string& path, std::int64_t press_in_source, const cv::Mat& peak) {
-    const cv::Mat pixels = peak.isContinuous() ? peak : peak.clone();
-    const std::string sha = sha256_hex(std::span(reinterpret_cast<const char*>(pixels.data), pixels.total() * pixels.elemSize()));
-    const std::string press = path + " (press " + std::to_string(press_in_source) + ")";
-    if (const auto [at, added] = press_by_peak_.emplace(sha, press); !added)
-      throw input_error(path, "press " + std::to_string(press_in_source), "its peak frame is pixel for pixel the peak of " + at->second +
-                                          ": the same footage twice (a copy of the video), whose presses could land in both the "
-                                          "training and the test set",
-                        "Give each recording once");
-  }
-
   std::string no_press_message() const {
     std::string m = "no press found in " + std::to_string(result_.sources) + " input(s); nothing was written.";
     constexpr std::size_t kShown = 5;
@@ -283,7 +270,6 @@ class Extraction {
     p.frames_encoded = std::move(frames.frames_encoded);
     p.peak_encoded = std::move(frames.peak_encoded);
     const cv::Mat& peak = p.peak;
-    require_new_peak(source.path(), plan.press_in_source, peak);
     p.reference = scores.reference;
     p.contrast.assign(scores.scores.begin() + plan.range_first, scores.scores.begin() + plan.range_last + 1);
     p.fps = source.fps();
@@ -337,7 +323,6 @@ class Extraction {
   std::unique_ptr<PartialDirectory> sheets_, explain_;
   std::set<std::string> explain_names_;
   std::map<std::string, std::string> source_by_sha_;                      // SHA-256 -> the source first with it
-  std::map<std::string, std::string> press_by_peak_;                      // the peak's pixels' SHA-256 -> the press
   std::map<std::string, std::pair<std::string, std::string>> spelling_;  // material id -> (name, the source first with it)
   ExtractResult result_;
 };
