@@ -27,7 +27,7 @@ void apply(FakeDevice& fake, FakeMode& mode, bool& fps_given, const DeviceKeys& 
   if (key == "size") {
     const auto x = value.find('x');
     if (x == std::string::npos) keys.refuse(key, "expected WIDTHxHEIGHT");
-    const double width = keys.number(key, value.substr(0, x)), height = keys.number(key, value.substr(x + 1));
+    const double width = double(keys.count(key, value.substr(0, x))), height = double(keys.count(key, value.substr(x + 1)));
     // 4096: above any tactile sensor's frame (a GelSight Mini's is 3280 x 2464), and the float images
     // the fake renders its frames from stay under 1 GB (review 5: 8192x8192 took minutes to start).
     if (width > 4096 || height > 4096) keys.refuse(key, "the fake camera makes frames of at most 4096x4096");
@@ -41,8 +41,9 @@ void apply(FakeDevice& fake, FakeMode& mode, bool& fps_given, const DeviceKeys& 
     mode.fps = {keys.number(key, value)};
     fps_given = true;
   } else if (key == "presses") {
-    c.scene.presses = value == "-1" ? -1 : int(keys.number(key, value));
+    c.scene.presses = value == "-1" ? -1 : int(keys.count(key, value));
   } else if (key == "metadata") {
+    keys.flag(key, value);
     fake.node = c.metadata_path;
   } else {
     keys.refuse(key, "unknown key");
@@ -78,6 +79,17 @@ double DeviceKeys::number(const std::string& key, const std::string& text) const
   refuse(key, "'" + text + "' is not a number from 0 to 1e12 in plain decimals (0 or at least 1.2e-38; no leading zeros)");
 }
 
+std::uint64_t DeviceKeys::count(const std::string& key, const std::string& text) const {
+  // Review 8: disconnect=1.5 was cut to 1 frame and seed=0.5 to 0, where --seed 0.5 is refused.
+  if (!text::is_plain_decimal(text, text::Decimal::natural) || number(key, text) > 1e12)
+    refuse(key, "'" + text + "' is not a whole number from 0 to 1e12 in plain decimals (no fraction, exponent or leading zeros)");
+  return std::uint64_t(number(key, text));
+}
+
+void DeviceKeys::flag(const std::string& key, const std::string& value) const {
+  if (!value.empty()) refuse(key, "is a flag and takes no value (give '" + key + "' alone)");
+}
+
 double DeviceKeys::percent(const std::string& key, const std::string& text) const {
   const double value = number(key, text);
   if (value > 100) refuse(key, "'" + text + "' is not a percentage from 0 to 100");
@@ -92,20 +104,23 @@ bool DeviceKeys::apply_stream_key(FakeCameraConfig& c, const std::string& key, c
   } else if (key == "corrupt") {
     c.corrupt_percent = percent(key, value);
   } else if (key == "disconnect") {
-    c.disconnect_after = std::uint64_t(number(key, value));
+    c.disconnect_after = count(key, value);
   } else if (key == "stall") {
     const auto colon = value.find(':');
     if (colon == std::string::npos) refuse(key, "expected FRAME:MILLISECONDS");
-    c.stalls.push_back({std::uint64_t(number(key, value.substr(0, colon))), int(number(key, value.substr(colon + 1)))});
+    const std::uint64_t ms = count(key, value.substr(colon + 1));
+    if (ms > 3600000) refuse(key, "a stall of more than an hour (" + value.substr(colon + 1) + " ms)");
+    c.stalls.push_back({count(key, value.substr(0, colon)), int(ms)});
   } else if (key == "speed") {
     // Bounded so a frame's wall-clock due time stays a number of nanoseconds an int64 holds and the
     // device's clock never stands still (review 4: speed=1e-30 spun without end).
     c.speed = number(key, value);
     if (!(c.speed >= kSlowest && c.speed <= kFastest)) refuse(key, "'" + value + "' is not from 0.01 to 100 (times the rate)");
   } else if (key == "lockstep") {
+    flag(key, value);
     c.realtime = false;
   } else if (key == "seed") {
-    c.seed = std::uint64_t(number(key, value));
+    c.seed = count(key, value);
   } else {
     return false;
   }

@@ -39,6 +39,9 @@ class DeviceKeys {
   // would silently win), except `stall`, which adds a stall each time.
   std::vector<std::pair<std::string, std::string>> items(const std::string& list) const;
   double number(const std::string& key, const std::string& text) const;  // decimal, 0 to 1e12
+  std::uint64_t count(const std::string& key, const std::string& text) const;  // whole, 0 to 1e12 (frames, a seed)
+  // A key that is a flag (lockstep, metadata) given a value is refused, not read as the flag.
+  void flag(const std::string& key, const std::string& value) const;
   double percent(const std::string& key, const std::string& text) const;  // 0 to 100
   // The stream's timing and faults: drop, error, corrupt, disconnect, stall, speed, lockstep, seed.
   // Returns false when `key` is none of them.

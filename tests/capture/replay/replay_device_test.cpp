@@ -137,8 +137,8 @@ TEST_F(ReplayDevice, RefusesUnknownKeysAndBadValuesNamingThem) {
   expect_refused("replay:" + path + ",fps=0", {"fps", "1 to 1000"});
   expect_refused("replay:" + path + ",fps=fast", {"fps", "'fast' is not a number"});
   expect_refused("replay:" + path + ",drop=-5", {"drop", "'-5' is not a number from 0 to 1e12"});
-  expect_refused("replay:" + path + ",disconnect=", {"disconnect", "'' is not a number"});
-  expect_refused("replay:" + path + ",disconnect=inf", {"disconnect", "'inf' is not a number from 0 to 1e12"});
+  expect_refused("replay:" + path + ",disconnect=", {"disconnect", "'' is not a whole number"});
+  expect_refused("replay:" + path + ",disconnect=inf", {"disconnect", "'inf' is not a whole number from 0 to 1e12"});
   expect_refused("replay:" + path + ",drop=1e-40", {"drop", "0 or at least 1.2e-38"});
   expect_refused("replay:" + path + ",drop=nan", {"drop", "'nan' is not a number"});
   expect_refused("replay:" + path + ",speed=1e999", {"speed", "'1e999' is not a number"});
