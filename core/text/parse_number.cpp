@@ -59,7 +59,7 @@ std::string describe_bad_number(std::string_view text, bool) {
   double ignored = 0;
   const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), ignored);
   if (error == std::errc::result_out_of_range && end == t.data() + t.size())
-    return quoted + " is outside the 32-bit floats haptex stores (magnitudes from 1.2e-38 to 3.4e38, or 0)";
+    return quoted + " is out of range of the 32-bit floats haptex stores (magnitudes from 1.2e-38 to 3.4e38, or 0)";
   return quoted + " is not a number";
 }
 

@@ -194,7 +194,7 @@ TEST(Messages, AnUnreadableSubfolderIsNamedItself) {
 TEST(Messages, ANumberPastAFloatsRangeIsSaidToBeOutOfRange) {
   const TempDir dir;
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"1e-400", "outside the 32-bit floats haptex stores (magnitudes from 1.2e-38 to 3.4e38, or 0)"},
+      {"1e-400", "out of range of the 32-bit floats haptex stores (magnitudes from 1.2e-38 to 3.4e38, or 0)"},
       {"1e-320", "under 1.2e-38"},
       {"-1e-40", "under 1.2e-38"},
   };

@@ -12,7 +12,8 @@
 namespace haptex::test {
 namespace {
 
-// `source` tells the presses' videos apart: each is its own (qa's gelsight.duplicate).
+// `source` tells the presses' videos apart: each is its own, with its own peak image, as a sensor's
+// noise makes a real press's (qa's gelsight.duplicate compares both).
 dataset::GelsightPress tiny_press(int size, int seed, int source) {
   dataset::GelsightPress p;
   p.source_file = "press_" + std::to_string(source) + ".mkv";
@@ -20,6 +21,7 @@ dataset::GelsightPress tiny_press(int size, int seed, int source) {
   p.reference = cv::Mat(size, size, CV_8UC3, cv::Scalar(100, 110, 120));
   p.peak = p.reference.clone();
   cv::circle(p.peak, {size / 2, size / 2}, size / 4, cv::Scalar(150 + seed, 90, 60), -1);
+  p.peak.at<cv::Vec3b>(0, 0) = cv::Vec3b(std::uint8_t(source % 256), std::uint8_t(source / 256 % 256), 0);
   for (int i = 0; i < 12; ++i) p.frames.push_back(p.peak.clone()), p.frame_indices.push_back(20 + i);
   p.peak_index = 25;
   p.frame_start = 15;
