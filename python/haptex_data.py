@@ -351,9 +351,13 @@ def _put_in_place(partial, path, inputs, overwrite):
 def _remove_on_signals(partial):
     """Until the returned function is called, Ctrl-C, TERM and HUP remove partial and then end the
     process by the same signal (README: only kill -9 or a crash leaves a .partial behind). A signal
-    the process ignores (nohup, `cmd &`) stays ignored."""
+    the process ignores (nohup, `cmd &`) stays ignored. Python takes signals in its main thread only:
+    called from another, it changes nothing."""
     import signal
+    import threading
     before = {}
+    if threading.current_thread() is not threading.main_thread():
+        return lambda: None
 
     def end(number, _frame):
         try:
