@@ -84,6 +84,26 @@ int with_stdout_written(const std::string& command, int code) {
   return 1;
 }
 
+// Prints the exception being handled as an error of `command` and returns the exit code it means.
+int reported_error(const std::string& command, int argc, char** argv) {
+  try {
+    throw;
+  } catch (const Error& e) {
+    std::cerr << "haptex " << command << ": error: " << shown_message(e.what(), argc, argv) << "\n";
+    return e.kind() == Error::Kind::bad_input ? 2 : 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::cerr << "haptex " << command << ": error: " << text::printable(e.path1().string()) << ": " << e.code().message()
+              << ". Check the path and its permissions\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "haptex " << command << ": error: out of memory. Give smaller inputs, or run it on a machine with more memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "haptex " << command << ": unexpected error: " << shown_message(e.what(), argc, argv) << "\n";
+    return 1;
+  }
+}
+
 }  // namespace
 
 int run_main(int argc, char** argv) {
@@ -133,19 +153,9 @@ int run_main(int argc, char** argv) {
     try {
       check_option_values(*sub);
       return with_stdout_written(name, command->run(global));
-    } catch (const Error& e) {
-      std::cerr << "haptex " << name << ": error: " << shown_message(e.what(), argc, argv) << "\n";
-      return e.kind() == Error::Kind::bad_input ? 2 : 1;
-    } catch (const std::filesystem::filesystem_error& e) {
-      std::cerr << "haptex " << name << ": error: " << text::printable(e.path1().string()) << ": " << e.code().message()
-                << ". Check the path and its permissions\n";
-      return 2;
-    } catch (const std::bad_alloc&) {
-      std::cerr << "haptex " << name << ": error: out of memory. Give smaller inputs, or run it on a machine with more memory\n";
-      return 1;
-    } catch (const std::exception& e) {
-      std::cerr << "haptex " << name << ": unexpected error: " << shown_message(e.what(), argc, argv) << "\n";
-      return 1;
+    } catch (...) {
+      let_a_taken_signal_finish();  // an error the signal caused is not reported: the signal ends the run
+      return reported_error(name, argc, argv);
     }
   }
   return 2;

@@ -207,6 +207,8 @@ std::vector<std::string> temporaries_of(const std::string& final_path) {
 
 std::unique_lock<std::mutex> hold_temporaries() { return std::unique_lock<std::mutex>(listed_lock()); }
 
+void let_a_taken_signal_finish() { const std::lock_guard<std::mutex> wait(listed_lock()); }
+
 void forget_temporary(const std::string& path) {
   const std::lock_guard<std::mutex> lock(listed_lock());
   listed().erase(path);

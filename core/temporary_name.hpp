@@ -52,4 +52,9 @@ void remove_temporaries_on_signals();
 // or forgets a temporary (creating a PartialFile, destroying one) may run while it is held.
 [[nodiscard]] std::unique_lock<std::mutex> hold_temporaries();
 
+// Returns at once, unless a signal is taking the temporaries away: then it never returns, and the
+// signal ends the run. Called before an error is reported, since the error may be the signal's own
+// doing (a file made in a temporary folder the signal has just removed).
+void let_a_taken_signal_finish();
+
 }  // namespace haptex

@@ -76,7 +76,9 @@ PressVideoWriter::PressVideoWriter(const std::string& directory, int press, doub
   // The AVI header holds a whole frame rate (OpenCV rounds it), and the sidecar states the same one.
   if (!(fps >= 1) || fps != std::round(fps)) throw failure("PressVideoWriter: the frame rate must be a whole number of frames a second");
   std::error_code ec;
-  fs::create_directories(directory, ec);
+  // Inside an existing folder only: when a signal has taken synth's temporary folder away, a press
+  // writer still running must not make it again (core/temporary_name.hpp).
+  fs::create_directory(directory, ec);
   if (ec) throw input_error(directory, "", "cannot create the output directory: " + ec.message(), "Choose another -o");
   const std::string sidecar = press_sidecar_path(directory, press);
   check_output_path(sidecar, true);

@@ -11,7 +11,8 @@ namespace fs = std::filesystem;
 OutputFolder::OutputFolder(const std::string& out, bool overwrite) : partial_(out, {overwrite, "output folder", "-o", "haptex synth"}) {
   for (const char* sub : {"recordings", "gelsight"}) {
     std::error_code ec;
-    fs::create_directories(fs::path(path()) / sub, ec);
+    // One level only: a temporary folder a signal has just taken away is not made again.
+    fs::create_directory(fs::path(path()) / sub, ec);
     if (ec) throw input_error(out, "", "cannot create the output folder (" + ec.message() + ")", "Choose a writable place with -o");
   }
 }

@@ -103,6 +103,17 @@ TEST(PressVideoWriter, AbandonedPressLeavesNothingBehind) {
   EXPECT_TRUE(fs::is_empty(dir.path()));
 }
 
+// CI, stop 45: a signal took synth's temporary folder away while a press writer was starting, and the
+// writer made the whole path again (left behind). A press folder is made only inside one that exists.
+TEST(PressVideoWriter, APressFolderIsMadeOnlyInsideAnExistingFolder) {
+  test::TempDir dir;
+  const std::string gone = dir.file("out.ABCDEFGH.partial");
+  EXPECT_THROW(PressVideoWriter(gone + "/gelsight/material", 0, 30), Error);
+  EXPECT_TRUE(fs::is_empty(dir.path()));
+  PressVideoWriter writer(dir.file("material"), 0, 30);  // one level is made
+  EXPECT_TRUE(fs::is_directory(dir.file("material")));
+}
+
 TEST(PressVideoWriter, ReplacesAnOlderPress) {
   test::TempDir dir;
   write_press_video(dir.path().string(), numbered_frames(40, {64, 48}), sidecar_for(0));
