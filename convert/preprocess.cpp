@@ -22,7 +22,7 @@ std::vector<float> interleave(const std::vector<double>& a, const std::vector<do
 }
 
 std::vector<float> lowpassed(const std::vector<double>& raw) {
-  static const signal::Sos sos = signal::butter_lowpass_hz(kLowpassOrder, kLowpassCutoffHz, kSampleRateHz);
+  static const signal::Sos sos = signal::butter_lowpass_hz(dataset::kLowpassOrder, dataset::kLowpassCutoffHz, kSampleRateHz);
   return narrow(signal::sosfiltfilt(sos, raw));
 }
 
@@ -41,9 +41,9 @@ dataset::RecordingToWrite preprocess(const Recording& r) {
   w.source_sha256 = r.source_sha256;
   w.source_numbers = r.source_numbers;
   w.source_texts = r.source_texts;
-  w.lowpass = {"butterworth", kLowpassOrder, kLowpassCutoffHz, "sosfiltfilt, odd padding, default pad length (scipy semantics)",
+  w.lowpass = {"butterworth", dataset::kLowpassOrder, dataset::kLowpassCutoffHz, "sosfiltfilt, odd padding, default pad length (scipy semantics)",
                "4th-order Butterworth low-pass at 20 Hz run forward and backward (zero phase)"};
-  static_assert(kLowpassOrder == 4 && kLowpassCutoffHz == 20.0, "the description above states them");
+  static_assert(dataset::kLowpassOrder == 4 && dataset::kLowpassCutoffHz == 20.0, "the description above states them");
   w.accel_reduction = {"DFT321 frame by frame, phase along the axes' principal direction (Landin et al. 2010; schemas/hdf5-layout.md)",
                        std::int64_t(signal::kDft321Frames.window), std::int64_t(signal::kDft321Frames.hop)};
   w.accel = narrow(signal::dft321(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z")));

@@ -8,9 +8,6 @@
 
 namespace haptex::convert {
 
-inline constexpr int kLowpassOrder = 4;
-inline constexpr double kLowpassCutoffHz = 20.0;
-
 // The recording as the recordings file stores it: every signal as float32 (24 bits of mantissa is
 // beyond any accelerometer's or force sensor's resolution and halves the files; all computation
 // happens in double before), the derived ones computed, the source and its units named.

@@ -14,6 +14,11 @@
 
 namespace haptex::dataset {
 
+// The format's low-pass of force and speed (schemas/hdf5-layout.md): convert applies it, and qa's
+// filter.stated checks that a recording states it.
+inline constexpr int kLowpassOrder = 4;
+inline constexpr double kLowpassCutoffHz = 20.0;
+
 // How the low-passed signals were made, stated in each recording's attributes.
 struct LowpassStated {
   std::string filter;

@@ -62,6 +62,9 @@ const std::vector<CheckInfo>& all_checks() {
        "Convert the recording again: the *_lp signals must be the 20 Hz zero-phase Butterworth output"},
       {"filter.raw", error, "force_normal and speed keep at least 1e-8 of their power above 40 Hz (unfiltered)",
        "Convert from the unfiltered source signals; the raw datasets must not be low-passed"},
+      {"filter.stated", error,
+       "a recording states the format's low-pass (order 4, cut-off 20 Hz) and reduction frames (1024 samples, hop 256)",
+       "Convert the recording again: its signals were made otherwise than the format says"},
       {"recordings.duplicate", error, "no two recordings share a source SHA-256 or identical acceleration data",
        "Remove the repeated source file and convert again; duplicates leak between train and test"},
       // gelsight presses (also inside dataset files)

@@ -1,9 +1,12 @@
-// filter.*: the low-passed force and speed hold (almost) nothing above 40 Hz; the raw ones still do.
+// filter.*: the low-passed force and speed hold (almost) nothing above 40 Hz; the raw ones still do;
+// the recording states the format's low-pass and reduction.
 #include <cmath>
 #include <optional>
 #include <sstream>
 
+#include "core/signal/dft321.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/recordings_file.hpp"
 #include "qa/band_power.hpp"
 #include "qa/recording_checks.hpp"
 #include "qa/thresholds.hpp"
@@ -63,6 +66,24 @@ void check_filter_raw(const LoadedRecording& r, CheckTally& tally, Seen& share_a
     else tally.pass();
   }
   tally.set_pass_message("at least " + scientific(share_above.low) + " of a raw signal's power above 40 Hz");
+}
+
+// The attributes saying how the signals were made state the format's low-pass and reduction: a file
+// that states another cut-off (review 8: 1e300 Hz) holds signals no model of haptex's was made for.
+void check_filter_stated(const LoadedRecording& r, CheckTally& tally) {
+  std::string wrong, missing;
+  const auto compare = [&](const char* name, const auto& stated, double format) {
+    if (!stated) missing += std::string(missing.empty() ? "" : ", ") + name;
+    else if (!(double(*stated) == format))
+      wrong += std::string(wrong.empty() ? "" : "; ") + name + " is " + number(double(*stated), 8) + ", not " + number(format, 8);
+  };
+  compare(layout::kLowpassOrderAttr, r.lowpass_order, dataset::kLowpassOrder);
+  compare(layout::kLowpassCutoffAttr, r.lowpass_cutoff_hz, dataset::kLowpassCutoffHz);
+  compare(layout::kAccelReductionWindow, r.reduction_window, double(signal::kDft321Frames.window));
+  compare(layout::kAccelReductionHop, r.reduction_hop, double(signal::kDft321Frames.hop));
+  if (!wrong.empty()) tally.fail(r.path, wrong);
+  else if (!missing.empty()) tally.skip(r.path + ": no readable " + missing);  // layout.required and layout.dtype say why
+  else tally.pass();
 }
 
 }  // namespace haptex::qa

@@ -10,13 +10,14 @@ namespace haptex::qa {
 namespace {
 
 std::vector<CheckResult> recording_integrity(const h5::Group& root) {
-  CheckTally nan{"signal.nan", "recordings"}, rate{"signal.sample_rate", "recordings"};
+  CheckTally nan{"signal.nan", "recordings"}, rate{"signal.sample_rate", "recordings"}, stated{"filter.stated", "recordings"};
   for (const auto& path : recording_paths(root)) {
     const LoadedRecording r = load_recording(root, path);
     check_signal_nan(r, nan);
     check_signal_sample_rate(r, rate);
+    check_filter_stated(r, stated);
   }
-  return {nan.result(), rate.result()};
+  return {nan.result(), rate.result(), stated.result()};
 }
 
 void append(std::vector<CheckResult>& out, std::vector<CheckResult> more) {

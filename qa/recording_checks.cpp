@@ -19,6 +19,7 @@ struct RecordingTallies {
   CheckTally reduction_energy{"signal.reduction_energy", "recordings"};
   CheckTally lowpass{"filter.lowpass", "low-passed signals"};
   CheckTally raw{"filter.raw", "raw signals"};
+  CheckTally stated{"filter.stated", "recordings"};
   CheckTally duplicate{"recordings.duplicate", "recordings"};
   Seen flat_share, force, speed, band_share, lowpass_share, raw_share;
   Seen energy_ratio{INFINITY, 0};  // a ratio of energies: never below 0
@@ -42,6 +43,7 @@ std::vector<CheckResult> check_recordings(const h5::Group& root) {
     check_signal_reduction_energy(r, t.reduction_energy, t.energy_ratio);
     check_filter_lowpass(r, t.lowpass, t.lowpass_share);
     check_filter_raw(r, t.raw, t.raw_share);
+    check_filter_stated(r, t.stated);
     check_recordings_duplicate(r, t.duplicate, t.hashes);
   }
   return {t.nan.result(),
@@ -55,6 +57,7 @@ std::vector<CheckResult> check_recordings(const h5::Group& root) {
           t.reduction_energy.result(),
           t.lowpass.result(),
           t.raw.result(),
+          t.stated.result(),
           t.duplicate.result()};
 }
 

@@ -35,6 +35,7 @@ void check_signal_reduction_energy(const LoadedRecording& r, CheckTally& tally, 
 
 void check_filter_lowpass(const LoadedRecording& r, CheckTally& tally, Seen& share_above);
 void check_filter_raw(const LoadedRecording& r, CheckTally& tally, Seen& share_above);
+void check_filter_stated(const LoadedRecording& r, CheckTally& tally);
 
 // Source and acceleration-data hashes of the recordings seen so far, each with the first recording
 // that had it.

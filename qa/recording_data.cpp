@@ -77,6 +77,10 @@ LoadedRecording load_recording(const h5::Group& root, const std::string& path) {
   r.duration_s = group.try_attr<double>(layout::kDuration);
   r.samples = group.try_attr<std::int64_t>(layout::kSamples);
   r.source_sha256 = group.try_attr<std::string>(layout::kSourceSha256);
+  r.lowpass_order = group.try_attr<std::int64_t>(layout::kLowpassOrderAttr);
+  r.lowpass_cutoff_hz = group.try_attr<double>(layout::kLowpassCutoffAttr);
+  r.reduction_window = group.try_attr<std::int64_t>(layout::kAccelReductionWindow);
+  r.reduction_hop = group.try_attr<std::int64_t>(layout::kAccelReductionHop);
   // Rows: the recording's `samples`; without it, whatever `accel` has (layout.required reports it).
   std::optional<std::size_t> rows;
   if (r.samples && *r.samples >= 0) rows = std::size_t(*r.samples);

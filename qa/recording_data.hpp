@@ -27,6 +27,9 @@ struct LoadedRecording {
   std::optional<double> sample_rate_hz, duration_s;
   std::optional<std::int64_t> samples;
   std::optional<std::string> source_sha256;
+  // How the signals were made (filter.stated): the low-pass's order and cut-off, the reduction's frames.
+  std::optional<std::int64_t> lowpass_order, reduction_window, reduction_hop;
+  std::optional<double> lowpass_cutoff_hz;
   std::map<std::string, Signal> signals;  // by dataset name; every name in kSignalNames is present
 
   // The sample rate to analyse spectra with: the file's, or 10 kHz when it has none.

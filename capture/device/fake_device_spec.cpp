@@ -143,6 +143,10 @@ FakeDevice parse_fake_device(const std::string& device) {
   if (!(mode.fps.front() >= dataset::kLowestFps && mode.fps.front() <= dataset::kHighestFps))
     keys.refuse("fps", "must be from 1 to 1000 frames per second, as a press file's own fps must be");
   fake.config.modes = {mode};
+  // Messages and session.json name the device as the user gave it, not the node the fake emulates:
+  // a real camera may well be /dev/video0 (review 8, #11).
+  (fake.node == fake.config.metadata_path ? fake.config.metadata_path : fake.config.capture_path) = device;
+  fake.node = device;
   return fake;
 }
 

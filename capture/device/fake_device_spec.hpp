@@ -16,7 +16,7 @@ namespace haptex::capture {
 
 struct FakeDevice {
   FakeCameraConfig config;
-  std::string node;  // the path to open on the fake
+  std::string node;  // the path to open on the fake: the --device string itself
   // What it sends was compressed across frames before (a replayed MPEG-4 or H.264 video): its
   // no-contact frames repeat each other's artefacts, so the recorder calibrates its thresholds on the
   // frames after the reference (RecorderOptions::calibration_frames).

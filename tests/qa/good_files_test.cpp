@@ -22,7 +22,7 @@ void expect_clean(const qa::Report& report, qa::FileKind kind, std::size_t check
 }
 
 TEST(GoodFiles, RecordingsPassEveryCheck) {
-  expect_clean(qa::run_qa({small_pipeline().recordings, {}}), qa::FileKind::recordings, 17);
+  expect_clean(qa::run_qa({small_pipeline().recordings, {}}), qa::FileKind::recordings, 18);
 }
 
 // The synthetic gel's references are too smooth for gelsight.blur (docs/qa.md).
@@ -31,7 +31,7 @@ TEST(GoodFiles, GelsightPassesEveryCheck) {
 }
 
 TEST(GoodFiles, DatasetWithItsSplitPassesEveryCheck) {
-  expect_clean(qa::run_qa({small_pipeline().dataset, small_pipeline().split}), qa::FileKind::dataset, 5 + 12 + 11 + 2 + 9,
+  expect_clean(qa::run_qa({small_pipeline().dataset, small_pipeline().split}), qa::FileKind::dataset, 5 + 13 + 11 + 2 + 9,
                {"gelsight.blur"});
 }
 

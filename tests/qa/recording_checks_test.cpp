@@ -6,6 +6,9 @@
 #include "core/signal/butterworth.hpp"
 #include "core/signal/dft321.hpp"
 #include "core/signal/sosfilt.hpp"
+#include "core/error.hpp"
+#include "core/h5/file.hpp"
+#include "qa/integrity.hpp"
 #include "qa/run_qa.hpp"
 #include "tests/support/mutations.hpp"
 #include "tests/qa/qa_fixture.hpp"
@@ -219,6 +222,20 @@ TEST_F(RecordingsMutation, LowPassedRawSpeedIsFilterRaw) {
   const qa::Report r = qa();
   expect_only(r, "filter.raw");
   EXPECT_NE(r.find("filter.raw")->message.find("/speed: only"), std::string::npos) << r.find("filter.raw")->message;
+}
+
+// Review 8, #9: a recording stating a 1e300 Hz low-pass passed qa, merge and align.
+TEST_F(RecordingsMutation, AnotherStatedFilterIsFilterStated) {
+  Edit(file_).group(kRecording).set_attr("lowpass_cutoff_hz", 1e300);
+  Edit(file_).group(kOther).set_attr("accel_reduction_hop", std::int64_t(512));
+  const qa::Report r = qa();
+  expect_only(r, "filter.stated");
+  const std::string& message = r.find("filter.stated")->message;
+  EXPECT_NE(message.find("/" + kRecording + ": lowpass_cutoff_hz is 1e+300, not 20"), std::string::npos) << message;
+  EXPECT_NE(message.find("(and 1 more)"), std::string::npos) << message << ": the other recording's hop of 512";
+  ASSERT_EQ(r.find("filter.stated")->where.size(), 2u);
+  EXPECT_NE(r.find("filter.stated")->where[1].find(kOther), std::string::npos) << r.find("filter.stated")->where[1];
+  EXPECT_THROW(qa::require_integrity(h5::File::open(file_).root(), dataset::Kind::recordings), Error) << "merge and align refuse it too";
 }
 
 TEST_F(RecordingsMutation, CopiedRecordingIsRecordingsDuplicate) {

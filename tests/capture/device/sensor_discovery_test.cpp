@@ -1,11 +1,14 @@
 // USB discovery against a fake sysfs tree, as libusb would list the devices.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include "capture/device/sensor_discovery.hpp"
 #include "core/error.hpp"
+#include "core/text/format.hpp"
+#include "dataset/press_file.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::capture {
@@ -123,6 +126,30 @@ TEST_F(Discovery, RefusesABadSensorList) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("/sensors/0/product_pattern"), std::string::npos) << e.what();
+  }
+}
+
+// Review 8, #9: a mode of 1e39 frames a second was taken. The schema's bounds are the press file's
+// (dataset/press_file.hpp), so a rate the list allows is one a press file can state.
+TEST_F(Discovery, ASensorModeHasARateAPressFileCanState) {
+  const auto list_with = [&](const std::string& mode) {
+    std::ofstream(dir_.file("modes.json")) << R"({"format": "tactile-sensors/1", "sensors": [{"model": "X", "vendor_id": "0c45", "product_id": "636d", "modes": [)" +
+                                                   mode + "]}]}";
+    return dir_.file("modes.json");
+  };
+  EXPECT_NO_THROW(SensorCatalog::from_file(list_with(text::format(R"({"width": 65535, "height": 1, "fps": %g})", dataset::kHighestFps))));
+  EXPECT_NO_THROW(SensorCatalog::from_file(list_with(text::format(R"({"width": 1, "height": 1, "fps": %g})", dataset::kLowestFps))));
+  for (const std::string& bad : {text::format(R"({"width": 640, "height": 480, "fps": %.17g})", std::nextafter(dataset::kHighestFps, 1e9)),
+                                text::format(R"({"width": 640, "height": 480, "fps": %.17g})", std::nextafter(dataset::kLowestFps, 0.0)),
+                                std::string(R"({"width": 640, "height": 480, "fps": 1e39})"),
+                                std::string(R"({"width": 65536, "height": 480, "fps": 30})")}) {
+    try {
+      SensorCatalog::from_file(list_with(bad));
+      ADD_FAILURE() << bad << " was taken";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+      EXPECT_NE(std::string(e.what()).find("/sensors/0/modes/0/"), std::string::npos) << e.what();
+    }
   }
 }
 
