@@ -56,7 +56,7 @@ TEST_F(QaCli, RecordingsFileTableEndsWithTheVerdict) {
   EXPECT_NE(r.out.find("ID"), std::string::npos);
   EXPECT_NE(r.out.find("SEVERITY"), std::string::npos);
   EXPECT_NE(r.out.find("signal.accel_spectrum"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("verdict: clean (0 errors, 0 warnings in 17 checks)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("verdict: clean (0 errors, 0 warnings in 18 checks)"), std::string::npos) << r.out;
 }
 
 TEST_F(QaCli, DatasetWithSplitJsonFollowsTheSchema) {

@@ -43,7 +43,7 @@ TEST(PhotoPress, FiveCropsAtSeparatePlacesBecomePressVideos) {
   test::TempDir dir;
   const std::string photo_path = write_texture_photo(dir);
   const cv::Mat photo = cv::imread(photo_path);
-  const std::string out = (dir.path() / "gelsight" / "Test Weave").string();
+  const std::string out = (dir.path() / "Test Weave").string();  // press folders are made inside an existing one
   const auto sidecars = write_photo_presses(photo_path, out, "Test Weave", 9);
   ASSERT_EQ(sidecars.size(), 5u);
   std::set<std::pair<int, int>> corners;
