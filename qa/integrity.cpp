@@ -10,14 +10,17 @@ namespace haptex::qa {
 namespace {
 
 std::vector<CheckResult> recording_integrity(const h5::Group& root) {
-  CheckTally nan{"signal.nan", "recordings"}, rate{"signal.sample_rate", "recordings"}, stated{"filter.stated", "recordings"};
+  CheckTally nan{"signal.nan", "recordings"}, rate{"signal.sample_rate", "recordings"}, stated{"filter.stated", "recordings"},
+      duplicate{"recordings.duplicate", "recordings"};
+  SeenHashes hashes;
   for (const auto& path : recording_paths(root)) {
     const LoadedRecording r = load_recording(root, path);
     check_signal_nan(r, nan);
     check_signal_sample_rate(r, rate);
     check_filter_stated(r, stated);
+    check_recordings_duplicate(r, duplicate, hashes);  // a recording twice would leak between train and test
   }
-  return {nan.result(), rate.result(), stated.result()};
+  return {nan.result(), rate.result(), stated.result(), duplicate.result()};
 }
 
 void append(std::vector<CheckResult>& out, std::vector<CheckResult> more) {
@@ -30,6 +33,7 @@ std::vector<CheckResult> check_integrity(const h5::Group& root, dataset::Kind ki
   std::vector<CheckResult> results = check_layout(root, kind);
   if (kind != dataset::Kind::gelsight) append(results, recording_integrity(root));
   if (kind != dataset::Kind::recordings) {
+    results.push_back(check_gelsight_duplicate(root));  // one press twice would leak between train and test
     results.push_back(check_gelsight_channel_order(root));
     results.push_back(check_gelsight_frame_numbers(root));
     results.push_back(check_gelsight_images(root));

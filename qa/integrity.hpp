@@ -1,7 +1,9 @@
 #pragma once
 // The checks that say whether a file holds what its haptex_format promises, as opposed to whether
 // its data is good enough to train on: the layout (layout.*), finite signals at the format's rate
-// (signal.nan, signal.sample_rate), press images in a known channel order (gelsight.channel_order)
+// (signal.nan, signal.sample_rate) made with the format's filter (filter.stated), no recording or press
+// twice (recordings.duplicate, gelsight.duplicate: a leak between train and test, however good the data),
+// press images in a known channel order (gelsight.channel_order)
 // and whole (gelsight.images), frame numbers that agree (gelsight.frame_numbers), and a window table that matches its recordings (dataset.windows,
 // dataset.cache). `haptex merge` refuses a shard that fails any of them (docs/merge.md): it reads
 // what it copies as strictly as qa does. The quality checks stay qa's, run on the merged file.

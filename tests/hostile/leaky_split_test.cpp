@@ -128,6 +128,23 @@ TEST(LeakySplit, ExtractRefusesAVideoTwiceAndTwoSpellingsOfOneMaterial) {
   const CommandResult copy = run_haptex({"qa", copied});
   EXPECT_EQ(copy.exit_code, 1);
   EXPECT_NE(copy.out.find("has the peak image of"), std::string::npos) << copy.out;
+  // Review 8: align still built a dataset of it, and merge took it as a shard. Both now refuse it, as
+  // they do a recording given twice.
+  const std::string recordings = copy_into(dir, small_pipeline().recordings, "r.h5");
+  expect_refusal(run_haptex({"align", "--recordings", recordings, "--gelsight", copied, "-o", dir.file("d.h5")}),
+                 {"gelsight.duplicate", "has the peak image of"});
+  expect_refusal(run_haptex({"merge", copied, dir.file("a.h5"), "-o", dir.file("m.h5")}), {"gelsight.duplicate"});
+  {
+    Edit edit(recordings);
+    const std::string material = "materials/" + material_ids(recordings).front() + "/recordings";
+    const std::size_t count = edit.group(material).children().size();
+    ASSERT_GE(H5Ocopy(edit.root().id(), (material + "/0").c_str(), edit.root().id(), (material + "/" + std::to_string(count)).c_str(),
+                      H5P_DEFAULT, H5P_DEFAULT), 0);
+  }
+  expect_refusal(run_haptex({"align", "--recordings", recordings, "--gelsight", small_pipeline().gelsight, "-o", dir.file("d.h5")}),
+                 {"recordings.duplicate", "the same source file"});
+  EXPECT_FALSE(fs::exists(dir.file("d.h5")));
+  EXPECT_FALSE(fs::exists(dir.file("m.h5")));
 }
 
 }  // namespace
