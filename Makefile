@@ -7,8 +7,8 @@ PACKAGES   := build-essential cmake pkg-config \
               libopencv-dev libv4l-dev v4l-utils libusb-1.0-0-dev libhdf5-dev libeigen3-dev \
               libfftw3-dev libpugixml-dev zlib1g-dev libjpeg-dev nlohmann-json3-dev libvalijson-dev libboost-math-dev \
               libcli11-dev libsndfile1-dev gnuplot-nox libgtest-dev libgmock-dev libbenchmark-dev \
-              python3-h5py python3-numpy python3-pil
-BENCH_PACKAGES := python3-scipy python3-opencv python3-torch python3-torchaudio hyperfine
+              python3-h5py python3-numpy python3-pil python3-scipy
+BENCH_PACKAGES := python3-opencv python3-torch python3-torchaudio hyperfine
 HAPTEX     := $(BUILD)/haptex
 DEMO       := $(BUILD)/demo
 
@@ -57,7 +57,7 @@ bench:
 
 # Regenerates the reference values under tests/golden with Debian's python3-scipy.
 golden:
-	$(MAKE) deps EXTRA_PACKAGES=python3-scipy
+	$(MAKE) deps
 	cd tests/golden && for s in *.py; do /usr/bin/python3 $$s || exit 1; done
 
 clean:
