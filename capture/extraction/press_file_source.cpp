@@ -7,6 +7,8 @@
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "core/sha256.hpp"
+#include "core/text/format.hpp"
+#include "core/text/parse_number.hpp"
 #include "dataset/channel_order.hpp"
 #include "dataset/decode_image.hpp"
 #include "dataset/layout.hpp"
@@ -16,6 +18,19 @@ namespace haptex::capture {
 namespace layout = dataset::layout;
 namespace {
 
+// A recorder figure stored in the press file, in grey levels (capture/scoring/contact_score.hpp):
+// finite, from 0 to 255, and the trigger above 0 (a 32-bit float's least normal value). A damaged one
+// is refused by name rather than changing which frames count as contact (review 9, F1).
+float stored_grey_levels(const std::string& file, const h5::Group& root, const char* name, bool above_zero) {
+  const double value = root.attr_double(name);
+  const bool fits = value >= (above_zero ? text::kSmallestStored : 0.0) && value <= 255;  // NaN fails
+  if (!fits)
+    throw input_error(file, std::string("/@") + name,
+                      text::format("is %g, not a score of %s to 255 grey levels", value, above_zero ? "above 0" : "0"),
+                      "Record the press again; the file is damaged or was not written by haptex capture record");
+  return float(value);
+}
+
 class PressFileSource : public FrameSource {
  public:
   explicit PressFileSource(const std::string& path) : frames_(path) {
@@ -24,10 +39,10 @@ class PressFileSource : public FrameSource {
     // The press's order covers its decoded frames too: a file whose frames hold B, G, R says BGR.
     order_ = dataset::read_channel_order(root, layout::kReference);
     reference_.image = frames_.reference();
-    reference_.noise = float(root.attr_double(layout::kNoise));
-    reference_.pixel_threshold = float(root.attr_double(layout::kPixelThreshold));
-    reference_.trigger = float(root.attr_double(layout::kTrigger));
-    if (root.has_attr(layout::kNoContactLevel)) reference_.level = float(root.attr_double(layout::kNoContactLevel));
+    reference_.noise = stored_grey_levels(path, root, layout::kNoise, false);
+    reference_.pixel_threshold = stored_grey_levels(path, root, layout::kPixelThreshold, false);
+    reference_.trigger = stored_grey_levels(path, root, layout::kTrigger, true);
+    if (root.has_attr(layout::kNoContactLevel)) reference_.level = stored_grey_levels(path, root, layout::kNoContactLevel, false);
   }
 
   const std::string& path() const override { return frames_.path(); }

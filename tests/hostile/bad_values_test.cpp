@@ -168,6 +168,28 @@ TEST(BadValues, ReplayRefusesAPressFileWithoutAFrameRate) {
   }
 }
 
+// Review 9, F1: extraction used a press file's recorder figures as they were: a NaN trigger cut one
+// press in two (exit 0), an infinite one said "no press found" (exit 1).
+TEST(BadValues, ExtractRefusesAPressFileWithDamagedRecorderFigures) {
+  const TempDir d;
+  ASSERT_EQ(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "--presses", "1", "-o",
+                        d.file("s")})
+                .exit_code,
+            0);
+  const std::vector<std::pair<const char*, double>> damaged = {
+      {"trigger", std::nan("")}, {"trigger", 1e39}, {"trigger", -1}, {"trigger", 0}, {"trigger", 1e-40},
+      {"pixel_threshold", std::nan("")}, {"pixel_threshold", -5}, {"noise", INFINITY}, {"no_contact_level", 1e39}};
+  for (const auto& [name, value] : damaged) {
+    SCOPED_TRACE(std::string(name) + " " + std::to_string(value));
+    const std::string press = d.file("p.h5");
+    fs::copy_file(d.file("s/press_0.h5"), press, fs::copy_options::overwrite_existing);
+    Edit(press).root().set_attr(name, value);
+    expect_refusal(run_haptex({"capture", "extract", press, "--no-sheets", "-o", d.file("g.h5")}), {press, std::string("/@") + name});
+    EXPECT_FALSE(fs::exists(d.file("g.h5")));
+  }
+  EXPECT_EQ(run_haptex({"capture", "extract", d.file("s/press_0.h5"), "--no-sheets", "-o", d.file("g.h5")}).exit_code, 0);
+}
+
 // Review 6, #9: an AVI whose headers state no frame rate was replayed at FFmpeg's guess of 25 fps,
 // and extraction stored that guess as the source's rate.
 TEST(BadValues, AnAviThatStatesNoFrameRateIsNotGivenOne) {

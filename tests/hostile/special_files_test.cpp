@@ -72,6 +72,23 @@ TEST(SpecialFiles, AFifoAsInputIsRefusedAtOnce) {
   EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
 }
 
+// Review 9, F2: /proc/kmsg stats as a regular file of size 0, and `convert hatt --map /proc/kmsg`
+// blocked in read() for ever. Every file of the kernel's file systems is refused by name at once
+// (/proc/self/status stands in for it here: it never blocks, so the test cannot hang).
+TEST(SpecialFiles, AFileOfTheKernelIsRefused) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string recordings = (fs::path(p.recordings).parent_path() / "synth" / "recordings").string();
+  for (const std::string& kernel : {std::string("/proc/self/status"), std::string("/sys/kernel/mm/transparent_hugepage/enabled")}) {
+    if (!fs::exists(kernel)) continue;
+    SCOPED_TRACE(kernel);
+    expect_refusal(run_haptex({"convert", "hatt", recordings, "--map", kernel, "-o", d.file("r.h5")}), {kernel, "a file of the kernel"});
+    expect_refusal(run_haptex({"info", kernel}), {kernel, "a file of the kernel"});
+    expect_refusal(run_haptex({"windows", p.dataset, "--split", kernel, "-o", d.file("w.h5")}), {kernel, "a file of the kernel"});
+  }
+  EXPECT_TRUE(fs::is_empty(d.path()));
+}
+
 TEST(SpecialFiles, ADeviceOrAFolderAsInputIsRefused) {
   const TempDir d;
   expect_refusal(run_haptex({"info", "/dev/zero"}), {"/dev/zero", "a device"});
