@@ -10,6 +10,7 @@
 #include "convert/recording_checks.hpp"
 #include "convert/resampling.hpp"
 #include "core/error.hpp"
+#include "core/naming.hpp"
 #include "core/input_file.hpp"
 #include "core/signal/butterworth.hpp"
 #include "core/signal/resample.hpp"
@@ -149,6 +150,26 @@ std::vector<ClusterTake> find_cluster_takes(const std::string& root) {
   return takes;
 }
 
+std::string cluster_material(int texture, const std::map<int, std::string>& names) {
+  const auto it = names.find(texture);
+  return it != names.end() ? it->second : "cluster " + std::to_string(texture);
+}
+
+void check_cluster_materials(const std::vector<ClusterTake>& takes, const std::map<int, std::string>& names,
+                             const std::string& names_file) {
+  std::map<std::string, int> by_id;
+  for (const ClusterTake& take : takes) {
+    const std::string material = cluster_material(take.texture, names);
+    const auto [at, added] = by_id.emplace(material_id(material), take.texture);
+    if (added || at->second == take.texture) continue;
+    const int named = names.count(take.texture) ? take.texture : at->second, other = named == take.texture ? at->second : take.texture;
+    throw input_error(names_file, "texture " + std::to_string(named),
+                      "'" + names.at(named) + "' makes the material id '" + at->first + "' that texture " + std::to_string(other) +
+                          (names.count(other) ? " is given too" : " has by default (as 'cluster " + std::to_string(other) + "')"),
+                      "Give each texture a name of its own, or name texture " + std::to_string(other) + " too");
+  }
+}
+
 Recording read_cluster_take(const ClusterTake& take, const std::map<int, std::string>& names, std::uintmax_t max_bytes) {
   const Series accel = read_series(take.accel, {"X", "Y", "Z"}, kClusterAccelHz, max_bytes);
   const Series force = read_series(take.force, {"force"}, kClusterForceHz, max_bytes);
@@ -161,8 +182,7 @@ Recording read_cluster_take(const ClusterTake& take, const std::map<int, std::st
                       text::format("A take needs at least %.1f s of all three", kShortestTakeS));
 
   Recording r;
-  auto it = names.find(take.texture);
-  r.material = it != names.end() ? it->second : "cluster " + std::to_string(take.texture);
+  r.material = cluster_material(take.texture, names);
   for (const auto& [quantity, unit] : kExpectedUnits) r.units[quantity] = unit;
   r.source_path = take.accel;
   const char* axes[] = {"accel_x", "accel_y", "accel_z"};

@@ -32,6 +32,15 @@ inline constexpr const char* kClusterLayout = "Cluster Haptic Texture Database l
 // position file.
 std::vector<ClusterTake> find_cluster_takes(const std::string& root);
 
+// The material of a texture: the name `names` gives it, or "cluster N".
+std::string cluster_material(int texture, const std::map<int, std::string>& names);
+
+// Refuses, naming `names_file`, two textures of `takes` whose materials make one material id: a
+// name given to one texture that another's default "cluster N" also makes (review 9, F3) would join
+// two surfaces' takes into one material.
+void check_cluster_materials(const std::vector<ClusterTake>& takes, const std::map<int, std::string>& names,
+                             const std::string& names_file);
+
 // The take as a recording of the material `names` gives its texture ("cluster N" otherwise).
 // Throws haptex::Error (bad_input) naming the file, line and column: a missing column, a bad
 // number, time stamps that do not increase, a rate far from the nominal one, files that overlap

@@ -117,6 +117,7 @@ ConvertResult convert_cluster(const std::string& root, const std::string& output
                               const std::optional<std::string>& names_path, const Progress& progress) {
   const std::map<int, std::string> names = names_path ? read_texture_names(*names_path) : std::map<int, std::string>{};
   const std::vector<ClusterTake> takes = find_cluster_takes(root);
+  if (names_path) check_cluster_materials(takes, names, *names_path);
   std::vector<std::string> sources;
   for (const auto& take : takes) sources.push_back(take.accel);
   h5::AtomicFile out(output, options.overwrite, dataset::format_name(dataset::Kind::recordings));

@@ -179,6 +179,27 @@ TEST_F(Cluster, TextureNamesComeFromJsonOrCsv) {
   refused("m.json", R"({"3": "Cork", "5": "cork"})", "make one material id, 'cork'");
   refused("n.csv", "id,name\n3,\"Cork\n", "line 2: the name's quotes are not closed");
   refused("o.json", R"({"03": "Cork"})", "/03: '03' is written with a leading zero");
+  // Review 9, F3: a name that makes no id was refused naming a take's accel file, not this file.
+  refused("p.json", R"({"3": "***"})", "texture 3: '***' has no letters or digits");
+}
+
+// Review 9, F3: texture 1 named "cluster 2" joined texture 2's takes (default name "cluster 2").
+TEST_F(Cluster, ANameThatAnotherTexturesDefaultMakesIsRefused) {
+  std::vector<ClusterTake> takes(3);
+  takes[0].texture = 1, takes[1].texture = 2, takes[2].texture = 2;
+  EXPECT_NO_THROW(check_cluster_materials(takes, {{1, "Cork"}}, "names.json"));
+  EXPECT_NO_THROW(check_cluster_materials(takes, {{2, "cluster 2"}}, "names.json")) << "a texture may be named as its default";
+  for (const std::map<int, std::string>& names : {std::map<int, std::string>{{1, "cluster 2"}}, std::map<int, std::string>{{2, "Cluster-1"}}}) {
+    try {
+      check_cluster_materials(takes, names, "names.json");
+      ADD_FAILURE() << names.begin()->second << " was taken";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+      const std::string other = names.begin()->first == 1 ? "2" : "1";
+      EXPECT_NE(std::string(e.what()).find("names.json: texture " + std::to_string(names.begin()->first) + ": "), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("that texture " + other + " has by default"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST_F(Cluster, ANamesFileThatNeverEndsIsRefused) {
