@@ -28,6 +28,7 @@ constexpr const char* kRerun = "Run haptex synth again to write a new truth.h5";
 constexpr hsize_t kMostSamples = 10'000'000;
 constexpr hsize_t kMostGridPoints = 100;
 constexpr std::size_t kMostTotalSamples = 50'000'000;
+constexpr double kLargestAction = 1e6;  // mm/s or N, of a grid axis or a recording: no stroke comes near
 
 // ---- writing
 
@@ -144,22 +145,21 @@ struct Reader {
   // A 1-D dataset of 1..most values, or of exactly `length` values when that is given.
   template <typename T>
   std::vector<double> series(const h5::Group& g, const char* name, const char* dtype, hsize_t most,
-                             std::optional<std::size_t> length, const char* length_reason = "") const {
+                             std::optional<std::size_t> length, const char* length_reason = "", double largest = INFINITY) const {
     const h5::Dataset d = dataset(g, name, dtype);
     const h5::Shape shape = d.shape();
     if (length && shape != h5::Shape{*length})
       throw error(d.object_path(), "has shape " + h5::shape_text(shape) + ", expected (" + std::to_string(*length) + ")" + length_reason);
     if (shape.size() != 1 || shape[0] == 0 || shape[0] > most)
       throw error(d.object_path(), "has shape " + h5::shape_text(shape) + ", expected 1 to " + std::to_string(most) + " values");
-    return magnitudes<T>(d);
+    return magnitudes<T>(d, largest);
   }
 
   std::vector<double> axis(const h5::Group& g, const char* name) const {
     std::vector<double> v = series<double>(g, name, "float64", kMostGridPoints, std::nullopt);
-    constexpr double kLargest = 1e6;  // mm/s or N: no stroke comes near
-    if (v.back() > kLargest)
+    if (v.back() > kLargestAction)
       throw error(child(g, name), "value " + std::to_string(v.size() - 1) + " is " + number_text(v.back()) + ", over " +
-                                      number_text(kLargest) + ", beyond any speed or force of a stroke");
+                                      number_text(kLargestAction) + ", beyond any speed or force of a stroke");
     const auto low = std::adjacent_find(v.begin(), v.end(), std::greater_equal<>());
     if (low != v.end()) {
       const auto i = std::size_t(low - v.begin()) + 1;
@@ -188,11 +188,12 @@ struct Reader {
     r.source_sha256 = text(g, "source_sha256");
     if (!is_sha256(r.source_sha256))
       throw error(child(g, "@source_sha256"), "is '" + r.source_sha256 + "', not a SHA-256 (64 lower-case hex digits)");
-    r.speed_mm_s = series<float>(g, "speed", "float32", kMostSamples, std::nullopt);
+    // Review 9, F4: a speed of 3e38 mm/s moved the oracle floor fivefold, unremarked.
+    r.speed_mm_s = series<float>(g, "speed", "float32", kMostSamples, std::nullopt, "", kLargestAction);
     total_samples += r.speed_mm_s.size();
     if (total_samples > kMostTotalSamples)
       throw error(child(g, "speed"), "brings the file past " + std::to_string(kMostTotalSamples) + " samples in all");
-    r.force_n = series<float>(g, "force", "float32", kMostSamples, r.speed_mm_s.size(), ": one value per speed sample");
+    r.force_n = series<float>(g, "force", "float32", kMostSamples, r.speed_mm_s.size(), ": one value per speed sample", kLargestAction);
     return r;
   }
 

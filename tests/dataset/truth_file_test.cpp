@@ -169,8 +169,21 @@ TEST_F(TruthFile, RefusesNaNInSpeed) {
   dataset::Truth truth = sample_truth();
   truth.materials[1].recordings[0].speed_mm_s[2] = std::numeric_limits<double>::quiet_NaN();
   written({}, truth);
-  EXPECT_EQ(refusal(path_), path_ + ": /materials/woven_1/recordings/0/speed: value 2 is nan, expected a finite number of 0 or more" +
+  EXPECT_EQ(refusal(path_), path_ + ": /materials/woven_1/recordings/0/speed: value 2 is nan, expected a finite number of 0 or more up to 1e+06" +
                                 kRerun);
+}
+
+// Review 9, F4: a recording's speed of 3e38 mm/s (or a force of 1e30 N) moved the oracle floor, unremarked.
+TEST_F(TruthFile, RefusesASpeedOrForceNoStrokeComesNear) {
+  dataset::Truth truth = sample_truth();
+  truth.materials[1].recordings[0].speed_mm_s[2] = 3e38;
+  written({}, truth);
+  EXPECT_NE(refusal(path_).find("/materials/woven_1/recordings/0/speed: value 2 is 3e+38, expected a finite number of 0 or more up to 1e+06"),
+            std::string::npos) << refusal(path_);
+  truth = sample_truth();
+  truth.materials[1].recordings[0].force_n[0] = 1e30;
+  written({}, truth);
+  EXPECT_NE(refusal(path_).find("/materials/woven_1/recordings/0/force: value 0 is 1e+30"), std::string::npos) << refusal(path_);
 }
 
 TEST_F(TruthFile, RefusesNegativeAccelNoise) {
