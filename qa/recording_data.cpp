@@ -30,6 +30,10 @@ Signal read_signal(const h5::Group& group, const std::string& name, std::size_t 
     s.problem = "not numeric (" + dtype + ")";
     return s;
   }
+  if (const std::string chunks = d.chunk_problem(); !chunks.empty()) {
+    s.problem = chunks;  // layout.shape reports it; reading would inflate the whole chunk
+    return s;
+  }
   s.rows = shape[0];
   s.values = d.read<double>();
   return s;

@@ -205,7 +205,30 @@ void require_readable_size(double count, std::size_t element_size, const std::st
                     "The file is damaged or not what haptex wrote: make it again with the haptex command that wrote it");
 }
 
+std::string Dataset::chunk_problem() const {
+  Handle list(H5Dget_create_plist(id()));
+  if (H5Pget_layout(list.get()) != H5D_CHUNKED) return "";
+  const int rank = H5Pget_chunk(list.get(), 0, nullptr);
+  if (rank <= 0) return "";
+  std::vector<hsize_t> chunk(static_cast<std::size_t>(rank));
+  H5Pget_chunk(list.get(), rank, chunk.data());
+  Handle type(H5Dget_type(id()));
+  double chunk_bytes = double(H5Tget_size(type.get())), data_bytes = chunk_bytes;
+  for (const hsize_t c : chunk) chunk_bytes *= double(c);
+  for (const auto d : shape()) data_bytes *= double(d);
+  if (chunk_bytes <= double(kLargestChunkBytes) || chunk_bytes <= data_bytes) return "";
+  return text::format("is stored in chunks of %.0f MiB, for %.3g MiB of data: reading any value would inflate a whole chunk",
+                      chunk_bytes / double(1 << 20), data_bytes / double(1 << 20));
+}
+
+void Dataset::require_sensible_chunks() const {
+  if (const std::string problem = chunk_problem(); !problem.empty())
+    throw input_error(file_, object_path_, problem,
+                    "Rewrite the file with chunks of at most 16 MiB (h5repack -l CHUNK=...), or make it again with the haptex command that wrote it");
+}
+
 std::size_t Dataset::elements_to_read(std::size_t element_size) const {
+  require_sensible_chunks();
   double count = 1;
   for (auto d : shape()) count *= double(d);
   require_readable_size(count, element_size, file_, object_path_);

@@ -238,6 +238,28 @@ TEST_F(RecordingsMutation, AnotherStatedFilterIsFilterStated) {
   EXPECT_THROW(qa::require_integrity(h5::File::open(file_).root(), dataset::Kind::recordings), Error) << "merge and align refuse it too";
 }
 
+// Review 9, F5: a dataset declaring a chunk far larger than itself (4 GiB for 30 000 samples) passed
+// qa "clean" after inflating it, and merge copied it. 32 MiB stands in for it here.
+TEST_F(RecordingsMutation, AChunkLargerThanItsDatasetIsLayoutShape) {
+  {
+    Edit e(file_);
+    const std::vector<float> accel = e.dataset(kRecording + "/accel").read<float>();
+    e.remove(kRecording + "/accel");
+    const hsize_t dims[1] = {accel.size()}, unlimited[1] = {H5S_UNLIMITED}, chunk[1] = {hsize_t(8) << 20};
+    h5::Handle space(H5Screate_simple(1, dims, unlimited)), list(H5Pcreate(H5P_DATASET_CREATE));
+    H5Pset_chunk(list.get(), 1, chunk);
+    H5Pset_deflate(list.get(), 4);
+    h5::Handle d(H5Dcreate2(e.group(kRecording).id(), "accel", H5T_NATIVE_FLOAT, space.get(), H5P_DEFAULT, list.get(), H5P_DEFAULT));
+    ASSERT_GE(H5Dwrite(d.get(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, accel.data()), 0);
+    e.dataset(kRecording + "/accel").set_attr("units", std::string("m/s^2"));
+  }
+  const qa::Report r = qa();
+  const auto* shape = r.find("layout.shape");
+  ASSERT_EQ(shape->status, qa::Status::fail) << shape->message;
+  EXPECT_NE(shape->message.find("/" + kRecording + "/accel: is stored in chunks of 32 MiB"), std::string::npos) << shape->message;
+  EXPECT_THROW(qa::require_integrity(h5::File::open(file_).root(), dataset::Kind::recordings), Error) << "merge and align refuse it too";
+}
+
 TEST_F(RecordingsMutation, CopiedRecordingIsRecordingsDuplicate) {
   Edit(file_).copy(kRecording, "materials/woven_1/recordings/1");
   const qa::Report r = qa();
