@@ -110,13 +110,13 @@ class CaptureExtract : public CaptureSubcommand {
     if (global.json) return print_json(r, true);
     if (global.quiet) return;
     for (const auto& d : r.detections)
-      if (d.presses == 0) std::cerr << "haptex capture: warning: " << d.source << ": no press found: " << capture::describe(d) << "\n";
+      if (d.presses == 0) std::cerr << "haptex capture: warning: " << text::printable(d.source) << ": no press found: " << capture::describe(d) << "\n";
     if (global.verbose)
       for (const auto& d : r.detections)
-        std::cerr << d.source << ": " << d.presses << " presses; " << capture::describe(d) << "\n";
+        std::cerr << text::printable(d.source) << ": " << d.presses << " presses; " << capture::describe(d) << "\n";
     if (global.verbose)
       for (const auto& p : r.presses)
-        std::cerr << p.source << " -> /materials/" << p.material_id << "/presses/" << p.press << ": frames "
+        std::cerr << text::printable(p.source) << " -> /materials/" << p.material_id << "/presses/" << p.press << ": frames "
                   << p.frame_start << "-" << p.frame_end << ", contact " << p.contact_first << "-" << p.contact_last
                   << ", peak " << p.peak_index << " (score " << p.peak_score << ")\n";
     std::set<std::string> materials;

@@ -244,9 +244,9 @@ class Extraction {
     std::string m = "no press found in " + std::to_string(result_.sources) + " input(s); nothing was written.";
     constexpr std::size_t kShown = 5;
     for (std::size_t i = 0; i < std::min(kShown, result_.detections.size()); ++i)
-      m += "\n  " + result_.detections[i].source + ": " + describe(result_.detections[i]);
+      m += "\n  " + text::printable(result_.detections[i].source) + ": " + describe(result_.detections[i]);  // a newline in a name is its own
     if (result_.detections.size() > kShown) m += "\n  ... and " + std::to_string(result_.detections.size() - kShown) + " more";
-    if (!result_.explain_dir.empty()) m += "\nEach source's score over time: " + result_.explain_dir;
+    if (!result_.explain_dir.empty()) m += "\nEach source's score over time: " + text::printable(result_.explain_dir);
     return m + "\nIf the sensor was pressed, give a lower --trigger (above the no-contact level), or a no-contact "
                "image with --reference";
   }

@@ -152,6 +152,23 @@ TEST(Messages, MaterialsWhoseNamesDifferOnlyBeyondAsciiStayApart) {
 
 // `cd material && haptex capture extract press_0.avi -o /abs/g.h5`: a bare name in the current folder
 // (a video, ./name) is an input like any other.
+// Review 9, F9: extract printed a folder's newline and tab raw in its -v lines and its "no press
+// found" error, so a line split where the name did.
+TEST(Messages, ExtractEscapesANewlineInAFoldersName) {
+  const TempDir dir;
+  const fs::path synth = fs::path(small_pipeline().recordings).parent_path() / "synth" / "gelsight" / "Woven 1";
+  fs::create_directories(dir.path() / "in" / "Wo\tven\n1");
+  fs::copy_file(synth / "press_0.avi", dir.path() / "in" / "Wo\tven\n1" / "press_0.avi");
+  const CommandResult found = run_haptex({"-v", "capture", "extract", dir.file("in"), "--no-sheets", "-o", dir.file("g.h5")});
+  ASSERT_EQ(found.exit_code, 0) << found.err;
+  const CommandResult none = run_haptex({"capture", "extract", dir.file("in"), "--no-sheets", "--trigger", "1000", "-o", dir.file("n.h5")});
+  EXPECT_EQ(none.exit_code, 1) << none.err;
+  for (const std::string& err : {found.err, none.err}) {
+    EXPECT_NE(err.find("Wo\\x09ven\\x0a1/press_0.avi: "), std::string::npos) << err;
+    EXPECT_EQ(err.find("ven\n1"), std::string::npos) << err;
+  }
+}
+
 TEST(Messages, RelativeInputsInTheCurrentFolderWork) {
   const TempDir dir;
   ASSERT_EQ(run_haptex({"synth", "materials", "-n", "2", "--presses", "1", "--recordings", "1", "--seconds", "0.5", "-o", dir.file("s")})
