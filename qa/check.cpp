@@ -45,7 +45,9 @@ CheckResult CheckTally::result() const {
   } else if (passed_ > 0) {
     // "1 recording", "2 recordings" (one-word nouns; longer phrases stay as written).
     const bool singular = passed_ == 1 && items_.back() == 's' && items_.find(' ') == std::string::npos;
-    const std::string items = singular ? items_.substr(0, items_.size() - 1) : items_;
+    // "presses" -> "press", "hashes" -> "hash", "recordings" -> "recording" (review 9: "1 presse")
+    const std::size_t cut = items_.ends_with("sses") || items_.ends_with("shes") ? 2 : 1;
+    const std::string items = singular ? items_.substr(0, items_.size() - cut) : items_;
     r.message = std::to_string(passed_) + " " + items + (pass_message_.empty() ? " checked" : ": " + pass_message_);
     r.message += skipped;
   } else {

@@ -76,6 +76,16 @@ TEST(SignalForceRange, FailsBelowTheLoadCellOffsetAndQuotesTheRangeWhenPassing) 
   EXPECT_EQ(failing.result().message, kPath + "/force_normal: ranges -0.7 .. 0.3 N, below -0.5 N");
 }
 
+// Review 9, C1: "1 presse checked".
+TEST(CheckTally, OneItemIsNamedInTheSingular) {
+  for (const auto& [items, one] : {std::pair<std::string, std::string>{"presses", "1 press checked"}, {"hashes", "1 hash checked"},
+                                   {"recordings", "1 recording checked"}, {"references", "1 reference checked"}}) {
+    qa::CheckTally tally("signal.duration", items);
+    tally.pass();
+    EXPECT_EQ(tally.result().message, one);
+  }
+}
+
 qa::CheckResult reduction_result(const qa::LoadedRecording& r) {
   qa::CheckTally tally("signal.reduction_energy", "recordings");
   qa::Seen ratio{INFINITY, 0};
