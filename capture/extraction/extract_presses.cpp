@@ -106,6 +106,13 @@ ScoreChart chart_of(const SourceScores& scores, const std::vector<PressPlan>& pl
   return c;
 }
 
+// Whether this run writes contact sheets where an earlier run's default ones are (OUTPUT_sheets): with
+// --force, sheets elsewhere or none leave those describing a file now replaced, so they go too (review 9, F6).
+bool sheets_at_default_place(const std::string& output, const ExtractOptions& options) {
+  return options.sheets && (options.sheets_dir.empty() ||
+                            fs::path(options.sheets_dir).lexically_normal() == fs::path(default_sheets_dir(output)).lexically_normal());
+}
+
 class Extraction {
  public:
   Extraction(const std::string& output, const ExtractOptions& options)
@@ -197,7 +204,7 @@ class Extraction {
     // extraction wrote for the file replaced describe it, so they go too; anything else there stays.
     EarlierOutput earlier_sheets(default_sheets_dir(output_), extraction_folder), earlier_explain(default_explain_dir(output_), extraction_folder);
     const bool retire = options_.overwrite;
-    commit_together({&writer_.output(), explain_.get(), sheets_.get(), !sheets_ && retire ? &earlier_sheets : nullptr,
+    commit_together({&writer_.output(), explain_.get(), sheets_.get(), retire && !sheets_at_default_place(output_, options_) ? &earlier_sheets : nullptr,
                      !explain_ && retire ? &earlier_explain : nullptr});
     if (explain_) result_.explain_dir = explain_->final_path();
     if (sheets_) result_.sheets_dir = sheets_->final_path();
@@ -369,7 +376,7 @@ ExtractResult extract_presses(const std::vector<std::string>& inputs, const std:
   refuse_output_among_inputs(output, found);
   if (options.sheets) refuse_output_among_inputs(options.sheets_dir.empty() ? default_sheets_dir(output) : options.sheets_dir, found);
   if (options.explain) refuse_output_among_inputs(default_explain_dir(output), found);
-  if (options.overwrite && !options.sheets)
+  if (options.overwrite && !sheets_at_default_place(output, options))
     EarlierOutput::require_retirable(default_sheets_dir(output), extraction_folder, "the contact sheet folder",
                                      "Move your files out of it (or the folder away), or write sheets again");
   if (options.overwrite && !options.explain)

@@ -443,6 +443,15 @@ TEST(Force, ExtractWithoutSheetsRefusesOldSheetsItCannotTakeAway) {
   expect_refusal(run_haptex({"capture", "extract", videos, "-o", d.file("g.h5"), "--force", "--no-sheets"}),
                  {d.file("g_sheets"), "the contact sheet folder"});
   EXPECT_EQ(file_bytes(d.file("g_sheets/notes.txt")), "my notes");
+  // Review 9, F6: sheets written elsewhere left the earlier default ones beside the file they no longer describe.
+  expect_refusal(run_haptex({"capture", "extract", videos, "-o", d.file("g.h5"), "--force", "--sheets", d.file("other")}),
+                 {d.file("g_sheets"), "the contact sheet folder"});
+  fs::remove(d.file("g_sheets/notes.txt"));
+  ASSERT_EQ(run_haptex({"capture", "extract", videos, "-o", d.file("g.h5"), "--force", "--sheets", d.file("other")}).exit_code, 0);
+  EXPECT_FALSE(fs::exists(d.file("g_sheets"))) << "the earlier sheets describe a file now replaced";
+  EXPECT_TRUE(fs::is_directory(d.file("other")));
+  ASSERT_EQ(run_haptex({"capture", "extract", videos, "-o", d.file("g.h5"), "--force", "--sheets", d.file("./g_sheets")}).exit_code, 0);
+  EXPECT_TRUE(fs::is_directory(d.file("g_sheets"))) << "sheets given at the default place are written there";
 }
 
 // split, a `gnuplot` first on PATH that puts a file of the user's into the plot folder while the
