@@ -30,7 +30,8 @@ int whole_source_rate(const std::string& file, const std::string& where, double 
     throw input_error(file, where,
                       text::format("the sample rate is %.10g Hz; haptex resamples whole numbers of Hz from %.0f Hz up",
                                    rate_hz, lowest_hz),
-                      lowest_hz == kLowestAccelRateHz
+                      rate_hz < 1 ? "Give the times in seconds: stamps in milliseconds, microseconds or nanoseconds read as a rate under 1 Hz"
+                      : lowest_hz == kLowestAccelRateHz
                           ? "Give the rate in whole Hz, at least 2 kHz for acceleration (the model's spectrum reaches 1000 Hz)"
                           : "Give the rate in whole Hz");
   return int(whole);

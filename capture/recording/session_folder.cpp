@@ -93,9 +93,21 @@ void check_session_dir(const std::string& dir, bool overwrite, const std::vector
   if (fs::is_directory(dir, ec)) SessionDirLock free_now(dir);  // a take recording there is refused before the sensor opens
   const auto existing_files = session_files(dir);
   if (existing_files.empty()) return;
-  if (!overwrite)
+  if (!overwrite) {
+    // --force is offered only where it would be taken (review 9, C4: a user's own press_0.h5).
+    bool replaceable = true;
+    try {
+      old_session_files(dir);
+    } catch (const Error&) {
+      replaceable = false;
+    }
+    if (!replaceable)
+      throw input_error(dir, "", "holds files named like a take's (" + existing_files.front().filename().string() +
+                                     ") that are not a capture session haptex wrote",
+                        "Record into a new folder with -o");
     throw input_error(dir, "", "already holds a capture session (" + existing_files.front().filename().string() + ")",
                       "Record into a new folder with -o, or pass --force to replace the old session");
+  }
   for (const fs::path& old : old_session_files(dir)) refuse_output_among_inputs(old.string(), inputs);
 }
 

@@ -12,6 +12,7 @@
 #include "convert/csv_recording_reader.hpp"
 #include "convert/field_map.hpp"
 #include "convert/hatt_recording_reader.hpp"
+#include "convert/resampling.hpp"
 #include "core/error.hpp"
 #include "tests/support/npy.hpp"
 #include "tests/support/sample_recording.hpp"
@@ -91,6 +92,16 @@ TEST(CsvResampling, ASlowChannelsValueWithoutItsTimeIsRefused) {
     EXPECT_NE(std::string(e.what()).find("line 3: column 'forceNormal' has a value but its time column 't_slow' is empty"),
               std::string::npos)
         << e.what();
+  }
+}
+
+// Review 9, C3: nanosecond stamps gave "the sample rate is 0 Hz" with "Give the rate in whole Hz".
+TEST(CsvResampling, StampsThatAreNotSecondsSaySo) {
+  try {
+    whole_source_rate("log.csv", "column 'time_s'", 1e-5, 2000);
+    FAIL() << "a rate of 1e-5 Hz was taken";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("Give the times in seconds"), std::string::npos) << e.what();
   }
 }
 

@@ -192,6 +192,19 @@ TEST_F(RecordCli, RefusesAFolderHoldingASession) {
   EXPECT_EQ(record(kFake, {"--presses", "1", "--force"}).exit_code, 0);
 }
 
+// Review 9, C4: a folder holding only the user's own press_0.h5 was called a capture session, with
+// --force offered as the fix, which --force then refused.
+TEST_F(RecordCli, AFolderOfTheUsersFilesIsNotCalledASession) {
+  fs::create_directories(session_);
+  std::ofstream(session_ + "/press_0.h5") << "mine";
+  const CommandResult r = record(kFake, {"--presses", "1"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("not a capture session haptex wrote"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("--force"), std::string::npos) << r.err;
+  std::ifstream kept(session_ + "/press_0.h5");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "mine");
+}
+
 TEST_F(RecordCli, NeedsExactlyOneWayToNameTheSensor) {
   CommandResult r = run_haptex({"capture", "record", "--material", "Cork", "-o", session_});
   EXPECT_EQ(r.exit_code, 2);
