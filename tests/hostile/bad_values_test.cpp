@@ -151,12 +151,15 @@ TEST(BadValues, EvaluateRefusesATruthOfAnotherRun) {
   EXPECT_FALSE(fs::exists(d.file("rep")));
 }
 
+// A take of one press from the fake camera into `session`, as a user records one.
+bool record_one_press(const std::string& session) {
+  return run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "--presses", "1", "-o", session})
+             .exit_code == 0;
+}
+
 TEST(BadValues, ReplayRefusesAPressFileWithoutAFrameRate) {
   const TempDir d;
-  ASSERT_EQ(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "--presses", "1", "-o",
-                        d.file("s")})
-                .exit_code,
-            0);
+  ASSERT_TRUE(record_one_press(d.file("s")));
   for (const double fps : {std::nan(""), double(INFINITY), 1e-300}) {
     SCOPED_TRACE(fps);
     const std::string press = d.file("p.h5");
@@ -172,10 +175,7 @@ TEST(BadValues, ReplayRefusesAPressFileWithoutAFrameRate) {
 // press in two (exit 0), an infinite one said "no press found" (exit 1).
 TEST(BadValues, ExtractRefusesAPressFileWithDamagedRecorderFigures) {
   const TempDir d;
-  ASSERT_EQ(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "--presses", "1", "-o",
-                        d.file("s")})
-                .exit_code,
-            0);
+  ASSERT_TRUE(record_one_press(d.file("s")));
   const std::vector<std::pair<const char*, double>> damaged = {
       {"trigger", std::nan("")}, {"trigger", 1e39}, {"trigger", -1}, {"trigger", 0}, {"trigger", 1e-40},
       {"pixel_threshold", std::nan("")}, {"pixel_threshold", -5}, {"noise", INFINITY}, {"no_contact_level", 1e39}};
