@@ -128,6 +128,31 @@ PressFile::PressFile(std::string path) : path_(std::move(path)), file_(open_chec
                                                    fps_, kLowestFps, kHighestFps),
                       "Record the press again, or replay it with replay:FILE,fps=N");
   count_ = frames_.shape().at(0);
+  require_consistent_frames(root);
+}
+
+// What the recorder stated of the frames agrees with them (review 9, F7: a /@samples of 1e12, a
+// /timestamp_ns of 10 values for 46 frames, a /@peak_frame of 99999 were replayed and extracted).
+void PressFile::require_consistent_frames(const h5::Group& root) const {
+  const auto refuse = [&](const std::string& where, const std::string& what) {
+    throw input_error(path_, where, what, "The file is damaged or was not written by haptex capture record: record the press again");
+  };
+  const std::int64_t frames = std::int64_t(count_);
+  if (root.attr_int(layout::kSamples) != frames)
+    refuse("/@samples", "is " + std::to_string(root.attr_int(layout::kSamples)) + ", but /frames holds " + std::to_string(frames));
+  for (const char* per_frame : {layout::kTimestampNs, layout::kSequence, layout::kFlags, layout::kContrast})
+    if (root.has_dataset(per_frame) && root.open_dataset(per_frame).shape() != h5::Shape{count_})
+      refuse(std::string("/") + per_frame, "has shape " + h5::shape_text(root.open_dataset(per_frame).shape()) + ", not one value for each of the " +
+                                               std::to_string(frames) + " frames");
+  std::int64_t first = -1;
+  for (const char* index : {layout::kContactFirst, layout::kContactLast, layout::kPeakFrame}) {
+    const std::int64_t i = root.attr_int(index);
+    if (i < -1 || i >= frames)
+      refuse(std::string("/@") + index, "is " + std::to_string(i) + ", not a frame of the " + std::to_string(frames) + " (or -1: none)");
+    if (index == layout::kContactFirst) first = i;
+    if (index == layout::kContactLast && first >= 0 && i >= 0 && i < first)
+      refuse("/@contact_last", "is " + std::to_string(i) + ", before /@contact_first (" + std::to_string(first) + ")");
+  }
 }
 
 std::vector<std::uint8_t> PressFile::bytes(std::size_t index) const { return read_vlen_bytes(frames_, index); }

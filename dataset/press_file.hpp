@@ -86,6 +86,7 @@ class PressFile {
   cv::Mat reference() const;
 
  private:
+  void require_consistent_frames(const h5::Group& root) const;
   std::string path_;
   h5::File file_;
   h5::Dataset frames_{h5::Handle(), "", ""};

@@ -4,6 +4,7 @@
 
 #include "core/sha256.hpp"
 
+#include <functional>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -188,6 +189,44 @@ TEST(BadValues, ExtractRefusesAPressFileWithDamagedRecorderFigures) {
     EXPECT_FALSE(fs::exists(d.file("g.h5")));
   }
   EXPECT_EQ(run_haptex({"capture", "extract", d.file("s/press_0.h5"), "--no-sheets", "-o", d.file("g.h5")}).exit_code, 0);
+}
+
+// Review 9, F7: a press file whose stated counts disagree with its frames was replayed and extracted.
+TEST(BadValues, APressFileWhoseCountsDisagreeWithItsFramesIsRefused) {
+  const TempDir d;
+  ASSERT_TRUE(record_one_press(d.file("s")));
+  const std::int64_t frames = std::int64_t(h5::File::open(d.file("s/press_0.h5")).root().open_dataset("frames").shape().at(0));
+  const std::vector<std::pair<std::string, std::function<void(Edit&)>>> damaged = {
+      {"/@samples", [](Edit& e) { e.root().set_attr("samples", std::int64_t(1e12)); }},
+      {"/timestamp_ns", [](Edit& e) {
+         e.remove("timestamp_ns");
+         e.root().write<std::int64_t>("timestamp_ns", std::vector<std::int64_t>(10, 1));
+       }},
+      {"/contrast", [](Edit& e) {
+         e.remove("contrast");
+         e.root().write<float>("contrast", std::vector<float>(3, 1.f));
+       }},
+      {"/@peak_frame", [](Edit& e) { e.root().set_attr("peak_frame", std::int64_t(99999)); }},
+      {"/@peak_frame", [](Edit& e) { e.root().set_attr("peak_frame", std::int64_t(-5)); }},
+      {"/@contact_last", [frames](Edit& e) {
+         e.root().set_attr("contact_first", frames - 1);
+         e.root().set_attr("contact_last", std::int64_t(0));
+       }},
+  };
+  for (const auto& [where, damage] : damaged) {
+    SCOPED_TRACE(where);
+    const std::string press = d.file("p.h5");
+    fs::copy_file(d.file("s/press_0.h5"), press, fs::copy_options::overwrite_existing);
+    {
+      Edit e(press);
+      damage(e);
+    }
+    expect_refusal(run_haptex({"capture", "extract", press, "--no-sheets", "-o", d.file("g.h5")}), {press, where});
+    expect_refusal(run_haptex({"capture", "record", "--device", "replay:" + press + ",lockstep", "--material", "Cork", "-o", d.file("r")}),
+                   {press, where});
+    EXPECT_FALSE(fs::exists(d.file("g.h5")));
+    EXPECT_FALSE(fs::exists(d.file("r")));
+  }
 }
 
 // Review 6, #9: an AVI whose headers state no frame rate was replayed at FFmpeg's guess of 25 fps,
