@@ -224,7 +224,8 @@ std::string Dataset::chunk_problem() const {
 void Dataset::require_sensible_chunks() const {
   if (const std::string problem = chunk_problem(); !problem.empty())
     throw input_error(file_, object_path_, problem,
-                    "Rewrite the file with chunks of at most 16 MiB (h5repack -l CHUNK=...), or make it again with the haptex command that wrote it");
+                    "Rewrite the file with chunks of at most " + std::to_string(kLargestChunkBytes >> 20) +
+                        " MiB (h5repack -l CHUNK=...), or make it again with the haptex command that wrote it");
 }
 
 std::size_t Dataset::elements_to_read(std::size_t element_size) const {
