@@ -138,21 +138,20 @@ void PressFile::require_consistent_frames(const h5::Group& root) const {
     throw input_error(path_, where, what, "The file is damaged or was not written by haptex capture record: record the press again");
   };
   const std::int64_t frames = std::int64_t(count_);
-  if (root.attr_int(layout::kSamples) != frames)
-    refuse("/@samples", "is " + std::to_string(root.attr_int(layout::kSamples)) + ", but /frames holds " + std::to_string(frames));
-  for (const char* per_frame : {layout::kTimestampNs, layout::kSequence, layout::kFlags, layout::kContrast})
-    if (root.has_dataset(per_frame) && root.open_dataset(per_frame).shape() != h5::Shape{count_})
-      refuse(std::string("/") + per_frame, "has shape " + h5::shape_text(root.open_dataset(per_frame).shape()) + ", not one value for each of the " +
-                                               std::to_string(frames) + " frames");
-  std::int64_t first = -1;
-  for (const char* index : {layout::kContactFirst, layout::kContactLast, layout::kPeakFrame}) {
-    const std::int64_t i = root.attr_int(index);
-    if (i < -1 || i >= frames)
-      refuse(std::string("/@") + index, "is " + std::to_string(i) + ", not a frame of the " + std::to_string(frames) + " (or -1: none)");
-    if (index == layout::kContactFirst) first = i;
-    if (index == layout::kContactLast && first >= 0 && i >= 0 && i < first)
-      refuse("/@contact_last", "is " + std::to_string(i) + ", before /@contact_first (" + std::to_string(first) + ")");
+  if (const std::int64_t samples = root.attr_int(layout::kSamples); samples != frames)
+    refuse("/@samples", "is " + std::to_string(samples) + ", but /frames holds " + std::to_string(frames));
+  for (const char* per_frame : {layout::kTimestampNs, layout::kSequence, layout::kFlags, layout::kContrast}) {
+    if (!root.has_dataset(per_frame)) continue;
+    if (const h5::Shape shape = root.open_dataset(per_frame).shape(); shape != h5::Shape{count_})
+      refuse(std::string("/") + per_frame,
+             "has shape " + h5::shape_text(shape) + ", not one value for each of the " + std::to_string(frames) + " frames");
   }
+  for (const char* index : {layout::kContactFirst, layout::kContactLast, layout::kPeakFrame})
+    if (const std::int64_t i = root.attr_int(index); i < -1 || i >= frames)
+      refuse(std::string("/@") + index, "is " + std::to_string(i) + ", not a frame of the " + std::to_string(frames) + " (or -1: none)");
+  const std::int64_t first = root.attr_int(layout::kContactFirst), last = root.attr_int(layout::kContactLast);
+  if (first >= 0 && last >= 0 && last < first)
+    refuse("/@contact_last", "is " + std::to_string(last) + ", before /@contact_first (" + std::to_string(first) + ")");
 }
 
 std::vector<std::uint8_t> PressFile::bytes(std::size_t index) const { return read_vlen_bytes(frames_, index); }
