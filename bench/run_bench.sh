@@ -12,6 +12,7 @@ command -v taskset >/dev/null || one_core=""
 $one_core "$build/bench/bench_signal" --benchmark_format=json --benchmark_out="$out/signal.json" --benchmark_out_format=json >/dev/null
 $one_core "$build/bench/bench_convert" --benchmark_format=json --benchmark_out="$out/convert.json" --benchmark_out_format=json >/dev/null
 $one_core /usr/bin/python3 "$(dirname "$0")/scipy_sosfiltfilt.py" > "$out/scipy.json"
+$one_core /usr/bin/python3 "$(dirname "$0")/scipy_resample_poly.py" > "$out/scipy_resample.json"
 "$build/bench/bench_convert" --export-xml "$out/recording_10s.xml"
 $one_core /usr/bin/python3 "$(dirname "$0")/elementtree_parse.py" "$out/recording_10s.xml" > "$out/elementtree.json" \
   || echo '{"note": "bench/elementtree_parse.py failed; no comparison"}' > "$out/elementtree.json"
@@ -29,6 +30,9 @@ def seconds(name):
 ours = seconds("BM_Sosfiltfilt_1e5")
 theirs = scipy["scipy_sosfiltfilt_1e5_seconds"]
 print(f"sosfiltfilt, 1e5 samples, order 4:  haptex {ours*1e3:.3f} ms   scipy {scipy['scipy']} {theirs*1e3:.3f} ms   scipy/haptex = {theirs/ours:.2f}x")
+resample = json.load(open(f"{out}/scipy_resample.json"))
+ours, theirs = seconds("BM_ResamplePoly_999983Hz"), resample["scipy_resample_poly_999983_seconds"]
+print(f"resample_poly 999983 Hz -> 10 kHz (20 M taps), 60000 samples:  haptex {ours:.2f} s   scipy {theirs:.2f} s   scipy/haptex = {theirs/ours:.2f}x")
 print(f"SHA-256 of the 10 s XML: {seconds('BM_Sha256_10sXml')*1e3:.1f} ms ({bench['BM_Sha256_10sXml']['bytes_per_second']/1e9:.2f} GB/s)")
 for name in ("BM_ParseHattXml_10s", "BM_ConvertXmlToHdf5_10s"):
     b = bench[name]

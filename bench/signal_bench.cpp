@@ -6,6 +6,7 @@
 #include "bench/run_benchmarks.hpp"
 #include "core/signal/butterworth.hpp"
 #include "core/signal/dft321.hpp"
+#include "core/signal/resample.hpp"
 #include "core/signal/sosfilt.hpp"
 #include "core/signal/spectrum.hpp"
 
@@ -43,6 +44,15 @@ void BM_AmplitudeSpectrum_1000(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_AmplitudeSpectrum_1000);
+
+// A 60 ms source at 999983 Hz (a prime rate under convert's 1 MHz limit) to 10 kHz: the filter has
+// 20 million taps (review 9, F8). bench/scipy_resample_poly.py times scipy on the same input.
+void BM_ResamplePoly_999983Hz(benchmark::State& state) {
+  std::vector<double> x(60000);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = 0.3 * std::sin(2 * M_PI * 180 * double(i) / 999983.0);
+  for (auto _ : state) benchmark::DoNotOptimize(haptex::signal::resample_poly(x, 10000, 999983));
+}
+BENCHMARK(BM_ResamplePoly_999983Hz)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 

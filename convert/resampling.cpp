@@ -72,7 +72,8 @@ double check_stamps(const std::string& file, const std::string& column, const st
 
 void resample_uniform(Recording& recording, int source_hz) {
   if (source_hz == kRateHz) return;
-  for (auto& [channel, values] : recording.channels) values = signal::resample_poly(values, kRateHz, source_hz);
+  const signal::PolyResampler resample(kRateHz, source_hz);
+  for (auto& [channel, values] : recording.channels) values = resample(values);
   recording.sample_rate_hz = kSampleRateHz;
   recording.source_texts["resampled"] =
       text::format("from %d Hz by resample_poly (scipy semantics, padtype mean; docs/convert.md)", source_hz);
@@ -92,10 +93,10 @@ void resample_stamped(Recording& recording, const std::vector<StampedChannels>& 
   std::size_t n = std::size_t(std::floor(span * kSampleRateHz)) + 1;
   for (const auto& g : groups) {
     const std::size_t count = std::size_t(std::floor(span * g.nominal_hz)) + 1;
+    const signal::PolyResampler resample(kRateHz, g.nominal_hz);
     for (const auto& channel : g.channels) {
       std::vector<double>& values = recording.channels.at(channel);
-      values = signal::resample_poly(signal::interpolate_uniform(g.times, values, start, g.nominal_hz, count), kRateHz,
-                                     g.nominal_hz);
+      values = resample(signal::interpolate_uniform(g.times, values, start, g.nominal_hz, count));
       n = std::min(n, values.size());
     }
   }

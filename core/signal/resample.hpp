@@ -16,8 +16,21 @@ namespace haptex::signal {
 // Nyquist, scaled to unit gain at 0 Hz; taps odd.
 std::vector<double> kaiser_lowpass(int taps, double cutoff, double beta);
 
-// scipy.signal.resample_poly(x, up, down, padtype='mean'); up, down >= 1. The output has
-// ceil(x.size() * up / down) samples; the first is at the time of x's first.
+// scipy.signal.resample_poly(x, up, down, padtype='mean') for every channel at one rate: the filter
+// (20 max(up, down) / gcd taps, 20 million from a 999983 Hz source) is designed once, not per channel.
+class PolyResampler {
+ public:
+  // up, down >= 1.
+  PolyResampler(int up, int down);
+  // The output has ceil(x.size() * up / down) samples; the first is at the time of x's first.
+  std::vector<double> operator()(std::span<const double> x) const;
+
+ private:
+  std::size_t up_ = 1, down_ = 1, pre_pad_ = 0, pre_remove_ = 0;
+  std::vector<double> taps_;  // times up
+};
+
+// PolyResampler(up, down)(x), for one channel.
 std::vector<double> resample_poly(std::span<const double> x, int up, int down);
 
 // numpy.interp(start_s + k / grid_hz, times, values) for k = 0 .. count - 1: samples at strictly

@@ -1,5 +1,5 @@
 // Resampling against scipy 1.10 (tests/golden/resample_golden.py): the Kaiser low-pass, resample_poly
-// with padtype 'mean' for five ratios, and irregular time stamps through numpy.interp then 5/3.
+// with padtype 'mean' for six ratios (one a 20-million-tap filter), and irregular time stamps through numpy.interp then 5/3.
 #include "core/signal/resample.hpp"
 
 #include <gtest/gtest.h>
@@ -33,6 +33,21 @@ TEST(Resample, ResamplePolyMatchesScipyForEveryRatio) {
     EXPECT_LT(max_scaled_error(y, expected), 1e-12);
   }
   EXPECT_EQ(resample_poly(x, 4, 4), x) << "equal rates: the input";
+}
+
+// A source at a prime rate under the 1 MHz limit: 20 million taps, one design for every channel.
+TEST(Resample, APrimeRateNearTheLimitMatchesScipy) {
+  std::vector<double> x(60000);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double t = double(i) / 999983.0;
+    x[i] = -0.96 + 0.3 * std::sin(2 * M_PI * 180 * t) + 0.2 * std::sin(2 * M_PI * 1300 * t + 0.3);
+  }
+  const std::vector<double> expected = load_golden("resample/poly_10000_999983.npy").data;
+  const PolyResampler resample(10000, 999983);
+  const std::vector<double> y = resample(x);
+  ASSERT_EQ(y.size(), expected.size());
+  EXPECT_LT(max_scaled_error(y, expected), 1e-12);
+  EXPECT_EQ(resample(x), y) << "one design serves every channel";
 }
 
 TEST(Resample, IrregularStampsGoThroughInterpolationAtTheNominalRate) {

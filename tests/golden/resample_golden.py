@@ -3,7 +3,8 @@
 
 Run with Debian's python3 (python3-scipy 1.10, python3-numpy 1.24):
     /usr/bin/python3 tests/golden/resample_golden.py
-Writes tests/golden/resample/*.npy (float64). Seeded: re-running reproduces the committed files.
+Writes tests/golden/resample/*.npy (float64). Seeded: re-running reproduces the committed files to the
+last bit of the machine's libm.
 """
 import os
 
@@ -50,6 +51,11 @@ def main():
     grid = times[0] + np.arange(int(np.floor((times[-1] - times[0]) * own)) + 1) / own
     save("irregular_own_rate", np.array([own], dtype=np.float64))
     save("irregular_own_rate_10000", sig.resample_poly(np.interp(grid, times, values), 10000, own, padtype="mean"))
+    # A source at a prime rate near the 1 MHz limit: a 20-million-tap filter (review 9, F8). The input is
+    # tones only, so the test computes it itself.
+    t = np.arange(60000) / 999983.0
+    save("poly_10000_999983", sig.resample_poly(-0.96 + 0.3 * np.sin(2 * np.pi * 180 * t) + 0.2 * np.sin(2 * np.pi * 1300 * t + 0.3),
+                                                10000, 999983, padtype="mean"))
 
 
 if __name__ == "__main__":
