@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
@@ -133,10 +134,11 @@ PressFile::PressFile(std::string path) : path_(std::move(path)), file_(open_chec
 
 // What the recorder stated of the frames agrees with them (review 9, F7: a /@samples of 1e12, a
 // /timestamp_ns of 10 values for 46 frames, a /@peak_frame of 99999 were replayed and extracted).
+void PressFile::refuse(const std::string& where, const std::string& what) const {
+  throw input_error(path_, where, what, "The file is damaged or was not written by haptex capture record: record the press again");
+}
+
 void PressFile::require_consistent_frames(const h5::Group& root) const {
-  const auto refuse = [&](const std::string& where, const std::string& what) {
-    throw input_error(path_, where, what, "The file is damaged or was not written by haptex capture record: record the press again");
-  };
   const std::int64_t frames = std::int64_t(count_);
   if (const std::int64_t samples = root.attr_int(layout::kSamples); samples != frames)
     refuse("/@samples", "is " + std::to_string(samples) + ", but /frames holds " + std::to_string(frames));
@@ -152,6 +154,56 @@ void PressFile::require_consistent_frames(const h5::Group& root) const {
   const std::int64_t first = root.attr_int(layout::kContactFirst), last = root.attr_int(layout::kContactLast);
   if (first >= 0 && last >= 0 && last < first)
     refuse("/@contact_last", "is " + std::to_string(last) + ", before /@contact_first (" + std::to_string(first) + ")");
+  require_frame_order(root);
+  require_control_lists(root);
+  require_reference_shape(root);
+}
+
+// Review 9, F7: stamps that run backwards and a counter that counts down were replayed and extracted.
+// CLOCK_MONOTONIC never repeats or runs back between two frames; 0 is a frame the driver gave no time.
+// The counter may stand still (a driver that does not count) and wraps at 2^32, but never runs back.
+void PressFile::require_frame_order(const h5::Group& root) const {
+  if (root.has_dataset(layout::kTimestampNs)) {
+    std::int64_t previous = 0;
+    const std::vector<std::int64_t> stamps = root.open_dataset(layout::kTimestampNs).read<std::int64_t>();
+    for (std::size_t i = 0; i < stamps.size(); ++i) {
+      if (stamps[i] == 0) continue;
+      if (stamps[i] <= previous)
+        refuse(std::string("/") + layout::kTimestampNs + "[" + std::to_string(i) + "]",
+               "is " + std::to_string(stamps[i]) + " ns, not after the frame before (" + std::to_string(previous) + " ns)");
+      previous = stamps[i];
+    }
+  }
+  if (root.has_dataset(layout::kSequence)) {
+    const std::vector<std::uint32_t> sequence = root.open_dataset(layout::kSequence).read<std::uint32_t>();
+    for (std::size_t i = 1; i < sequence.size(); ++i)
+      if (std::uint32_t(sequence[i] - sequence[i - 1]) >= 0x80000000u)
+        refuse(std::string("/") + layout::kSequence + "[" + std::to_string(i) + "]",
+               "is " + std::to_string(sequence[i]) + ", before the frame before (" + std::to_string(sequence[i - 1]) + ")");
+  }
+}
+
+// locked_controls: a JSON array of objects; missing_controls: a JSON array of names (schemas/hdf5-layout.md).
+void PressFile::require_control_lists(const h5::Group& root) const {
+  for (const auto& [name, element] : {std::pair{layout::kLockedControls, nlohmann::json::value_t::object},
+                                      std::pair{layout::kMissingControls, nlohmann::json::value_t::string}}) {
+    const nlohmann::json list = nlohmann::json::parse(root.attr_string(name), nullptr, false);
+    const bool right = list.is_array() && std::all_of(list.begin(), list.end(), [&](const nlohmann::json& e) { return e.type() == element; });
+    if (!right)
+      refuse(std::string("/@") + name, element == nlohmann::json::value_t::object ? "is not a JSON array of controls"
+                                                                                  : "is not a JSON array of control names");
+  }
+}
+
+// The reference's shape, checked when the file opens: replay never reads its pixels, yet a file whose
+// reference is not the frame size is damaged all the same.
+void PressFile::require_reference_shape(const h5::Group& root) const {
+  const h5::Dataset d = root.open_dataset(layout::kReference);
+  const h5::Shape shape = d.shape();
+  if (shape.size() != 3 || shape[2] != 3 || d.dtype() != "uint8")
+    throw input_error(path_, d.object_path(), "expected an H x W x 3 uint8 image", "Was the file written by haptex?");
+  if (cv::Size(int(shape[1]), int(shape[0])) != size_)
+    throw input_error(path_, d.object_path(), "the reference is not the frame size", "Record the press again");
 }
 
 std::vector<std::uint8_t> PressFile::bytes(std::size_t index) const { return read_vlen_bytes(frames_, index); }
@@ -159,14 +211,8 @@ std::vector<std::uint8_t> PressFile::bytes(std::size_t index) const { return rea
 cv::Mat PressFile::reference() const {
   const h5::Group root = file_.root();
   const ChannelOrder order = read_channel_order(root, layout::kReference);
-  const h5::Dataset d = root.open_dataset(layout::kReference);
-  const h5::Shape shape = d.shape();
-  if (shape.size() != 3 || shape[2] != 3 || d.dtype() != "uint8")
-    throw input_error(d.file(), d.object_path(), "expected an H x W x 3 uint8 image", "Was the file written by haptex?");
-  if (cv::Size(int(shape[1]), int(shape[0])) != size_)
-    throw input_error(path_, d.object_path(), "the reference is not the frame size", "Record the press again");
-  const std::vector<std::uint8_t> pixels = d.read<std::uint8_t>();
-  cv::Mat image(static_cast<int>(shape[0]), static_cast<int>(shape[1]), CV_8UC3);
+  const std::vector<std::uint8_t> pixels = root.open_dataset(layout::kReference).read<std::uint8_t>();
+  cv::Mat image(size_, CV_8UC3);  // the file's opening checked the shape
   std::memcpy(image.data, pixels.data(), pixels.size());
   if (order == ChannelOrder::rgb) cv::cvtColor(image, image, cv::COLOR_RGB2BGR);
   return image;

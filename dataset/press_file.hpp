@@ -86,7 +86,12 @@ class PressFile {
   cv::Mat reference() const;
 
  private:
+  // A damaged file (exit 2): names the object, says to record the press again.
+  [[noreturn]] void refuse(const std::string& where, const std::string& what) const;
   void require_consistent_frames(const h5::Group& root) const;
+  void require_frame_order(const h5::Group& root) const;
+  void require_control_lists(const h5::Group& root) const;
+  void require_reference_shape(const h5::Group& root) const;
   std::string path_;
   h5::File file_;
   h5::Dataset frames_{h5::Handle(), "", ""};

@@ -191,7 +191,8 @@ TEST(BadValues, ExtractRefusesAPressFileWithDamagedRecorderFigures) {
   EXPECT_EQ(run_haptex({"capture", "extract", d.file("s/press_0.h5"), "--no-sheets", "-o", d.file("g.h5")}).exit_code, 0);
 }
 
-// Review 9, F7: a press file whose stated counts disagree with its frames was replayed and extracted.
+// Review 9, F7: a press file whose stated counts disagree with its frames, whose clock or counter runs
+// back, or whose reference is not the frame size was replayed (and most of them extracted).
 TEST(BadValues, APressFileWhoseCountsDisagreeWithItsFramesIsRefused) {
   const TempDir d;
   ASSERT_TRUE(record_one_press(d.file("s")));
@@ -212,6 +213,23 @@ TEST(BadValues, APressFileWhoseCountsDisagreeWithItsFramesIsRefused) {
          e.root().set_attr("contact_first", frames - 1);
          e.root().set_attr("contact_last", std::int64_t(0));
        }},
+      // Clocks and counters that run back, and control lists that are not the JSON the layout states.
+      {"/timestamp_ns[1]", [frames](Edit& e) {
+         std::vector<std::int64_t> backwards(std::size_t(frames), 0);
+         for (std::int64_t i = 0; i < frames; ++i) backwards[std::size_t(i)] = (frames - i) * 33333333;
+         e.replace<std::int64_t>("timestamp_ns", backwards, {std::size_t(frames)});
+       }},
+      {"/timestamp_ns[1]", [frames](Edit& e) {
+         e.replace<std::int64_t>("timestamp_ns", std::vector<std::int64_t>(std::size_t(frames), 5), {std::size_t(frames)});
+       }},
+      {"/sequence[2]", [frames](Edit& e) {
+         std::vector<std::uint32_t> sequence(static_cast<std::size_t>(frames));
+         for (std::size_t i = 0; i < sequence.size(); ++i) sequence[i] = std::uint32_t(i == 2 ? 0 : 10 + i);
+         e.replace<std::uint32_t>("sequence", sequence, {std::size_t(frames)});
+       }},
+      {"/@locked_controls", [](Edit& e) { e.root().set_attr("locked_controls", std::string("[{\"id\":")); }},
+      {"/@missing_controls", [](Edit& e) { e.root().set_attr("missing_controls", std::string("[1, 2]")); }},
+      {"/reference", [](Edit& e) { e.replace<std::uint8_t>("reference", std::vector<std::uint8_t>(300, 7), {10, 10, 3}); }},
   };
   for (const auto& [where, damage] : damaged) {
     SCOPED_TRACE(where);

@@ -42,8 +42,8 @@ void Edit::replace(const std::string& path, const std::vector<T>& values, const 
   const auto attrs = string_attrs(dataset(path));
   remove(path);
   const auto slash = path.rfind('/');
-  h5::Group parent = group(path.substr(0, slash));
-  restore(parent.write_array<T>(path.substr(slash + 1), values, shape), attrs);
+  h5::Group parent = slash == std::string::npos ? root() : group(path.substr(0, slash));
+  restore(parent.write_array<T>(slash == std::string::npos ? path : path.substr(slash + 1), values, shape), attrs);
 }
 
 nlohmann::json read_json(const std::string& path);
