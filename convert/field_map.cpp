@@ -1,12 +1,33 @@
 #include "convert/field_map.hpp"
 
+#include <utility>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "core/embedded.hpp"
+#include "core/error.hpp"
 #include "core/json/schema.hpp"
 
 namespace haptex::convert {
 namespace {
+
+// Review 9, C2: two channels on one column, or a time column that is a channel's, were refused only
+// once a CSV was read, naming the CSV and an impossible count instead of the map.
+void require_distinct_columns(const FieldMap& map) {
+  std::map<std::string, std::string> owner;  // column -> "channels.<channel>"
+  for (const auto& [channel, column] : map.channels) {
+    const std::string where = "channels." + channel;
+    if (const auto [it, fresh] = owner.emplace(column, where); !fresh)
+      throw input_error(map.origin, where, "names '" + column + "', as " + it->second + " does", "Give each channel its own element or column");
+  }
+  std::vector<std::pair<std::string, std::string>> times{{"csv_time_column", map.csv_time_column}};
+  for (const auto& [channel, column] : map.csv_channel_times) times.emplace_back("csv_channel_times." + channel, column);
+  for (const auto& [where, column] : times)
+    if (const auto it = owner.find(column); it != owner.end())
+      throw input_error(map.origin, where, "names '" + column + "', the column of " + it->second,
+                        "Name the column that holds the time stamps");
+}
 
 FieldMap from_json(const nlohmann::json& doc, const std::string& origin) {
   json::validate(doc, "hatt-recording-map.schema.json", origin);
@@ -22,6 +43,7 @@ FieldMap from_json(const nlohmann::json& doc, const std::string& origin) {
   map.csv_channel_times = doc.value("csv_channel_times", std::map<std::string, std::string>{});
   map.csv_units = doc.value("csv_units", std::map<std::string, std::string>{});
   map.origin = origin;
+  require_distinct_columns(map);
   return map;
 }
 

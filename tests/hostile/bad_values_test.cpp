@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 #include <nlohmann/json.hpp>
 
 #include "tests/hostile/hostile_support.hpp"
@@ -78,6 +79,29 @@ TEST(BadValues, AValueAndATimeInDifferentRowsAreRefused) {
       },
       "time_s,accelX,accelY,accelZ,t_force,forceNormal,speed");
   expect_refusal(convert(d, csv, {"--map", d.file("map.json")}), {csv, "line 12", "forceNormal", "t_force"});
+}
+
+// Review 9, C2: a map that puts two channels on one column, or a time column on a channel's, was refused
+// only when a CSV was read, naming the CSV and an impossible count ("has 0 values").
+TEST(BadValues, AFieldMapThatGivesTwoThingsOneColumnIsRefusedNamingTheMap) {
+  const TempDir d;
+  const std::string csv = csv_recording(d, "rig_0.csv", 2000, [](int i) { return t(i) + ",0.1,0.2,0.3,1,40"; });
+  const std::vector<std::tuple<std::string, std::string, std::string>> clashes = {
+      {"/channels/speed", "forceNormal", "channels.speed"},
+      {"/csv_time_column", "accelX", "csv_time_column"},
+      {"/csv_channel_times", "", "csv_channel_times.force_normal"}};
+  for (const auto& [pointer, column, where] : clashes) {
+    SCOPED_TRACE(where);
+    nlohmann::json map = nlohmann::json::parse(std::ifstream(std::string(HAPTEX_SCHEMA_DIR) + "/hatt-recording-map.json"));
+    if (column.empty())
+      map["csv_channel_times"] = {{"force_normal", "forceNormal"}};
+    else
+      map[nlohmann::json::json_pointer(pointer)] = column;
+    std::ofstream(d.file("map.json"), std::ios::trunc) << map.dump();
+    const CommandResult r = convert(d, csv, {"--map", d.file("map.json")});
+    expect_refusal(r, {d.file("map.json") + ": " + where});
+    EXPECT_EQ(r.err.find(csv), std::string::npos) << "the map is at fault, not the CSV";
+  }
 }
 
 TEST(BadValues, EvaluateRefusesATruthBeyondAnyVibration) {
