@@ -390,6 +390,9 @@ def check_output(path, inputs=(), overwrite=False):
     for given in inputs:
         if os.path.exists(path) and os.path.exists(given) and os.path.samefile(path, given):
             raise HaptexFileError(f"{path}: is also an input ({given}): choose another output name")
+    folder = os.path.dirname(path) or "."
+    if not os.path.isdir(folder):
+        raise HaptexFileError(f"{path}: the output folder {folder} does not exist: create it first")
     if not os.path.lexists(path):
         return
     if os.path.islink(path) or not os.path.isfile(path):
@@ -430,6 +433,8 @@ def _temporary_file(path):
             return partial
         except FileExistsError:
             continue
+        except OSError as e:  # a read-only or full file system, a folder without write permission
+            raise HaptexFileError(f"{path}: cannot write beside it ({e.strerror}): choose a folder you can write to") from None
     raise HaptexFileError(f"{path}: no free temporary name beside it")
 
 

@@ -55,6 +55,16 @@ TEST(PythonExamples, KnnRefusesToWriteOverItsInputs) {
   }
 }
 
+// Review 9, C5: an output in a folder that does not exist named the temporary name, with no fix.
+TEST(PythonExamples, KnnNamesAMissingOutputFolder) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const Knn knn;
+  const TempDir d;
+  const CommandResult r = knn.run(d.file("nodir/k.h5"));
+  expect_refusal(r, {d.file("nodir/k.h5"), "the output folder " + d.file("nodir") + " does not exist", "create it"});
+  EXPECT_EQ(r.err.find(".partial"), std::string::npos) << r.err;
+}
+
 TEST(PythonExamples, KnnForceReplacesOnlyAnEarlierPredictionsFile) {
   if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
   const Knn knn;
