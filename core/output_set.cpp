@@ -18,7 +18,11 @@ namespace fs = std::filesystem;
 void EarlierOutput::require_retirable(const std::string& path, const std::function<bool(const std::string& path)>& retire,
                                       const std::string& what, const std::string& fix) {
   std::error_code ec;
-  if (!fs::exists(fs::symlink_status(path, ec)) || retire(path)) return;
+  const fs::file_status status = fs::symlink_status(path, ec);
+  if (!fs::exists(status) || retire(path)) return;
+  if (fs::is_symlink(status))
+    throw input_error(path, "", "is " + what + " of the output --force replaces, and a symbolic link, which haptex never replaces",
+                      "Remove the link, or name the output elsewhere");
   throw input_error(path, "", "is " + what + " of the output --force replaces, and holds what haptex did not write: it would stay "
                                   "beside a new output it no longer describes",
                     fix);

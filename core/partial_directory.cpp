@@ -46,6 +46,9 @@ void check_destination(const std::string& dir, const FolderOptions& o) {
     throw input_error(dir, "", "the folder " + parent + " is not writable", "Choose a folder you can write to with " + o.option);
   const fs::file_status status = fs::symlink_status(dir, ec);
   if (!fs::exists(status)) return;
+  if (fs::is_symlink(status))  // review 9, C6: "not a folder" for a link to one misled
+    throw input_error(dir, "", "is a symbolic link, which haptex never writes through or replaces",
+                      "Remove the link, or choose another " + o.option);
   if (!fs::is_directory(status))
     throw input_error(dir, "", "exists and is not a folder", "Choose another " + o.option + ", or move it out of the way");
   if (!o.overwrite && !empty_folder(dir))

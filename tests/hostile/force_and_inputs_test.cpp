@@ -402,6 +402,26 @@ TEST(Force, SplitKeepsAPlotOfTheUsers) {
   EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
 }
 
+// Review 9, C6: a plot folder that is a link to another split's was refused as "not a folder" or as
+// holding "what haptex did not write"; the reason is the link.
+TEST(Force, SplitCallsALinkedPlotFolderALink) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  ASSERT_EQ(run_haptex({"split", p.dataset, "-o", d.file("other.json")}).exit_code, 0);
+  ASSERT_EQ(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--no-plots"}).exit_code, 0);
+  fs::create_directory_symlink("other.plots", d.file("s.plots"));
+  const std::string before = file_bytes(d.file("s.json"));
+  for (const bool plots : {true, false}) {
+    SCOPED_TRACE(plots ? "with plots" : "--no-plots");
+    std::vector<std::string> args{"split", p.dataset, "-o", d.file("s.json"), "--force"};
+    if (!plots) args.push_back("--no-plots");
+    expect_refusal(run_haptex(args), {d.file("s.plots"), "symbolic link", "Remove the link"});
+    EXPECT_EQ(file_bytes(d.file("s.json")), before);
+    EXPECT_TRUE(fs::is_symlink(d.file("s.plots")));
+    EXPECT_TRUE(fs::exists(d.file("other.plots/haptex-files.json")));
+  }
+}
+
 // --force replaces a folder only of the command that wrote it: split's plots never replace a synth
 // output that happens to be named like them (issue 32, review 2).
 TEST(Force, SplitNeverReplacesAnotherCommandsFolder) {
