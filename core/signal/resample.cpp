@@ -78,6 +78,54 @@ std::vector<double> PolyResampler::operator()(std::span<const double> x) const {
 
 std::vector<double> resample_poly(std::span<const double> x, int up, int down) { return PolyResampler(up, down)(x); }
 
+StreamResampler::StreamResampler(int up, int down) {
+  if (up < 1 || down < 1) throw failure("internal: a resampler needs up and down of 1 or more");
+  const int g = std::gcd(up, down);
+  up_ = std::size_t(up / g);
+  down_ = std::size_t(down / g);
+  if (up_ == 1 && down_ == 1) return;
+  half_ = 10 * std::max(up_, down_);
+  taps_ = kaiser_lowpass(int(2 * half_ + 1), 1.0 / double(std::max(up_, down_)), 5.0);
+  for (double& v : taps_) v *= double(up_);
+}
+
+// y[k] = sum over inputs i of taps[k down + half - i up] x[i] (PolyResampler's sum, its centre at
+// i up = k down); inputs before the stream are 0, and those past its end once flushed.
+double StreamResampler::output(std::size_t k) const {
+  const std::size_t m = k * down_ + half_;
+  const std::size_t lowest = m + 1 > taps_.size() ? (m + 1 - taps_.size() + up_ - 1) / up_ : 0;
+  double sum = 0;
+  for (std::size_t i = std::max(lowest, first_); i <= m / up_ && i < first_ + input_.size(); ++i)
+    sum += taps_[m - i * up_] * input_[i - first_];
+  return sum;
+}
+
+void StreamResampler::push(std::span<const double> x, std::vector<double>& out) {
+  out.clear();
+  if (up_ == 1 && down_ == 1) {
+    out.assign(x.begin(), x.end());
+    return;
+  }
+  input_.insert(input_.end(), x.begin(), x.end());
+  inputs_ += x.size();
+  // Output k is complete once input (k down + half) / up has come.
+  while ((next_ * down_ + half_) / up_ < inputs_) out.push_back(output(next_++));
+  // Keep the inputs the next output still reaches.
+  const std::size_t m = next_ * down_ + half_, lowest = m + 1 > taps_.size() ? (m + 1 - taps_.size() + up_ - 1) / up_ : 0;
+  if (lowest > first_) {
+    const std::size_t drop = std::min(lowest - first_, input_.size());
+    input_.erase(input_.begin(), input_.begin() + std::ptrdiff_t(drop));
+    first_ += drop;
+  }
+}
+
+void StreamResampler::flush(std::vector<double>& out) {
+  out.clear();
+  const std::size_t total = (inputs_ * up_ + down_ - 1) / down_;
+  if (up_ == 1 && down_ == 1) return;
+  while (next_ < total) out.push_back(output(next_++));
+}
+
 std::vector<double> interpolate_uniform(std::span<const double> times, std::span<const double> values, double start_s,
                                         double grid_hz, std::size_t count) {
   if (times.size() != values.size() || times.size() < 2 || !(grid_hz > 0) ||

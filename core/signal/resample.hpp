@@ -30,6 +30,29 @@ class PolyResampler {
   std::vector<double> taps_;  // times up
 };
 
+// The same filter on a stream that arrives in blocks (a live player's 10 ms frames): output k lies at
+// input time k down / up, as in PolyResampler, and is returned once the input reaches past the
+// filter's right half (10 max(up, down) / up input samples later). Zeros stand before the stream and,
+// at flush(), after it: on a signal of mean 0 the outputs equal PolyResampler's (padtype 'mean' only
+// takes the mean out first). Allocates nothing per block once its buffers have grown to a block.
+class StreamResampler {
+ public:
+  StreamResampler(int up, int down);
+  // Appends x; `out` receives the outputs that became complete (cleared first).
+  void push(std::span<const double> x, std::vector<double>& out);
+  // Ends the stream: the outputs up to ceil(inputs * up / down), as PolyResampler gives them.
+  void flush(std::vector<double>& out);
+  // Input samples between an input and the first output that can be returned at its time.
+  std::size_t delay_inputs() const { return half_ / up_ + 1; }
+
+ private:
+  double output(std::size_t k) const;
+  std::size_t up_ = 1, down_ = 1, half_ = 0;
+  std::vector<double> taps_;    // times up; taps_[half_] is the centre
+  std::vector<double> input_;   // the inputs from index first_ on (older ones are no longer needed)
+  std::size_t first_ = 0, inputs_ = 0, next_ = 0;  // index of input_[0]; inputs seen; next output
+};
+
 // PolyResampler(up, down)(x), for one channel.
 std::vector<double> resample_poly(std::span<const double> x, int up, int down);
 
