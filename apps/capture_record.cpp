@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/output_options.hpp"
+#include "apps/stop_on_signal.hpp"
 #include "apps/capture_subcommands.hpp"
 #include "apps/terminal_progress.hpp"
 #include "capture/device/camera_controls.hpp"
@@ -26,41 +27,6 @@
 
 namespace haptex::apps {
 namespace {
-
-std::atomic<bool> g_stop{false};
-
-extern "C" void request_stop(int) { g_stop = true; }
-
-// SIGINT, SIGTERM and SIGHUP (the terminal or the ssh session closed) set the stop flag for the
-// duration of the take, which then ends "interrupted" with every frame kept; a second Ctrl-C kills as usual.
-class StopOnSignal {
- public:
-  StopOnSignal() {
-    g_stop = false;
-    struct sigaction action {};
-    action.sa_handler = request_stop;
-    sigemptyset(&action.sa_mask);
-    // TERM and HUP may come twice (timeout forwards them, a closing terminal repeats them): they keep
-    // asking to stop. Only a second Ctrl-C kills, as a user expects.
-    take(SIGTERM, action, old_term_);
-    take(SIGHUP, action, old_hup_);
-    action.sa_flags = SA_RESETHAND;
-    take(SIGINT, action, old_int_);
-  }
-  // A signal ignored when haptex started (nohup's HUP, a background job's INT) stays ignored.
-  static void take(int signal, const struct sigaction& action, struct sigaction& old) {
-    sigaction(signal, nullptr, &old);
-    if (old.sa_handler != SIG_IGN) sigaction(signal, &action, nullptr);
-  }
-  ~StopOnSignal() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-    sigaction(SIGHUP, &old_hup_, nullptr);
-  }
-
- private:
-  struct sigaction old_int_ {}, old_term_ {}, old_hup_ {};
-};
 
 class CaptureRecord : public CaptureSubcommand {
  public:
@@ -132,10 +98,10 @@ class CaptureRecord : public CaptureSubcommand {
         const auto& modes = fake.config.modes;
         options_.calibration_frames = capture::calibration_frames(modes.empty() || modes.front().fps.empty() ? 0 : modes.front().fps.front());
       }
-      return capture::record_session(camera, request_, options_, &g_stop, progress, warn);
+      return capture::record_session(camera, request_, options_, &StopOnSignal::stop_requested(), progress, warn);
     }
     capture::SystemKernel kernel;
-    return capture::record_session(kernel, request_, options_, &g_stop, progress, warn);
+    return capture::record_session(kernel, request_, options_, &StopOnSignal::stop_requested(), progress, warn);
   }
 
   void build_request(const GlobalOptions& global) {

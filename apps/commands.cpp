@@ -16,6 +16,7 @@ std::unique_ptr<Command> make_predict_command();
 std::unique_ptr<Command> make_windows_command();
 std::unique_ptr<Command> make_evaluate_command();
 std::unique_ptr<Command> make_render_command();
+std::unique_ptr<Command> make_play_command();
 
 std::vector<std::unique_ptr<Command>> all_commands() {
   std::vector<std::unique_ptr<Command>> commands;
@@ -32,6 +33,7 @@ std::vector<std::unique_ptr<Command>> all_commands() {
   commands.push_back(make_windows_command());
   commands.push_back(make_evaluate_command());
   commands.push_back(make_render_command());
+  commands.push_back(make_play_command());
   return commands;
 }
 

@@ -10,6 +10,7 @@
 #include "apps/output_options.hpp"
 #include "apps/command.hpp"
 #include "apps/number_checks.hpp"
+#include "apps/texture_options.hpp"
 #include "core/durable_file.hpp"
 #include "core/output_set.hpp"
 #include "core/error.hpp"
@@ -34,9 +35,7 @@ class RenderCommand : public Command {
 
   void declare(CLI::App& app) override {
     app.add_option("model", model_path_, "Model file (haptex train)")->required()->check(CLI::ExistingFile);
-    auto* image = app.add_option("--image", texture_.image, "GelSight press image (PNG/JPEG), unified models")->check(CLI::ExistingFile);
-    app.add_option("--reference", texture_.reference, "The sensor's no-contact frame for --image")->check(CLI::ExistingFile)->needs(image);
-    app.add_option("--material", texture_.material, "A training material's id instead of an image")->excludes(image);
+    add_texture_options(app, texture_);
     app.add_option("--trajectory", trajectory_path_, "Force/speed trajectory at 10 kHz: columns force, speed (time_s optional)")
         ->required()->check(CLI::ExistingFile);
     add_output_options(app, output_, force_, "WAV file to write (mono, 10 kHz, 24-bit PCM)");
@@ -61,8 +60,7 @@ class RenderCommand : public Command {
 
   int run(const GlobalOptions& global) override {
     const render::RenderOptions options = render_options();
-    if (texture_.image.empty() && texture_.material.empty())
-      throw Error(Error::Kind::bad_input, "render: give --image (and --reference) or --material");
+    require_texture(texture_, "render");
     const std::vector<std::string> inputs{model_path_, trajectory_path_, texture_.image, texture_.reference};
     refuse_output_among_inputs(output_, inputs);
     refuse_output_among_inputs(csv_, inputs);

@@ -1,6 +1,7 @@
 #include "predict/trajectory.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -100,6 +101,24 @@ Trajectory read_trajectory(const std::string& path) {
   }
   if (out.force.empty()) throw input_error(path, "line 2", "no samples", "Add one row per 0.1 ms");
   return out;
+}
+
+std::string trajectory_csv_text(const Trajectory& trajectory) {
+  std::string text = std::string(kTrajectoryCsvHeader) + "\n";
+  char row[96];
+  for (std::size_t i = 0; i < trajectory.force.size(); ++i) {
+    const int n = std::snprintf(row, sizeof row, "%.4f,%.9g,%.9g\n", double(i) * kSamplePeriod, double(trajectory.force[i]),
+                                double(trajectory.speed[i]));
+    text.append(row, std::size_t(n));
+  }
+  return text;
+}
+
+bool is_trajectory_csv(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string expected = std::string(kTrajectoryCsvHeader) + "\n";
+  std::string first(expected.size(), '\0');
+  return in.read(first.data(), std::streamsize(first.size())) && first == expected;
 }
 
 void action_at(const Trajectory& trajectory, std::size_t t, float* out) {

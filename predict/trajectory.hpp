@@ -15,6 +15,13 @@ struct Trajectory {
 // non-finite values, negative force or speed, a time_s step other than 0.1 ms, no rows.
 Trajectory read_trajectory(const std::string& path);
 
+// A trajectory as read_trajectory reads it back: one row per sample under kTrajectoryCsvHeader
+// (what `haptex play --record` keeps of the actions it played from).
+inline constexpr const char* kTrajectoryCsvHeader = "time_s,force_n,speed_mm_s";
+std::string trajectory_csv_text(const Trajectory& trajectory);
+// Whether path starts with that header: a CSV haptex wrote, which --force may replace.
+bool is_trajectory_csv(const std::string& path);
+
 // The 20 action values (10 force, then 10 speed) ending at sample t (t >= 9).
 void action_at(const Trajectory& trajectory, std::size_t t, float* out);
 

@@ -42,6 +42,40 @@ double peak_of(const std::string& path, std::span<const double> signal) {
   return peak;
 }
 
+// Opens out's temporary as a mono WAV and writes its strings: the comment states the full scale,
+// the rate and the peak (summary's), then what made the signal.
+std::unique_ptr<SNDFILE, SndfileCloser> open_wav(PartialFile& out, int rate, int pcm_format, const WavOptions& options,
+                                                 WavSummary& summary) {
+  const std::string& path = out.final_path();
+  summary.comment = kFullScaleKey + number(summary.full_scale_m_s2) +
+                    "; acceleration in m/s^2 = sample (-1..1 of full scale) x " + number(summary.full_scale_m_s2) + "; " +
+                    number(rate / 1000.0) + " kHz, peak " + number(summary.peak_m_s2) + " m/s^2" +
+                    (options.source.empty() ? std::string() : "; " + text::printable(options.source));
+  SF_INFO info{};
+  info.samplerate = rate;
+  info.channels = 1;
+  info.format = SF_FORMAT_WAV | pcm_format;
+  std::unique_ptr<SNDFILE, SndfileCloser> file(out.open_by_name([&](const std::string& path) { return sf_open(path.c_str(), SFM_WRITE, &info); }));
+  if (!file)
+    throw failure(path + ": cannot write it: " +
+                  (errno == ENOSPC ? std::string("the disk is full") : std::string(sf_strerror(nullptr)) + " (" + out.path() + ")"));
+  sf_command(file.get(), SFC_SET_CLIPPING, nullptr, SF_TRUE);  // a rounding past 1.0 saturates, never wraps
+  const std::string software = std::string("haptex ") + kVersion;
+  // Names in the strings as a terminal may show them (review 6: a trajectory's path put ESC, a newline
+  // and U+202E into the comment, which sox --i and mediainfo print raw).
+  const std::string title = text::printable(options.title);
+  if (sf_set_string(file.get(), SF_STR_COMMENT, summary.comment.c_str()) != 0 ||
+      sf_set_string(file.get(), SF_STR_SOFTWARE, software.c_str()) != 0 ||
+      (!title.empty() && sf_set_string(file.get(), SF_STR_TITLE, title.c_str()) != 0))
+    throw failure(path + ": cannot store the WAV's strings: " + sf_strerror(file.get()));
+  return file;
+}
+
+void close_wav(const std::string& path, std::unique_ptr<SNDFILE, SndfileCloser> file) {
+  if (const int status = sf_close(file.release()); status != 0)
+    throw failure(path + ": closing the WAV failed: " + sf_error_number(status));
+}
+
 }  // namespace
 
 double rounded_full_scale(double peak_m_s2) {
@@ -96,34 +130,25 @@ WavSummary write_wav(PartialFile& out, std::span<const double> signal_m_s2, cons
   } else {
     summary.full_scale_m_s2 = rounded_full_scale(summary.peak_m_s2);
   }
-  summary.comment = kFullScaleKey + number(summary.full_scale_m_s2) +
-                    "; acceleration in m/s^2 = sample (-1..1 of full scale) x " + number(summary.full_scale_m_s2) +
-                    "; 10 kHz, peak " + number(summary.peak_m_s2) + " m/s^2" +
-                    (options.source.empty() ? std::string() : "; " + text::printable(options.source));
-
-  SF_INFO info{};
-  info.samplerate = kWavSampleRate;
-  info.channels = 1;
-  info.format = SF_FORMAT_WAV | SF_FORMAT_PCM_24;
-  std::unique_ptr<SNDFILE, SndfileCloser> file(out.open_by_name([&](const std::string& path) { return sf_open(path.c_str(), SFM_WRITE, &info); }));
-  if (!file)
-    throw failure(path + ": cannot write it: " +
-                  (errno == ENOSPC ? std::string("the disk is full") : std::string(sf_strerror(nullptr)) + " (" + out.path() + ")"));
-  sf_command(file.get(), SFC_SET_CLIPPING, nullptr, SF_TRUE);  // a rounding past 1.0 saturates, never wraps
-  const std::string software = std::string("haptex ") + kVersion;
-  // Names in the strings as a terminal may show them (review 6: a trajectory's path put ESC, a newline
-  // and U+202E into the comment, which sox --i and mediainfo print raw).
-  const std::string title = text::printable(options.title);
-  if (sf_set_string(file.get(), SF_STR_COMMENT, summary.comment.c_str()) != 0 ||
-      sf_set_string(file.get(), SF_STR_SOFTWARE, software.c_str()) != 0 ||
-      (!title.empty() && sf_set_string(file.get(), SF_STR_TITLE, title.c_str()) != 0))
-    throw failure(path + ": cannot store the WAV's strings: " + sf_strerror(file.get()));
+  std::unique_ptr<SNDFILE, SndfileCloser> file = open_wav(out, kWavSampleRate, SF_FORMAT_PCM_24, options, summary);
   std::vector<double> scaled(signal_m_s2.size());
   for (std::size_t i = 0; i < scaled.size(); ++i) scaled[i] = signal_m_s2[i] / summary.full_scale_m_s2;
   if (sf_write_double(file.get(), scaled.data(), sf_count_t(scaled.size())) != sf_count_t(scaled.size()))
     throw failure(path + ": cannot write it: " + (errno == ENOSPC ? std::string("the disk is full") : sf_strerror(file.get())));
-  if (const int status = sf_close(file.release()); status != 0)
-    throw failure(path + ": closing the WAV failed: " + sf_error_number(status));
+  close_wav(path, std::move(file));
+  return summary;
+}
+
+WavSummary write_played_wav(PartialFile& out, std::span<const std::int16_t> samples, int rate, const WavOptions& options) {
+  if (!(options.full_scale_m_s2 > 0)) throw failure("internal: a played WAV needs its full scale");
+  WavSummary summary;
+  summary.samples = samples.size();
+  summary.full_scale_m_s2 = options.full_scale_m_s2;
+  for (const std::int16_t v : samples) summary.peak_m_s2 = std::max(summary.peak_m_s2, std::abs(double(v)) / 32767 * options.full_scale_m_s2);
+  std::unique_ptr<SNDFILE, SndfileCloser> file = open_wav(out, rate, SF_FORMAT_PCM_16, options, summary);
+  if (sf_write_short(file.get(), samples.data(), sf_count_t(samples.size())) != sf_count_t(samples.size()))
+    throw failure(out.final_path() + ": cannot write it: " + (errno == ENOSPC ? std::string("the disk is full") : sf_strerror(file.get())));
+  close_wav(out.final_path(), std::move(file));
   return summary;
 }
 

@@ -16,6 +16,7 @@
 //
 // The file is written to PATH.partial, synced and renamed (core/durable_file.hpp).
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 
@@ -47,6 +48,10 @@ WavSummary write_wav(const std::string& path, std::span<const double> signal_m_s
 // The same into out's temporary file, leaving the commit to the caller (so a WAV and its CSV appear
 // together) and the checks of the path (check_wav_output) too.
 WavSummary write_wav(PartialFile& out, std::span<const double> signal_m_s2, const WavOptions& options = {});
+
+// What a sound card played (`haptex play --record`): 16-bit samples at its rate, full scale 32767 =
+// options.full_scale_m_s2 (> 0), written as they were played (PCM 16), the comment as write_wav's.
+WavSummary write_played_wav(PartialFile& out, std::span<const std::int16_t> samples, int rate, const WavOptions& options);
 
 // Whether path is a WAV write_wav wrote (its software string starts "haptex "): what --force replaces.
 bool is_haptex_wav(const std::string& path);
