@@ -91,7 +91,7 @@ class PlayCommand : public Command {
     play::Player player(model, code, options(), output);
     if (!global.quiet && !global.json) print_start(output, player.latency());
     play::PlayReport report;
-    {
+    try {
       StopOnSignal stop_on_signal;
       if (trajectory) {
         report = player.play(*trajectory, StopOnSignal::stop_requested());
@@ -99,6 +99,10 @@ class PlayCommand : public Command {
         play::ActionStream stream(STDIN_FILENO, "standard input");
         report = player.play(stream, StopOnSignal::stop_requested());
       }
+    } catch (...) {
+      // A bad line in the stream, a device unplugged: what was played until then is kept.
+      if (!record_.empty() && player.played_trajectory().force.size() > 0) write_record(player, output.rate(), global);
+      throw;
     }
     if (!record_.empty()) write_record(player, output.rate(), global);
     if (global.json)
@@ -116,6 +120,7 @@ class PlayCommand : public Command {
     o.online.scatter = !steady_;
     o.online.seed = o.noise.seed = seed_;
     o.full_scale_m_s2 = full_scale_;
+    o.keep_samples = !record_.empty();
     return o;
   }
 

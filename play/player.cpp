@@ -72,14 +72,19 @@ void Player::hand_over(bool sounds) {
     sounding_ = true;
     const std::size_t lead = (period - pending_.size() % period) % period;
     pending_.insert(pending_.begin(), lead, 0);
-    report_.first_sound_sample = played_.size() + lead;
+    report_.first_sound_sample = report_.samples_played + lead;
   }
   if (!sounding_) pending_.assign(period, 0);
   while (pending_.size() >= period) {
     output_.play(std::span(pending_).first(period));
-    played_.insert(played_.end(), pending_.begin(), pending_.begin() + std::ptrdiff_t(period));
+    keep(std::span(pending_).first(period));
     pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(period));
   }
+}
+
+void Player::keep(std::span<const std::int16_t> period) {
+  report_.samples_played += period.size();
+  if (options_.keep_samples) played_.insert(played_.end(), period.begin(), period.end());
 }
 
 void Player::finish(bool interrupted) {
@@ -92,11 +97,10 @@ void Player::finish(bool interrupted) {
   if (!pending_.empty()) {
     pending_.resize(output_.period_samples(), 0);  // the last period ends in silence
     output_.play(pending_);
-    played_.insert(played_.end(), pending_.begin(), pending_.end());
+    keep(pending_);
     pending_.clear();
   }
   if (!interrupted) output_.drain();
-  report_.samples_played = played_.size();
   report_.underruns = output_.underruns();
   report_.late_periods = output_.late_periods();
 }

@@ -32,6 +32,7 @@ struct PlayOptions {
   render::OnlineReconstructionOptions online{.scatter = true};
   render::ShapedNoiseOptions noise;
   double full_scale_m_s2 = 0;  // m/s^2 at 16-bit full scale (render's --full-scale); louder samples clip, counted
+  bool keep_samples = false;   // keep what was played (played_samples) for a recording
 };
 
 // Milliseconds from an action to the sound it makes: waiting for the next tick (one frame), the
@@ -59,13 +60,15 @@ class Player {
   PlayReport play(const predict::Trajectory& trajectory, const std::atomic<bool>& stop);
   PlayReport play(ActionStream& stream, const std::atomic<bool>& stop);
 
-  // What was played from (10 kHz) and what was handed to the device (16-bit, its rate).
+  // What was played from (10 kHz) and what was handed to the device (16-bit, its rate; kept only
+  // with PlayOptions::keep_samples).
   const predict::Trajectory& played_trajectory() const { return trajectory_; }
   const std::vector<std::int16_t>& played_samples() const { return played_; }
 
  private:
   void tick(std::size_t m);
   std::int16_t pcm(double m_s2);  // counts a clipped sample
+  void keep(std::span<const std::int16_t> period);  // counts it, and keeps it when recording
   void hand_over(bool sounds);  // resampled_ holds the tick's samples at the output's rate
   void finish(bool interrupted);
   render::VibrationLoop loop_;
