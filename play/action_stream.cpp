@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <vector>
@@ -37,8 +36,10 @@ std::vector<std::string> fields_of(const std::string& line) {
 std::optional<ActionLine> parse_action_line(const std::string& line, const std::string& source, std::size_t number) {
   const std::string where = "line " + std::to_string(number);
   const std::vector<std::string> fields = fields_of(line);
-  const bool letters = std::any_of(line.begin(), line.end(), [](unsigned char c) { return std::isalpha(c) && c != 'e' && c != 'E'; });
-  if (number == 1 && letters) return std::nullopt;  // a header such as "t,force,speed"
+  // A header such as "t,force,speed": a first line of which no field is a number.
+  if (number == 1 && !fields.empty() &&
+      std::none_of(fields.begin(), fields.end(), [](const std::string& f) { return text::parse_number(f).has_value(); }))
+    return std::nullopt;
   if (fields.size() != 2 && fields.size() != 3)
     throw input_error(source, where, "holds " + std::to_string(fields.size()) + " fields",
                       "Give one action per line: force speed, or t,force,speed (N, mm/s)");

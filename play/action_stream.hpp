@@ -35,6 +35,7 @@ class ActionStream {
   ActionStream(const ActionStream&) = delete;
   ActionStream& operator=(const ActionStream&) = delete;
 
+  const std::string& source() const { return source_; }
   // Waits for the first line (or the end); false when the stream ended without one.
   bool wait_for_first(const std::atomic<bool>& stop);
   // Moves the lines that arrived up to `until` into `out` (cleared first). Throws the error a bad line

@@ -117,7 +117,8 @@ PlayReport Player::play(const predict::Trajectory& trajectory, const std::atomic
 
 PlayReport Player::play(ActionStream& stream, const std::atomic<bool>& stop) {
   if (!stream.wait_for_first(stop)) {
-    report_.ended_by = stop ? "interrupted" : "end of the input";
+    if (!stop) throw input_error(stream.source(), "", "ended before its first action", "Give one 'force speed' line per sample (N, mm/s)");
+    report_.ended_by = "interrupted";
     return report_;
   }
   std::deque<ActionLine> lines, more;

@@ -43,7 +43,7 @@ int run_program(const ProgramRun& run) {
   if (run.argv.empty()) return kNotStarted;
   FileActions actions;
   const int out_flags = O_WRONLY | O_CREAT | O_TRUNC;  // no O_CLOEXEC: these are the child's own descriptors
-  if (!actions.open(STDIN_FILENO, "", O_RDONLY) || !actions.open(STDOUT_FILENO, run.stdout_path, out_flags) ||
+  if (!actions.open(STDIN_FILENO, run.stdin_path, O_RDONLY) || !actions.open(STDOUT_FILENO, run.stdout_path, out_flags) ||
       !actions.open(STDERR_FILENO, run.stderr_path, out_flags) || !actions.chdir(run.directory))
     return kNotStarted;
   std::vector<char*> argv;

@@ -11,9 +11,10 @@ struct ProgramRun {
   std::string directory;          // working directory of the child; empty: this process's
   std::string stdout_path;        // where its standard output goes; empty: /dev/null
   std::string stderr_path;        // where its standard error goes; empty: /dev/null
+  std::string stdin_path;         // what its standard input reads; empty: /dev/null
 };
 
-// Runs the program to its end with standard input from /dev/null and returns its exit code:
+// Runs the program to its end and returns its exit code:
 // 127 when it could not be started (not installed, not executable), 128 + N when signal N ended it.
 int run_program(const ProgramRun& run);
 

@@ -22,6 +22,7 @@
 
 #include "core/json/schema.hpp"
 #include "core/signal/resample.hpp"
+#include "tests/support/fake_sound_card.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
@@ -33,28 +34,6 @@ extern char** environ;
 namespace haptex::test {
 namespace {
 namespace fs = std::filesystem;
-
-// An ALSA configuration whose device "capture" writes what it plays to `raw` (16-bit samples, as sent).
-class FakeCard {
- public:
-  FakeCard() {
-    std::ofstream(dir_.file("asound.conf")) << "pcm.nothing { type null }\n"
-                                            << "pcm.capture { type file; slave { pcm \"nothing\" } file \"" << raw()
-                                            << "\" format \"raw\" }\n";
-    ::setenv("ALSA_CONFIG_PATH", dir_.file("asound.conf").c_str(), 1);
-  }
-  ~FakeCard() { ::unsetenv("ALSA_CONFIG_PATH"); }
-  std::string raw() const { return dir_.file("played.raw"); }
-  std::vector<std::int16_t> samples() const {
-    std::ifstream in(raw(), std::ios::binary);
-    std::vector<std::int16_t> out(fs::file_size(raw()) / 2);
-    in.read(reinterpret_cast<char*>(out.data()), std::streamsize(out.size() * 2));
-    return out;
-  }
-
- private:
-  TempDir dir_;
-};
 
 std::string material() { return json::read_file(small_pipeline().split)["materials"][0]["id"]; }
 
@@ -128,7 +107,7 @@ TEST(PlayCli, ATrajectoryPlaysWhatRenderLiveRenders) {
   for (const std::vector<std::string>& method : {std::vector<std::string>{"--reconstruct", "online", "--seed", "3"},
                                                  std::vector<std::string>{"--reconstruct", "noise", "--seed", "5"}}) {
     SCOPED_TRACE(method[1]);
-    const FakeCard card;
+    const FakeSoundCard card;
     std::vector<std::string> args = play_args({"--trajectory", stroke, "--record", dir.file("played.wav"), "--force"});
     args.insert(args.end(), method.begin(), method.end());
     const CommandResult r = run_haptex(args);
@@ -194,7 +173,7 @@ struct Piped {
 
 TEST(PlayCli, AStreamAt1kHzPlaysWithoutAnUnderrunAndItsRecordingReplays) {
   const TempDir dir;
-  const FakeCard card;
+  const FakeSoundCard card;
   Piped play(play_args({"--actions", "-", "--record", dir.file("session.wav"), "--reconstruct", "online", "--seed", "7"}),
              dir.file("out.json"));
   // A line is the action of the moment it arrives: lines sent while haptex starts all arrive at once.
@@ -214,7 +193,7 @@ TEST(PlayCli, AStreamAt1kHzPlaysWithoutAnUnderrunAndItsRecordingReplays) {
 
 TEST(PlayCli, CtrlCStopsAndKeepsTheRecording) {
   const TempDir dir;
-  const FakeCard card;
+  const FakeSoundCard card;
   Piped play(play_args({"--actions", "-", "--record", dir.file("s.wav")}), dir.file("out.json"));
   std::atomic<bool> stop{false};
   std::thread writer([&] { play.stream(-1, &stop); });
@@ -233,7 +212,7 @@ TEST(PlayCli, CtrlCStopsAndKeepsTheRecording) {
 
 TEST(PlayCli, ABadLineStopsWithItsPlaceAndKeepsWhatWasPlayed) {
   const TempDir dir;
-  const FakeCard card;
+  const FakeSoundCard card;
   Piped play(play_args({"--actions", "-", "--record", dir.file("s.wav")}), dir.file("out.json"), dir.file("err.txt"));
   play.stream(300);
   ASSERT_EQ(::write(play.input, "1.0 nan\n", 8), 8);
@@ -247,7 +226,7 @@ TEST(PlayCli, ABadLineStopsWithItsPlaceAndKeepsWhatWasPlayed) {
 }
 
 TEST(PlayCli, ADeviceThatDoesNotExistIsNamed) {
-  const FakeCard card;
+  const FakeSoundCard card;
   const TempDir dir;
   const CommandResult r = run_haptex({"play", quick_model(false), "--material", material(), "--trajectory", write_stroke(dir),
                                       "--device", "no_such_card"});

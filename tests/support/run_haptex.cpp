@@ -14,15 +14,17 @@ static std::string slurp(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-CommandResult run_program(const std::vector<std::string>& argv, const std::string& directory) {
+static CommandResult run(const std::vector<std::string>& argv, const std::string& directory, const std::string& input) {
   TempDir dir;
   const std::string out = dir.file("out"), err = dir.file("err");
   CommandResult result;
-  result.exit_code = process::run_program({argv, directory, out, err});
+  result.exit_code = process::run_program({argv, directory, out, err, input});
   result.out = slurp(out);
   result.err = slurp(err);
   return result;
 }
+
+CommandResult run_program(const std::vector<std::string>& argv, const std::string& directory) { return run(argv, directory, ""); }
 
 std::string haptex_binary() {
   const char* other = std::getenv("HAPTEX_TEST_BINARY");
@@ -36,6 +38,12 @@ CommandResult run_haptex_in(const std::string& directory, const std::vector<std:
 }
 
 CommandResult run_haptex(const std::vector<std::string>& args) { return run_haptex_in("", args); }
+
+CommandResult run_haptex_fed(const std::vector<std::string>& args, const std::string& input) {
+  std::vector<std::string> argv{haptex_binary()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return run(argv, "", input);
+}
 
 CommandResult run_python(const std::vector<std::string>& args) {
   std::vector<std::string> argv{"/usr/bin/python3"};

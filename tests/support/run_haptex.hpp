@@ -18,6 +18,8 @@ std::string haptex_binary();
 CommandResult run_haptex(const std::vector<std::string>& args);
 // The same with `directory` as the working directory (relative paths in args are relative to it).
 CommandResult run_haptex_in(const std::string& directory, const std::vector<std::string>& args);
+// The same with standard input read from the file `input`.
+CommandResult run_haptex_fed(const std::vector<std::string>& args, const std::string& input);
 // Runs any program with its arguments (in `directory` when given); exit code 127 when it is missing.
 CommandResult run_program(const std::vector<std::string>& argv, const std::string& directory = "");
 // /usr/bin/python3 with these arguments (a script and its arguments, or -c CODE and its arguments).

@@ -1,0 +1,90 @@
+// Issue 34 meets issue 32's promises: haptex play's stream, device and recording outputs. A bad line is
+// refused naming standard input and the line, exit 2; a recording never replaces what haptex did not
+// write, nor an input, and is refused before anything plays.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/fake_sound_card.hpp"
+#include "tests/support/quick_models.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+std::vector<std::string> play(const std::vector<std::string>& more) {
+  std::vector<std::string> args = {"play", quick_model(false), "--material", small_material(), "--device", "capture"};
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+std::string stroke(const TempDir& d) {
+  std::ofstream csv(d.file("stroke.csv"));
+  csv << "force,speed\n";
+  for (int i = 0; i < 3000; ++i) csv << "1.5,100\n";
+  return d.file("stroke.csv");
+}
+
+TEST(HostilePlay, BadLinesOnStandardInputAreRefusedWithTheirLine) {
+  const FakeSoundCard card;
+  const TempDir d;
+  const std::vector<std::pair<std::string, std::string>> streams = {
+      {"1 2\n1 2 3 4\n", "line 2: holds 4 fields"},
+      {"t,force,speed\n0,1,2\n0.001,-1,2\n", "line 3: negative force or speed"},
+      {"1 1e39\n", "line 1: '1e39' is beyond"},
+      {"1 inf\n", "line 1: 'inf' is not a finite number"},
+      {"1 \xff\xfe\n", "line 1: '\\xff\\xfe' is not a number"},
+      {"1 2\n\n3 x\n", "line 3: 'x' is not a number"},
+      {std::string(5000, '1'), "line 1: is longer than 4096 bytes"},
+      {"1\n", "line 1: holds 1 fields"},
+      {"force speed\n", "ended before its first action"},
+      {"", "ended before its first action"}};
+  for (const auto& [input, message] : streams) {
+    SCOPED_TRACE(message);
+    { std::ofstream(d.file("in.txt"), std::ios::binary) << input; }
+    expect_refusal(run_haptex_fed(play({"--actions", "-"}), d.file("in.txt")), {"standard input: " + message});
+  }
+}
+
+TEST(HostilePlay, ActionsComeOnlyFromStandardInput) {
+  const FakeSoundCard card;
+  const TempDir d;
+  expect_refusal(run_haptex(play({"--actions", stroke(d)})), {stroke(d), "--actions reads standard input only", "--trajectory"});
+  expect_refusal(run_haptex(play({})), {"give --trajectory FILE, or --actions -"});
+}
+
+TEST(HostilePlay, ARecordingNeverReplacesWhatHaptexDidNotWriteNorAnInput) {
+  const FakeSoundCard card;
+  const TempDir d;
+  const std::string trajectory = stroke(d);
+  std::ofstream(d.file("mine.wav")) << "my own recording";
+  std::ofstream(d.file("take.csv")) << "my notes";
+  for (const bool force : {false, true}) {
+    SCOPED_TRACE(force ? "--force" : "");
+    std::vector<std::string> extra = force ? std::vector<std::string>{"--force"} : std::vector<std::string>{};
+    auto with = [&](std::vector<std::string> args) {
+      args.insert(args.end(), extra.begin(), extra.end());
+      return play(args);
+    };
+    expect_refusal(run_haptex(with({"--trajectory", trajectory, "--record", d.file("mine.wav")})), {d.file("mine.wav")});
+    expect_refusal(run_haptex(with({"--trajectory", trajectory, "--record", d.file("take.wav")})), {d.file("take.csv")});
+    expect_refusal(run_haptex(with({"--trajectory", trajectory, "--record", d.file("stroke.wav")})), {trajectory, "also an input"});
+    expect_refusal(run_haptex(with({"--trajectory", trajectory, "--record", d.file("no/such/folder/r.wav")})), {"does not exist"});
+    EXPECT_FALSE(fs::exists(card.raw())) << "refused before anything played";
+  }
+  EXPECT_EQ(file_bytes(d.file("mine.wav")), "my own recording");
+  EXPECT_EQ(file_bytes(d.file("take.csv")), "my notes");
+  EXPECT_FALSE(fs::exists(d.file("take.wav")));
+  // Its own recording it replaces with --force, both files together.
+  ASSERT_EQ(run_haptex(play({"--trajectory", trajectory, "--record", d.file("r.wav")})).exit_code, 0);
+  expect_refusal(run_haptex(play({"--trajectory", trajectory, "--record", d.file("r.wav")})), {d.file("r.wav"), "--force"});
+  EXPECT_EQ(run_haptex(play({"--trajectory", trajectory, "--record", d.file("r.wav"), "--force"})).exit_code, 0);
+  EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
+}
+
+}  // namespace
+}  // namespace haptex::test
