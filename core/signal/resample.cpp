@@ -43,75 +43,55 @@ std::vector<double> kaiser_lowpass(int taps, double cutoff, double beta) {
   return h;
 }
 
-PolyResampler::PolyResampler(int up, int down) {
-  if (up < 1 || down < 1) throw failure("internal: resample_poly needs up and down of 1 or more");
-  const int g = std::gcd(up, down);
-  up_ = std::size_t(up / g);
-  down_ = std::size_t(down / g);
-  if (up_ == 1 && down_ == 1) return;
-  const std::size_t half = 10 * std::max(up_, down_);
-  // scipy pads the taps with zeros in front so the output samples fall at the filter's centre (its
-  // n_pre_pad), and behind; zero taps add nothing, so only the shift they make is kept.
-  pre_pad_ = down_ - half % down_;
-  pre_remove_ = (half + pre_pad_) / down_;
-  taps_ = kaiser_lowpass(int(2 * half + 1), 1.0 / double(std::max(up_, down_)), 5.0);
-  for (double& v : taps_) v *= double(up_);
+PolyphaseFilter::PolyphaseFilter(int up_in, int down_in) {
+  if (up_in < 1 || down_in < 1) throw failure("internal: resample_poly needs up and down of 1 or more");
+  const int g = std::gcd(up_in, down_in);
+  up = std::size_t(up_in / g);
+  down = std::size_t(down_in / g);
+  if (identity()) return;
+  half = 10 * std::max(up, down);
+  taps = kaiser_lowpass(int(2 * half + 1), 1.0 / double(std::max(up, down)), 5.0);
+  for (double& v : taps) v *= double(up);
 }
 
+// scipy pads the taps with zeros in front so that output k falls at the filter's centre (its n_pre_pad),
+// and behind; zero taps add nothing, so only that alignment is kept: the centre at i up = k down.
+double PolyphaseFilter::output(std::size_t k, std::span<const double> x, std::size_t first, double offset) const {
+  const std::size_t m = k * down + half;
+  const std::size_t lowest = m + 1 > taps.size() ? (m + 1 - taps.size() + up - 1) / up : 0;
+  double sum = 0;
+  for (std::size_t i = std::max(lowest, first); i <= m / up && i < first + x.size(); ++i) sum += taps[m - i * up] * (x[i - first] - offset);
+  return sum;
+}
+
+PolyResampler::PolyResampler(int up, int down) : filter_(up, down) {}
+
 std::vector<double> PolyResampler::operator()(std::span<const double> x) const {
-  const std::size_t n = x.size();
-  if (up_ == 1 && down_ == 1) return {x.begin(), x.end()};
-  const std::size_t n_out = (n * up_ + down_ - 1) / down_;
+  if (filter_.identity()) return {x.begin(), x.end()};
+  const std::size_t n = x.size(), n_out = (n * filter_.up + filter_.down - 1) / filter_.down;
   const double mean = n ? std::accumulate(x.begin(), x.end(), 0.0) / double(n) : 0.0;
   std::vector<double> y(n_out);
-  for (std::size_t k = 0; k < n_out; ++k) {
-    // Output k of upfirdn: sum over inputs i of taps[m - i up] x[i], m = (k + pre_remove) down - pre_pad.
-    const std::size_t m = (k + pre_remove_) * down_ - pre_pad_;
-    const std::size_t first = m + 1 > taps_.size() ? (m + 1 - taps_.size() + up_ - 1) / up_ : 0;
-    const std::size_t last = std::min(m / up_, n ? n - 1 : 0);
-    double sum = 0;
-    for (std::size_t i = first; n && i <= last; ++i) sum += taps_[m - i * up_] * (x[i] - mean);
-    y[k] = sum + mean;
-  }
+  for (std::size_t k = 0; k < n_out; ++k) y[k] = filter_.output(k, x, 0, mean) + mean;
   return y;
 }
 
 std::vector<double> resample_poly(std::span<const double> x, int up, int down) { return PolyResampler(up, down)(x); }
 
-StreamResampler::StreamResampler(int up, int down) {
-  if (up < 1 || down < 1) throw failure("internal: a resampler needs up and down of 1 or more");
-  const int g = std::gcd(up, down);
-  up_ = std::size_t(up / g);
-  down_ = std::size_t(down / g);
-  if (up_ == 1 && down_ == 1) return;
-  half_ = 10 * std::max(up_, down_);
-  taps_ = kaiser_lowpass(int(2 * half_ + 1), 1.0 / double(std::max(up_, down_)), 5.0);
-  for (double& v : taps_) v *= double(up_);
-}
-
-// y[k] = sum over inputs i of taps[k down + half - i up] x[i] (PolyResampler's sum, its centre at
-// i up = k down); inputs before the stream are 0, and those past its end once flushed.
-double StreamResampler::output(std::size_t k) const {
-  const std::size_t m = k * down_ + half_;
-  const std::size_t lowest = m + 1 > taps_.size() ? (m + 1 - taps_.size() + up_ - 1) / up_ : 0;
-  double sum = 0;
-  for (std::size_t i = std::max(lowest, first_); i <= m / up_ && i < first_ + input_.size(); ++i)
-    sum += taps_[m - i * up_] * input_[i - first_];
-  return sum;
-}
+StreamResampler::StreamResampler(int up, int down) : filter_(up, down) {}
 
 void StreamResampler::push(std::span<const double> x, std::vector<double>& out) {
   out.clear();
-  if (up_ == 1 && down_ == 1) {
+  if (filter_.identity()) {
     out.assign(x.begin(), x.end());
     return;
   }
   input_.insert(input_.end(), x.begin(), x.end());
   inputs_ += x.size();
   // Output k is complete once input (k down + half) / up has come.
-  while ((next_ * down_ + half_) / up_ < inputs_) out.push_back(output(next_++));
-  // Keep the inputs the next output still reaches.
-  const std::size_t m = next_ * down_ + half_, lowest = m + 1 > taps_.size() ? (m + 1 - taps_.size() + up_ - 1) / up_ : 0;
+  while ((next_ * filter_.down + filter_.half) / filter_.up < inputs_) out.push_back(filter_.output(next_++, input_, first_));
+  // Keep only the inputs the next output still reaches.
+  const std::size_t m = next_ * filter_.down + filter_.half;
+  const std::size_t lowest = m + 1 > filter_.taps.size() ? (m + 1 - filter_.taps.size() + filter_.up - 1) / filter_.up : 0;
   if (lowest > first_) {
     const std::size_t drop = std::min(lowest - first_, input_.size());
     input_.erase(input_.begin(), input_.begin() + std::ptrdiff_t(drop));
@@ -121,9 +101,9 @@ void StreamResampler::push(std::span<const double> x, std::vector<double>& out) 
 
 void StreamResampler::flush(std::vector<double>& out) {
   out.clear();
-  const std::size_t total = (inputs_ * up_ + down_ - 1) / down_;
-  if (up_ == 1 && down_ == 1) return;
-  while (next_ < total) out.push_back(output(next_++));
+  if (filter_.identity()) return;
+  const std::size_t total = (inputs_ * filter_.up + filter_.down - 1) / filter_.down;
+  while (next_ < total) out.push_back(filter_.output(next_++, input_, first_));
 }
 
 std::vector<double> interpolate_uniform(std::span<const double> times, std::span<const double> values, double start_s,

@@ -16,25 +16,35 @@ namespace haptex::signal {
 // Nyquist, scaled to unit gain at 0 Hz; taps odd.
 std::vector<double> kaiser_lowpass(int taps, double cutoff, double beta);
 
+// The polyphase filter of scipy.signal.resample_poly: the ratio in lowest terms, and a Kaiser-windowed
+// sinc (beta 5, 10 zero crossings a side, 20 max(up, down) + 1 taps) that cuts at the lower Nyquist,
+// times up.
+struct PolyphaseFilter {
+  PolyphaseFilter(int up, int down);  // up, down >= 1
+  bool identity() const { return up == 1 && down == 1; }
+  // Output k, which lies at input time k down / up: the sum over inputs i of taps[k down + half - i up]
+  // (x[i - first] - offset), for the inputs x holds (from index `first` on); the others are 0.
+  double output(std::size_t k, std::span<const double> x, std::size_t first, double offset = 0) const;
+  std::size_t up = 1, down = 1, half = 0;
+  std::vector<double> taps;
+};
+
 // scipy.signal.resample_poly(x, up, down, padtype='mean') for every channel at one rate: the filter
-// (20 max(up, down) / gcd taps, 20 million from a 999983 Hz source) is designed once, not per channel.
+// (20 million taps from a 999983 Hz source) is designed once, not per channel.
 class PolyResampler {
  public:
-  // up, down >= 1.
-  PolyResampler(int up, int down);
+  PolyResampler(int up, int down);  // up, down >= 1
   // The output has ceil(x.size() * up / down) samples; the first is at the time of x's first.
   std::vector<double> operator()(std::span<const double> x) const;
 
  private:
-  std::size_t up_ = 1, down_ = 1, pre_pad_ = 0, pre_remove_ = 0;
-  std::vector<double> taps_;  // times up
+  PolyphaseFilter filter_;
 };
 
-// The same filter on a stream that arrives in blocks (a live player's 10 ms frames): output k lies at
-// input time k down / up, as in PolyResampler, and is returned once the input reaches past the
-// filter's right half (10 max(up, down) / up input samples later). Zeros stand before the stream and,
-// at flush(), after it: on a signal of mean 0 the outputs equal PolyResampler's (padtype 'mean' only
-// takes the mean out first). Allocates nothing per block once its buffers have grown to a block.
+// The same filter on a stream that arrives in blocks (a live player's 10 ms frames): output k is
+// returned once the input reaches past the filter's right half (half / up input samples later).
+// Zeros stand before the stream and, at flush(), after it: on a signal of mean 0 the outputs equal
+// PolyResampler's (padtype 'mean' only takes the mean out first).
 class StreamResampler {
  public:
   StreamResampler(int up, int down);
@@ -43,13 +53,11 @@ class StreamResampler {
   // Ends the stream: the outputs up to ceil(inputs * up / down), as PolyResampler gives them.
   void flush(std::vector<double>& out);
   // Input samples between an input and the first output that can be returned at its time.
-  std::size_t delay_inputs() const { return half_ / up_ + 1; }
+  std::size_t delay_inputs() const { return filter_.half / filter_.up + 1; }
 
  private:
-  double output(std::size_t k) const;
-  std::size_t up_ = 1, down_ = 1, half_ = 0;
-  std::vector<double> taps_;    // times up; taps_[half_] is the centre
-  std::vector<double> input_;   // the inputs from index first_ on (older ones are no longer needed)
+  PolyphaseFilter filter_;
+  std::vector<double> input_;  // the inputs from index first_ on (older ones are no longer needed)
   std::size_t first_ = 0, inputs_ = 0, next_ = 0;  // index of input_[0]; inputs seen; next output
 };
 
