@@ -3,8 +3,10 @@
 //             [--seed S] [--full-scale A] [--buffer-ms MS] [--force]
 // The model as a live haptic loop on a sound card (docs/play.md). Ctrl-C or the end of the input stops
 // it; --record keeps what was played and the actions it was played from.
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -186,10 +188,22 @@ class PlayCommand : public Command {
                           {"underruns", r.underruns},
                           {"late_periods", r.late_periods},
                           {"slowest_frame_ms", r.slowest_tick_ms},
+                          {"line_to_device_ms", {{"median", r.line_to_device_median_ms}, {"p99", r.line_to_device_p99_ms}}},
+                          {"cpu_share", cpu_share()},
                           {"ended_by", r.ended_by}};
     if (!record_.empty()) out["record"] = {{"wav", record_}, {"actions", actions_path(record_)}};
     std::cout << out.dump(2) << "\n";
   }
+
+  // The process's CPU time over its wall time since it started: the share of one core it took.
+  static double cpu_share() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const double cpu = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    return wall > 0 ? cpu / wall : 0;
+  }
+  static inline const std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
 
   std::string model_path_, trajectory_path_, actions_, device_ = "default", record_, reconstruction_ = "online";
   predict::TextureChoice texture_;

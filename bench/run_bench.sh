@@ -144,7 +144,19 @@ $one_core "$build/bench/bench_predict" --benchmark_out="$out/predict.json" --ben
 "$build/bench/bench_predict" --export-model "$predict_model"
 { $one_core /usr/bin/python3 "$(dirname "$0")/torch_forward.py" "$predict_model" \
     || echo '{"note": "bench/torch_forward.py failed; no comparison"}'; } > "$out/torch_forward.json"
+# play: a live stream of actions at 1 kHz on standard input, played through ALSA's file plugin (haptex
+# and the stream's writer on one core).
+$one_core /usr/bin/python3 "$(dirname "$0")/play_stream.py" "$build/haptex" "$predict_model" > "$out/play.json"
 rm -f "$predict_model"
+/usr/bin/python3 - "$out/play.json" <<'PY'
+import json, sys
+for method, r in json.load(open(sys.argv[1])).items():
+    l = r["line_to_device_ms"]
+    print(f"play, 10 s of actions at 1 kHz on standard input, {method}, one core: line to device median {l['median']:.2f} ms, "
+          f"99th percentile {l['p99']:.2f} ms (then the device's {r['latency_ms']['buffer']:.0f} ms buffer; nominal latency "
+          f"{r['latency_ms']['total']:.1f} ms); {r['underruns']} underruns, {r['late_periods']} late periods in {r['frames']} frames; "
+          f"slowest frame {r['slowest_frame_ms']:.2f} ms; CPU {100 * r['cpu_share']:.1f}% of one core")
+PY
 /usr/bin/python3 - "$out/predict.json" "$out/torch_forward.json" <<'PY'
 import json, sys
 unit = {"ns": 1, "us": 1e3, "ms": 1e6, "s": 1e9}

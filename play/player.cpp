@@ -75,11 +75,17 @@ void Player::hand_over(bool sounds) {
     report_.first_sound_sample = report_.samples_played + lead;
   }
   if (!sounding_) pending_.assign(period, 0);
+  const bool handed = pending_.size() >= period;
   while (pending_.size() >= period) {
     output_.play(std::span(pending_).first(period));
     keep(std::span(pending_).first(period));
     pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(period));
   }
+  // The frame whose first samples just went out was predicted look-ahead ticks ago.
+  const std::size_t lag = loop_.latency_samples() / kHop;
+  if (handed && report_.ticks > lag && report_.ticks - 1 - lag < newest_line_.size())
+    if (const auto& line = newest_line_[report_.ticks - 1 - lag])
+      line_to_device_ms_.push_back(std::chrono::duration<double, std::milli>(Clock::now() - *line).count());
 }
 
 void Player::keep(std::span<const std::int16_t> period) {
@@ -103,6 +109,12 @@ void Player::finish(bool interrupted) {
   if (!interrupted) output_.drain();
   report_.underruns = output_.underruns();
   report_.late_periods = output_.late_periods();
+  if (!line_to_device_ms_.empty()) {
+    std::sort(line_to_device_ms_.begin(), line_to_device_ms_.end());
+    const auto at = [&](double q) { return line_to_device_ms_[std::size_t(q * double(line_to_device_ms_.size() - 1))]; };
+    report_.line_to_device_median_ms = at(0.5);
+    report_.line_to_device_p99_ms = at(0.99);
+  }
 }
 
 PlayReport Player::play(const predict::Trajectory& trajectory, const std::atomic<bool>& stop) {
@@ -147,6 +159,7 @@ PlayReport Player::play(ActionStream& stream, const std::atomic<bool>& stop) {
     if (m == 0) output_.start();
     more_to_come = stream.take(due, more);
     lines.insert(lines.end(), more.begin(), more.end());
+    newest_line_.push_back(lines.empty() ? std::nullopt : std::optional(lines.back().arrived));
     extend(last);
     tick(m);
   }

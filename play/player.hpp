@@ -14,6 +14,7 @@
 //     45 ms), tick m at that moment plus m x 10 ms; a line sets the trajectory from the sample of its
 //     arrival on (10 kHz, the value held until the next line).
 #include <atomic>
+#include <optional>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -48,6 +49,10 @@ struct PlayReport {
   std::size_t first_sound_sample = 0;          // played sample where the rendering's (resampled) sample 0 lies
   std::uint64_t clipped_samples = 0, underruns = 0, late_periods = 0;
   double slowest_tick_ms = 0;                  // predict + phase + resample of one frame
+  // A live stream: from a line's arrival to the period holding the first samples of the frame it was
+  // the newest action of, handed to the device (the device's buffer comes after); median and 99th
+  // percentile over the frames that had a new line.
+  double line_to_device_median_ms = 0, line_to_device_p99_ms = 0;
   std::string ended_by;                        // "end of the trajectory", "end of the input", "interrupted"
 };
 
@@ -79,6 +84,8 @@ class Player {
   std::vector<double> resampled_;
   std::vector<std::int16_t> pending_, played_;
   bool sounding_ = false;  // the loop has returned samples
+  std::vector<std::optional<Clock::time_point>> newest_line_;  // per tick, a live stream's newest line's arrival
+  std::vector<double> line_to_device_ms_;
   PlayReport report_;
 };
 
