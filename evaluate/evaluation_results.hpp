@@ -5,6 +5,7 @@
 // (schemas/results.schema.json), CSVs and charts.
 #include <cstddef>
 #include <limits>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -112,6 +113,19 @@ struct Example {
   std::vector<NamedSeries> external_spectra, external_signals;
 };
 
+// What report.html plays and shows of a material (docs/evaluate.md, "report.html"): the start of its
+// first test section (up to kClipSamples) as recorded, as the stitched model signal and as the AR
+// baseline rendered it (10 kHz), the three spectra of its middle window, and its first test press's
+// peak image (PNG, at most kClipImageWidth pixels wide; empty where it has none).
+inline constexpr std::size_t kClipSamples = 30000;  // 3 s
+inline constexpr int kClipImageWidth = 320;
+struct MaterialClip {
+  std::string id, name;
+  std::vector<double> recorded, model, baseline;
+  std::vector<double> recorded_spectrum, model_spectrum, baseline_spectrum;
+  std::vector<std::uint8_t> press_png;
+};
+
 // The texture map: 2-D PCA of the unified model's latents.
 struct LatentPoint {
   std::string id, name, kind;  // kind: "training" (the material's mean training latent) or "test press"
@@ -136,6 +150,7 @@ struct Evaluation {
   std::vector<Experiment> experiments;
   std::vector<SpeedPoint> speed;
   std::vector<Example> examples;
+  std::vector<MaterialClip> clips;  // every material with a stitched signal
   std::vector<LatentPoint> latents;
   std::string floor_kind;  // "oracle" (--truth) or "estimate"; see MaterialFloor
   std::vector<MaterialFloor> floors;

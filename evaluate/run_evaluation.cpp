@@ -10,12 +10,15 @@
 #include <optional>
 
 #include <Eigen/SVD>
+#include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "core/random_seeds.hpp"
 #include "core/sha256.hpp"
 #include "core/thread_clock.hpp"
+#include "dataset/format.hpp"
+#include "dataset/press_images.hpp"
 #include "dataset/window.hpp"
 #include "evaluate/baselines/ar_expectation.hpp"
 #include "evaluate/baselines/ar_refit.hpp"
@@ -85,6 +88,7 @@ struct MaterialRun {
   std::map<MethodKey, Scores> methods;
   MaterialFloor floor;
   Example example;
+  MaterialClip clip;
 };
 
 // The codes one unified model gives a material: its training latent mean and each test press.
@@ -204,8 +208,8 @@ void score_external(MaterialRun& run, std::size_t i, const ExternalPredictions& 
   run.methods[{Kind::external_signal, i}].add(signal);
 }
 
-std::vector<double> head(const std::vector<double>& v, std::size_t from) {
-  const std::size_t end = std::min(v.size(), from + kExampleSamples);
+std::vector<double> head(const std::vector<double>& v, std::size_t from, std::size_t samples = kExampleSamples) {
+  const std::size_t end = std::min(v.size(), from + samples);
   return from < end ? std::vector<double>(v.begin() + std::ptrdiff_t(from), v.begin() + std::ptrdiff_t(end)) : std::vector<double>{};
 }
 
@@ -358,6 +362,11 @@ MaterialRun run_material(std::size_t m, const MaterialSignals& signals, const Co
       std::vector<double> signal;
       run.methods[key].add(stitched_scores(stitched_spectra, grid, truth, ref.noise, stitched_predict_seconds, key,
                                            derive_seed(c.options.seed, 7, m, s), &signal));
+      if (s == 0 && c.stitched_key == key) {
+        const std::size_t j = grid.size() / 2;
+        run.clip = {signals.id, signals.name, head(section.accel, grid[0], kClipSamples), head(signal, 0, kClipSamples),
+                    head(first_render, grid[0], kClipSamples), truth[j], stitched_spectra[j], first_render_spectra[j], {}};
+      }
       if (keep_example && s == 0 && c.stitched_key == key) {
         const std::size_t j = grid.size() / 2;
         run.example = {signals.id, signals.name, truth[j], stitched_spectra[j], first_render_spectra[j],
@@ -575,6 +584,20 @@ void summarise_external(Evaluation& e, const std::vector<MaterialSignals>& signa
   }
 }
 
+// Each clip's material's first test press, its peak image as a small PNG.
+void add_press_images(std::vector<MaterialClip>& clips, const split::DatasetSplit& split) {
+  const h5::File file = dataset::open_checked(split.dataset_path, dataset::Kind::dataset);
+  for (MaterialClip& clip : clips) {
+    const auto m = std::find_if(split.materials.begin(), split.materials.end(), [&](const split::MaterialSets& s) { return s.id == clip.id; });
+    if (m == split.materials.end() || m->presses[split::kTest].empty()) continue;
+    const std::string path = dataset::press_path(clip.id, std::to_string(m->presses[split::kTest].front()));
+    cv::Mat peak = dataset::read_press_image(file.root().open_group(path.substr(1)), dataset::layout::kPeak);
+    if (peak.cols > kClipImageWidth)
+      cv::resize(peak, peak, cv::Size(kClipImageWidth, peak.rows * kClipImageWidth / peak.cols), 0, 0, cv::INTER_AREA);
+    clip.press_png = dataset::encode_png(peak);
+  }
+}
+
 // Floors, realism and the speed-vs-accuracy points over all materials.
 void summarise(Evaluation& e, const std::vector<MaterialSignals>& signals, const std::vector<MaterialRun>& runs, const Context& c) {
   Scores base;
@@ -583,6 +606,7 @@ void summarise(Evaluation& e, const std::vector<MaterialSignals>& signals, const
     base.add(r.baseline);
     for (const auto& [key, s] : r.methods) totals[key].add(s);
     if (!r.example.id.empty()) e.examples.push_back(r.example);
+    if (!r.clip.id.empty()) e.clips.push_back(r.clip);
     if (!r.baseline.windows.empty()) e.floors.push_back(r.floor);
   }
   const bool any_oracle = std::any_of(e.floors.begin(), e.floors.end(), [](const MaterialFloor& f) { return f.kind == "oracle"; });
@@ -697,6 +721,7 @@ Evaluation run_evaluation(const split::DatasetSplit& split, const std::vector<Mo
     e.experiments.push_back(std::move(x));
   }
   summarise(e, signals, runs, c);
+  add_press_images(e.clips, split);
   e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return e;
 }

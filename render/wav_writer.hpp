@@ -53,6 +53,9 @@ WavSummary write_wav(PartialFile& out, std::span<const double> signal_m_s2, cons
 // options.full_scale_m_s2 (> 0), written as they were played (PCM 16), the comment as write_wav's.
 WavSummary write_played_wav(PartialFile& out, std::span<const std::int16_t> samples, int rate, const WavOptions& options);
 
+// The same WAV's bytes, for a page that embeds it (evaluate's report.html).
+std::string wav_bytes(std::span<const std::int16_t> samples, int rate, const WavOptions& options);
+
 // Whether path is a WAV write_wav wrote (its software string starts "haptex "): what --force replaces.
 bool is_haptex_wav(const std::string& path);
 // check_replaceable_output for a WAV.

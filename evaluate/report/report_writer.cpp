@@ -10,6 +10,7 @@
 #include "core/partial_directory.hpp"
 #include "evaluate/report/report_charts.hpp"
 #include "evaluate/report/report_csv.hpp"
+#include "evaluate/report/report_html.hpp"
 #include "evaluate/report/report_markdown.hpp"
 #include "evaluate/report/results_json.hpp"
 
@@ -18,11 +19,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// report.md and results.json first, then by name.
+// report.md, report.html and results.json first, then by name.
 std::vector<std::string> listed(const std::string& directory) {
   std::vector<std::string> names;
   for (const fs::directory_entry& entry : fs::directory_iterator(directory)) names.push_back(entry.path().filename().string());
-  const auto rank = [](const std::string& n) { return n == "report.md" ? 0 : n == "results.json" ? 1 : 2; };
+  const auto rank = [](const std::string& n) { return n == "report.md" ? 0 : n == "report.html" ? 1 : n == "results.json" ? 2 : 3; };
   std::sort(names.begin(), names.end(),
             [&](const std::string& a, const std::string& b) { return std::pair(rank(a), a) < std::pair(rank(b), b); });
   return names;
@@ -43,7 +44,9 @@ ReportFiles write_report(const Evaluation& e, const std::string& directory, bool
     write_report_csvs(e, layout, work_dir);
     json::write_file(results, "results.schema.json", (fs::path(work_dir) / "results.json").string());
     charts = write_report_charts(e, layout, work_dir);
-    write_whole_file((fs::path(work_dir) / "report.md").string(), report_markdown(e, layout, charts, created));
+    const std::string markdown = report_markdown(e, layout, charts, created);
+    write_whole_file((fs::path(work_dir) / "report.md").string(), markdown);
+    write_whole_file((fs::path(work_dir) / "report.html").string(), report_html(e, markdown, work_dir));
   });
 
   ReportFiles result{dir, (fs::path(dir) / "report.md").string(), results.dump(2), {}, {}, charts.note};
