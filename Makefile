@@ -47,7 +47,7 @@ demo: build
 	$(HAPTEX) train $(DEMO)/dataset.h5 --split $(DEMO)/split.json --per-material -o $(DEMO)/per_material.h5
 	$(HAPTEX) evaluate $(DEMO)/dataset.h5 --split $(DEMO)/split.json --model $(DEMO)/model.h5 --model $(DEMO)/per_material.h5 \
 	  --truth $(DEMO)/synth/truth.h5 -o $(DEMO)/report
-	@echo "make demo: done; the report is $(DEMO)/report/report.md"
+	@echo "make demo: done; open $(DEMO)/report/report.html to read and listen (the same as text: $(DEMO)/report/report.md)"
 
 bench:
 	$(MAKE) deps EXTRA_PACKAGES="$(BENCH_PACKAGES)"

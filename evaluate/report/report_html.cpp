@@ -10,6 +10,7 @@
 #include "core/text/base64.hpp"
 #include "core/text/format.hpp"
 #include "core/text/markdown_html.hpp"
+#include "core/text/utf8.hpp"
 #include "render/wav_writer.hpp"
 
 namespace haptex::evaluate {
@@ -92,7 +93,8 @@ std::string material_section(const MaterialClip& c) {
   for (const std::vector<double>* clip : {&c.recorded, &c.model, &c.baseline})
     for (const double a : *clip) peak = std::max(peak, std::abs(a));
   const double full_scale = render::rounded_full_scale(peak);
-  const std::string name = text::html_escaped(c.name), id = text::html_escaped(c.id);
+  // As report.md writes names (README, "promises"): control and reordering characters escaped, then as HTML text.
+  const std::string printable = text::printable(c.name), name = text::html_escaped(printable), id = text::html_escaped(text::printable(c.id));
   std::string s = "<section class=\"material\" id=\"listen-" + id + "\"><h3>" + name + " (<code>" + id + "</code>)</h3><div class=\"row\">";
   if (!c.press_png.empty())
     s += "<figure><img alt=\"test press of " + name + "\" src=\"data:image/png;base64," +
@@ -102,7 +104,7 @@ std::string material_section(const MaterialClip& c) {
        "<span style=\"color:#1f77b4\">AR baseline</span></figcaption></figure><table><thead><tr><th>signal</th><th>listen</th></tr></thead><tbody>";
   for (const auto& [label, clip] : {std::pair{"recorded", &c.recorded}, {"model (stitched)", &c.model}, {"AR baseline (rendered)", &c.baseline}}) {
     if (clip->empty()) continue;
-    const std::string title = c.name + ": " + label;
+    const std::string title = printable + ": " + label;
     s += "<tr><td>" + std::string(label) + "</td><td><audio controls preload=\"metadata\" title=\"" + text::html_escaped(title) + "\" src=\"" +
          audio_source(*clip, full_scale, title) + "\"></audio></td></tr>";
   }

@@ -479,16 +479,16 @@ TEST(BadValues, AReportHoldsNoTerminalEscapeFromAName) {
   const TempDir d;
   const std::string dataset = d.file("d.h5");
   fs::copy_file(small_pipeline().dataset, dataset);
-  Edit(dataset).group("materials/" + material_ids(dataset).front()).set_attr("name", "Wov\x1b]0;pwned\x07en\x1b[2J\u202e\t\nx");
+  Edit(dataset).group("materials/" + material_ids(dataset).front()).set_attr("name", "Wov\x1b]0;pwned\x07en\x1b[2J\u202e\t\nx<script>alert(1)</script>");
   ASSERT_EQ(run_haptex({"split", dataset, "-o", d.file("s.json"), "--no-plots", "-q"}).exit_code, 0);
   ASSERT_EQ(run_haptex(quick_train_args(dataset, d.file("s.json"), d.file("m.h5"))).exit_code, 0);
   const CommandResult r = run_haptex({"evaluate", dataset, "--split", d.file("s.json"), "--model", d.file("m.h5"), "-o", d.file("rep"),
-                                      "--repeats", "2", "--reconstruct", "none", "-q"});
+                                      "--repeats", "2", "-q"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   int files = 0;
   for (const auto& entry : fs::directory_iterator(d.file("rep"))) {
     const std::string name = entry.path().filename().string();
-    if (entry.path().extension() != ".md" && entry.path().extension() != ".csv") continue;
+    if (entry.path().extension() != ".md" && entry.path().extension() != ".csv" && entry.path().extension() != ".html") continue;
     ++files;
     const std::string text = file_bytes(entry.path().string());
     EXPECT_EQ(text.find_first_of("\x1b\x07"), std::string::npos) << name;
@@ -497,6 +497,12 @@ TEST(BadValues, AReportHoldsNoTerminalEscapeFromAName) {
   }
   EXPECT_GE(files, 3);
   EXPECT_NE(file_bytes(d.file("rep/report.md")).find("Wov\\\\x1b"), std::string::npos) << "the name, escaped and markdown-escaped";
+  // report.html: the name is text, in its tables and its listening section alike; the page's one script is its own.
+  const std::string html = file_bytes(d.file("rep/report.html"));
+  EXPECT_EQ(html.find("<script>alert"), std::string::npos);
+  EXPECT_EQ(html.find("<script>"), html.rfind("<script>"));
+  EXPECT_NE(html.find("<h3>Wov\\x1b]0;pwned"), std::string::npos);
+  EXPECT_NE(html.find("\\x1b[2J\\u202e\\x09\\x0ax&lt;script&gt;alert(1)&lt;/script&gt; (<code>"), std::string::npos);
 }
 
 // Whatever a command prints, a name's control characters are escaped (apps/printable_stream.hpp), and

@@ -1,0 +1,107 @@
+// report.html as a user opens it (issue 34): every table and chart of report.md is on the page, every
+// material has its three players, the embedded WAVs read back (Python's wave module) at 48 kHz, and a
+// real browser (headless Chromium, where installed) loads every image and every audio element. A
+// screenshot of the page is kept in the build folder (report_page.png).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/json/schema.hpp"
+#include "core/process/run_program.hpp"
+#include "tests/support/quick_models.hpp"
+#include "tests/support/run_haptex.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+std::string text_of(const std::string& path) {
+  std::stringstream s;
+  s << std::ifstream(path).rdbuf();
+  return s.str();
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
+}
+
+// One evaluation report of the small pipeline, made once.
+const std::string& report_folder() {
+  static const TempDir dir;
+  static const std::string folder = [] {
+    const SmallPipeline& p = small_pipeline();
+    const CommandResult r = run_haptex({"evaluate", p.dataset, "--split", p.split, "--model", quick_model(false), "-o", dir.file("rep")});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return dir.file("rep");
+  }();
+  return folder;
+}
+
+std::size_t materials() { return json::read_file(small_pipeline().split)["materials"].size(); }
+
+TEST(ReportPage, HoldsEveryTableChartAndMaterialOfTheMarkdown) {
+  const std::string md = text_of(report_folder() + "/report.md"), html = text_of(report_folder() + "/report.html");
+  ASSERT_FALSE(html.empty());
+  EXPECT_EQ(count(html, "<table class=\"sortable\">"), count(md, "\n|---")) << "every table";
+  std::size_t charts = 0;
+  for (const fs::directory_entry& f : fs::directory_iterator(report_folder())) charts += f.path().extension() == ".png";
+  EXPECT_EQ(count(html, "<figure><img src=\"data:image/png;base64,"), charts) << "every chart drawn, embedded";
+  EXPECT_EQ(count(html, "<section class=\"material\""), materials());
+  EXPECT_EQ(count(html, "<audio controls"), 3 * materials());
+  EXPECT_EQ(count(html, "alt=\"test press of "), materials());
+  EXPECT_EQ(count(html, "src=\"http"), 0u) << "self-contained";
+  const nlohmann::json listed = json::read_file(report_folder() + "/haptex-files.json");
+  EXPECT_NE(listed.dump().find("report.html"), std::string::npos) << "--force may replace it with the report";
+}
+
+TEST(ReportPage, ItsWavsAre48kHzClipsOfTheFirstTestSection) {
+  if (!python_has("json")) GTEST_SKIP() << "python3 is missing";
+  const CommandResult r = run_python({std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/report_page_test.py", report_folder() + "/report.html"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json players = nlohmann::json::parse(r.out);
+  ASSERT_EQ(players.size(), 3 * materials());
+  for (const nlohmann::json& p : players) {
+    SCOPED_TRACE(p.dump());
+    EXPECT_EQ(p["rate"], 48000);
+    EXPECT_EQ(p["width"], 2);
+    EXPECT_EQ(p["channels"], 1);
+    EXPECT_GT(p["frames"], 480) << "more than 10 ms";
+  }
+}
+
+TEST(ReportPage, ABrowserLoadsEveryImageAndPlayer) {
+  if (!process::program_on_path("chromium")) GTEST_SKIP() << "chromium is not installed (make deps installs it): the page was checked, not opened";
+  const TempDir profile;
+  const std::string screenshot = (fs::current_path() / "report_page.png").string();
+  const std::string page = "file://" + report_folder() + "/report.html";
+  const std::vector<std::string> headless = {"timeout", "120", "chromium", "--headless", "--no-sandbox", "--disable-gpu",
+                                             "--user-data-dir=" + profile.path().string(), "--virtual-time-budget=20000"};
+  std::vector<std::string> dump = headless;
+  dump.insert(dump.end(), {"--dump-dom", page});
+  const CommandResult r = run_program(dump);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::size_t at = r.out.find("<pre id=\"load-check\" data-done=\"1\">");
+  ASSERT_NE(at, std::string::npos) << "the page's load check did not finish";
+  const std::size_t from = r.out.find('>', at) + 1;
+  const nlohmann::json check = nlohmann::json::parse(r.out.substr(from, r.out.find("</pre>", from) - from));
+  EXPECT_EQ(check["image_errors"].size(), 0u) << check.dump();
+  EXPECT_EQ(check["audio_errors"].size(), 0u) << check.dump();
+  EXPECT_EQ(check["audio"].size(), 3 * materials());
+  for (const nlohmann::json& a : check["audio"]) EXPECT_GT(double(a["seconds"]), 0.01) << a.dump();
+  EXPECT_EQ(std::size_t(check["images"]), count(text_of(report_folder() + "/report.html"), "<img "));
+  std::vector<std::string> shot = headless;
+  shot.insert(shot.end(), {"--window-size=1200,2400", "--screenshot=" + screenshot, page});
+  EXPECT_EQ(run_program(shot).exit_code, 0);
+  EXPECT_TRUE(fs::exists(screenshot));
+}
+
+}  // namespace
+}  // namespace haptex::test
