@@ -11,7 +11,8 @@
 //
 // A script on the page sorts a table by the column clicked, and records what loaded: every image that
 // fails and every audio element's duration, in the element with id "load-check" (JSON), which the
-// tests read from a headless browser (tests/e2e/report_page_test.cpp).
+// tests read from a headless browser (tests/e2e/report_page_test.cpp); the frame, players and
+// spectra are page/'s, which `haptex view` shares.
 #include <string>
 
 #include "evaluate/evaluation_results.hpp"
