@@ -6,6 +6,7 @@ namespace haptex::apps {
 std::unique_ptr<Command> make_convert_command();
 std::unique_ptr<Command> make_info_command();
 std::unique_ptr<Command> make_qa_command();
+std::unique_ptr<Command> make_view_command();
 std::unique_ptr<Command> make_capture_command();
 std::unique_ptr<Command> make_synth_command();
 std::unique_ptr<Command> make_align_command();
@@ -28,6 +29,7 @@ std::vector<std::unique_ptr<Command>> all_commands() {
   commands.push_back(make_merge_command());
   commands.push_back(make_split_command());
   commands.push_back(make_qa_command());
+  commands.push_back(make_view_command());
   commands.push_back(make_train_command());
   commands.push_back(make_predict_command());
   commands.push_back(make_windows_command());

@@ -1,7 +1,8 @@
-// report.html as a user opens it (issue 34): every table and chart of report.md is on the page, every
-// material has its three players, the embedded WAVs read back (Python's wave module) at 48 kHz, and a
-// real browser (headless Chromium, where installed) loads every image and every audio element. A
-// screenshot of the page is kept in the build folder (report_page.png).
+// The pages a user opens (issue 34): evaluate's report.html, where every table and chart of report.md is
+// on the page, every material has its three players and the embedded WAVs read back (Python's wave
+// module) at 48 kHz; and haptex view's dataset page. A real browser (headless Chromium, where
+// installed) loads every image and every audio element of each; screenshots are kept in the build
+// folder (report_page.png, dataset_page.png).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +12,7 @@
 #include <sstream>
 
 #include "core/json/schema.hpp"
-#include "core/process/run_program.hpp"
+#include "tests/support/browser.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
@@ -78,29 +79,45 @@ TEST(ReportPage, ItsWavsAre48kHzClipsOfTheFirstTestSection) {
 }
 
 TEST(ReportPage, ABrowserLoadsEveryImageAndPlayer) {
-  if (!process::program_on_path("chromium")) GTEST_SKIP() << "chromium is not installed (make deps installs it): the page was checked, not opened";
-  const TempDir profile;
+  if (!browser_installed()) GTEST_SKIP() << "chromium is not installed (make deps installs it): the page was checked, not opened";
   const std::string screenshot = (fs::current_path() / "report_page.png").string();
-  const std::string page = "file://" + report_folder() + "/report.html";
-  const std::vector<std::string> headless = {"timeout", "120", "chromium", "--headless", "--no-sandbox", "--disable-gpu",
-                                             "--user-data-dir=" + profile.path().string(), "--virtual-time-budget=20000"};
-  std::vector<std::string> dump = headless;
-  dump.insert(dump.end(), {"--dump-dom", page});
-  const CommandResult r = run_program(dump);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::size_t at = r.out.find("<pre id=\"load-check\" data-done=\"1\">");
-  ASSERT_NE(at, std::string::npos) << "the page's load check did not finish";
-  const std::size_t from = r.out.find('>', at) + 1;
-  const nlohmann::json check = nlohmann::json::parse(r.out.substr(from, r.out.find("</pre>", from) - from));
+  const nlohmann::json check = browser_load_check(report_folder() + "/report.html", screenshot);
+  ASSERT_FALSE(check.is_null()) << "the page's load check did not finish";
   EXPECT_EQ(check["image_errors"].size(), 0u) << check.dump();
   EXPECT_EQ(check["audio_errors"].size(), 0u) << check.dump();
   EXPECT_EQ(check["audio"].size(), 3 * materials());
   for (const nlohmann::json& a : check["audio"]) EXPECT_GT(double(a["seconds"]), 0.01) << a.dump();
   EXPECT_EQ(std::size_t(check["images"]), count(text_of(report_folder() + "/report.html"), "<img "));
-  std::vector<std::string> shot = headless;
-  shot.insert(shot.end(), {"--window-size=1200,2400", "--screenshot=" + screenshot, page});
-  EXPECT_EQ(run_program(shot).exit_code, 0);
   EXPECT_TRUE(fs::exists(screenshot));
+}
+
+// haptex view: the dataset's page, before any model.
+TEST(DatasetPage, ShowsEveryMaterialsPressesCoverageSpectrumAndRecordings) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir dir;
+  const CommandResult r = run_haptex({"--json", "view", p.dataset, "--split", p.split, "-o", dir.file("site")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string html = text_of(dir.file("site/index.html"));
+  EXPECT_EQ(count(html, "<section class=\"material\""), materials());
+  EXPECT_EQ(count(html, "aria-label=\"coverage\""), materials());
+  EXPECT_EQ(count(html, "aria-label=\"spectra\""), materials());
+  EXPECT_NE(html.find("<span style=\"color:#2ca02c\">test</span>"), std::string::npos) << "coloured by set";
+  EXPECT_GE(count(html, "<audio controls"), materials()) << "every recording";
+  EXPECT_GE(count(html, ", peak\" src=\"data:image/png"), materials()) << "every press's peak";
+  // Without --split the windows are one colour, and the page says how to colour them.
+  ASSERT_EQ(run_haptex({"view", p.dataset, "-o", dir.file("plain")}).exit_code, 0);
+  EXPECT_NE(text_of(dir.file("plain/index.html")).find("give --split to colour them by set"), std::string::npos);
+  // --force replaces only the page haptex wrote.
+  EXPECT_EQ(run_haptex({"view", p.dataset, "-o", dir.file("site")}).exit_code, 2);
+  EXPECT_EQ(run_haptex({"view", p.dataset, "-o", dir.file("site"), "--force"}).exit_code, 0);
+  if (!browser_installed()) GTEST_SKIP() << "chromium is not installed (make deps installs it): the page was checked, not opened";
+  const nlohmann::json check = browser_load_check(dir.file("site/index.html"), (fs::current_path() / "dataset_page.png").string());
+  ASSERT_FALSE(check.is_null()) << "the page's load check did not finish";
+  EXPECT_EQ(check["image_errors"].size(), 0u) << check.dump();
+  EXPECT_EQ(check["audio_errors"].size(), 0u) << check.dump();
+  EXPECT_EQ(std::size_t(check["images"]), count(html, "<img "));
+  EXPECT_EQ(check["audio"].size(), count(html, "<audio controls"));
+  for (const nlohmann::json& a : check["audio"]) EXPECT_NEAR(double(a["seconds"]), 3.0, 0.01) << a.dump();
 }
 
 }  // namespace

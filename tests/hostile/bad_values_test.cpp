@@ -503,6 +503,13 @@ TEST(BadValues, AReportHoldsNoTerminalEscapeFromAName) {
   EXPECT_EQ(html.find("<script>"), html.rfind("<script>"));
   EXPECT_NE(html.find("<h3>Wov\\x1b]0;pwned"), std::string::npos);
   EXPECT_NE(html.find("\\x1b[2J\\u202e\\x09\\x0ax&lt;script&gt;alert(1)&lt;/script&gt; (<code>"), std::string::npos);
+  // haptex view's page alike.
+  ASSERT_EQ(run_haptex({"view", dataset, "--split", d.file("s.json"), "-o", d.file("site"), "-q"}).exit_code, 0);
+  const std::string site = file_bytes(d.file("site/index.html"));
+  EXPECT_EQ(site.find("<script>alert"), std::string::npos);
+  EXPECT_EQ(site.find("<script>"), site.rfind("<script>"));
+  EXPECT_EQ(site.find_first_of("\x1b\x07"), std::string::npos);
+  EXPECT_NE(site.find("\\x1b[2J\\u202e\\x09\\x0ax&lt;script&gt;alert(1)&lt;/script&gt; (<code>"), std::string::npos);
 }
 
 // Whatever a command prints, a name's control characters are escaped (apps/printable_stream.hpp), and
