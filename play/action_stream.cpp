@@ -118,8 +118,12 @@ void ActionStream::read_lines() {
 bool ActionStream::wait_for_first(const std::atomic<bool>& stop) {
   std::unique_lock lock(mutex_);
   while (lines_.empty() && !ended_ && !stop) arrived_.wait_for(lock, std::chrono::milliseconds(50));
-  if (lines_.empty() && error_) std::rethrow_exception(error_);
   return !lines_.empty();
+}
+
+std::exception_ptr ActionStream::error() {
+  std::lock_guard lock(mutex_);
+  return error_;
 }
 
 bool ActionStream::take(Clock::time_point until, std::deque<ActionLine>& out) {
@@ -129,7 +133,6 @@ bool ActionStream::take(Clock::time_point until, std::deque<ActionLine>& out) {
     out.push_back(lines_.front());
     lines_.pop_front();
   }
-  if (lines_.empty() && error_) std::rethrow_exception(error_);
   return !(ended_ && lines_.empty() && out.empty());
 }
 

@@ -38,9 +38,12 @@ class ActionStream {
   const std::string& source() const { return source_; }
   // Waits for the first line (or the end); false when the stream ended without one.
   bool wait_for_first(const std::atomic<bool>& stop);
-  // Moves the lines that arrived up to `until` into `out` (cleared first). Throws the error a bad line
-  // gave, once every line before it has been taken. False once the stream has ended and all is taken.
+  // Moves the lines that arrived up to `until` into `out` (cleared first). False once the stream has
+  // ended (its end, or a bad line: then error()) and all is taken.
   bool take(Clock::time_point until, std::deque<ActionLine>& out);
+  // What a bad line threw (haptex::Error, bad_input, naming the source and the line), or null. The
+  // lines before it are played; the player throws it when it has played them.
+  std::exception_ptr error();
 
  private:
   void read_lines();

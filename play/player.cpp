@@ -129,6 +129,7 @@ PlayReport Player::play(const predict::Trajectory& trajectory, const std::atomic
 
 PlayReport Player::play(ActionStream& stream, const std::atomic<bool>& stop) {
   if (!stream.wait_for_first(stop)) {
+    if (const std::exception_ptr bad = stream.error()) std::rethrow_exception(bad);
     if (!stop) throw input_error(stream.source(), "", "ended before its first action", "Give one 'force speed' line per sample (N, mm/s)");
     report_.ended_by = "interrupted";
     return report_;
@@ -167,6 +168,7 @@ PlayReport Player::play(ActionStream& stream, const std::atomic<bool>& stop) {
   for (const std::size_t frames = render::render_frames(trajectory_.force.size()); m < frames && !stop; ++m) tick(m);
   report_.ended_by = stop ? "interrupted" : "end of the input";
   finish(stop);
+  if (const std::exception_ptr bad = stream.error()) std::rethrow_exception(bad);  // after playing the lines before it
   return report_;
 }
 

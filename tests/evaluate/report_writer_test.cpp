@@ -247,9 +247,10 @@ TEST(ReportWriter, WritesEveryFileOfTheReportAndNoPartial) {
   const std::string dir = tmp.file("report");
   const ReportFiles files = write_report(sample_evaluation(), dir, false);
   EXPECT_EQ(files.directory, dir);
-  ASSERT_GE(files.files.size(), 2u);
+  ASSERT_GE(files.files.size(), 3u);
   EXPECT_EQ(files.files[0], dir + "/report.md");
-  EXPECT_EQ(files.files[1], dir + "/results.json");
+  EXPECT_EQ(files.files[1], dir + "/report.html");
+  EXPECT_EQ(files.files[2], dir + "/results.json");
   for (const char* name : {"experiment-unified-new-actions.csv", "experiment-stitched-fgla.csv",
                            "experiment-per-material__small.h5_.csv", "experiment-unified-new-presses.csv", "speed.csv",
                            "latents.csv", "example-book-spectra.csv", "example-brick_2-signals.csv",
