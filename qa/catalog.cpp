@@ -30,8 +30,9 @@ const std::vector<CheckInfo>& all_checks() {
       {"layout.units", error, "datasets carry the `units` of their layout row (m/s^2, N, mm/s, mm)",
        "Convert the source again with the right units in its header or field map"},
       {"layout.links", error,
-       "every object is reached by one hard link and keeps its values in the file: no soft or external link, nothing linked "
-       "twice, no external or virtual storage, no object reference (when it fails, no other check runs: looking objects up would follow the links)",
+       "every object is reached by one hard link, is a group or a dataset and keeps its values in the file: no soft or external "
+       "link, nothing linked twice, no named datatype, no external or virtual storage, no dataset declaring more than haptex reads "
+       "at once, no object reference (when it fails, no other check runs: looking objects up would follow the links)",
        "Remove the extra link (h5py: del f[path]) or store the values in the file, or make the file again with the haptex "
        "command that wrote it"},
       // recordings (also inside dataset files)

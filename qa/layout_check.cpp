@@ -43,7 +43,6 @@ struct FoundObject {
   std::string dtype;
   bool scalar = true;  // an attribute holding one value (datasets: always)
   h5::Shape shape;     // datasets
-  std::string chunk_problem;  // datasets: h5::Dataset::chunk_problem
   std::optional<std::string> units;  // datasets whose row names units: their `units` attribute, when they have one
   bool readable_text = true;  // string attributes: UTF-8 without a NUL inside, as haptex reads names
   bool finite = true;         // scalar float attributes: not NaN or infinite (rates, durations, thresholds)
@@ -90,7 +89,6 @@ FoundObject find_dataset(const h5::Group& root, const LayoutRow& row, const std:
     }
   }
   f.shape = d.shape();
-  f.chunk_problem = d.chunk_problem();
   return f;
 }
 
@@ -162,7 +160,6 @@ void judge_shape(const h5::Group& root, const LayoutRow& row, const FoundObject&
                  CheckTally& tally) {
   if (d.shape.size() != row.shape.size())
     return tally.fail(d.where, "shape " + shape_text(d.shape) + ", expected " + shape_text(row.shape));
-  if (!d.chunk_problem.empty()) return tally.fail(d.where, d.chunk_problem);
   const std::string group = parent_of(d.where);
   bool ok = true, known = true;
   std::vector<std::string> expected;

@@ -31,7 +31,7 @@ Signal read_signal(const h5::Group& group, const std::string& name, std::size_t 
     return s;
   }
   if (const std::string chunks = d.chunk_problem(); !chunks.empty()) {
-    s.problem = chunks;  // layout.shape reports it; reading would inflate the whole chunk
+    s.problem = chunks;  // layout.links reports it; reading would inflate the whole chunk
     return s;
   }
   s.rows = shape[0];

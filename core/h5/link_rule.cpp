@@ -54,7 +54,10 @@ void collect(hid_t group, const std::string& path, const std::string& file, Copi
     } else if (info.type == H5O_TYPE_DATASET) {
       Handle dataset(check_input(H5Dopen2(group, name.c_str(), H5P_DEFAULT), "open " + member, file));
       if (std::optional<LinkFault> fault = stored_outside(dataset.get(), member, file)) report.faults.emplace_back(member, *fault);
+      if (std::optional<LinkFault> fault = unreadable_size(dataset.get(), member, file)) report.faults.emplace_back(member, *fault);
       reference_faults(dataset.get(), true, member, file, report);
+    } else {
+      report.faults.emplace_back(member, neither_group_nor_dataset());
     }
   }
 }
@@ -102,6 +105,21 @@ std::optional<LinkFault> stored_outside(hid_t dataset, const std::string& path, 
   return LinkFault{"keeps its values outside the file (external or virtual storage), which no haptex file does, and is never read",
                    "Store the values in the file itself (h5py: read them, del f[path], then write them), or make the file again "
                    "with the haptex command that wrote it"};
+}
+
+LinkFault neither_group_nor_dataset() {
+  return {"is neither a group nor a dataset (a named datatype?), which no haptex file holds",
+          "Remove it, or make the file again with the haptex command that wrote it"};
+}
+
+std::optional<LinkFault> unreadable_size(hid_t dataset, const std::string& path, const std::string& file) {
+  Handle copy(check_input(H5Dopen2(dataset, ".", H5P_DEFAULT), "open " + path, file));
+  const Dataset d(std::move(copy), file, path);
+  std::string problem = d.size_problem();
+  if (problem.empty()) problem = d.chunk_problem();
+  if (problem.empty()) return std::nullopt;
+  return LinkFault{problem, "The file is damaged or not what haptex wrote: remove the dataset, or make the file again with the haptex command "
+                            "that wrote it"};
 }
 
 std::optional<LinkFault> holds_references(hid_t type) {

@@ -1,6 +1,7 @@
 #pragma once
-// The rule every haptex file keeps for its links: each object is reached by one hard link, each
-// dataset keeps its values in the file, and no value is an object reference. A soft or external link
+// The rule every haptex file keeps for its links: each object is reached by one hard link and is a
+// group or a dataset, each dataset keeps its values in the file in a size haptex reads, and no value
+// is an object reference. A soft or external link
 // points anywhere (/etc/passwd through an external link); a second hard link makes one object count
 // twice (a press read as two) or, back to a group above, a walk that never ends; external raw
 // storage or a virtual dataset reads whatever it names, a FIFO (a read that never returns) or
@@ -37,6 +38,14 @@ std::optional<LinkFault> soft_or_external(hid_t parent, const std::string& name,
 // (`info` is then unset). Throws haptex::Error (bad_input) when the link cannot be read.
 std::optional<LinkFault> follow_link(hid_t parent, const std::string& name, const std::string& path, const std::string& file,
                                      CopiedObjects& seen, H5O_info_t& info);
+
+// An object that is neither a group nor a dataset (a named datatype): no haptex file holds one.
+LinkFault neither_group_nor_dataset();
+
+// When the open dataset `dataset` (at `path`) declares more than haptex reads at once, or chunks that
+// would inflate far more than it holds (h5::Dataset::size_problem, chunk_problem), what is wrong
+// (review 10: qa called clean a file with a never-written 4 TiB dataset that merge refused).
+std::optional<LinkFault> unreadable_size(hid_t dataset, const std::string& path, const std::string& file);
 
 // When values of HDF5 type `type` hold object references (links in all but name), what is wrong with them.
 std::optional<LinkFault> holds_references(hid_t type);

@@ -197,12 +197,26 @@ std::size_t Dataset::elements() const {
   return n;
 }
 
+namespace {
+
+std::string oversize(double count, std::size_t element_size) {
+  if (count * double(element_size) <= double(kMostBytesRead)) return "";
+  return "declares " + text::format("%.0f", count) + " values of " + std::to_string(element_size) + " bytes, more than haptex reads at once (" +
+         std::to_string(kMostBytesRead >> 30) + " GiB)";
+}
+
+}  // namespace
+
 void require_readable_size(double count, std::size_t element_size, const std::string& file, const std::string& where) {
-  if (count * double(element_size) <= double(kMostBytesRead)) return;
-  throw input_error(file, where,
-                    "declares " + text::format("%.0f", count) + " values of " + std::to_string(element_size) + " bytes, more than haptex reads at once (" +
-                        std::to_string(kMostBytesRead >> 30) + " GiB)",
-                    "The file is damaged or not what haptex wrote: make it again with the haptex command that wrote it");
+  if (const std::string problem = oversize(count, element_size); !problem.empty())
+    throw input_error(file, where, problem, "The file is damaged or not what haptex wrote: make it again with the haptex command that wrote it");
+}
+
+std::string Dataset::size_problem() const {
+  Handle type(H5Dget_type(id()));
+  double count = 1;
+  for (auto d : shape()) count *= double(d);
+  return oversize(count, H5Tget_size(type.get()));
 }
 
 std::string Dataset::chunk_problem() const {

@@ -91,6 +91,9 @@ class Dataset : public Node {
   void require_sensible_chunks() const;
   // What require_sensible_chunks refuses ("is stored in chunks of ..."), or empty (qa's layout.shape).
   std::string chunk_problem() const;
+  // When the dataset declares more than haptex reads at once (kMostBytesRead) of its stored type,
+  // what is wrong ("declares N values of B bytes, ..."); else empty. Reads no value.
+  std::string size_problem() const;
 
  private:
   // elements(), after a refusal (bad_input) of a dataset too large to read at once (kMostBytesRead).

@@ -146,9 +146,10 @@ struct Copy {
       throw input_error(source_file, source_path, fault->what, fault->fix);
     if (info.type == H5O_TYPE_GROUP) group(from_parent, name, to_parent, new_name, source_path, target_path);
     else if (info.type == H5O_TYPE_DATASET) dataset(from_parent, name, to_parent, new_name, source_path, target_path);
-    else
-      throw input_error(source_file, source_path, "is neither a group nor a dataset (a named datatype?), which no haptex file holds",
-                        "Make the file again with the haptex command that wrote it");
+    else {
+      const LinkFault fault = neither_group_nor_dataset();
+      throw input_error(source_file, source_path, fault.what, fault.fix);
+    }
   }
 };
 

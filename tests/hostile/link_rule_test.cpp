@@ -3,7 +3,8 @@
 // recording linked twice is refused by split, train, windows, merge and align before any value is
 // read, and qa reports it under layout.links and reads nothing more (review 4, findings 2 and 4:
 // qa, merge and align hung on the FIFO, qa called the external and virtual files clean, split and
-// train took the soft and hard links).
+// train took the soft and hard links); so are a named datatype and a dataset declaring more than
+// haptex reads at once (review 10, F1: qa called them clean, merge refused them).
 #include <gtest/gtest.h>
 
 #include <hdf5.h>
@@ -87,6 +88,23 @@ std::vector<Breach> breaches(const TempDir& dir) {
          edit.remove(twice);
          H5Lcreate_hard(edit.root().id(), first.c_str(), edit.root().id(), twice.c_str(), H5P_DEFAULT, H5P_DEFAULT);
        }, "second link to"},
+      // Review 10, F1: qa called clean a file holding a named datatype, or an extra dataset declaring 4 TiB
+      // (chunked, never written: the file stays small), which merge refused.
+      {"named_type", [](const std::string& f, const std::string& a) {
+         Edit edit(f);
+         const hid_t type = H5Tcopy(H5T_NATIVE_DOUBLE);
+         H5Tcommit2(edit.root().id(), (a.substr(0, a.rfind('/')) + "/mytype").c_str(), type, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+         H5Tclose(type);
+       }, "neither a group nor a dataset"},
+      {"declared_4_tib", [](const std::string& f, const std::string& a) {
+         Edit edit(f);
+         const hsize_t values = hsize_t(1) << 40, chunk = 4096;
+         const hid_t space = H5Screate_simple(1, &values, nullptr), list = H5Pcreate(H5P_DATASET_CREATE);
+         H5Pset_chunk(list, 1, &chunk);
+         const hid_t d = H5Dcreate2(edit.root().id(), (a.substr(0, a.rfind('/')) + "/junk").c_str(), H5T_NATIVE_FLOAT, space, H5P_DEFAULT,
+                                    list, H5P_DEFAULT);
+         H5Dclose(d), H5Pclose(list), H5Sclose(space);
+       }, "more than haptex reads at once"},
       // Review 5: 40 000 attributes on one object took info minutes (each found by reading those before it).
       {"attributes", [](const std::string& f, const std::string& a) {
          Edit edit(f);

@@ -302,7 +302,7 @@ std::vector<BrokenShard> broken_shards() {
          const hid_t type = H5Tcopy(H5T_NATIVE_FLOAT);
          H5Tcommit2(e.root().id(), "mytype", type, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
          H5Tclose(type);
-       }, {"/mytype", "is not an object haptex writes at the root"}},
+       }, {"/mytype", "is neither a group nor a dataset"}},
       {"a root attribute haptex does not write", p.recordings, [](Edit& e, const std::string&) { e.root().set_attr("comment", "mine"); },
        {"/@comment", "is not an attribute haptex writes"}},
       {"a window table of stride 0 (review 4: qa called it clean)", p.dataset, [](Edit& e, const std::string&) {

@@ -240,7 +240,7 @@ TEST_F(RecordingsMutation, AnotherStatedFilterIsFilterStated) {
 
 // Review 9, F5: a dataset declaring a chunk far larger than itself (4 GiB for 30 000 samples) passed
 // qa "clean" after inflating it, and merge copied it. 32 MiB stands in for it here.
-TEST_F(RecordingsMutation, AChunkLargerThanItsDatasetIsLayoutShape) {
+TEST_F(RecordingsMutation, AChunkLargerThanItsDatasetIsLayoutLinks) {
   {
     Edit e(file_);
     const std::vector<float> accel = e.dataset(kRecording + "/accel").read<float>();
@@ -254,9 +254,9 @@ TEST_F(RecordingsMutation, AChunkLargerThanItsDatasetIsLayoutShape) {
     e.dataset(kRecording + "/accel").set_attr("units", std::string("m/s^2"));
   }
   const qa::Report r = qa();
-  const auto* shape = r.find("layout.shape");
-  ASSERT_EQ(shape->status, qa::Status::fail) << shape->message;
-  EXPECT_NE(shape->message.find("/" + kRecording + "/accel: is stored in chunks of 32 MiB"), std::string::npos) << shape->message;
+  const auto* links = r.find("layout.links");
+  ASSERT_EQ(links->status, qa::Status::fail) << links->message;
+  EXPECT_NE(links->message.find("/" + kRecording + "/accel: is stored in chunks of 32 MiB"), std::string::npos) << links->message;
   EXPECT_THROW(qa::require_integrity(h5::File::open(file_).root(), dataset::Kind::recordings), Error) << "merge and align refuse it too";
 }
 
