@@ -51,8 +51,10 @@ void check_output_path(const std::string& path, bool overwrite) {
   if (!fs::exists(path, ec)) return;
   // Every output comes here (-o, --log, --csv ...): the message names the path, not the option
   // (review 5: train --log FOLDER said "Name a file with -o").
-  if (!fs::is_regular_file(path, ec))
-    throw input_error(path, "", "the output path exists and is not a file", "Name a file for this output, not a folder");
+  if (fs::is_directory(path, ec))
+    throw input_error(path, "", "the output path is a folder", "Name a file for this output, not a folder");
+  if (!fs::is_regular_file(path, ec))  // review 10, C2: a device, FIFO or socket was called a folder
+    throw input_error(path, "", "the output path is a device, FIFO or socket, not a file", "Name a regular file for this output");
   if (!overwrite)
     throw input_error(path, "", "the output file already exists", "Remove it, give the output another name, or pass --force");
   // --force swaps out a file, never a link (the swap would replace the link, not what it names): said

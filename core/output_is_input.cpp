@@ -46,8 +46,14 @@ void refuse_output_among_inputs(const std::string& output, const std::vector<std
 }
 
 bool same_output_path(const std::string& a, const std::string& b) {
-  std::error_code ec;
-  const auto resolved = [&](const std::string& p) { return std::filesystem::weakly_canonical(std::filesystem::absolute(p), ec); };
+  // A path that cannot be resolved (a name over 255 bytes) is compared as written: an error made every
+  // two such paths "the same" (review 10, C1).
+  const auto resolved = [](const std::string& p) {
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(p, ec).lexically_normal();
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(absolute, ec);
+    return ec ? absolute : canonical;
+  };
   return resolved(a) == resolved(b);
 }
 

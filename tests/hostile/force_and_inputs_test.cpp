@@ -1,6 +1,7 @@
 // Issue 11 point 2: --force replaces only what haptex wrote, and no command writes over one of its
 // inputs (the same file by device and inode), with or without --force.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -531,6 +532,26 @@ TEST(Force, ADanglingLinkAtTheOutputIsRefused) {
     EXPECT_TRUE(fs::is_symlink(d.file("s.json")));
   }
   expect_refusal(run_haptex({"split", small_pipeline().dataset, "-o", d.file("x.plots")}), {"names the plot folder"});
+}
+
+// Review 10, C1 and C2: a manifest name over 255 bytes was said to "name the plot folder itself"; a
+// device, FIFO or socket at an output was called a folder.
+TEST(Force, AnOutputThatCannotBeAFileSaysWhy) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string long_name = d.file(std::string(251, 'c') + ".json");
+  expect_refusal(run_haptex({"split", p.dataset, "-o", long_name}), {"is longer than the file system allows"});
+  ASSERT_EQ(::mkfifo(d.file("fifo.h5").c_str(), 0600), 0);
+  fs::create_directory(d.file("folder.h5"));
+  for (const bool force : {false, true}) {
+    SCOPED_TRACE(force ? "--force" : "");
+    std::vector<std::string> fifo{"windows", p.dataset, "--split", p.split, "-o", d.file("fifo.h5")}, folder = fifo;
+    folder.back() = d.file("folder.h5");
+    if (force) fifo.push_back("--force"), folder.push_back("--force");
+    expect_refusal(run_haptex(fifo), {d.file("fifo.h5"), "is a device, FIFO or socket, not a file", "Name a regular file"});
+    expect_refusal(run_haptex(folder), {d.file("folder.h5"), "is a folder"});
+  }
+  EXPECT_EQ(fs::status(d.file("fifo.h5")).type(), fs::file_type::fifo);
 }
 
 // Review 8: --force on an output that is a link to haptex's own file did the whole job, then refused
