@@ -31,7 +31,8 @@ class XmlFile {
   pugi::xml_node child(const pugi::xml_node& parent, const std::string& name) const;
   // The one child, or an error at the parent saying it is missing, with the fix.
   pugi::xml_node require(const pugi::xml_node& parent, const std::string& name, const std::string& fix) const;
-  // The node's text, CDATA sections included, trimmed; an error when it holds an element.
+  // The node's text, CDATA sections included and pieces split by a comment or processing instruction
+  // joined (as XML means it), trimmed; an error when it holds an element.
   std::string text(const pugi::xml_node& node) const;
   // The node's text as a finite number / an integer, or an error at the node.
   double number(const pugi::xml_node& node) const;

@@ -439,6 +439,35 @@ TEST(BadValues, AnXmlElementGivenTwiceIsRefusedAndCdataIsText) {
   EXPECT_NE(run_haptex({"info", d.file("r.h5")}).out.find(name), std::string::npos);
 }
 
+// Review 10, F2: a <value> whose text a comment or processing instruction split was read as its first
+// piece ("5<!-- -->00" stored as 5, "1<!-- -->e39" as 1, slipping past the float32 limit).
+TEST(BadValues, AnXmlValueInPiecesIsReadWholeAndMarkupInsideIsRefused) {
+  const TempDir d;
+  test::SampleRecordingSpec spec;
+  spec.seconds = 0.5;
+  const std::string xml = test::sample_recording_xml(spec);
+  const std::size_t first = xml.find("<value>", xml.find("<accelX")) + 7;
+  const std::size_t end = xml.find("</value>", first);
+  const auto write = [&](const std::string& name, const std::string& value) {
+    test::write_text_file(d.file(name), std::string(xml).replace(first, end - first, value));
+    return d.file(name);
+  };
+  for (const std::string& split : {std::string("1<!-- -->e39"), std::string("1<?pi x?>e39")}) {
+    SCOPED_TRACE(split);
+    const std::string file = write("split_1.xml", split);
+    expect_refusal(run_haptex({"convert", "hatt", file, "-o", d.file("r.h5")}), {file, "'1e39' is beyond"});
+  }
+  const std::string child = write("child_1.xml", "1<b>e39</b>");
+  expect_refusal(run_haptex({"convert", "hatt", child, "-o", d.file("r.h5")}), {child, "holds element <b>"});
+  EXPECT_FALSE(fs::exists(d.file("r.h5")));
+  const std::string joined = write("joined_1.xml", "5<!-- a note -->00");
+  ASSERT_EQ(run_haptex({"convert", "hatt", joined, "-o", d.file("r.h5")}).exit_code, 0);
+  const std::vector<float> accel = h5::File::open(d.file("r.h5")).root()
+                                       .open_dataset("materials/" + material_ids(d.file("r.h5")).front() + "/recordings/0/accel_xyz")
+                                       .read<float>();
+  EXPECT_FLOAT_EQ(accel.at(0), 500.f) << "500 m/s^2, the pieces joined";
+}
+
 // Review 7: a CSV column named twice was read from its first copy without a word (Python's
 // csv.DictReader keeps the last), a blank line between rows was passed over, and 1e-40 was stored
 // with its digits lost.
