@@ -13,6 +13,7 @@
 
 #include "capture/extraction/capture_inputs.hpp"
 #include "capture/extraction/contact_sheet.hpp"
+#include "capture/extraction/gel_image.hpp"
 #include "dataset/gelsight_file.hpp"
 #include "capture/extraction/score_chart.hpp"
 #include "capture/scoring/contact_score.hpp"
@@ -61,17 +62,7 @@ cv::Mat load_reference(const std::string& path) {
   cv::Mat image = dataset::read_image_file(path);
   if (image.empty())
     throw input_error(path, "", "cannot read the reference image", "Give a PNG or JPEG no-contact frame of the sensor");
-  // Review 6: an all-black or all-white image was taken, every frame then counted as contact.
-  cv::Mat grey;
-  cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
-  cv::Scalar mean, spread;
-  cv::meanStdDev(grey, mean, spread);
-  if (mean[0] < kBlackLevel)
-    throw input_error(path, "", "is black (a mean grey of " + figure(mean[0]) + " of 255), no frame of a lit sensor",
-                      "Give a no-contact frame taken with the sensor's light on");
-  if (spread[0] < 1.0)
-    throw input_error(path, "", "is one flat grey (" + figure(mean[0]) + " of 255 everywhere), no frame of a sensor's gel",
-                      "Give a no-contact frame of the sensor, as it recorded it");
+  require_gel_image(image, path, "", "Give a no-contact frame of the sensor, as it recorded it, with its light on");
   return image;
 }
 

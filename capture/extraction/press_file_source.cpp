@@ -2,6 +2,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "capture/extraction/frame_source.hpp"
+#include "capture/extraction/gel_image.hpp"
 #include "capture/scoring/scoring_image.hpp"
 #include "dataset/press_file.hpp"
 #include "core/error.hpp"
@@ -39,6 +40,7 @@ class PressFileSource : public FrameSource {
     // The press's order covers its decoded frames too: a file whose frames hold B, G, R says BGR.
     order_ = dataset::read_channel_order(root, layout::kReference);
     reference_.image = frames_.reference();
+    require_gel_image(reference_.image, path, "/reference", "Record the press again; the file is damaged or was not written by haptex capture record");
     reference_.noise = stored_grey_levels(path, root, layout::kNoise, false);
     reference_.pixel_threshold = stored_grey_levels(path, root, layout::kPixelThreshold, false);
     reference_.trigger = stored_grey_levels(path, root, layout::kTrigger, true);

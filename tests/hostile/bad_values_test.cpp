@@ -271,6 +271,26 @@ TEST(BadValues, APressFileWhoseCountsDisagreeWithItsFramesIsRefused) {
   }
 }
 
+// Review 10, F6: a press file whose stored reference is black or one flat grey was used (every frame
+// then contact; the peak score doubled), while the same image as --reference is refused.
+TEST(BadValues, ExtractRefusesABlankStoredReference) {
+  const TempDir d;
+  ASSERT_TRUE(record_one_press(d.file("s")));
+  for (const int value : {0, 128, 255}) {
+    SCOPED_TRACE(value);
+    const std::string press = d.file("p.h5");
+    fs::copy_file(d.file("s/press_0.h5"), press, fs::copy_options::overwrite_existing);
+    {
+      Edit e(press);
+      const h5::Shape shape = e.dataset("reference").shape();
+      e.replace<std::uint8_t>("reference", std::vector<std::uint8_t>(shape[0] * shape[1] * shape[2], std::uint8_t(value)), shape);
+    }
+    expect_refusal(run_haptex({"capture", "extract", press, "--no-sheets", "-o", d.file("g.h5")}),
+                   {press, "/reference", value == 0 ? "is black" : "one flat grey", "Record the press again"});
+    EXPECT_FALSE(fs::exists(d.file("g.h5")));
+  }
+}
+
 // Review 6, #9: an AVI whose headers state no frame rate was replayed at FFmpeg's guess of 25 fps,
 // and extraction stored that guess as the source's rate.
 TEST(BadValues, AnAviThatStatesNoFrameRateIsNotGivenOne) {
