@@ -49,6 +49,8 @@ class ConvertCommand : public Command {
             : convert::convert_recordings(inputs_, output_, options_, terminal_progress(global, "convert"));
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     print(result, seconds, global);
+    if (!global.quiet)
+      for (const std::string& note : result.notes) std::cerr << "note: " << text::printable(note) << "\n";
     return 0;
   }
 

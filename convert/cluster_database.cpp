@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <regex>
+#include <set>
 #include <tuple>
 
 #include "convert/csv_table.hpp"
@@ -155,8 +156,19 @@ std::string cluster_material(int texture, const std::map<int, std::string>& name
   return it != names.end() ? it->second : "cluster " + std::to_string(texture);
 }
 
-void check_cluster_materials(const std::vector<ClusterTake>& takes, const std::map<int, std::string>& names,
-                             const std::string& names_file) {
+std::vector<int> check_cluster_materials(const std::vector<ClusterTake>& takes, const std::map<int, std::string>& names,
+                                         const std::string& names_file) {
+  std::set<int> textures;
+  for (const ClusterTake& take : takes) textures.insert(take.texture);
+  std::vector<int> unused;
+  for (const auto& [texture, name] : names)
+    if (!textures.count(texture)) unused.push_back(texture);
+  if (!names.empty() && unused.size() == names.size()) {
+    std::string present;
+    for (const int t : textures) present += (present.empty() ? "" : ", ") + std::to_string(t);
+    throw input_error(names_file, "", "names none of the database's textures (it holds " + present + ")",
+                      "Give the names file of this database, naming its texture numbers");
+  }
   std::map<std::string, int> by_id;
   for (const ClusterTake& take : takes) {
     const std::string material = cluster_material(take.texture, names);
@@ -168,6 +180,7 @@ void check_cluster_materials(const std::vector<ClusterTake>& takes, const std::m
                           (names.count(other) ? " is given too" : " has by default (as 'cluster " + std::to_string(other) + "')"),
                       "Give each texture a name of its own, or name texture " + std::to_string(other) + " too");
   }
+  return unused;
 }
 
 Recording read_cluster_take(const ClusterTake& take, const std::map<int, std::string>& names, std::uintmax_t max_bytes) {

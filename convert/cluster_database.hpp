@@ -37,8 +37,9 @@ std::string cluster_material(int texture, const std::map<int, std::string>& name
 
 // Refuses, naming `names_file`, two textures of `takes` whose materials make one material id: a
 // name given to one texture that another's default "cluster N" also makes (review 9, F3) would join
-// two surfaces' takes into one material.
-void check_cluster_materials(const std::vector<ClusterTake>& takes, const std::map<int, std::string>& names,
+// two surfaces' takes into one material; and a names file that names none of the takes' textures (a
+// file for another database: review 10, F4). Returns the textures it names that no take has.
+std::vector<int> check_cluster_materials(const std::vector<ClusterTake>& takes, const std::map<int, std::string>& names,
                              const std::string& names_file);
 
 // The take as a recording of the material `names` gives its texture ("cluster N" otherwise).

@@ -117,17 +117,20 @@ ConvertResult convert_cluster(const std::string& root, const std::string& output
                               const std::optional<std::string>& names_path, const Progress& progress) {
   const std::map<int, std::string> names = names_path ? read_texture_names(*names_path) : std::map<int, std::string>{};
   const std::vector<ClusterTake> takes = find_cluster_takes(root);
-  if (names_path) check_cluster_materials(takes, names, *names_path);
+  const std::vector<int> unused = names_path ? check_cluster_materials(takes, names, *names_path) : std::vector<int>{};
   std::vector<std::string> sources;
   for (const auto& take : takes) sources.push_back(take.accel);
   h5::AtomicFile out(output, options.overwrite, dataset::format_name(dataset::Kind::recordings));
   dataset::stamp(out.root(), dataset::Kind::recordings, options.provenance);
   out.root().set_attr(dataset::layout::kFieldMap, kClusterLayout);
-  return write_all(out, sources, progress, [&](std::size_t i, std::uintmax_t& bytes) {
+  ConvertResult result = write_all(out, sources, progress, [&](std::size_t i, std::uintmax_t& bytes) {
     const ClusterTake& take = takes[i];
     bytes = fs::file_size(take.accel) + fs::file_size(take.force) + fs::file_size(take.position);
     return read_cluster_take(take, names, options.max_bytes);
   });
+  for (const int texture : unused)
+    result.notes.push_back(*names_path + ": texture " + std::to_string(texture) + " is named, but the database has no take of it");
+  return result;
 }
 
 }  // namespace haptex::convert

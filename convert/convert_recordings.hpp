@@ -27,6 +27,7 @@ struct ConvertedRecording {
 struct ConvertResult {
   std::vector<ConvertedRecording> recordings;
   std::uintmax_t input_bytes = 0;
+  std::vector<std::string> notes;  // what the command should tell the user (a named texture no take has)
 };
 
 // Files as given; directories searched recursively for *.xml, *.xml.gz and *.csv; sorted by path so the

@@ -202,6 +202,22 @@ TEST_F(Cluster, ANameThatAnotherTexturesDefaultMakesIsRefused) {
   }
 }
 
+// Review 10, F4: a names file naming none of the database's textures (another database's) was taken,
+// every material then named by default; one naming some absent textures says which.
+TEST_F(Cluster, ANamesFileOfAnotherDatabaseIsRefused) {
+  std::vector<ClusterTake> takes(2);
+  takes[0].texture = 1, takes[1].texture = 3;
+  try {
+    check_cluster_materials(takes, {{9, "Unused"}}, "names.json");
+    ADD_FAILURE() << "a names file of another database was taken";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("names.json: names none of the database's textures (it holds 1, 3)"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(check_cluster_materials(takes, {{1, "Cork"}, {9, "Unused"}, {12, "Felt"}}, "names.json"), (std::vector<int>{9, 12}));
+  EXPECT_EQ(check_cluster_materials(takes, {{1, "Cork"}, {3, "Felt"}}, "names.json"), std::vector<int>{});
+}
+
 TEST_F(Cluster, ANamesFileThatNeverEndsIsRefused) {
   fs::create_symlink("/dev/zero", dir_.file("zero.csv"));
   try {
