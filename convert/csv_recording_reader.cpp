@@ -66,7 +66,7 @@ std::vector<StampedChannels> group_by_time(const std::string& path, const FieldM
 int stamped_rate(const std::string& path, const StampedChannels& g, const std::vector<std::size_t>& lines, bool& uniform) {
   const double rate = check_stamps(path, g.time_column, g.times, lines, &uniform);
   const bool accel = std::any_of(g.channels.begin(), g.channels.end(), [](const std::string& c) { return quantity_of(c) == "accel"; });
-  return whole_source_rate(path, "column '" + g.time_column + "'", std::round(rate), accel ? kLowestAccelRateHz : kLowestRateHz);
+  return whole_source_rate(path, "column '" + g.time_column + "'", std::round(rate), accel ? kLowestAccelRateHz : kLowestRateHz, true);
 }
 
 }  // namespace

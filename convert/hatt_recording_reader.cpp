@@ -24,7 +24,7 @@ void read_identity(const XmlFile& xml, const pugi::xml_node& root, const FieldMa
     if (auto texture = xml.integer_attribute(root, map.texture_attribute)) recording.texture = int(*texture);
   const pugi::xml_node rate = xml.require(
       root, map.sample_rate, "Add <" + map.sample_rate + ">10000</" + map.sample_rate + "> (the rate in Hz; 10 kHz in HaTT)");
-  recording.sample_rate_hz = whole_source_rate(xml.source(), xml.where(rate), xml.number(rate), kLowestAccelRateHz);
+  recording.sample_rate_hz = whole_source_rate(xml.source(), xml.where(rate), xml.number(rate), kLowestAccelRateHz, false);
 }
 
 }  // namespace

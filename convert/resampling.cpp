@@ -21,7 +21,7 @@ std::string rate_text(const std::vector<StampedChannels>& groups) {
 
 }  // namespace
 
-int whole_source_rate(const std::string& file, const std::string& where, double rate_hz, double lowest_hz) {
+int whole_source_rate(const std::string& file, const std::string& where, double rate_hz, double lowest_hz, bool stamped) {
   if (rate_hz > kHighestRateHz)
     throw input_error(file, where, text::format("the sample rate is %.4g Hz, over the %.0f Hz haptex takes", rate_hz, kHighestRateHz),
                       "Give the rate in Hz (and times in seconds)");
@@ -30,7 +30,7 @@ int whole_source_rate(const std::string& file, const std::string& where, double 
     throw input_error(file, where,
                       text::format("the sample rate is %.10g Hz; haptex resamples whole numbers of Hz from %.0f Hz up",
                                    rate_hz, lowest_hz),
-                      rate_hz < 1 ? "Give the times in seconds: stamps in milliseconds, microseconds or nanoseconds read as a rate under 1 Hz"
+                      rate_hz < 1 && stamped ? "Give the times in seconds: stamps in milliseconds, microseconds or nanoseconds read as a rate under 1 Hz"
                       : lowest_hz == kLowestAccelRateHz
                           ? "Give the rate in whole Hz, at least 2 kHz for acceleration (the model's spectrum reaches 1000 Hz)"
                           : "Give the rate in whole Hz");

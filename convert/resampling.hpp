@@ -17,8 +17,9 @@ inline constexpr double kLowestAccelRateHz = 2000.0, kLowestRateHz = 1.0;
 inline constexpr double kHighestRateHz = 1e6;
 
 // The rate as a whole number of Hz. Throws haptex::Error (bad_input) naming `file` and `where` for a
-// rate under `lowest_hz` or over kHighestRateHz, or one that is no whole number of Hz.
-int whole_source_rate(const std::string& file, const std::string& where, double rate_hz, double lowest_hz);
+// rate under `lowest_hz` or over kHighestRateHz, or one that is no whole number of Hz; `stamped`: the
+// rate comes from time stamps (then one under 1 Hz says the times are not in seconds).
+int whole_source_rate(const std::string& file, const std::string& where, double rate_hz, double lowest_hz, bool stamped);
 
 // The mean rate of time stamps (seconds) read from `column` of `file`, lines[i] the line of stamp i.
 // Throws haptex::Error (bad_input) naming the line: fewer than two stamps, a stamp that does not

@@ -98,10 +98,18 @@ TEST(CsvResampling, ASlowChannelsValueWithoutItsTimeIsRefused) {
 // Review 9, C3: nanosecond stamps gave "the sample rate is 0 Hz" with "Give the rate in whole Hz".
 TEST(CsvResampling, StampsThatAreNotSecondsSaySo) {
   try {
-    whole_source_rate("log.csv", "column 'time_s'", 1e-5, 2000);
+    whole_source_rate("log.csv", "column 'time_s'", 1e-5, 2000, true);
     FAIL() << "a rate of 1e-5 Hz was taken";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("Give the times in seconds"), std::string::npos) << e.what();
+  }
+  // Review 10, C3: an XML <SampleRate> of 0 has no stamps to give in seconds.
+  try {
+    whole_source_rate("rec.xml", "<SampleRate> at line 4", 0, 2000, false);
+    FAIL() << "a rate of 0 Hz was taken";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).find("times in seconds"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("Give the rate in whole Hz, at least 2 kHz"), std::string::npos) << e.what();
   }
 }
 
