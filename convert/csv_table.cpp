@@ -90,12 +90,12 @@ CsvTable read_csv_table(const std::string& path, std::uintmax_t max_bytes,
     if (blank)
       throw input_error(path, "line " + std::to_string(blank), "is blank, between rows of samples",
                         "Remove it, or fill in the row that is missing: every sample is a row");
-    const auto fields = split_fields(line);
     const std::string where = "line " + std::to_string(lines.number());
-    if (fields.size() != table.header.size())
-      throw input_error(path, where, "has " + std::to_string(fields.size()) + " fields but the header has " +
-                                         std::to_string(table.header.size()),
+    // Counted before split: a line of 80 million empty fields took 2.3 GB as pieces (review 10, F3).
+    if (const std::size_t count = std::size_t(std::count(line.begin(), line.end(), ',')) + 1; count != table.header.size())
+      throw input_error(path, where, "has " + std::to_string(count) + " fields but the header has " + std::to_string(table.header.size()),
                         "Every row needs one value per header column");
+    const auto fields = split_fields(line);
     for (std::size_t c = 0; c < fields.size(); ++c) {
       if (!kept[c] || (may_be_empty[c] && text::trim(fields[c]).empty())) continue;
       const std::optional<double> value = text::parse_stored_number(fields[c]);

@@ -1,5 +1,6 @@
 #include "predict/trajectory.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -75,11 +76,12 @@ Trajectory read_trajectory(const std::string& path) {
     if (blank)
       throw input_error(path, "line " + std::to_string(blank), "is blank, among the samples (each row is the next 0.1 ms)",
                         "Remove the blank line, or give the sample it stands for");
-    const std::vector<std::string> v = fields(line);
     const std::string where = "line " + std::to_string(number);
-    if (v.size() > header.size())
-      throw input_error(path, where, "has " + std::to_string(v.size()) + " fields but the header names " + std::to_string(header.size()),
+    // Counted before split: a line of 80 million empty fields took 4.5 GB as pieces (review 10, F3).
+    if (const std::size_t count = std::size_t(std::count(line.begin(), line.end(), ',')) + 1; count > header.size())
+      throw input_error(path, where, "has " + std::to_string(count) + " fields but the header names " + std::to_string(header.size()),
                         "Give each row one value per header column");
+    const std::vector<std::string> v = fields(line);
     auto value = [&](int c, const char* what) {
       if (std::size_t(c) >= v.size()) throw input_error(path, where, std::string("the ") + what + " column is missing", "Fix or remove the line");
       const std::optional<double> x = parse_stored_number(v[std::size_t(c)]);
