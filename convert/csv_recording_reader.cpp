@@ -10,6 +10,7 @@
 #include "convert/recording_checks.hpp"
 #include "convert/resampling.hpp"
 #include "core/error.hpp"
+#include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
 
 namespace haptex::convert {
@@ -79,6 +80,22 @@ std::string material_from_file_stem(const std::string& stem) {
   return numbered && separator > 0 ? stem.substr(0, separator) : stem;
 }
 
+// A channel's own clock spans about what the main one does (review 10, F8: a channel column in
+// milliseconds beside a main one in seconds was taken, and the overlap kept the channel's first 2 ms
+// stretched over the recording). Its rows need not be the main clock's instants (a slower log may fill
+// the first rows), and it may start earlier or end later; but a span 100 times the main one's, or a
+// hundredth of it, is another unit: milliseconds give 1000.
+void require_comparable_span(const std::string& path, const StampedChannels& main, const StampedChannels& own) {
+  const double main_span = main.times.back() - main.times.front(), own_span = own.times.back() - own.times.front();
+  if (!(main_span > 0) || !(own_span > 0)) return;
+  const double ratio = own_span / main_span;
+  if (ratio <= 100 && ratio >= 0.01) return;
+  throw input_error(path, "column '" + own.time_column + "'",
+                    text::format("its times span %.6g s, %.4g times the %.6g s of column '%s'", own_span, ratio, main_span,
+                                 main.time_column.c_str()),
+                    "Give every time column in seconds (stamps in milliseconds span 1000 times as much)");
+}
+
 Recording read_csv_recording(const std::string& path, const FieldMap& map, std::uintmax_t max_bytes) {
   Recording recording;
   recording.source_path = path;
@@ -104,6 +121,9 @@ Recording read_csv_recording(const std::string& path, const FieldMap& map, std::
                         "Add the column, or map \"" + channel + "\" to your column's name in a field map (--map)");
   }
   std::vector<StampedChannels> timed = group_by_time(path, map, recording, table);
+  const auto main = std::find_if(timed.begin(), timed.end(), [&](const StampedChannels& g) { return g.time_column == map.csv_time_column; });
+  for (const StampedChannels& g : timed)
+    if (main != timed.end() && &g != &*main) require_comparable_span(path, *main, g);
   bool all_uniform = true;
   for (auto& g : timed) {
     bool uniform = false;

@@ -104,6 +104,30 @@ TEST(BadValues, AFieldMapThatGivesTwoThingsOneColumnIsRefusedNamingTheMap) {
   }
 }
 
+// Review 10, F8: a channel's own time column in milliseconds, beside a main one in seconds, was taken:
+// the overlap kept the channel's first 2 ms, stretched over the 2 s recording.
+TEST(BadValues, AChannelClockInAnotherUnitIsRefused) {
+  const TempDir d;
+  nlohmann::json map = nlohmann::json::parse(std::ifstream(std::string(HAPTEX_SCHEMA_DIR) + "/hatt-recording-map.json"));
+  map["csv_channel_times"] = {{"force_normal", "t_force"}, {"speed", "t_force"}};
+  std::ofstream(d.file("map.json")) << map.dump();
+  for (const double unit : {1.0, 1000.0}) {
+    SCOPED_TRACE(unit);
+    const std::string csv = csv_recording(
+        d, "rig_0.csv", 6000,
+        [&](int i) {
+          const std::string force = i % 10 ? ",," : "," + std::to_string(i * 1e-4 * unit) + ",1.5";
+          return t(i) + ",0.1,0.2,0.3" + force + (i % 10 ? "," : ",40");
+        },
+        "time_s,accelX,accelY,accelZ,t_force,forceNormal,speed");
+    const CommandResult r = convert(d, csv, {"--map", d.file("map.json"), "--force"});
+    if (unit == 1.0)
+      EXPECT_EQ(r.exit_code, 0) << r.err;
+    else
+      expect_refusal(r, {csv, "column 't_force'", "998.5 times the 0.5999 s of column 'time_s'", "Give every time column in seconds"});
+  }
+}
+
 TEST(BadValues, EvaluateRefusesATruthBeyondAnyVibration) {
   const SmallPipeline& p = small_pipeline();
   for (const std::string what : {"noise", "spectrum"}) {
