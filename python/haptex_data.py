@@ -100,6 +100,12 @@ def _read_table(group, path):
                 column("action", 2 * ACTION_SAMPLES), column("target", TARGET_BINS))
     if any(len(a) != n for a in (w.material, w.recording, w.section, w.press, w.action, w.target)):
         raise HaptexFileError(f"{path}: the columns of {group.name} differ in length")
+    # As haptex's own readers: a NaN or infinite action or target is a damaged file (review 10, F7).
+    for name, values in (("action", w.action), ("target", w.target)):
+        bad = np.flatnonzero(~np.isfinite(values).all(axis=1))
+        if bad.size:
+            raise HaptexFileError(f"{path}: {group.name}/{name} row {bad[0]} holds a value that is not finite; "
+                                  "make the file again with the haptex command that wrote it")
     return w
 
 

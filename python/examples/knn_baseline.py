@@ -5,7 +5,8 @@ Per material, each window of windows.h5 is predicted as the mean target spectrum
 windows whose 20 action values are nearest (Euclidean), force and speed values each divided by their
 standard deviation over the material's training windows so that newtons and mm/s weigh alike.
 
-Usage: knn_baseline.py DATASET.h5 SPLIT.json WINDOWS.h5 -o PREDS.h5 [-k 8]
+Usage: knn_baseline.py DATASET.h5 SPLIT.json WINDOWS.h5 -o PREDS.h5 [-k 8]   (k of 1 or more; more than a
+material's training windows averages them all)
 
 Writes PREDS.h5 (schemas/hdf5-layout.md, "Predictions file"; haptex_data.write_predictions): `spectra`,
 (N, 100) float32, row i the prediction for window i of WINDOWS.h5, with the windows file's hashes and
@@ -76,8 +77,11 @@ def predict(train, grid, k):
 
 def main():
     p = haptex_data.example_arguments(__doc__.splitlines()[0])
-    p.add_argument("-k", type=int, default=8)
+    p.add_argument("-k", type=int, default=8, help="neighbours averaged (1 or more)")
     args = p.parse_args()
+    if args.k < 1:  # review 10, F7: -k -1 took all but one neighbour, -k 0 ended in numpy warnings
+        print(f"knn_baseline: -k {args.k}: give 1 or more neighbours", file=sys.stderr)
+        return 2
     try:
         haptex_data.check_output(args.output, (args.dataset, args.split, args.windows), args.force)
         split, grid = haptex_data.read_split_and_grid(args.split, args.windows)

@@ -65,6 +65,27 @@ TEST(PythonExamples, KnnNamesAMissingOutputFolder) {
   EXPECT_EQ(r.err.find(".partial"), std::string::npos) << r.err;
 }
 
+// Review 10, F7: -k -1 was taken (all but one neighbour), -k 0 and a NaN in the windows file ended in
+// numpy warnings and an error blaming the output.
+TEST(PythonExamples, KnnRefusesABadKAndADamagedWindowsFile) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const Knn knn;
+  const TempDir d;
+  const SmallPipeline& p = small_pipeline();
+  for (const char* k : {"0", "-1"}) {
+    const CommandResult r = run_python({kExamples + "knn_baseline.py", p.dataset, p.split, knn.windows, "-o", d.file("k.h5"), "-k", k});
+    expect_refusal(r, {std::string("-k ") + k, "give 1 or more neighbours"});
+    EXPECT_EQ(r.err.find("Warning"), std::string::npos) << r.err;
+  }
+  const std::string damaged = d.file("w.h5");
+  fs::copy_file(knn.windows, damaged);
+  ASSERT_EQ(run_python({"-c", "import h5py, sys\nwith h5py.File(sys.argv[1], 'r+') as f: f['windows/action'][3, 0] = float('nan')", damaged}).exit_code, 0);
+  const CommandResult r = run_python({kExamples + "knn_baseline.py", p.dataset, p.split, damaged, "-o", d.file("k.h5")});
+  expect_refusal(r, {damaged, "/windows/action row 3 holds a value that is not finite"});
+  EXPECT_EQ(r.err.find("Warning"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(d.file("k.h5")));
+}
+
 TEST(PythonExamples, KnnForceReplacesOnlyAnEarlierPredictionsFile) {
   if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
   const Knn knn;
