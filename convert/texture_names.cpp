@@ -92,9 +92,7 @@ std::map<int, std::string> read_texture_names(const std::string& path) {
   // Two names that make one material id would join two textures' takes into one material.
   std::map<std::string, int> by_id;
   for (const auto& [texture, name] : names) {
-    if (material_id(name).empty())
-      throw input_error(path, "texture " + std::to_string(texture), "'" + name + "' has no letters or digits to make a material id from",
-                        "Give the texture a name with letters or digits");
+    checked_material_id(name, path, "texture " + std::to_string(texture));
     const auto [at, added] = by_id.emplace(material_id(name), texture);
     if (!added)
       throw input_error(path, "texture " + std::to_string(texture),

@@ -1,5 +1,6 @@
 #include "core/naming.hpp"
 
+#include "core/error.hpp"
 #include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
 
@@ -52,6 +53,20 @@ std::string material_id(std::string_view name) {
       pending_separator = true;
     }
   }
+  return id;
+}
+
+std::string checked_material_id(std::string_view name, const std::string& file, const std::string& where) {
+  const std::string id = material_id(name);
+  const std::string shown = text::printable(name.size() > 60 ? std::string(name.substr(0, 60)) + "..." : std::string(name));
+  if (id.empty())
+    throw input_error(file, where, "'" + shown + "' has no letters or digits to make a material id from",
+                      "Give the material a name with at least one letter or digit");
+  if (id.size() > kLongestMaterialId)
+    throw input_error(file, where,
+                      text::format("'%s' makes a material id of %zu bytes, longer than the %zu haptex takes (file names are made of it)",
+                                   shown.c_str(), id.size(), kLongestMaterialId),
+                      "Give the material a shorter name");
   return id;
 }
 

@@ -15,4 +15,12 @@ namespace haptex {
 // An id is its own id.
 std::string material_id(std::string_view name);
 
+// The longest material id haptex takes, in bytes: file names are made of it (a contact sheet
+// "<id>_press_12.png", split's "<id>_points.csv"), and a file name holds at most 255 (review 10, F5:
+// a 300-character name passed every reader, then split and extract failed at their end).
+inline constexpr std::size_t kLongestMaterialId = 100;
+// material_id(name); throws haptex::Error (bad_input) naming `file` and `where` when it is empty (no
+// letter or digit) or longer than kLongestMaterialId.
+std::string checked_material_id(std::string_view name, const std::string& file, const std::string& where);
+
 }  // namespace haptex

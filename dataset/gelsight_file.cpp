@@ -57,11 +57,7 @@ GelsightWriter::GelsightWriter(const std::string& path, bool overwrite, const st
 }
 
 int GelsightWriter::add_press(const std::string& material_name, const GelsightPress& p) {
-  const std::string id = material_id(material_name);
-  if (id.empty())
-    throw input_error(p.source_file, "material name",
-                      "'" + material_name + "' has no letters or digits to make a material id from",
-                      "Name the material's folder (or --material) with at least one letter or digit");
+  const std::string id = checked_material_id(material_name, p.source_file, "material name");
   h5::Group materials = file_.root().require_group(layout::kMaterials);
   const bool first = !materials.has_group(id);
   h5::Group material = materials.require_group(id);

@@ -67,10 +67,7 @@ void write_signals(h5::Group& g, const RecordingToWrite& r) {
 }  // namespace
 
 WrittenRecording write_recording(h5::Group root, const RecordingToWrite& r) {
-  WrittenRecording written{material_id(r.material), 0};
-  if (written.material_id.empty())
-    throw input_error(r.source_path, "material name", "'" + r.material + "' has no letters or digits to make an id from",
-                      "Name the material with at least one letter or digit");
+  WrittenRecording written{checked_material_id(r.material, r.source_path, "material name"), 0};
   h5::Group materials = root.require_group(layout::kMaterials);
   const bool first = !materials.has_group(written.material_id);
   h5::Group material = materials.require_group(written.material_id);

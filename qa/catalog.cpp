@@ -21,7 +21,9 @@ const std::vector<CheckInfo>& all_checks() {
   using enum Severity;
   static const std::vector<CheckInfo> checks = {
       // layout: schemas/hdf5-layout.md
-      {"layout.required", error, "every object and attribute the layout tables require 'always' is present, and nothing else at the root",
+      {"layout.required", error,
+       "every object and attribute the layout tables require 'always' is present, material groups are named by material ids of at "
+       "most 100 bytes, and nothing else is at the root",
        "Rewrite the file with the haptex command that makes it (convert, capture extract, align), or remove what it added at the root"},
       {"layout.dtype", error, "objects and attributes have the dtype of their layout row",
        "Rewrite the file with haptex; tools that re-save it must keep float32/int64/string types"},

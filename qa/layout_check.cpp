@@ -181,11 +181,16 @@ CheckResult check_layout_required(const h5::Group& root, dataset::Kind kind, con
     tally.fail(stray.where, stray.what + "; merge and align refuse it (remove it: " + stray.remove + ")");
   // {material} is a material id (core/naming.hpp): merge and align join materials by it (review 5:
   // "Woven_1" and "wovén_1" passed qa, which merge refused and align joined to the wrong presses).
-  if (root.has_group(dataset::layout::kMaterials))
-    for (const std::string& id : root.open_group(dataset::layout::kMaterials).children())
+  if (root.has_group(dataset::layout::kMaterials)) {
+    for (const std::string& id : root.open_group(dataset::layout::kMaterials).children()) {
       if (material_id(id) != id)
         tally.fail(dataset::material_path(id), "is not named by a material id (lower case letters, digits and '_'; '" + material_id(id) +
                                                    "' for this name)");
+      else if (id.size() > kLongestMaterialId)  // review 10, F5: split and extract then failed at their end
+        tally.fail(dataset::material_path(id).substr(0, 80) + "...", "is a material id of " + std::to_string(id.size()) + " bytes, longer than the " +
+                                                                          std::to_string(kLongestMaterialId) + " haptex takes");
+    }
+  }
   for (const auto& [row, missing, not_groups, found] : rows) {
     const std::string line = "schemas/hdf5-layout.md line " + std::to_string(row->line) + ": " + row->path;
     for (const auto& path : missing) tally.fail(path, "missing (" + line + ")");

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
+#include "core/naming.hpp"
 #include "dataset/format.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/window_table.hpp"
@@ -43,6 +44,7 @@ std::vector<MaterialWindows> read_dataset_windows(const std::string& path) {
   const std::vector<std::string>& ids = t.materials;
   std::vector<MaterialWindows> out(ids.size());
   const h5::Group materials = root.open_group(kMaterials);
+  for (const std::string& id : ids) checked_material_id(id, path, "/windows/materials");  // file names are made of them
   for (std::size_t m = 0; m < ids.size(); ++m) {
     const h5::Group g = materials.open_group(ids[m]);
     out[m].id = ids[m];

@@ -6,6 +6,7 @@
 
 #include "dataset/press_file.hpp"
 #include "core/error.hpp"
+#include "core/naming.hpp"
 #include "core/input_file.hpp"
 #include "core/text/utf8.hpp"
 
@@ -75,7 +76,9 @@ CaptureInput input_for(const std::string& path, const std::string& material_name
   const auto kind = press ? CaptureInput::Kind::press_file
                   : fs::is_directory(path, ec) ? CaptureInput::Kind::image_sequence
                                                : CaptureInput::Kind::video;
-  return CaptureInput{path, material.value_or(press ? "" : material_name), kind};
+  const std::string name = material.value_or(press ? "" : material_name);  // a press file states its own
+  if (!name.empty()) checked_material_id(name, material ? "--material" : path, material ? "" : "the material (its folder's name)");
+  return CaptureInput{path, name, kind};
 }
 
 // The folder's own name, also for "", ".", "./" and "dir/" (the current folder's name, "dir").

@@ -1,6 +1,7 @@
 // Issue 32, classes 10, 11, 13, 14, 16 and 17: values a reader must refuse, naming the file, the place
 // and the fix, with exit code 2 and nothing written.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include "core/sha256.hpp"
 
@@ -313,6 +314,39 @@ TEST(BadValues, ExtractRefusesABlankStoredReference) {
                    {press, "/reference", value == 0 ? "is black" : "one flat grey", "Record the press again"});
     EXPECT_FALSE(fs::exists(d.file("g.h5")));
   }
+}
+
+// Review 10, F5: a material name of 300 characters passed every reader, then split and extract failed
+// at their end ("File name too long", exit 1). Its id is refused where it comes in, and qa fails it.
+TEST(BadValues, AMaterialNameTooLongForAFileNameIsRefusedWhereItComesIn) {
+  const TempDir d;
+  const std::string too_long(101, 'm'), longest(100, 'm');
+  expect_refusal(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", too_long, "--presses", "1", "-o",
+                             d.file("s")}),
+                 {"--material", "makes a material id of 101 bytes, longer than the 100 haptex takes", "shorter name"});
+  EXPECT_FALSE(fs::exists(d.file("s")));
+  ASSERT_EQ(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", longest, "--presses", "1", "-o",
+                        d.file("s"), "-q"}).exit_code, 0);
+  EXPECT_EQ(run_haptex({"capture", "extract", d.file("s"), "-o", d.file("g.h5"), "-q"}).exit_code, 0) << "100 bytes make every file name";
+  expect_refusal(run_haptex({"capture", "extract", d.file("s"), "--material", too_long, "-o", d.file("g2.h5")}),
+                 {"--material", "101 bytes"});
+  // A dataset holding such an id: qa fails it, split refuses it before any work.
+  const std::string dataset = d.file("d.h5");
+  fs::copy_file(small_pipeline().dataset, dataset);
+  {
+    Edit e(dataset);
+    const std::string from = "materials/" + material_ids(dataset).front(), to = "materials/" + std::string(101, 'w');
+    ASSERT_GE(H5Lmove(e.root().id(), from.c_str(), e.root().id(), to.c_str(), H5P_DEFAULT, H5P_DEFAULT), 0);
+    std::vector<std::string> ids = e.dataset("windows/materials").read_strings();
+    ids.front() = std::string(101, 'w');
+    e.remove("windows/materials");
+    e.group("windows").write_strings("materials", ids);
+  }
+  const CommandResult qa = run_haptex({"qa", dataset});
+  EXPECT_EQ(qa.exit_code, 1);
+  EXPECT_NE(qa.out.find("is a material id of 101 bytes, longer than the 100 haptex takes"), std::string::npos) << qa.out;
+  expect_refusal(run_haptex({"split", dataset, "-o", d.file("split.json")}), {dataset, "101 bytes"});
+  EXPECT_FALSE(fs::exists(d.file("split.json")));
 }
 
 // Review 6, #9: an AVI whose headers state no frame rate was replayed at FFmpeg's guess of 25 fps,
