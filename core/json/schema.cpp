@@ -178,8 +178,15 @@ void validate(const nlohmann::json& doc, std::string_view schema_name, const std
     where += "/" + part;
   }
   if (where.empty()) where = "(top level)";
-  const std::string reason = error.description;
-  throw input_error(file, where, reason, "See schemas/" + std::string(schema_name) + " for the expected form");
+  std::string reason = error.description;
+  while (!reason.empty() && reason.back() == '.') reason.pop_back();  // valijson ends its sentences; input_error adds one
+  // The schema says what the file is (review 10, C4: a pointer to the schema alone was no fix).
+  const nlohmann::json schema_doc = nlohmann::json::parse(embedded::schema(schema_name));
+  const auto description = schema_doc.find("description");
+  throw input_error(file, where, reason,
+                    "See schemas/" + std::string(schema_name) +
+                        (description != schema_doc.end() && description->is_string() ? ": " + description->get<std::string>()
+                                                                                      : std::string(" for the expected form")));
 }
 
 void write_file(const nlohmann::json& doc, std::string_view schema_name, const std::string& path) {

@@ -25,5 +25,14 @@ TEST(JsonParse, EqualKeysInDifferentObjectsAreFine) {
   EXPECT_EQ(doc["k"], 4);
 }
 
+// Review 10, C4: a schema's refusal ended "..", and its fix only pointed at the schema. It says what
+// the file is where the schema does.
+TEST(JsonValidate, ARefusalEndsOnceAndSaysWhatTheFileIs) {
+  const std::string message = bad_input_message([] { json::validate(nlohmann::json::array(), "name-map.schema.json", "names.json"); });
+  EXPECT_EQ(message.find(".."), std::string::npos) << message;
+  EXPECT_NE(message.find("names.json: (top level): "), std::string::npos) << message;
+  EXPECT_NE(message.find("See schemas/name-map.schema.json: Each key is a material's name in the gelsight file"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace haptex
