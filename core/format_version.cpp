@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <optional>
+#include <vector>
 
 #include "core/text/parse_number.hpp"
 #include "core/version.hpp"
@@ -34,7 +35,26 @@ Error newer_version_error(const std::string& file, const std::string& where, con
                      "Read it with the haptex that wrote it, or update this one");
 }
 
-void require_replaceable_format(const std::string& path, const std::string& found, const std::string& wanted) {
+bool is_newer_haptex(std::string_view version) {
+  const auto parts = [](std::string_view v) {
+    std::vector<long> out;
+    while (!v.empty()) {
+      const std::size_t dot = v.find('.');
+      const std::string_view part = v.substr(0, dot);
+      long n = 0;
+      const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), n);
+      if (error != std::errc() || end != part.data() + part.size()) return std::vector<long>{};
+      out.push_back(n);
+      v = dot == std::string_view::npos ? std::string_view() : v.substr(dot + 1);
+    }
+    return out;
+  };
+  const std::vector<long> have = parts(version), ours = parts(kVersion);
+  return !have.empty() && !ours.empty() && have > ours;
+}
+
+void require_replaceable_format(const std::string& path, const std::string& found, const std::string& wanted,
+                                const std::string& written_by) {
   const std::string fix = "Choose another output name, or move the file away yourself";
   const std::string_view family = std::string_view(wanted).substr(0, wanted.find('/'));
   if (found.empty())
@@ -44,6 +64,9 @@ void require_replaceable_format(const std::string& path, const std::string& foun
                                     ", and --force replaces only an earlier output of the same kind", fix);
   if (is_newer_version(found, wanted))
     throw input_error(path, "", "is " + found + ", written by a newer haptex than this one (" + std::string(kVersion) +
+                                    "); --force does not replace it", fix);
+  if (is_newer_haptex(written_by))
+    throw input_error(path, "", "was written by haptex " + written_by + ", newer than this one (" + std::string(kVersion) +
                                     "); --force does not replace it", fix);
 }
 

@@ -19,6 +19,11 @@ bool is_newer_version(std::string_view found, std::string_view wanted);
 // when the command writes `wanted`: haptex replaces only an earlier output of the same kind, so this
 // throws haptex::Error (bad_input) naming path when `found` is missing, of another family ("is a
 // recordings/2 file"), or of a later version (written by a newer haptex).
-void require_replaceable_format(const std::string& path, const std::string& found, const std::string& wanted);
+// `written_by`: the haptex version the file states (HDF5 `haptex_version`, JSON "haptex_version"; empty
+// when it states none); one newer than this haptex's is refused too, whatever its format (review 10, C5).
+void require_replaceable_format(const std::string& path, const std::string& found, const std::string& wanted,
+                                const std::string& written_by = "");
+// True when `version` ("1.2.3") is later than this haptex's (kVersion); false when it is no such version.
+bool is_newer_haptex(std::string_view version);
 
 }  // namespace haptex

@@ -11,13 +11,14 @@ void require_replaceable(const std::string& path, const std::string& format) {
   if (format.empty()) throw failure("internal: --force on " + path + " without the format to be written");
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) return;
-  std::string found;
+  std::string found, written_by;
   try {
     const Group root = File::open(path).root();
     if (root.has_attr(kFormatAttribute)) found = root.attr_string(kFormatAttribute);
+    if (root.has_attr(kVersionAttribute)) written_by = root.attr_string(kVersionAttribute);
   } catch (const Error&) {  // not HDF5, or a format that is not text: not a file haptex wrote
   }
-  require_replaceable_format(path, found, format);
+  require_replaceable_format(path, found, format, written_by);
 }
 
 namespace {

@@ -141,16 +141,20 @@ nlohmann::json read_file(const std::string& path) {
 namespace {
 
 // The top-level "format" of the JSON file at path; empty when it is not one (or over 64 MiB).
-std::string format_of_file(const std::string& path) {
+// A JSON file's top-level "format" and "haptex_version" strings (empty where it has none, or is no JSON).
+std::pair<std::string, std::string> format_of_file(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kLargestJsonBytes || ec) return "";
+  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kLargestJsonBytes || ec) return {};
   std::ifstream in(path, std::ios::binary);
   try {
     const nlohmann::json doc = parse_text(std::string(std::istreambuf_iterator<char>(in), {}), path);
-    if (doc.is_object() && doc.contains("format") && doc["format"].is_string()) return doc["format"].get<std::string>();
+    const auto text = [&](const char* key) {
+      return doc.is_object() && doc.contains(key) && doc[key].is_string() ? doc[key].get<std::string>() : std::string();
+    };
+    return {text("format"), text("haptex_version")};
   } catch (const Error&) {
   }
-  return "";
+  return {};
 }
 
 }  // namespace
@@ -158,7 +162,10 @@ std::string format_of_file(const std::string& path) {
 void check_replaceable_json(const std::string& path, bool overwrite, const std::string& format) {
   check_output_path(path, overwrite);
   std::error_code ec;
-  if (overwrite && std::filesystem::exists(path, ec)) require_replaceable_format(path, format_of_file(path), format);
+  if (overwrite && std::filesystem::exists(path, ec)) {
+    const auto [found, written_by] = format_of_file(path);
+    require_replaceable_format(path, found, format, written_by);
+  }
 }
 
 void validate(const nlohmann::json& doc, std::string_view schema_name, const std::string& file) {

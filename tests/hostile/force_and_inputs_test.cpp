@@ -534,6 +534,32 @@ TEST(Force, ADanglingLinkAtTheOutputIsRefused) {
   expect_refusal(run_haptex({"split", small_pipeline().dataset, "-o", d.file("x.plots")}), {"names the plot folder"});
 }
 
+// Review 10, C5: --force replaced a file of the same format that a newer haptex wrote (the README
+// promises it never does); one an older haptex wrote it still replaces.
+TEST(Force, AFileANewerHaptexWroteIsNotReplaced) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string windows = d.file("w.h5"), split = d.file("s.json");
+  ASSERT_EQ(run_haptex({"windows", p.dataset, "--split", p.split, "-o", windows}).exit_code, 0);
+  ASSERT_EQ(run_haptex({"split", p.dataset, "-o", split, "--no-plots"}).exit_code, 0);
+  for (const std::string version : {"99.0.0", "0.0.1"}) {
+    SCOPED_TRACE(version);
+    Edit(windows).root().set_attr("haptex_version", version);
+    nlohmann::json manifest = read_json(split);
+    manifest["haptex_version"] = version;
+    write_json(split, manifest);
+    const CommandResult w = run_haptex({"windows", p.dataset, "--split", p.split, "-o", windows, "--force"});
+    const CommandResult s = run_haptex({"split", p.dataset, "-o", split, "--no-plots", "--force"});
+    if (version == "99.0.0") {
+      expect_refusal(w, {windows, "was written by haptex 99.0.0, newer than this one"});
+      expect_refusal(s, {split, "was written by haptex 99.0.0, newer than this one"});
+    } else {
+      EXPECT_EQ(w.exit_code, 0) << w.err;
+      EXPECT_EQ(s.exit_code, 0) << s.err;
+    }
+  }
+}
+
 // Review 10, C1 and C2: a manifest name over 255 bytes was said to "name the plot folder itself"; a
 // device, FIFO or socket at an output was called a folder.
 TEST(Force, AnOutputThatCannotBeAFileSaysWhy) {
