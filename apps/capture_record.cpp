@@ -22,7 +22,6 @@
 #include "apps/number_checks.hpp"
 #include "core/text/parse_number.hpp"
 #include "core/error.hpp"
-#include "core/naming.hpp"
 #include "core/text/shell_quote.hpp"
 #include "core/text/utf8.hpp"
 
@@ -66,7 +65,6 @@ class CaptureRecord : public CaptureSubcommand {
     if (device_.empty() && serial_.empty())
       throw input_error("capture record", "", "no sensor given", "Name it with --device /dev/videoN or --serial S");
     text::require_utf8(options_.material, "--material", "the material name");
-    checked_material_id(options_.material, "--material", "");
     // A replayed file holds no stream start-up: its first frame is the take's first (docs/capture.md, "Replay").
     if (capture::is_replay_device(device_) && warmup_->count() == 0) options_.warmup_frames = 0;
     build_request(global);

@@ -60,8 +60,8 @@ std::string checked_material_id(std::string_view name, const std::string& file, 
   const std::string id = material_id(name);
   const std::string shown = text::printable(name.size() > 60 ? std::string(name.substr(0, 60)) + "..." : std::string(name));
   if (id.empty())
-    throw input_error(file, where, "'" + shown + "' has no letters or digits to make a material id from",
-                      "Give the material a name with at least one letter or digit");
+    throw input_error(file, where, "'" + shown + "' has no letter or digit to make a material id from",
+                      "Give the material a name with at least one letter or digit, e.g. \"Brick 2\"");
   if (id.size() > kLongestMaterialId)
     throw input_error(file, where,
                       text::format("'%s' makes a material id of %zu bytes, longer than the %zu haptex takes (file names are made of it)",

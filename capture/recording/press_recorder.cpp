@@ -129,9 +129,7 @@ void check_recorder_options(const RecorderOptions& o) {
   };
   if (o.material.empty()) refuse("--material", "the material name is empty", "Name the material you press, e.g. --material \"Brick 2\"");
   text::require_utf8(o.material, "--material", "the material name");
-  if (material_id(o.material).empty())  // the session and every press file are stored under that id
-    refuse("--material", "'" + o.material + "' has no letter or digit to make a material id from",
-           "Name the material with letters or digits, e.g. --material \"Brick 2\"");
+  checked_material_id(o.material, "--material", "");  // the session and every press file are stored under that id
   if (o.presses < 1) refuse("--presses", "must be at least 1", "Give the number of presses to record");
   require_reference_frames(o.reference_frames);
   if (o.warmup_frames < 0 || o.pre_frames < 0 || o.post_frames < 0)

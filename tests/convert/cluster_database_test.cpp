@@ -180,7 +180,7 @@ TEST_F(Cluster, TextureNamesComeFromJsonOrCsv) {
   refused("n.csv", "id,name\n3,\"Cork\n", "line 2: the name's quotes are not closed");
   refused("o.json", R"({"03": "Cork"})", "/03: '03' is written with a leading zero");
   // Review 9, F3: a name that makes no id was refused naming a take's accel file, not this file.
-  refused("p.json", R"({"3": "***"})", "texture 3: '***' has no letters or digits");
+  refused("p.json", R"({"3": "***"})", "texture 3: '***' has no letter or digit");
 }
 
 // Review 9, F3: texture 1 named "cluster 2" joined texture 2's takes (default name "cluster 2").
