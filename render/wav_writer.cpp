@@ -80,6 +80,16 @@ std::unique_ptr<SNDFILE, SndfileCloser> open_wav(PartialFile& out, int rate, int
   return file;
 }
 
+// The summary of 16-bit samples (full scale 32767 = options.full_scale_m_s2, which must be given).
+WavSummary pcm16_summary(std::span<const std::int16_t> samples, const WavOptions& options) {
+  if (!(options.full_scale_m_s2 > 0)) throw failure("internal: a WAV of 16-bit samples needs its full scale");
+  WavSummary summary;
+  summary.samples = samples.size();
+  summary.full_scale_m_s2 = options.full_scale_m_s2;
+  for (const std::int16_t v : samples) summary.peak_m_s2 = std::max(summary.peak_m_s2, std::abs(double(v)) / 32767 * options.full_scale_m_s2);
+  return summary;
+}
+
 // libsndfile's virtual I/O on a string, for a WAV that goes into a page rather than a file.
 struct MemoryFile {
   std::string bytes;
@@ -176,10 +186,7 @@ WavSummary write_wav(PartialFile& out, std::span<const double> signal_m_s2, cons
 }
 
 std::string wav_bytes(std::span<const std::int16_t> samples, int rate, const WavOptions& options) {
-  if (!(options.full_scale_m_s2 > 0)) throw failure("internal: a WAV of 16-bit samples needs its full scale");
-  WavSummary summary;
-  summary.full_scale_m_s2 = options.full_scale_m_s2;
-  for (const std::int16_t v : samples) summary.peak_m_s2 = std::max(summary.peak_m_s2, std::abs(double(v)) / 32767 * options.full_scale_m_s2);
+  WavSummary summary = pcm16_summary(samples, options);
   SF_VIRTUAL_IO io{memory_length, memory_seek, memory_read, memory_write, memory_tell};
   MemoryFile memory;
   SF_INFO info = mono_wav(rate, SF_FORMAT_PCM_16);
@@ -193,11 +200,7 @@ std::string wav_bytes(std::span<const std::int16_t> samples, int rate, const Wav
 }
 
 WavSummary write_played_wav(PartialFile& out, std::span<const std::int16_t> samples, int rate, const WavOptions& options) {
-  if (!(options.full_scale_m_s2 > 0)) throw failure("internal: a played WAV needs its full scale");
-  WavSummary summary;
-  summary.samples = samples.size();
-  summary.full_scale_m_s2 = options.full_scale_m_s2;
-  for (const std::int16_t v : samples) summary.peak_m_s2 = std::max(summary.peak_m_s2, std::abs(double(v)) / 32767 * options.full_scale_m_s2);
+  WavSummary summary = pcm16_summary(samples, options);
   std::unique_ptr<SNDFILE, SndfileCloser> file = open_wav(out, rate, SF_FORMAT_PCM_16, options, summary);
   if (sf_write_short(file.get(), samples.data(), sf_count_t(samples.size())) != sf_count_t(samples.size()))
     throw failure(out.final_path() + ": cannot write it: " + (errno == ENOSPC ? std::string("the disk is full") : sf_strerror(file.get())));
