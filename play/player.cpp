@@ -138,10 +138,19 @@ PlayReport Player::play(ActionStream& stream, const std::atomic<bool>& stop) {
   stream.take(Clock::now(), lines);
   const Clock::time_point first = lines.front().arrived;
   const auto sample_of = [&](Clock::time_point t) { return std::size_t(std::max<std::int64_t>(0, (t - first) / kSampleTime)); };
-  // Sets the trajectory from each line's sample on, then holds the newest value up to `last`.
+  // Sets the trajectory from each line's sample on, then holds the newest value up to `last`. The
+  // samples earlier ticks played are kept as they were; lines that arrived within one sample (a burst
+  // read at once) share it, the newest winning (review 11, F1: each took a sample of its own, so a
+  // burst of 30 000 lines delayed every later action by 3 s).
   const auto extend = [&](std::size_t last) {
+    const std::size_t played = trajectory_.force.size();
     for (const ActionLine& line : lines) {
-      const std::size_t at = std::max(sample_of(line.arrived), trajectory_.force.size());
+      const std::size_t at = std::max(sample_of(line.arrived), played);
+      if (at < trajectory_.force.size()) {
+        trajectory_.force.back() = line.force;
+        trajectory_.speed.back() = line.speed;
+        continue;
+      }
       trajectory_.force.resize(at, trajectory_.force.empty() ? line.force : trajectory_.force.back());
       trajectory_.speed.resize(at, trajectory_.speed.empty() ? line.speed : trajectory_.speed.back());
       trajectory_.force.push_back(line.force);

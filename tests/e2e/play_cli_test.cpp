@@ -191,6 +191,33 @@ TEST(PlayCli, AStreamAt1kHzPlaysWithoutAnUnderrunAndItsRecordingReplays) {
                 rendered_as_played(dir, dir.file("session.csv"), {"--reconstruct", "online", "--seed", "7"}));
 }
 
+// Review 11, F1: lines read at once each took a sample of their own, so a burst of thousands delayed
+// every later action by its length. They share the moment they arrived; a line 300 ms later is played
+// 300 ms after them.
+TEST(PlayCli, ABurstOfLinesIsOneMomentNotABacklog) {
+  const TempDir dir;
+  const FakeSoundCard card;
+  Piped play(play_args({"--actions", "-", "--record", dir.file("s.wav")}), dir.file("out.json"));
+  std::string burst;
+  for (int i = 0; i < 20000; ++i) burst += "1 50\n";
+  ASSERT_EQ(::write(play.input, burst.data(), burst.size()), ssize_t(burst.size()));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ASSERT_EQ(::write(play.input, "5 200\n", 6), 6);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  ASSERT_EQ(play.finish(), 0);
+  std::ifstream csv(dir.file("s.csv"));
+  std::string line;
+  std::getline(csv, line);
+  double when = -1;
+  while (std::getline(csv, line))
+    if (std::stod(line.substr(line.find(',') + 1)) > 4) {
+      when = std::stod(line);
+      break;
+    }
+  EXPECT_GT(when, 0.2) << "the line sent 300 ms after the burst";
+  EXPECT_LT(when, 0.5) << "not 2 s later, behind 20 000 lines of 0.1 ms";
+}
+
 // Until the device has been given `periods` periods after its starting buffer (at most 20 s: a loaded machine).
 void wait_for_periods(const FakeSoundCard& card, std::size_t periods) {
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);
