@@ -158,9 +158,10 @@ class PlayCommand : public Command {
   void print_end(const play::PlayReport& r, const play::AlsaOutput& output) const {
     const unsigned rate = output.rate();
     if (!output.clocked()) std::cerr << "note: the device keeps no time (an ALSA null or file plugin): haptex's clock paced it\n";
-    std::cout << text::format("played %.2f s (%zu frames, ended by %s): %llu underruns, %llu late periods, %llu clipped samples, "
+    std::cout << text::format("played %.2f s (%zu frames; %s): %llu underruns, %llu late periods, %llu clipped samples, "
                               "slowest frame %.2f ms of 10",
-                              double(r.samples_played) / rate, r.ticks, r.ended_by.c_str(), (unsigned long long)r.underruns,
+                              double(r.samples_played) / rate, r.ticks,
+                              r.ended_by == "interrupted" ? "stopped by a signal" : ("to the " + r.ended_by).c_str(), (unsigned long long)r.underruns,
                               (unsigned long long)r.late_periods, (unsigned long long)r.clipped_samples, r.slowest_tick_ms)
               << (record_.empty() ? "" : "; recorded " + text::printable(record_) + " and " + text::printable(actions_path(record_)))
               << "\n";

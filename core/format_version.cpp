@@ -35,21 +35,30 @@ Error newer_version_error(const std::string& file, const std::string& where, con
                      "Read it with the haptex that wrote it, or update this one");
 }
 
+namespace {
+
+// "1.2.3" as numbers; empty when it is not decimal digits between dots (review 11, F4: "v2.0.0",
+// "1.0.0 " and "1e9" are no haptex's version).
+std::vector<long> version_parts(std::string_view v) {
+  std::vector<long> out;
+  for (std::size_t at = 0;;) {
+    const std::size_t dot = v.find('.', at);
+    const std::string_view part = v.substr(at, dot == std::string_view::npos ? std::string_view::npos : dot - at);
+    long n = 0;
+    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), n);
+    if (part.empty() || part.find_first_not_of("0123456789") != std::string_view::npos || error != std::errc()) return {};
+    out.push_back(n);
+    if (dot == std::string_view::npos) return out;
+    at = dot + 1;
+  }
+}
+
+}  // namespace
+
+bool is_haptex_version(std::string_view version) { return !version_parts(version).empty(); }
+
 bool is_newer_haptex(std::string_view version) {
-  const auto parts = [](std::string_view v) {
-    std::vector<long> out;
-    while (!v.empty()) {
-      const std::size_t dot = v.find('.');
-      const std::string_view part = v.substr(0, dot);
-      long n = 0;
-      const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), n);
-      if (error != std::errc() || end != part.data() + part.size()) return std::vector<long>{};
-      out.push_back(n);
-      v = dot == std::string_view::npos ? std::string_view() : v.substr(dot + 1);
-    }
-    return out;
-  };
-  const std::vector<long> have = parts(version), ours = parts(kVersion);
+  const std::vector<long> have = version_parts(version), ours = version_parts(kVersion);
   return !have.empty() && !ours.empty() && have > ours;
 }
 
@@ -68,6 +77,8 @@ void require_replaceable_format(const std::string& path, const std::string& foun
   if (is_newer_haptex(written_by))
     throw input_error(path, "", "was written by haptex " + written_by + ", newer than this one (" + std::string(kVersion) +
                                     "); --force does not replace it", fix);
+  if (!written_by.empty() && !is_haptex_version(written_by))  // review 11, F4: "v2.0.0", "1e9" were replaced
+    throw input_error(path, "", "states haptex_version '" + written_by + "', which no haptex writes; --force does not replace it", fix);
 }
 
 }  // namespace haptex

@@ -20,10 +20,13 @@ bool is_newer_version(std::string_view found, std::string_view wanted);
 // throws haptex::Error (bad_input) naming path when `found` is missing, of another family ("is a
 // recordings/2 file"), or of a later version (written by a newer haptex).
 // `written_by`: the haptex version the file states (HDF5 `haptex_version`, JSON "haptex_version"; empty
-// when it states none); one newer than this haptex's is refused too, whatever its format (review 10, C5).
+// when it states none); one newer than this haptex's, or one no haptex writes, is refused too,
+// whatever its format (review 10, C5; review 11, F4).
 void require_replaceable_format(const std::string& path, const std::string& found, const std::string& wanted,
                                 const std::string& written_by = "");
 // True when `version` ("1.2.3") is later than this haptex's (kVersion); false when it is no such version.
 bool is_newer_haptex(std::string_view version);
+// Whether `version` is a version haptex writes: decimal numbers between dots ("0.1.0"), nothing else.
+bool is_haptex_version(std::string_view version);
 
 }  // namespace haptex

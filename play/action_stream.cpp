@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <vector>
@@ -16,30 +17,40 @@ namespace {
 
 constexpr std::size_t kLongestLine = 4096;  // a line of three numbers is far shorter; more is no action stream
 
+// Commas separate fields exactly ("1,,50" holds an empty one); a line without commas is split at runs
+// of spaces and tabs. Surrounding spaces, tabs and a CR are not part of a field.
 std::vector<std::string> fields_of(const std::string& line) {
   std::vector<std::string> out;
+  const bool commas = line.find(',') != std::string::npos;
   std::string field;
+  const auto finish = [&] {
+    const std::string_view trimmed = text::trim(field);
+    if (commas || !trimmed.empty()) out.emplace_back(trimmed);
+    field.clear();
+  };
   for (const char c : line) {
-    if (c == ',' || c == ' ' || c == '\t' || c == '\r') {
-      if (!field.empty()) out.push_back(field);
-      field.clear();
-    } else {
-      field += c;
-    }
+    if (commas ? c == ',' : (c == ' ' || c == '\t')) finish();
+    else field += c;
   }
-  if (!field.empty()) out.push_back(field);
+  finish();
+  if (out.size() == 1 && out[0].empty()) out.clear();
   return out;
+}
+
+// A header names columns: letters, digits and '_' ("t,force,speed", "force speed"), none a number.
+bool is_header(const std::vector<std::string>& fields) {
+  return !fields.empty() && std::all_of(fields.begin(), fields.end(), [](const std::string& f) {
+    return !f.empty() && !text::parse_number(f) &&
+           std::all_of(f.begin(), f.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+  });
 }
 
 }  // namespace
 
-std::optional<ActionLine> parse_action_line(const std::string& line, const std::string& source, std::size_t number) {
+std::optional<ActionLine> parse_action_line(const std::string& line, const std::string& source, std::size_t number, bool first) {
   const std::string where = "line " + std::to_string(number);
   const std::vector<std::string> fields = fields_of(line);
-  // A header such as "t,force,speed": a first line of which no field is a number.
-  if (number == 1 && !fields.empty() &&
-      std::none_of(fields.begin(), fields.end(), [](const std::string& f) { return text::parse_number(f).has_value(); }))
-    return std::nullopt;
+  if (first && is_header(fields)) return std::nullopt;
   if (fields.size() != 2 && fields.size() != 3)
     throw input_error(source, where, "holds " + std::to_string(fields.size()) + " fields",
                       "Give one action per line: force speed, or t,force,speed (N, mm/s)");
@@ -73,6 +84,17 @@ void ActionStream::read_lines() {
     ended_ = true;
     arrived_.notify_all();
   };
+  bool seen_content = false;  // a header may be the first line that is not blank
+  const auto take = [&](const std::string& text, Clock::time_point now) {
+    if (text.find_first_not_of(" \t\r") == std::string::npos) return;  // a blank line carries no action
+    const std::optional<ActionLine> line = parse_action_line(text, source_, number, !seen_content);
+    seen_content = true;
+    if (!line) return;
+    std::lock_guard lock(mutex_);
+    lines_.push_back(*line);
+    lines_.back().arrived = now;
+    arrived_.notify_all();
+  };
   try {
     while (!closing_) {
       pollfd p{fd_, POLLIN, 0};
@@ -85,25 +107,14 @@ void ActionStream::read_lines() {
       if (n < 0) throw failure(source_ + ": cannot read it: " + std::strerror(errno));
       const Clock::time_point now = Clock::now();
       if (n == 0) {
-        if (!pending.empty()) {
-          if (auto line = parse_action_line(pending, source_, ++number)) {
-            line->arrived = now;
-            std::lock_guard lock(mutex_);
-            lines_.push_back(*line);
-          }
-        }
+        ++number;
+        take(pending, now);
         break;
       }
       pending.append(chunk, std::size_t(n));
       for (std::size_t end; (end = pending.find('\n')) != std::string::npos; pending.erase(0, end + 1)) {
         ++number;
-        if (end == 0 || (end == 1 && pending[0] == '\r')) continue;  // a blank line carries no action
-        if (auto line = parse_action_line(pending.substr(0, end), source_, number)) {
-          line->arrived = now;
-          std::lock_guard lock(mutex_);
-          lines_.push_back(*line);
-          arrived_.notify_all();
-        }
+        take(pending.substr(0, end), now);
       }
       if (pending.size() > kLongestLine)
         throw input_error(source_, "line " + std::to_string(number + 1), "is longer than " + std::to_string(kLongestLine) + " bytes",

@@ -1,8 +1,8 @@
 #pragma once
 // Actions from a live source: lines of `force speed` (or `t,force,speed`, or with commas) on a file
 // descriptor, standard input for `haptex play --actions -`, so that any device driver can pipe into
-// it. Each line is the action from the moment it arrives (a t column is checked but not used for
-// timing: a live stream's time is when it comes). A first line with letters is a header and skipped.
+// it. Each line is the action from the moment it arrives (a t column must be a number but is not used
+// for timing: a live stream's time is when it comes). A first line naming columns is a header.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -22,10 +22,12 @@ struct ActionLine {
   float force = 0, speed = 0;  // N, mm/s
 };
 
-// One line's action, or nullopt for a header; throws haptex::Error (bad_input) naming `source` and the
-// line: not two or three numbers, a value that is not finite or beyond a 32-bit float, a negative
-// force or speed.
-std::optional<ActionLine> parse_action_line(const std::string& line, const std::string& source, std::size_t number);
+// One line's action, or nullopt for a header (`first`: the first line that is not blank; a header
+// names columns with letters, digits and '_'); throws haptex::Error (bad_input) naming `source` and
+// line `number`: not two or three fields (commas separate them exactly, else spaces), a value that is
+// not finite or beyond a 32-bit float, a negative force or speed. A `t` field must be a number; it is
+// not used for timing.
+std::optional<ActionLine> parse_action_line(const std::string& line, const std::string& source, std::size_t number, bool first);
 
 class ActionStream {
  public:

@@ -17,6 +17,7 @@
 #include "dataset/window.hpp"
 #include "page/html_page.hpp"
 #include "page/media.hpp"
+#include "qa/integrity.hpp"
 #include "render/wav_writer.hpp"
 
 namespace haptex::view {
@@ -142,6 +143,9 @@ std::string material_html(const h5::Group& root, const Windows& w, std::size_t m
 std::string dataset_page(const std::string& dataset_path, const std::optional<split::DatasetSplit>& split) {
   const h5::File file = dataset::open_checked(dataset_path, dataset::Kind::dataset);
   const h5::Group root = file.root();
+  // Read as strictly as merge and align read their inputs (review 11, F3: a recording of 7 samples
+  // where its group states 30 000 was shown, which qa fails).
+  qa::require_integrity(root, dataset::Kind::dataset);
   const Windows w = read_windows(root);
   std::string body = "<h1>" + text::html_escaped(text::printable(dataset_path)) + "</h1><p>" +
                      text::format("%zu materials, %zu windows", w.materials.size(), w.material.size()) +

@@ -349,6 +349,21 @@ TEST(BadValues, AMaterialNameTooLongForAFileNameIsRefusedWhereItComesIn) {
   EXPECT_FALSE(fs::exists(d.file("split.json")));
 }
 
+// Review 11, F3: haptex view showed a dataset whose recording holds 7 samples where 30 000 are
+// stated, which qa fails. It reads as strictly as merge and align.
+TEST(BadValues, ViewRefusesADatasetQaFails) {
+  const TempDir d;
+  const std::string dataset = d.file("d.h5");
+  fs::copy_file(small_pipeline().dataset, dataset);
+  {
+    Edit e(dataset);
+    const std::string accel = "materials/" + material_ids(dataset).front() + "/recordings/0/accel";
+    e.replace<float>(accel, std::vector<float>(7, 0.5f), {7});
+  }
+  expect_refusal(run_haptex({"view", dataset, "-o", d.file("site")}), {dataset, "layout.shape"});
+  EXPECT_FALSE(fs::exists(d.file("site")));
+}
+
 // Review 6, #9: an AVI whose headers state no frame rate was replayed at FFmpeg's guess of 25 fps,
 // and extraction stored that guess as the source's rate.
 TEST(BadValues, AnAviThatStatesNoFrameRateIsNotGivenOne) {

@@ -542,7 +542,7 @@ TEST(Force, AFileANewerHaptexWroteIsNotReplaced) {
   const std::string windows = d.file("w.h5"), split = d.file("s.json");
   ASSERT_EQ(run_haptex({"windows", p.dataset, "--split", p.split, "-o", windows}).exit_code, 0);
   ASSERT_EQ(run_haptex({"split", p.dataset, "-o", split, "--no-plots"}).exit_code, 0);
-  for (const std::string version : {"99.0.0", "0.0.1"}) {
+  for (const std::string version : {"99.0.0", "v2.0.0", "1e9", "1.0.0 ", "0.0.1"}) {
     SCOPED_TRACE(version);
     Edit(windows).root().set_attr("haptex_version", version);
     nlohmann::json manifest = read_json(split);
@@ -553,6 +553,9 @@ TEST(Force, AFileANewerHaptexWroteIsNotReplaced) {
     if (version == "99.0.0") {
       expect_refusal(w, {windows, "was written by haptex 99.0.0, newer than this one"});
       expect_refusal(s, {split, "was written by haptex 99.0.0, newer than this one"});
+    } else if (version != "0.0.1") {  // review 11, F4: versions no haptex writes were replaced
+      expect_refusal(w, {windows, "which no haptex writes"});
+      expect_refusal(s, {split, "which no haptex writes"});
     } else {
       EXPECT_EQ(w.exit_code, 0) << w.err;
       EXPECT_EQ(s.exit_code, 0) << s.err;

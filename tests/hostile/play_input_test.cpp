@@ -41,6 +41,9 @@ TEST(HostilePlay, BadLinesOnStandardInputAreRefusedWithTheirLine) {
       {"1 2\n\n3 x\n", "line 3: 'x' is not a number"},
       {std::string(5000, '1'), "line 1: is longer than 4096 bytes"},
       {"1\n", "line 1: holds 1 fields"},
+      // Review 11, C1: an empty field between commas was skipped; a first line of junk was a header.
+      {"1,,50\n", "line 1: '' is not a number"},
+      {"\x01\x02 \x03\n1 50\n", "line 1: '\\x01\\x02' is not a number"},
       {"force speed\n", "ended before its first action"},
       {"", "ended before its first action"}};
   for (const auto& [input, message] : streams) {
@@ -48,6 +51,15 @@ TEST(HostilePlay, BadLinesOnStandardInputAreRefusedWithTheirLine) {
     { std::ofstream(d.file("in.txt"), std::ios::binary) << input; }
     expect_refusal(run_haptex_fed(play({"--actions", "-"}), d.file("in.txt")), {"standard input: " + message});
   }
+}
+
+// The first line that is not blank may name the columns.
+TEST(HostilePlay, AHeaderAfterBlankLinesIsAHeader) {
+  const FakeSoundCard card;
+  const TempDir d;
+  std::ofstream(d.file("in.txt")) << "\n \nforce speed\n1 50\n";
+  const CommandResult r = run_haptex_fed(play({"--actions", "-"}), d.file("in.txt"));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 
 TEST(HostilePlay, ActionsComeOnlyFromStandardInput) {
