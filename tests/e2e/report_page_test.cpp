@@ -1,8 +1,8 @@
 // The pages a user opens (issue 34): evaluate's report.html, where every table and chart of report.md is
 // on the page, every material has its three players and the embedded WAVs read back (Python's wave
 // module) at 48 kHz; and haptex view's dataset page. A real browser (headless Chromium, where
-// installed) loads every image and every audio element of each; screenshots are kept in the build
-// folder (report_page.png, dataset_page.png).
+// installed) loads every image and every audio element of each; screenshots are kept beside the
+// build's binary (build/report_page.png, build/dataset_page.png).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -48,6 +48,9 @@ const std::string& report_folder() {
 
 std::size_t materials() { return json::read_file(small_pipeline().split)["materials"].size(); }
 
+// Screenshots go beside the build's binary (build/), wherever the tests run from.
+std::string screenshot(const std::string& name) { return (fs::path(HAPTEX_BINARY).parent_path() / name).string(); }
+
 TEST(ReportPage, HoldsEveryTableChartAndMaterialOfTheMarkdown) {
   const std::string md = text_of(report_folder() + "/report.md"), html = text_of(report_folder() + "/report.html");
   ASSERT_FALSE(html.empty());
@@ -80,15 +83,15 @@ TEST(ReportPage, ItsWavsAre48kHzClipsOfTheFirstTestSection) {
 
 TEST(ReportPage, ABrowserLoadsEveryImageAndPlayer) {
   if (!browser_installed()) GTEST_SKIP() << "chromium is not installed (make deps installs it): the page was checked, not opened";
-  const std::string screenshot = (fs::current_path() / "report_page.png").string();
-  const nlohmann::json check = browser_load_check(report_folder() + "/report.html", screenshot);
+  const std::string shot = screenshot("report_page.png");
+  const nlohmann::json check = browser_load_check(report_folder() + "/report.html", shot);
   ASSERT_FALSE(check.is_null()) << "the page's load check did not finish";
   EXPECT_EQ(check["image_errors"].size(), 0u) << check.dump();
   EXPECT_EQ(check["audio_errors"].size(), 0u) << check.dump();
   EXPECT_EQ(check["audio"].size(), 3 * materials());
   for (const nlohmann::json& a : check["audio"]) EXPECT_GT(double(a["seconds"]), 0.01) << a.dump();
   EXPECT_EQ(std::size_t(check["images"]), count(text_of(report_folder() + "/report.html"), "<img "));
-  EXPECT_TRUE(fs::exists(screenshot));
+  EXPECT_TRUE(fs::exists(shot));
 }
 
 // haptex view: the dataset's page, before any model.
@@ -111,7 +114,7 @@ TEST(DatasetPage, ShowsEveryMaterialsPressesCoverageSpectrumAndRecordings) {
   EXPECT_EQ(run_haptex({"view", p.dataset, "-o", dir.file("site")}).exit_code, 2);
   EXPECT_EQ(run_haptex({"view", p.dataset, "-o", dir.file("site"), "--force"}).exit_code, 0);
   if (!browser_installed()) GTEST_SKIP() << "chromium is not installed (make deps installs it): the page was checked, not opened";
-  const nlohmann::json check = browser_load_check(dir.file("site/index.html"), (fs::current_path() / "dataset_page.png").string());
+  const nlohmann::json check = browser_load_check(dir.file("site/index.html"), screenshot("dataset_page.png"));
   ASSERT_FALSE(check.is_null()) << "the page's load check did not finish";
   EXPECT_EQ(check["image_errors"].size(), 0u) << check.dump();
   EXPECT_EQ(check["audio_errors"].size(), 0u) << check.dump();
