@@ -52,7 +52,7 @@ std::optional<ActionLine> parse_action_line(const std::string& line, const std::
   const std::vector<std::string> fields = fields_of(line);
   if (first && is_header(fields)) return std::nullopt;
   if (fields.size() != 2 && fields.size() != 3)
-    throw input_error(source, where, "holds " + std::to_string(fields.size()) + " fields",
+    throw input_error(source, where, "holds " + std::to_string(fields.size()) + (fields.size() == 1 ? " field" : " fields"),
                       "Give one action per line: force speed, or t,force,speed (N, mm/s)");
   std::vector<double> values;
   for (const std::string& field : fields) {

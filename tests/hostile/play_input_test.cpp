@@ -40,7 +40,7 @@ TEST(HostilePlay, BadLinesOnStandardInputAreRefusedWithTheirLine) {
       {"1 \xff\xfe\n", "line 1: '\\xff\\xfe' is not a number"},
       {"1 2\n\n3 x\n", "line 3: 'x' is not a number"},
       {std::string(5000, '1'), "line 1: is longer than 4096 bytes"},
-      {"1\n", "line 1: holds 1 fields"},
+      {"1\n", "line 1: holds 1 field."},
       // Review 11, C1: an empty field between commas was skipped; a first line of junk was a header.
       {"1,,50\n", "line 1: '' is not a number"},
       {"\x01\x02 \x03\n1 50\n", "line 1: '\\x01\\x02' is not a number"},
