@@ -362,19 +362,17 @@ MaterialRun run_material(std::size_t m, const MaterialSignals& signals, const Co
       std::vector<double> signal;
       run.methods[key].add(stitched_scores(stitched_spectra, grid, truth, ref.noise, stitched_predict_seconds, key,
                                            derive_seed(c.options.seed, 7, m, s), &signal));
-      if (s == 0 && c.stitched_key == key) {
-        const std::size_t j = grid.size() / 2;
-        run.clip = {signals.id, signals.name, head(section.accel, grid[0], kClipSamples), head(signal, 0, kClipSamples),
-                    head(first_render, grid[0], kClipSamples), truth[j], stitched_spectra[j], first_render_spectra[j], {}};
-      }
-      if (keep_example && s == 0 && c.stitched_key == key) {
-        const std::size_t j = grid.size() / 2;
-        run.example = {signals.id, signals.name, truth[j], stitched_spectra[j], first_render_spectra[j],
-                       head(section.accel, grid[0]), head(signal, 0), head(first_render, grid[0]), {}, {}};
-        for (const ExternalPredictions& p : c.external) {
-          run.example.external_spectra.push_back({p.name, p.spectra[section_row + j]});
-          if (!p.signals.empty()) run.example.external_signals.push_back({p.name, head(p.signals[section_index], 0)});
-        }
+      if (s != 0 || c.stitched_key != key) continue;
+      // The first test section's middle window: report.html's clip of every material, Fig. 5's example of some.
+      const std::size_t j = grid.size() / 2;
+      run.clip = {signals.id, signals.name, head(section.accel, grid[0], kClipSamples), head(signal, 0, kClipSamples),
+                  head(first_render, grid[0], kClipSamples), truth[j], stitched_spectra[j], first_render_spectra[j], {}};
+      if (!keep_example) continue;
+      run.example = {signals.id, signals.name, truth[j], stitched_spectra[j], first_render_spectra[j],
+                     head(section.accel, grid[0]), head(signal, 0), head(first_render, grid[0]), {}, {}};
+      for (const ExternalPredictions& p : c.external) {
+        run.example.external_spectra.push_back({p.name, p.spectra[section_row + j]});
+        if (!p.signals.empty()) run.example.external_signals.push_back({p.name, head(p.signals[section_index], 0)});
       }
     }
   }

@@ -52,10 +52,10 @@ void collect(hid_t group, const std::string& path, const std::string& file, Copi
       reference_faults(child.get(), false, member, file, report);
       collect(child.get(), member, file, seen, report);
     } else if (info.type == H5O_TYPE_DATASET) {
-      Handle dataset(check_input(H5Dopen2(group, name.c_str(), H5P_DEFAULT), "open " + member, file));
-      if (std::optional<LinkFault> fault = stored_outside(dataset.get(), member, file)) report.faults.emplace_back(member, *fault);
-      if (std::optional<LinkFault> fault = unreadable_size(dataset.get(), member, file)) report.faults.emplace_back(member, *fault);
-      reference_faults(dataset.get(), true, member, file, report);
+      const Dataset dataset(Handle(check_input(H5Dopen2(group, name.c_str(), H5P_DEFAULT), "open " + member, file)), file, member);
+      if (std::optional<LinkFault> fault = stored_outside(dataset.id(), member, file)) report.faults.emplace_back(member, *fault);
+      if (std::optional<LinkFault> fault = unreadable_size(dataset)) report.faults.emplace_back(member, *fault);
+      reference_faults(dataset.id(), true, member, file, report);
     } else {
       report.faults.emplace_back(member, neither_group_nor_dataset());
     }
@@ -112,11 +112,9 @@ LinkFault neither_group_nor_dataset() {
           "Remove it, or make the file again with the haptex command that wrote it"};
 }
 
-std::optional<LinkFault> unreadable_size(hid_t dataset, const std::string& path, const std::string& file) {
-  Handle copy(check_input(H5Dopen2(dataset, ".", H5P_DEFAULT), "open " + path, file));
-  const Dataset d(std::move(copy), file, path);
-  std::string problem = d.size_problem();
-  if (problem.empty()) problem = d.chunk_problem();
+std::optional<LinkFault> unreadable_size(const Dataset& dataset) {
+  std::string problem = dataset.size_problem();
+  if (problem.empty()) problem = dataset.chunk_problem();
   if (problem.empty()) return std::nullopt;
   return LinkFault{problem, "The file is damaged or not what haptex wrote: remove the dataset, or make the file again with the haptex command "
                             "that wrote it"};

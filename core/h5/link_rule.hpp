@@ -42,10 +42,10 @@ std::optional<LinkFault> follow_link(hid_t parent, const std::string& name, cons
 // An object that is neither a group nor a dataset (a named datatype): no haptex file holds one.
 LinkFault neither_group_nor_dataset();
 
-// When the open dataset `dataset` (at `path`) declares more than haptex reads at once, or chunks that
-// would inflate far more than it holds (h5::Dataset::size_problem, chunk_problem), what is wrong
-// (review 10: qa called clean a file with a never-written 4 TiB dataset that merge refused).
-std::optional<LinkFault> unreadable_size(hid_t dataset, const std::string& path, const std::string& file);
+// When `dataset` declares more than haptex reads at once, or chunks that would inflate far more than
+// it holds (Dataset::size_problem, chunk_problem), what is wrong (review 10: qa called clean a file
+// with a never-written 4 TiB dataset that merge refused).
+std::optional<LinkFault> unreadable_size(const Dataset& dataset);
 
 // When values of HDF5 type `type` hold object references (links in all but name), what is wrong with them.
 std::optional<LinkFault> holds_references(hid_t type);

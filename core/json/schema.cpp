@@ -140,8 +140,8 @@ nlohmann::json read_file(const std::string& path) {
 
 namespace {
 
-// The top-level "format" of the JSON file at path; empty when it is not one (or over 64 MiB).
-// A JSON file's top-level "format" and "haptex_version" strings (empty where it has none, or is no JSON).
+// A JSON file's top-level "format" and "haptex_version" strings (empty where it has none, is no JSON,
+// or is over 64 MiB).
 std::pair<std::string, std::string> format_of_file(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kLargestJsonBytes || ec) return {};
