@@ -7,13 +7,13 @@
 #include "core/text/base64.hpp"
 #include "core/text/format.hpp"
 #include "core/text/markdown_html.hpp"
+#include "dataset/window.hpp"
 #include "render/wav_writer.hpp"
 
 namespace haptex::page {
 namespace {
 
 constexpr int kPageRate = 48000;  // every browser plays it
-constexpr int kSignalRate = 10000;
 
 }  // namespace
 
@@ -22,7 +22,7 @@ std::string png_source(std::span<const std::uint8_t> png) {
 }
 
 std::string wav_source(std::span<const double> signal_m_s2, double full_scale_m_s2, const std::string& title) {
-  const std::vector<double> resampled = signal::resample_poly(signal_m_s2, kPageRate, kSignalRate);
+  const std::vector<double> resampled = signal::resample_poly(signal_m_s2, kPageRate, int(dataset::kSampleRateHz));
   std::vector<std::int16_t> pcm(resampled.size());
   for (std::size_t i = 0; i < pcm.size(); ++i)
     pcm[i] = std::int16_t(std::lrint(std::clamp(resampled[i] / full_scale_m_s2, -1.0, 1.0) * 32767));

@@ -9,6 +9,7 @@
 #include "core/text/format.hpp"
 #include "core/text/markdown_html.hpp"
 #include "core/text/utf8.hpp"
+#include "dataset/window.hpp"
 #include "page/html_page.hpp"
 #include "page/media.hpp"
 #include "render/wav_writer.hpp"
@@ -50,7 +51,7 @@ std::string material_section(const MaterialClip& c) {
   }
   s += "</tbody></table></div><p>" +
        text::format("%.2f s from the start of the first test section, 48 kHz, 16 bits; full scale %.3g m/s^2 (the loudest of the three)",
-                    double(c.recorded.size()) / 10000.0, full_scale) +
+                    double(c.recorded.size()) / dataset::kSampleRateHz, full_scale) +
        ".</p></section>\n";
   return s;
 }
