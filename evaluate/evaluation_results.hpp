@@ -113,17 +113,20 @@ struct Example {
   std::vector<NamedSeries> external_spectra, external_signals;
 };
 
-// What report.html plays and shows of a material (docs/evaluate.md, "report.html"): the start of its
-// first test section (up to kClipSamples) as recorded, as the stitched model signal and as the AR
-// baseline rendered it (10 kHz), the three spectra of its middle window, and its first test press's
-// peak image (PNG, at most kClipImageWidth pixels wide; empty where it has none).
-inline constexpr std::size_t kClipSamples = 30000;  // 3 s
+// What report.html plays and shows of a material (docs/evaluate.md, "report.html"): its test sections
+// in order, joined by kClipFadeSamples cross-fades, up to kClipSamples, as recorded, as the stitched
+// model signal and as the AR baseline rendered it (10 kHz); the three spectra of the first section's
+// middle window; and its first test press's peak image (PNG, at most kClipImageWidth pixels wide;
+// empty where it has none).
+inline constexpr std::size_t kClipSamples = 30000;     // 3 s
+inline constexpr std::size_t kClipFadeSamples = 50;    // 5 ms
 inline constexpr int kClipImageWidth = 320;
 struct MaterialClip {
   std::string id, name;
   std::vector<double> recorded, model, baseline;
   std::vector<double> recorded_spectrum, model_spectrum, baseline_spectrum;
   std::vector<std::uint8_t> press_png;
+  std::size_t sections = 0;  // test sections the clips join
 };
 
 // The texture map: 2-D PCA of the unified model's latents.

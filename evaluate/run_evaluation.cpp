@@ -8,6 +8,7 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <span>
 
 #include <Eigen/SVD>
 #include <opencv2/imgproc.hpp>
@@ -16,6 +17,7 @@
 #include "core/parallel.hpp"
 #include "core/random_seeds.hpp"
 #include "core/sha256.hpp"
+#include "core/signal/crossfade.hpp"
 #include "core/thread_clock.hpp"
 #include "dataset/format.hpp"
 #include "dataset/press_images.hpp"
@@ -213,6 +215,18 @@ std::vector<double> head(const std::vector<double>& v, std::size_t from, std::si
   return from < end ? std::vector<double>(v.begin() + std::ptrdiff_t(from), v.begin() + std::ptrdiff_t(end)) : std::vector<double>{};
 }
 
+// report.html's clip runs on over a material's test sections, in order, up to kClipSamples; the three
+// signals take the same length from each section, so they stay aligned.
+void extend_clip(MaterialClip& clip, const std::vector<double>& recorded, const std::vector<double>& model,
+                 const std::vector<double>& baseline) {
+  const std::size_t overlap = std::min(kClipFadeSamples, clip.recorded.size());
+  if (clip.recorded.size() >= kClipSamples) return;
+  const std::size_t n = std::min({recorded.size(), model.size(), baseline.size(), kClipSamples - clip.recorded.size() + overlap});
+  for (const auto& [to, from] : {std::pair{&clip.recorded, &recorded}, {&clip.model, &model}, {&clip.baseline, &baseline}})
+    signal::append_crossfaded(*to, std::span(*from).first(n), kClipFadeSamples);
+  clip.sections += n > overlap;
+}
+
 struct Context {
   const std::vector<ModelInput>& models;
   const std::vector<ExternalPredictions>& external;
@@ -362,11 +376,14 @@ MaterialRun run_material(std::size_t m, const MaterialSignals& signals, const Co
       std::vector<double> signal;
       run.methods[key].add(stitched_scores(stitched_spectra, grid, truth, ref.noise, stitched_predict_seconds, key,
                                            derive_seed(c.options.seed, 7, m, s), &signal));
-      if (s != 0 || c.stitched_key != key) continue;
-      // The first test section's middle window: report.html's clip of every material, Fig. 5's example of some.
+      if (c.stitched_key != key) continue;
+      const bool first = run.clip.id.empty();
+      extend_clip(run.clip, head(section.accel, grid[0], kClipSamples), signal, head(first_render, grid[0], kClipSamples));
+      if (!first) continue;
+      // The first test section's middle window: report.html's spectra of every material, Fig. 5's example of some.
       const std::size_t j = grid.size() / 2;
-      run.clip = {signals.id, signals.name, head(section.accel, grid[0], kClipSamples), head(signal, 0, kClipSamples),
-                  head(first_render, grid[0], kClipSamples), truth[j], stitched_spectra[j], first_render_spectra[j], {}};
+      run.clip.id = signals.id, run.clip.name = signals.name;
+      run.clip.recorded_spectrum = truth[j], run.clip.model_spectrum = stitched_spectra[j], run.clip.baseline_spectrum = first_render_spectra[j];
       if (!keep_example) continue;
       run.example = {signals.id, signals.name, truth[j], stitched_spectra[j], first_render_spectra[j],
                      head(section.accel, grid[0]), head(signal, 0), head(first_render, grid[0]), {}, {}};

@@ -50,8 +50,10 @@ std::string material_section(const MaterialClip& c) {
     s += "<tr><td>" + std::string(label) + "</td><td>" + page::audio_player(*clip, full_scale, title) + "</td></tr>";
   }
   s += "</tbody></table></div><p>" +
-       text::format("%.2f s from the start of the first test section, 48 kHz, 16 bits; full scale %.3g m/s^2 (the loudest of the three)",
-                    double(c.recorded.size()) / dataset::kSampleRateHz, full_scale) +
+       text::format("%.2f s: %zu test section%s in order, joined by %.0f ms cross-fades; 48 kHz, 16 bits; full scale %.3g m/s^2 "
+                    "(the loudest of the three)",
+                    double(c.recorded.size()) / dataset::kSampleRateHz, c.sections, c.sections == 1 ? "" : "s",
+                    1000.0 * double(kClipFadeSamples) / dataset::kSampleRateHz, full_scale) +
        ".</p></section>\n";
   return s;
 }
@@ -63,8 +65,8 @@ std::string report_html(const Evaluation& e, const std::string& markdown, const 
   if (!e.clips.empty()) body += "<p><a href=\"#listen\">Listen to every material</a>: recorded, model and baseline.</p>\n";
   body += text::markdown_html(markdown, [&](const std::string& file) { return embedded_png(folder, file); });
   if (!e.clips.empty()) {
-    body += "<h2 id=\"listen\">Listen</h2>\n<p>Per material, the start of its first test section as recorded, as the model's stitched "
-            "signal and as the AR baseline rendered it. The three clips of a material share one full scale; each material has its own, "
+    body += "<h2 id=\"listen\">Listen</h2>\n<p>Per material, its test sections one after another (up to 3 s) as recorded, as the model's "
+            "stitched signal and as the AR baseline rendered it. The three clips of a material share one full scale; each material has its own, "
             "so quiet ones are audible. Over a voice-coil actuator on a sound card they are felt as well as heard.</p>\n";
     for (const MaterialClip& c : e.clips) body += material_section(c);
   }

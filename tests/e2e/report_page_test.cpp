@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 
 #include "core/json/schema.hpp"
@@ -66,7 +67,7 @@ TEST(ReportPage, HoldsEveryTableChartAndMaterialOfTheMarkdown) {
   EXPECT_NE(listed.dump().find("report.html"), std::string::npos) << "--force may replace it with the report";
 }
 
-TEST(ReportPage, ItsWavsAre48kHzClipsOfTheFirstTestSection) {
+TEST(ReportPage, ItsWavsAre48kHzClipsOfTheTestSectionsInOrder) {
   if (!python_has("json")) GTEST_SKIP() << "python3 is missing";
   const CommandResult r = run_python({std::string(HAPTEX_SCHEMA_DIR) + "/../tests/e2e/report_page_test.py", report_folder() + "/report.html"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -79,6 +80,19 @@ TEST(ReportPage, ItsWavsAre48kHzClipsOfTheFirstTestSection) {
     EXPECT_EQ(p["channels"], 1);
     EXPECT_GT(p["frames"], 480) << "more than 10 ms";
   }
+  // Each material's caption says how long its clips are and how many test sections they join; its
+  // three players (recorded, model, baseline) are that long.
+  const std::string html = text_of(report_folder() + "/report.html");
+  const std::regex caption(R"((\d+\.\d\d) s: (\d+) test sections?)");
+  std::size_t material = 0, joined = 0;
+  for (auto m = std::sregex_iterator(html.begin(), html.end(), caption); m != std::sregex_iterator(); ++m, ++material) {
+    ASSERT_LT(material, materials());
+    const double seconds = std::stod((*m)[1]);
+    joined += std::stoul((*m)[2]) > 1;
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(players[3 * material + k]["frames"].get<double>(), seconds * 48000, 240) << (*m)[0];
+  }
+  EXPECT_EQ(material, materials());
+  EXPECT_GT(joined, 0u) << "the small pipeline has materials with several test sections; their clips run on over them";
 }
 
 TEST(ReportPage, ABrowserLoadsEveryImageAndPlayer) {
