@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -26,6 +27,7 @@
 #include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
+#include "tests/support/sound_server.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "tests/support/wav_file.hpp"
 
@@ -271,6 +273,35 @@ TEST(PlayCli, ADeviceThatDoesNotExistIsNamed) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("no_such_card"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--device"), std::string::npos) << r.err;
+}
+
+// `--device default` on a machine whose default device is a sound server (PulseAudio here, as on a
+// desktop) with a sink that keeps time, as a card does: the player is paced by the device, takes as
+// long as what it plays, and the sink plays every sample --record kept, in order, none lost or changed.
+TEST(PlayOnSoundServer, DefaultPlaysEverySampleAtTheDevicesPace) {
+  SoundServer server;
+  if (!server.missing().empty()) GTEST_SKIP() << server.missing();
+  const TempDir dir;
+  const auto start = std::chrono::steady_clock::now();
+  const CommandResult r = run_haptex({"--json", "play", quick_model(false), "--material", material(), "--trajectory", write_stroke(dir),
+                                      "--device", "default", "--buffer-ms", "100", "--full-scale", "20", "--record", dir.file("played.wav")});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  EXPECT_EQ(report["clock"], "device");
+  const std::vector<std::int16_t> played = wav_samples(dir.file("played.wav"));
+  EXPECT_GE(seconds, 0.95 * double(played.size()) / 48000) << "paced by the device: as long as what it played";
+  const std::vector<std::int16_t> heard = server.stop_and_take();
+  // The sink's recording starts before the player and ends after it: silence, the buffer's silence,
+  // then every played sample.
+  const std::size_t sound = std::size_t(std::find_if(played.begin(), played.end(), [](std::int16_t x) { return x != 0; }) - played.begin());
+  const auto first = std::find_if(heard.begin(), heard.end(), [](std::int16_t x) { return x != 0; });
+  ASSERT_LT(sound, played.size());
+  ASSERT_NE(first, heard.end()) << "the sink played nothing";
+  const std::size_t from = std::size_t(first - heard.begin());
+  ASSERT_GE(heard.size() - from, played.size() - sound) << "samples are missing at the end";
+  EXPECT_TRUE(std::equal(played.begin() + std::ptrdiff_t(sound), played.end(), first)) << "the sink played other samples than --record kept";
+  EXPECT_EQ(report["underruns"], 0) << "with a 100 ms buffer";
 }
 
 }  // namespace
