@@ -13,7 +13,7 @@ BENCH_PACKAGES := python3-opencv python3-torch python3-torchaudio hyperfine
 HAPTEX     := $(BUILD)/haptex
 DEMO       := $(BUILD)/demo
 
-.PHONY: all deps build test demo bench golden clean
+.PHONY: all deps build test demo bench golden install clean
 
 all: build
 
@@ -49,6 +49,11 @@ demo: build
 	$(HAPTEX) evaluate $(DEMO)/dataset.h5 --split $(DEMO)/split.json --model $(DEMO)/model.h5 --model $(DEMO)/per_material.h5 \
 	  --truth $(DEMO)/synth/truth.h5 -o $(DEMO)/report
 	@echo "make demo: done; open $(DEMO)/report/report.html to read and listen (the same as text: $(DEMO)/report/report.md)"
+
+# The binary, the modules' headers and static libraries, the CMake package and haptex.pc (docs/library.md).
+PREFIX ?= /usr/local
+install: build
+	cmake --install $(BUILD) --prefix $(PREFIX)
 
 bench:
 	$(MAKE) deps EXTRA_PACKAGES="$(BENCH_PACKAGES)"
