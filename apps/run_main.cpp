@@ -1,8 +1,12 @@
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
 
 #include "apps/command.hpp"
 #include "apps/number_checks.hpp"
@@ -84,24 +88,66 @@ int with_stdout_written(const std::string& command, int code) {
   return 1;
 }
 
-// Prints the exception being handled as an error of `command` and returns the exit code it means.
-int reported_error(const std::string& command, int argc, char** argv) {
+// An error as a command reports it: on stderr, and with --json also on stdout as
+// {"error": {"command", "message", "file", "where", "fix", "exit_code"}} (docs/architecture.md,
+// "Command line"), so a script reading stdout never parses an empty or half answer.
+struct Reported {
+  std::string message;
+  int exit_code = 1;
+  std::string file, where, fix;  // what the message names, where it names them
+};
+
+int report(const std::string& command, const Reported& r, bool json) {
+  std::cerr << "haptex" << (command.empty() ? "" : " " + command) << ": " << r.message << "\n";
+  if (json) {
+    const auto text_or_null = [](const std::string& s) { return s.empty() ? nlohmann::json() : nlohmann::json(text::printable(s)); };
+    const nlohmann::json error = {{"command", command}, {"message", r.message}, {"file", text_or_null(r.file)},
+                                  {"where", text_or_null(r.where)}, {"fix", text_or_null(r.fix)}, {"exit_code", r.exit_code}};
+    std::cout << nlohmann::json{{"error", error}}.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  }
+  return r.exit_code;
+}
+
+// Reports the exception being handled as an error of `command` and returns the exit code it means.
+int reported_error(const std::string& command, int argc, char** argv, bool json) {
   try {
     throw;
   } catch (const Error& e) {
-    std::cerr << "haptex " << command << ": error: " << shown_message(e.what(), argc, argv) << "\n";
-    return e.kind() == Error::Kind::bad_input ? 2 : 1;
+    return report(command, {"error: " + shown_message(e.what(), argc, argv), e.kind() == Error::Kind::bad_input ? 2 : 1, e.file(), e.where(), e.fix()},
+                  json);
   } catch (const std::filesystem::filesystem_error& e) {
-    std::cerr << "haptex " << command << ": error: " << text::printable(e.path1().string()) << ": " << e.code().message()
-              << ". Check the path and its permissions\n";
-    return 2;
+    return report(command, {"error: " + text::printable(e.path1().string()) + ": " + e.code().message() + ". Check the path and its permissions", 2,
+                            e.path1().string(), "", "Check the path and its permissions"},
+                  json);
   } catch (const std::bad_alloc&) {
-    std::cerr << "haptex " << command << ": error: out of memory. Give smaller inputs, or run it on a machine with more memory\n";
-    return 1;
+    return report(command, {"error: out of memory. Give smaller inputs, or run it on a machine with more memory", 1, "", "",
+                            "Give smaller inputs, or run it on a machine with more memory"},
+                  json);
   } catch (const std::exception& e) {
-    std::cerr << "haptex " << command << ": unexpected error: " << shown_message(e.what(), argc, argv) << "\n";
-    return 1;
+    return report(command, {"unexpected error: " + shown_message(e.what(), argc, argv), 1, "", "", ""}, json);
   }
+}
+
+// The subcommand (with its part, "capture extract") that a parse error belongs to; "" before one.
+std::string parsed_command(const CLI::App& app) {
+  std::string name;
+  for (const CLI::App* sub = &app; !sub->get_subcommands().empty();) {
+    sub = sub->get_subcommands().front();
+    name += (name.empty() ? "" : " ") + sub->get_name();
+  }
+  return name;
+}
+
+// Every subcommand's help ends with the flags all of them take, which CLI11 lists only in haptex --help.
+constexpr const char* kGlobalFlagsHelp =
+    "Flags of every command (before or after its name):\n"
+    "  --json        Machine-readable result on stdout; an error is {\"error\": {\"message\", \"file\", \"exit_code\", ...}}\n"
+    "  -q,--quiet    Print only errors\n"
+    "  -v,--verbose  Print more detail on stderr (repeatable)";
+
+void with_global_flags_help(CLI::App& app) {
+  app.footer(kGlobalFlagsHelp);
+  for (CLI::App* part : app.get_subcommands([](CLI::App*) { return true; })) with_global_flags_help(*part);
 }
 
 }  // namespace
@@ -115,7 +161,7 @@ int run_main(int argc, char** argv) {
   app.fallthrough();  // shared flags may follow the subcommand's own
 
   GlobalOptions global;
-  app.add_flag("--json", global.json, "Machine-readable result on stdout");
+  app.add_flag("--json", global.json, "Machine-readable result on stdout (errors too: {\"error\": {...}})");
   app.add_flag("-q,--quiet", global.quiet, "Print only errors");
   app.add_flag("-v,--verbose", global.verbose, "Print more detail on stderr (repeatable)");
 
@@ -124,6 +170,7 @@ int run_main(int argc, char** argv) {
   for (auto& command : commands) {
     CLI::App* sub = app.add_subcommand(command->name(), command->summary());
     command->declare(*sub);
+    with_global_flags_help(*sub);
     parsed.emplace_back(sub, command.get());
   }
   require_finite_numbers(app);
@@ -139,9 +186,15 @@ int run_main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // A number too large for its option (review 6: --presses 2147483648) says what fits.
     const bool too_large = dynamic_cast<const CLI::ConversionError*>(&e) != nullptr;
-    std::cerr << "haptex: " << e.what() << (too_large ? ": not a number this option holds (a whole number up to 2147483647, or as its help says)" : "")
-              << "\nRun 'haptex --help' or 'haptex <command> --help' for usage.\n";
-    return 2;
+    const std::string command = parsed_command(app);
+    const std::string help = command.empty() ? "haptex --help" : "haptex " + command + " --help";
+    const bool json = std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; });
+    return report(command,
+                  {"error: " + text::printable(e.what()) +
+                       (too_large ? ": not a number this option holds (a whole number up to 2147483647, or as its help says)" : "") +
+                       ". Run '" + help + "' for usage",
+                   2, "", "", "Run '" + help + "' for usage"},
+                  json);
   }
 
   for (auto& [sub, command] : parsed) {
@@ -155,7 +208,7 @@ int run_main(int argc, char** argv) {
       return with_stdout_written(name, command->run(global));
     } catch (...) {
       let_a_taken_signal_finish();  // an error the signal caused is not reported: the signal ends the run
-      return reported_error(name, argc, argv);
+      return reported_error(name, argc, argv, global.json);
     }
   }
   return 2;

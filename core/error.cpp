@@ -12,14 +12,18 @@ Error input_error(const std::string& file, const std::string& where, const std::
   if (!where.empty()) message += ": " + text::printable(where);
   message += ": " + what;
   if (!fix.empty()) message += ". " + fix;
-  return Error(Error::Kind::bad_input, message);
+  Error error(Error::Kind::bad_input, message);
+  error.file_ = file, error.where_ = where, error.fix_ = fix;
+  return error;
 }
 
 Error failure(const std::string& what) { return Error(Error::Kind::failed, what); }
 
 Error renamed_in(const Error& error, const std::string& from, const std::string& to) {
   const std::string message = text::replace_all(error.what(), text::printable(from), text::printable(to));  // as input_error wrote them
-  return Error(error.kind(), text::replace_all(message, from, to));
+  Error renamed(error.kind(), text::replace_all(message, from, to));
+  renamed.file_ = error.file_ == from ? to : error.file_, renamed.where_ = error.where_, renamed.fix_ = error.fix_;
+  return renamed;
 }
 
 }  // namespace haptex

@@ -16,13 +16,20 @@ class Error : public std::runtime_error {
   // A NUL quoted from an input would cut what() short: it is written \x00.
   Error(Kind kind, const std::string& message) : std::runtime_error(without_nul(message)), kind_(kind) {}
   Kind kind() const { return kind_; }
+  // What input_error was given, for `--json` errors (apps/run_main.cpp); empty for other errors.
+  const std::string& file() const { return file_; }
+  const std::string& where() const { return where_; }
+  const std::string& fix() const { return fix_; }
 
  private:
+  friend Error input_error(const std::string&, const std::string&, const std::string&, const std::string&);
+  friend Error renamed_in(const Error&, const std::string&, const std::string&);
   static std::string without_nul(std::string text) {
     for (std::size_t at = text.find('\0'); at != std::string::npos; at = text.find('\0', at)) text.replace(at, 1, "\\x00");
     return text;
   }
   Kind kind_;
+  std::string file_, where_, fix_;
 };
 
 // "FILE: WHERE: WHAT. FIX" — the shape every bad-input message takes; FILE and WHERE are shown

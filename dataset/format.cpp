@@ -76,6 +76,12 @@ void require_kind(const h5::File& file, Kind kind) {
       throw input_error(path, "/@haptex_format", "is " + found + ", written by an older haptex: " + std::string(want.older),
                         "Run " + std::string(want.written_by) + " again to write " + wanted);
   }
+  for (const Format& other : kFormats)  // another kind of haptex file: say which, and what writes each
+    if (family_of(found) == other.family)
+      throw input_error(path, "/@haptex_format",
+                        "is '" + found + "': a " + std::string(other.family) + " file (" + std::string(other.written_by) + " writes those), not a " +
+                            std::string(want.family) + " file (" + wanted + ")",
+                        give);
   throw input_error(path, "/@haptex_format", "is '" + found + "', not " + wanted, give);
 }
 

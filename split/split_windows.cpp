@@ -3,9 +3,9 @@
 #include <map>
 
 #include "core/error.hpp"
-#include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
 #include "core/sha256.hpp"
+#include "dataset/format.hpp"
 #include "split/dataset_view.hpp"
 #include "split/manifest_reader.hpp"
 #include "split/split_search.hpp"
@@ -40,7 +40,9 @@ MaterialSets assign(const MaterialWindows& windows, const SplitMaterial& listed,
 
 DatasetSplit read_dataset_split(const std::string& dataset_path, const SplitManifestDocument& document) {
   const std::string& manifest_path = document.path;
-  h5::File::open(dataset_path);  // a damaged dataset is named as such, not as "another dataset" by its hash
+  // A damaged dataset, or a recordings or gelsight file given for one, is named as such, not as
+  // "another dataset" by its hash.
+  dataset::open_checked(dataset_path, dataset::Kind::dataset);
   json::validate(document.json, "split.schema.json", manifest_path);
   const SplitManifest manifest = parse_split_manifest(document.json);
   DatasetSplit out{dataset_path, manifest_path, sha256_file(dataset_path), sha256_file(manifest_path),

@@ -85,7 +85,7 @@ TEST(Format, OpensTheRightKindAndRefusesEveryOtherWithTheFix) {
   EXPECT_NE(model2.find("Run haptex train again to write model/3"), std::string::npos) << model2;
 
   const std::string other = refusal(file_with_format(dir, "rec.h5", "recordings/1"), Kind::dataset);
-  EXPECT_NE(other.find("'recordings/1', not dataset/4"), std::string::npos) << other;
+  EXPECT_NE(other.find("'recordings/1': a recordings file (haptex convert writes those), not a dataset file (dataset/4)"), std::string::npos) << other;
   EXPECT_NE(other.find("haptex align wrote"), std::string::npos) << other;
 
   const std::string plain = refusal(file_with_format(dir, "plain.h5", ""), Kind::model);

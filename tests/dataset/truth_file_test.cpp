@@ -147,7 +147,8 @@ TEST_F(TruthFile, RefusesOtherFormats) {
   EXPECT_EQ(refusal(path_), text::printable(path_) + ": /@haptex_format: is truth/1, written by an older haptex: it does not record what "
                                     "generated each recording. Run haptex synth again to write truth/2");
   written([](test::Edit& e) { e.root().set_attr("haptex_format", "recordings/1"); });
-  EXPECT_EQ(refusal(path_), path_ + ": /@haptex_format: is 'recordings/1', not truth/2. Give the file haptex synth wrote");
+  EXPECT_EQ(refusal(path_), path_ + ": /@haptex_format: is 'recordings/1': a recordings file (haptex convert writes those), not a truth file "
+                                    "(truth/2). Give the file haptex synth wrote");
 }
 
 TEST_F(TruthFile, RefusesMissingMembers) {
