@@ -7,7 +7,7 @@ PACKAGES   := build-essential cmake pkg-config \
               libopencv-dev libv4l-dev v4l-utils libusb-1.0-0-dev libhdf5-dev libeigen3-dev \
               libfftw3-dev libpugixml-dev zlib1g-dev libjpeg-dev nlohmann-json3-dev libvalijson-dev libboost-math-dev \
               libcli11-dev libsndfile1-dev libasound2-dev gnuplot-nox libgtest-dev libgmock-dev libbenchmark-dev \
-              python3-h5py python3-numpy python3-pil python3-scipy chromium \
+              python3-h5py python3-numpy python3-pil python3-scipy python3-venv chromium \
               pulseaudio pulseaudio-utils libasound2-plugins
 BENCH_PACKAGES := python3-opencv python3-torch python3-torchaudio hyperfine
 HAPTEX     := $(BUILD)/haptex

@@ -4,8 +4,11 @@
 
 #include <cmath>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "core/error.hpp"
+#include "tests/support/npy.hpp"
 
 namespace haptex::predict {
 namespace {
@@ -52,6 +55,26 @@ TEST(TargetSmoothing, BringsRayleighScatteredSpectraNearerTheirExpectation) {
   EXPECT_NEAR(raw / (windows * expected.squaredNorm()), 4 / M_PI - 1, 0.01) << "Rayleigh: variance (4/pi - 1) mean^2";
   EXPECT_LT(smooth / raw, 0.40) << smooth / raw;
   EXPECT_GT(smooth / raw, 0.36) << "inside the band no better than the kernel's 0.375 allows";
+}
+
+// Against numpy's reading of the documented definition (tests/golden/target_smoothing_golden.py), the
+// same reference python/haptex/smoothing.py is checked against, so C++ and Python smooth alike.
+TEST(TargetSmoothing, MatchesTheNumpyReference) {
+  const test::NpyArray input = test::load_golden("target_smoothing/input.npy");  // windows x bins
+  Eigen::MatrixXf t(Eigen::Index(input.cols()), Eigen::Index(input.rows()));
+  std::vector<std::size_t> all;
+  for (std::size_t w = 0; w < input.rows(); ++w) {
+    all.push_back(w);
+    for (std::size_t b = 0; b < input.cols(); ++b) t(Eigen::Index(b), Eigen::Index(w)) = float(input.at(w, b));
+  }
+  for (const int bins : {1, 3, 5, 7, 9, 201}) {
+    const test::NpyArray reference = test::load_golden("target_smoothing/bins_" + std::to_string(bins) + ".npy");
+    const Eigen::MatrixXf s = smoothed_targets(t, all, bins);
+    std::vector<double> got, want;
+    for (std::size_t w = 0; w < input.rows(); ++w)
+      for (std::size_t b = 0; b < input.cols(); ++b) got.push_back(s(Eigen::Index(b), Eigen::Index(w))), want.push_back(reference.at(w, b));
+    EXPECT_LT(test::max_scaled_error(got, want), 2e-6) << bins << " bins";
+  }
 }
 
 }  // namespace

@@ -1,0 +1,486 @@
+"""Read haptex's files from Python: a dataset's training windows as its split assigns them, and the
+evaluation's grid (`haptex windows`), so a model trained in PyTorch learns from haptex's windows and
+predicts for exactly the windows `haptex evaluate` scores; and write a predictions file for it.
+
+Needs python3, numpy and h5py. `WindowDataset` (a torch.utils.data.Dataset) exists only when torch
+imports (it is made on first use, so `import haptex` does not load torch). The file layouts are
+schemas/hdf5-layout.md ("Dataset file", "Windows file", "Predictions file"); the split manifest is
+schemas/split.schema.json. Until the package existed this was python/haptex_data.py, which still
+imports as this module.
+"""
+import errno
+import hashlib
+import io
+import json
+import os
+import sys
+from dataclasses import dataclass
+
+import numpy as np
+
+try:
+    import h5py
+except ImportError:
+    raise ImportError("haptex needs h5py, which this Python cannot import: install python3-h5py "
+                      "(Debian: apt-get install python3-h5py), or pip install h5py") from None
+
+WINDOW_SAMPLES = 1000  # dataset/window.hpp: a window uses samples [start, start + 1000)
+ACTION_SAMPLES = 10    # the action: 10 force samples (N), then 10 speed samples (mm/s), 5 ms apart up to the middle
+TARGET_BINS = 100      # 10, 20, ..., 1000 Hz
+SETS = ("train", "val", "test")
+
+
+class HaptexFileError(ValueError):
+    """A file that is not what haptex wrote, or inputs that do not belong together."""
+
+
+def sha256_file(path):
+    digest = hashlib.sha256()
+    with open(_regular_file(path), "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def _regular_file(path):
+    """path, after refusing what haptex refuses (core/input_file.hpp): a missing file, a folder, a FIFO,
+    a socket, a device or a dangling link (a FIFO would block the reader forever)."""
+    import stat
+    try:
+        mode = os.stat(path).st_mode
+    except FileNotFoundError:
+        kind = "a symbolic link to a file that does not exist" if os.path.islink(path) else "missing"
+        raise HaptexFileError(f"{path}: is {kind}: check the path") from None
+    if not stat.S_ISREG(mode):
+        raise HaptexFileError(f"{path}: is not a regular file (a folder, FIFO or device): give a regular file")
+    return path
+
+
+def _text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def _check_format(f, path, wanted):
+    found = _text(f.attrs.get("haptex_format", ""))
+    if found != wanted:
+        raise HaptexFileError(f"{path}: /@haptex_format is '{found}', not {wanted}")
+
+
+@dataclass
+class Windows:
+    """Rows of a /windows table. action is (W, 20) float32, target (W, 100) float32 in m/s^2;
+    material indexes materials; section and press are -1 where the file does not say."""
+    materials: list
+    material: np.ndarray
+    recording: np.ndarray
+    section: np.ndarray
+    start: np.ndarray
+    press: np.ndarray
+    action: np.ndarray
+    target: np.ndarray
+    dataset_sha256: str = ""
+    split_sha256: str = ""
+
+    def __len__(self):
+        return len(self.start)
+
+    def rows(self, keep):
+        """The windows where the boolean mask `keep` holds, in order."""
+        pick = lambda a: a[keep]
+        return Windows(self.materials, pick(self.material), pick(self.recording), pick(self.section), pick(self.start),
+                       pick(self.press), pick(self.action), pick(self.target), self.dataset_sha256, self.split_sha256)
+
+
+def _read_table(group, path):
+    def column(name, width=None):
+        if name not in group:
+            raise HaptexFileError(f"{path}: {group.name}/{name} is missing")
+        a = group[name][()]
+        if a.ndim != (1 if width is None else 2) or (width is not None and a.shape[1] != width):
+            raise HaptexFileError(f"{path}: {group.name}/{name} has shape {a.shape}")
+        return a
+    n = len(column("start"))
+    absent = np.full(n, -1, dtype=np.int32)
+    w = Windows([_text(m) for m in column("materials")], column("material"), column("recording"),
+                column("section") if "section" in group else absent, column("start"),
+                column("press") if "press" in group else absent,
+                column("action", 2 * ACTION_SAMPLES), column("target", TARGET_BINS))
+    if any(len(a) != n for a in (w.material, w.recording, w.section, w.press, w.action, w.target)):
+        raise HaptexFileError(f"{path}: the columns of {group.name} differ in length")
+    # As haptex's own readers: a NaN or infinite action or target is a damaged file (review 10, F7).
+    for name, values in (("action", w.action), ("target", w.target)):
+        bad = np.flatnonzero(~np.isfinite(values).all(axis=1))
+        if bad.size:
+            raise HaptexFileError(f"{path}: {group.name}/{name} row {bad[0]} holds a value that is not finite; "
+                                  "make the file again with the haptex command that wrote it")
+    return w
+
+
+def read_windows(path):
+    """The evaluation's grid written by `haptex windows` (windows/2), in the order evaluate scores it."""
+    with h5py.File(_regular_file(path), "r") as f:
+        _check_format(f, path, "windows/2")
+        w = _read_table(f["windows"], path)
+        w.dataset_sha256 = _text(f.attrs["dataset_sha256"])
+        w.split_sha256 = _text(f.attrs["split_sha256"])
+    return w
+
+
+@dataclass
+class Split:
+    """A split manifest (split/1): per material id its section numbers and press numbers per set."""
+    path: str
+    sha256: str
+    dataset_sha256: str
+    sections: int
+    material_sections: dict  # id -> {"train": [...], "val": [...], "test": [...]}
+    material_presses: dict   # id -> {"train": [...], "val": [...], "test": [...]}
+
+
+def read_split(path):
+    with open(_regular_file(path), "rb") as f:
+        raw = f.read()
+    try:
+        doc = json.loads(raw.decode("utf-8"))
+    except (UnicodeDecodeError, json.JSONDecodeError) as e:
+        raise HaptexFileError(f"{path}: not a JSON split manifest ({e}); give the file haptex split wrote") from None
+    if not isinstance(doc, dict) or doc.get("format") != "split/1":
+        found = doc.get("format") if isinstance(doc, dict) else type(doc).__name__
+        raise HaptexFileError(f"{path}: format is '{found}', not split/1 (haptex split writes it)")
+    try:
+        return Split(path, hashlib.sha256(raw).hexdigest(), doc["dataset"]["sha256"], int(doc["parameters"]["sections"]),
+                     {m["id"]: m["sections"] for m in doc["materials"]}, {m["id"]: m["presses"] for m in doc["materials"]})
+    except (KeyError, TypeError, ValueError) as e:
+        raise HaptexFileError(f"{path}: not a split manifest as haptex split writes it (at {e!r}); schemas/split.schema.json") from None
+
+
+def _section_begin(s, samples, sections):
+    return s * samples // sections
+
+
+def section_of(start, samples, sections):
+    """The section holding windows [start, start + 1000) of a recording, -1 for a window crossing a
+    boundary: split/sections.cpp's rule (section_begin(s) = s * samples // sections), vectorised."""
+    start = np.asarray(start, dtype=np.int64)
+    s = start * sections // samples
+    s = np.where((s + 1 < sections) & (_section_begin(s + 1, samples, sections) <= start), s + 1, s)
+    s = np.where((s > 0) & (_section_begin(s, samples, sections) > start), s - 1, s)
+    inside = (start >= 0) & (start + WINDOW_SAMPLES <= _section_begin(s + 1, samples, sections))
+    return np.where(inside, s, -1)
+
+
+def read_set_windows(dataset_path, split, sets=("train",)):
+    """The dataset's /windows rows lying wholly inside a section of `sets` (as haptex train reads them),
+    with their section numbers. Refuses a split made from another dataset file."""
+    if sha256_file(dataset_path) != split.dataset_sha256:
+        raise HaptexFileError(f"{split.path}: was made from another dataset than {dataset_path} (dataset.sha256)")
+    with h5py.File(_regular_file(dataset_path), "r") as f:
+        _check_format(f, dataset_path, "dataset/4")
+        w = _read_table(f["windows"], dataset_path)
+        keep = np.zeros(len(w), dtype=bool)
+        for m, material_id in enumerate(w.materials):
+            wanted = [s for name in sets for s in split.material_sections[material_id][name]]
+            for k in np.unique(w.recording[w.material == m]):
+                rows = (w.material == m) & (w.recording == k)
+                samples = int(f[f"materials/{material_id}/recordings/{k}"].attrs["samples"])
+                w.section[rows] = section_of(w.start[rows], samples, split.sections)
+                keep |= rows & np.isin(w.section, wanted)
+    w.dataset_sha256, w.split_sha256 = split.dataset_sha256, split.sha256
+    return w.rows(keep)
+
+
+@dataclass
+class Press:
+    """One GelSight press of a material (/materials/{id}/presses/{press} of a dataset file): the peak
+    frame and the no-contact reference, (H, W, 3) uint8 in RGB order."""
+    material: str
+    press: int
+    peak: np.ndarray
+    reference: np.ndarray
+
+
+def decode_image(encoded, order="RGB"):
+    """One encoded image of a dataset (a JPEG or PNG, as a uint8 array) as (H, W, 3) uint8 RGB; `order`
+    is the press's channel_order (BGR: the stored pixels hold blue first)."""
+    from PIL import Image  # python3-pil; only readers of images need it
+    rgb = np.asarray(Image.open(io.BytesIO(np.asarray(encoded, dtype=np.uint8).tobytes())).convert("RGB"))
+    return np.ascontiguousarray(rgb if order == "RGB" else rgb[..., ::-1])
+
+
+def read_presses(dataset_path, split, material_id, sets=("train",)):
+    """The presses of one material that `sets` of the split hold, in the split's order. A press stored
+    in BGR order is turned to RGB; another order is refused."""
+    if sha256_file(dataset_path) != split.dataset_sha256:
+        raise HaptexFileError(f"{split.path}: was made from another dataset than {dataset_path} (dataset.sha256)")
+    numbers = [p for name in sets for p in split.material_presses[material_id][name]]
+    out = []
+    with h5py.File(_regular_file(dataset_path), "r") as f:
+        _check_format(f, dataset_path, "dataset/4")
+        for j in numbers:
+            g = f[f"materials/{material_id}/presses/{j}"]
+            order = _text(g.attrs.get("channel_order", ""))
+            if order not in ("RGB", "BGR"):
+                raise HaptexFileError(f"{dataset_path}: {g.name}/@channel_order is '{order}', not RGB or BGR")
+            out.append(Press(material_id, j, decode_image(g["peak"][0], order), decode_image(g["reference"][0], order)))
+    return out
+
+
+def read_split_and_grid(split_path, windows_path):
+    """The split manifest and the windows file made with it; refuses a windows file made from another
+    dataset or split."""
+    split = read_split(split_path)
+    grid = read_windows(windows_path)
+    if (grid.dataset_sha256, grid.split_sha256) != (split.dataset_sha256, split.sha256):
+        raise HaptexFileError(f"{windows_path} was made from another dataset or split than {split_path}")
+    return split, grid
+
+
+def leave(code):
+    """Exits with code without running exit handlers: after a failed write (a full disk) HDF5's own
+    handler crashes closing the file h5py left open (exit 139 instead of the error). Everything the
+    examples wrote is flushed or already removed by then."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(code)
+
+
+def exit_code_for(error):
+    """1 when the work failed (a write: a full disk, a read-only folder), 2 for bad input."""
+    return 1 if isinstance(error, OSError) and error.errno in (errno.ENOSPC, errno.EDQUOT, errno.EROFS, errno.EIO) else 2
+
+
+def example_arguments(description):
+    """An argparse parser with what every example takes: DATASET SPLIT WINDOWS -o PREDS [--force]."""
+    import argparse
+    p = argparse.ArgumentParser(description=description)
+    p.add_argument("dataset")
+    p.add_argument("split")
+    p.add_argument("windows")
+    p.add_argument("-o", "--output", required=True)
+    p.add_argument("--force", action="store_true", help="replace an earlier predictions file")
+    return p
+
+
+PREDICTIONS_FORMAT = "predictions/1"  # schemas/hdf5-layout.md, "Predictions file"
+
+
+def grid_sections(grid):
+    """The grid's test sections in its order: per section (first row, rows, first sample, samples
+    covered), where a section's windows are rows [first row, first row + rows) and a signal of the
+    section starts at its first sample and covers at least `samples covered` samples."""
+    key = np.stack([grid.material, grid.recording, grid.section], axis=1)
+    change = np.flatnonzero(np.any(key[1:] != key[:-1], axis=1)) + 1
+    firsts = np.concatenate([[0], change]) if len(grid) else np.array([], dtype=np.int64)
+    ends = np.concatenate([change, [len(grid)]]) if len(grid) else np.array([], dtype=np.int64)
+    return [(int(a), int(b - a), int(grid.start[a]), int(grid.start[b - 1] - grid.start[a]) + WINDOW_SAMPLES)
+            for a, b in zip(firsts, ends)]
+
+
+def write_predictions(path, grid, spectra, source, query_seconds=None, signals=None, signal_seconds=None,
+                      inputs=(), overwrite=False):
+    """A predictions file for `haptex evaluate --predictions NAME=path`: spectra (W, 100), row i for
+    window i of `grid`; optionally one signal per grid section (grid_sections) and the compute
+    times. Refuses a path that is one of `inputs` (the same file by any name), an existing file
+    unless `overwrite`, and with `overwrite` any file but an earlier predictions file. Written to a
+    new temporary name beside path and renamed (docs/architecture.md, "Outputs are atomic"), so a
+    failed run leaves no half file and touches nothing else."""
+    check_output(path, inputs, overwrite)
+    spectra = np.asarray(spectra, dtype=np.float32)
+    if spectra.shape != (len(grid), TARGET_BINS):
+        raise HaptexFileError(f"{path}: {spectra.shape} spectra for a grid of {len(grid)} windows")
+    # What haptex evaluate would refuse, refused here before anything is written.
+    if not np.all(np.isfinite(spectra)) or spectra.min(initial=0) < 0 or spectra.max(initial=0) > 1e6:
+        raise HaptexFileError(f"{path}: spectra must be finite amplitudes of 0 to 1e6 m/s^2 (clamp the model's output at 0)")
+    for name, seconds in (("query_seconds", query_seconds), ("signal_seconds", signal_seconds)):
+        if seconds is not None and not (np.isfinite(seconds) and seconds > 0):
+            raise HaptexFileError(f"{path}: {name} is {seconds}, expected a compute time in seconds above 0")
+    if signals is not None:
+        sections = grid_sections(grid)
+        if len(signals) != len(sections) or any(len(x) < covered for x, (_, _, _, covered) in zip(signals, sections)):
+            raise HaptexFileError(f"{path}: give one signal per grid section ({len(sections)}), each covering its windows (grid_sections)")
+    partial = _temporary_file(path)
+    restore = _remove_on_signals(partial)
+    try:
+        with h5py.File(partial, "w") as f:
+            f.attrs["predictions_format"] = PREDICTIONS_FORMAT
+            f.attrs["dataset_sha256"] = grid.dataset_sha256
+            f.attrs["split_sha256"] = grid.split_sha256
+            f.attrs["source"] = source
+            if query_seconds is not None:
+                f.attrs["query_seconds"] = float(query_seconds)
+            f.create_dataset("spectra", data=spectra)
+            if signals is not None:
+                g = f.create_group("signals")
+                for k, x in enumerate(signals):
+                    g.create_dataset(str(k), data=np.asarray(x, dtype=np.float32))
+                if signal_seconds is not None:
+                    g.attrs["seconds"] = float(signal_seconds)
+            f.flush()  # raises on a failed write, which closing would only print
+        with open(partial, "rb") as f:
+            os.fsync(f.fileno())
+        # h5py reports a failed write (a full disk) only on stderr, and unwritten rows read back as 0:
+        # the file is read back whole and compared with what was meant.
+        if not _holds(partial, spectra, signals):
+            raise OSError(errno.ENOSPC, f"{path}: could not be written completely (the disk is full?)")
+        _put_in_place(partial, path, inputs, overwrite)
+        partial = None
+    finally:
+        if partial is not None:
+            os.remove(partial)
+        restore()
+
+
+def _holds(partial, spectra, signals):
+    """Whether the file at partial holds the format mark, the spectra and the signals written."""
+    try:
+        with h5py.File(partial, "r") as f:
+            if f.attrs["predictions_format"] != PREDICTIONS_FORMAT or not np.array_equal(f["spectra"][...], spectra):
+                return False
+            return signals is None or all(np.array_equal(f["signals"][str(k)][...], np.asarray(x, dtype=np.float32))
+                                          for k, x in enumerate(signals))
+    except (OSError, KeyError):
+        return False
+
+
+def _put_in_place(partial, path, inputs, overwrite):
+    """Renames partial to path. Without overwrite a file that appeared at path meanwhile is kept (a hard
+    link never replaces, as RENAME_NOREPLACE); with it, path is checked again just before the swap."""
+    if not overwrite:
+        try:
+            os.link(partial, path)
+        except FileExistsError:
+            raise HaptexFileError(f"{path}: appeared while this run was writing it, and is kept: "
+                                  "move it away and run again, or choose another output name") from None
+        except OSError:  # a file system without hard links: the last look, then the rename
+            check_output(path, inputs, overwrite)
+            os.rename(partial, path)
+            return
+        os.remove(partial)
+        return
+    check_output(path, inputs, overwrite)
+    os.replace(partial, path)
+
+
+def _remove_on_signals(partial):
+    """Until the returned function is called, Ctrl-C, TERM and HUP remove partial and then end the
+    process by the same signal (README: only kill -9 or a crash leaves a .partial behind). A signal
+    the process ignores (nohup, `cmd &`) stays ignored. Python takes signals in its main thread only:
+    called from another, it changes nothing."""
+    import signal
+    import threading
+    before = {}
+    if threading.current_thread() is not threading.main_thread():
+        return lambda: None
+
+    def end(number, _frame):
+        try:
+            os.remove(partial)
+        except FileNotFoundError:
+            pass
+        signal.signal(number, signal.SIG_DFL)
+        os.kill(os.getpid(), number)
+
+    for number in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+        if signal.getsignal(number) != signal.SIG_IGN:
+            before[number] = signal.signal(number, end)
+
+    def restore():
+        for number, handler in before.items():
+            signal.signal(number, handler)
+    return restore
+
+
+def check_output(path, inputs=(), overwrite=False):
+    """Raises HaptexFileError when write_predictions would refuse path (call it before the work)."""
+    if not path:
+        raise HaptexFileError("the output name is empty: name a file with -o")
+    try:
+        path.encode("utf-8")
+    except UnicodeEncodeError as e:
+        byte = os.fsencode(path[e.start:e.start + 1])[0]
+        raise HaptexFileError(f"{path!r}: the output name is not valid UTF-8 (byte 0x{byte:02x} at character {e.start}): "
+                              "name it in UTF-8") from None
+    for given in inputs:
+        if os.path.exists(path) and os.path.exists(given) and os.path.samefile(path, given):
+            raise HaptexFileError(f"{path}: is also an input ({given}): choose another output name")
+    folder = os.path.dirname(path) or "."
+    if not os.path.isdir(folder):
+        raise HaptexFileError(f"{path}: the output folder {folder} does not exist: create it first")
+    if not os.path.lexists(path):
+        return
+    if os.path.islink(path) or not os.path.isfile(path):
+        raise HaptexFileError(f"{path}: the output path is a link, a folder, a FIFO or a device: choose another -o")
+    if not overwrite:
+        raise HaptexFileError(f"{path}: the output file already exists: remove it, choose another -o, or pass --force")
+    try:
+        with h5py.File(_regular_file(path), "r") as f:
+            found = f.attrs.get("predictions_format")
+    except OSError:
+        found = None
+    found = found.decode("utf-8", "replace") if isinstance(found, bytes) else found
+    if isinstance(found, str) and _version(found) is not None and _version(found) > _version(PREDICTIONS_FORMAT):
+        raise HaptexFileError(f"{path}: is {found}, written by a newer haptex than {PREDICTIONS_FORMAT}: "
+                              "--force does not replace it; choose another output name")
+    if not isinstance(found, str) or _version(found) is None or os.path.islink(path):
+        raise HaptexFileError(f"{path}: --force replaces only an earlier predictions file, and this is not one: "
+                              "choose another output name, or move the file away yourself")
+
+
+def _version(mark):
+    """N of a "predictions/N" mark as haptex writes it (no sign, no leading zero), else None."""
+    import re
+    found = re.fullmatch(r"predictions/([1-9][0-9]*)", mark)
+    return int(found.group(1)) if found else None
+
+
+def _temporary_file(path):
+    """A new empty file at PATH.<8 letters and digits>.partial, created exclusively (core/temporary_name.hpp
+    holds the rule): a name that exists is never opened, followed or reused."""
+    import secrets
+    import string
+    letters = string.ascii_letters + string.digits
+    for _ in range(100):
+        partial = path + "." + "".join(secrets.choice(letters) for _ in range(8)) + ".partial"
+        try:
+            os.close(os.open(partial, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o666))
+            return partial
+        except FileExistsError:
+            continue
+        except OSError as e:  # a read-only or full file system, a folder without write permission
+            raise HaptexFileError(f"{path}: cannot write beside it ({e.strerror}): choose a folder you can write to") from None
+    raise HaptexFileError(f"{path}: no free temporary name beside it")
+
+
+def _window_dataset_class():
+    import torch
+    from torch.utils.data import Dataset
+
+    class WindowDataset(Dataset):
+        """(material, action, target) tensors of a Windows table: int64, float32 (20), float32 (100)."""
+
+        def __init__(self, windows):
+            self.windows = windows
+
+        def __len__(self):
+            return len(self.windows)
+
+        def __getitem__(self, i):
+            w = self.windows
+            return (torch.tensor(int(w.material[i])), torch.from_numpy(np.asarray(w.action[i], dtype=np.float32)),
+                    torch.from_numpy(np.asarray(w.target[i], dtype=np.float32)))
+    WindowDataset.__module__ = __name__
+    return WindowDataset
+
+
+def __getattr__(name):
+    """WindowDataset, made when first asked for: torch is optional, and numpy users need none of it
+    (without torch the attribute does not exist, so hasattr(data, "WindowDataset") says whether it does)."""
+    if name == "WindowDataset":
+        try:
+            cls = _window_dataset_class()
+        except ImportError:
+            raise AttributeError("WindowDataset needs PyTorch, which this Python cannot import "
+                                 "(on Debian: apt-get install python3-torch)") from None
+        globals()[name] = cls
+        return cls
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
