@@ -26,6 +26,7 @@
 #include "core/text/utf8.hpp"
 #include "dataset/window.hpp"
 #include "play/alsa_output.hpp"
+#include "play/device_name.hpp"
 #include "play/player.hpp"
 #include "predict/model_file.hpp"
 #include "render/wav_writer.hpp"
@@ -89,7 +90,11 @@ class PlayCommand : public Command {
     std::optional<predict::Trajectory> trajectory;
     if (!trajectory_path_.empty()) trajectory = predict::read_trajectory(trajectory_path_);
 
-    play::AlsaOutput output(device_, unsigned(buffer_ms_ / 10));
+    // The recording's names are taken before anything plays, so a second run with the same --record
+    // is refused at once, not after its session (review 12, F2).
+    std::optional<Recording> recording;
+    if (!record_.empty()) recording.emplace(record_, force_);
+    play::AlsaOutput output(play::checked_device_name(device_), unsigned(buffer_ms_ / 10));
     play::Player player(model, code, options(), output);
     if (!global.quiet && !global.json) print_start(output, player.latency());
     play::PlayReport report;
@@ -103,10 +108,10 @@ class PlayCommand : public Command {
       }
     } catch (...) {
       // A bad line in the stream, a device unplugged: what was played until then is kept.
-      if (!record_.empty() && player.played_trajectory().force.size() > 0) write_record(player, output.rate(), global);
+      if (recording && player.played_trajectory().force.size() > 0) write_record(*recording, player, output.rate(), global);
       throw;
     }
-    if (!record_.empty()) write_record(player, output.rate(), global);
+    if (recording) write_record(*recording, player, output.rate(), global);
     if (global.json)
       print_json(output, player.latency(), report);
     else if (!global.quiet)
@@ -135,18 +140,24 @@ class PlayCommand : public Command {
     check_actions_csv(actions_path(record_), force_);
   }
 
-  // Both appear together, or neither (core/output_set.hpp): a full disk never leaves a WAV without its actions.
-  void write_record(const play::Player& player, unsigned rate, const GlobalOptions& global) const {
+  // --record's two files under their temporary names, both appearing together or neither
+  // (core/output_set.hpp): a full disk never leaves a WAV without its actions.
+  struct Recording {
+    PartialFile wav, csv;
+    Recording(const std::string& record, bool force)
+        : wav(record, force, [](const std::string& p) { render::check_wav_output(p, true); }),
+          csv(actions_path(record), force, [](const std::string& p) { check_actions_csv(p, true); }) {}
+  };
+
+  void write_record(Recording& recording, const play::Player& player, unsigned rate, const GlobalOptions& global) const {
     render::WavOptions wav;
     wav.full_scale_m_s2 = full_scale_;
     wav.overwrite = force_;
     wav.title = texture_.material.empty() ? texture_.image : texture_.material;
     wav.source = global.command_line + ", as played";
-    PartialFile wav_file(record_, force_, [](const std::string& p) { render::check_wav_output(p, true); });
-    PartialFile csv_file(actions_path(record_), force_, [](const std::string& p) { check_actions_csv(p, true); });
-    render::write_played_wav(wav_file, player.played_samples(), int(rate), wav);
-    write_text(csv_file, predict::trajectory_csv_text(player.played_trajectory()));
-    commit_together({&wav_file, &csv_file});
+    render::write_played_wav(recording.wav, player.played_samples(), int(rate), wav);
+    write_text(recording.csv, predict::trajectory_csv_text(player.played_trajectory()));
+    commit_together({&recording.wav, &recording.csv});
   }
 
   void print_start(const play::AlsaOutput& output, const play::Latency& l) const {

@@ -3,8 +3,10 @@
 // write, nor an input, and is refused before anything plays.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/fake_sound_card.hpp"
@@ -96,6 +98,53 @@ TEST(HostilePlay, ARecordingNeverReplacesWhatHaptexDidNotWriteNorAnInput) {
   expect_refusal(run_haptex(play({"--trajectory", trajectory, "--record", d.file("r.wav")})), {d.file("r.wav"), "--force"});
   EXPECT_EQ(run_haptex(play({"--trajectory", trajectory, "--record", d.file("r.wav"), "--force"})).exit_code, 0);
   EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
+}
+
+// Review 12, F3: an ALSA device string is a configuration language. With the system's configuration,
+// `file:FILE=X` truncates X (the model being read, in the review) and `file:FILE=|cmd` runs cmd
+// through a shell. --device takes a device's name only.
+TEST(HostilePlay, TheDeviceIsANameNeverAFileOrACommand) {
+  const TempDir d;
+  const std::string trajectory = stroke(d);
+  fs::copy_file(quick_model(false), d.file("model.h5"));
+  std::ofstream(d.file("victim")) << "a user's file";
+  const std::string mine = file_bytes(d.file("model.h5"));
+  const std::vector<std::string> devices = {"file:FILE=" + d.file("model.h5") + ",FORMAT=raw", "file:FILE=victim,FORMAT=raw",
+                                            "file:FILE=|touch " + d.file("ran") + ",FORMAT=raw", "file:FILE=|touch,FORMAT=raw",
+                                            "tee:default,victim", "{type file file victim}", "plug:'file:FILE=victim'", "default;x", ""};
+  for (const std::string& device : devices) {
+    SCOPED_TRACE(device);
+    const CommandResult r = run_haptex_in(d.path(), {"play", d.file("model.h5"), "--material", small_material(), "--trajectory", trajectory,
+                                                     "--device", device});
+    expect_refusal(r, {"--device"});
+  }
+  EXPECT_EQ(file_bytes(d.file("model.h5")), mine) << "the model it reads is untouched";
+  EXPECT_EQ(file_bytes(d.file("victim")), "a user's file");
+  EXPECT_FALSE(fs::exists(d.file("ran"))) << "no command ran";
+  EXPECT_FALSE(fs::exists(d.file("touch")));
+}
+
+// Review 12, F2: a second run recording to the same name was played to its end and then lost its
+// recording. The names are taken before anything plays, so it is refused at once.
+TEST(HostilePlay, TwoRunsRecordingToOneNameRefuseEachOtherAtTheStart) {
+  const FakeSoundCard card;
+  const TempDir d;
+  {
+    std::ofstream csv(d.file("long.csv"));
+    csv << "force,speed\n";
+    for (int i = 0; i < 40000; ++i) csv << "1.5,100\n";  // 4 s
+  }
+  CommandResult first;
+  std::thread a([&] { first = run_haptex(play({"--trajectory", d.file("long.csv"), "--record", d.file("r.wav")})); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  const auto start = std::chrono::steady_clock::now();
+  const CommandResult second = run_haptex(play({"--trajectory", d.file("long.csv"), "--record", d.file("r.wav")}));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  a.join();
+  expect_refusal(second, {d.file("r.wav"), "another haptex run"});
+  EXPECT_LT(seconds, 2.0) << "refused before it played, not after its 4 s";
+  EXPECT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_TRUE(fs::exists(d.file("r.wav")) && fs::exists(d.file("r.csv")));
 }
 
 }  // namespace
