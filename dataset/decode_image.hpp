@@ -42,7 +42,8 @@ cv::Mat decode_image(std::span<const std::uint8_t> bytes, DecodedColour colour =
 
 // An image file as 8-bit BGR: a JPEG or PNG through decode_image (a file over 256 MiB, four bytes
 // per pixel of kMaxImagePixels, is not read), any other format OpenCV reads through cv::imread, EXIF
-// orientation never applied; empty when it cannot be read.
+// orientation never applied; empty when it cannot be read. Throws haptex::Error (bad_input) when a
+// JPEG's or PNG's header states over 64 megapixels (core/image_header.hpp).
 cv::Mat read_image_file(const std::string& path);
 
 }  // namespace haptex::dataset

@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
+#include "core/image_header.hpp"
 #include "core/naming.hpp"
 #include "core/text/format.hpp"
 #include "dataset/channel_order.hpp"
@@ -122,6 +123,11 @@ PressFile::PressFile(std::string path) : path_(std::move(path)), file_(open_chec
   if (width <= 0 || height <= 0 || width > 65535 || height > 65535)
     throw input_error(path_, "/@width, /@height", std::to_string(width) + " x " + std::to_string(height) + " is not a frame size",
                       "Record the press again");
+  // A few MB may declare 30000 x 30000 frames and a /reference of that size: refused before any is read (review 12, F1).
+  if (std::uint64_t(width) * std::uint64_t(height) > kMaxImagePixels)
+    throw input_error(path_, "/@width, /@height", std::to_string(width) + " x " + std::to_string(height) +
+                                                      " is over 64 megapixels, larger than any press haptex reads",
+                      "Record the press again at the sensor's own frame size");
   size_ = cv::Size(int(width), int(height));
   fps_ = root.attr_double(layout::kFps);
   if (fps_ != 0 && !(fps_ >= kLowestFps && fps_ <= kHighestFps))  // 0: not known (replay then needs fps=)

@@ -221,6 +221,23 @@ TEST(BadValues, ReplayRefusesAPressFileWithoutAFrameRate) {
   }
 }
 
+// Review 12, F1: a 27 MB press file declaring 30000 x 30000 frames (and a /reference of that size)
+// cost extract 8 GB before it was refused. The declared size is refused before anything is read.
+TEST(BadValues, APressFileDeclaringFramesOver64MegapixelsIsRefusedAtOnce) {
+  const TempDir d;
+  ASSERT_TRUE(record_one_press(d.file("s")));
+  const std::string press = d.file("p.h5");
+  fs::copy_file(d.file("s/press_0.h5"), press);
+  {
+    Edit edit(press);
+    edit.root().set_attr("width", std::int64_t(30000));
+    edit.root().set_attr("height", std::int64_t(30000));
+  }
+  expect_refusal(run_haptex({"capture", "extract", press, "--no-sheets", "-o", d.file("g.h5")}), {press, "/@width", "over 64 megapixels"});
+  expect_refusal(run_haptex({"capture", "record", "--device", "replay:" + press, "--material", "Cork", "-o", d.file("r")}), {press});
+  EXPECT_FALSE(fs::exists(d.file("g.h5")));
+}
+
 // Review 9, F1: extraction used a press file's recorder figures as they were: a NaN trigger cut one
 // press in two (exit 0), an infinite one said "no press found" (exit 1).
 TEST(BadValues, ExtractRefusesAPressFileWithDamagedRecorderFigures) {

@@ -14,6 +14,7 @@
 
 namespace haptex::test {
 namespace {
+namespace fs = std::filesystem;
 
 void put_u32(std::string& s, std::uint32_t v) {
   for (int shift = 24; shift >= 0; shift -= 8) s += char((v >> shift) & 0xff);
@@ -36,6 +37,16 @@ TEST(LargeInput, APressImageOverTheLimitIsRefusedFromItsHeader) {
   std::ofstream(dir.file("huge.png"), std::ios::binary) << png_header_only(12000, 12000);
   const CommandResult r = run_haptex({"predict", quick_model(), "--image", dir.file("huge.png"), "--normal-force", "1", "--speed", "100"});
   expect_refusal(r, {dir.file("huge.png"), "12000 x 12000", "64 megapixels"});
+}
+
+// Review 12, F1: extract's --reference was decoded whole (a 1.2 MB PNG of 20000 x 20000, 1.6 GB).
+TEST(LargeInput, ExtractsReferenceOverTheLimitIsRefusedFromItsHeader) {
+  const TempDir dir;
+  std::ofstream(dir.file("huge.png"), std::ios::binary) << png_header_only(20000, 20000);
+  ASSERT_EQ(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "--presses", "1", "-o",
+                        dir.file("s")}).exit_code, 0);
+  const CommandResult r = run_haptex({"capture", "extract", dir.file("s/press_0.h5"), "--reference", dir.file("huge.png"), "-o", dir.file("g.h5")});
+  expect_refusal(r, {dir.file("huge.png"), "20000 x 20000", "64 megapixels"});
 }
 
 TEST(LargeInput, ImageHeadersGiveTheSizeWithoutDecoding) {
