@@ -19,6 +19,7 @@
 #include "evaluate/measures/summary_statistics.hpp"
 #include "split/split_manifest.hpp"
 #include "split/split_plots.hpp"
+#include "qa/integrity.hpp"
 #include "qa/sound_split.hpp"
 
 namespace haptex::apps {
@@ -55,6 +56,7 @@ class SplitCommand : public Command {
     // The plots go into a folder written whole (refused now, before any work, when it may not be replaced).
     std::optional<PartialDirectory> plots_dir;
     if (!no_plots_) plots_dir.emplace(plots_folder(), FolderOptions{force_, "plot folder", "-o", "haptex split"});
+    qa::require_sound_windows(dataset_);
     const auto windows = split::read_dataset_windows(dataset_);
     const auto splits = split::search_split(windows, options_, dataset_);
     const nlohmann::json manifest = split::manifest_json(dataset_, options_, splits, global.command_line);

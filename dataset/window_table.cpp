@@ -56,6 +56,22 @@ void write_window_table(h5::Group root, const WindowTable& t) {
   target.set_attr("description", "single-sided amplitude spectrum 2|X_k|/N of accel[start, start + 1000), k = 1..100");
 }
 
+std::size_t most_windows(const h5::Group& root, std::size_t stride) {
+  std::size_t most = 0;
+  if (!root.has_group(layout::kMaterials) || stride == 0) return most;
+  const h5::Group materials = root.open_group(layout::kMaterials);
+  for (const std::string& id : materials.children()) {
+    if (!materials.has_group(id) || !materials.open_group(id).has_group(layout::kRecordings)) continue;
+    const h5::Group recordings = materials.open_group(id).open_group(layout::kRecordings);
+    for (const std::string& k : recordings.children())
+      if (recordings.has_group(k) && recordings.open_group(k).has_dataset(layout::kAccel)) {
+        const h5::Shape shape = recordings.open_group(k).open_dataset(layout::kAccel).shape();
+        if (!shape.empty()) most += std::size_t(shape[0]) / stride + 1;
+      }
+  }
+  return most;
+}
+
 WindowTable read_window_table(const h5::File& file) {
   const std::string& path = file.path();
   const h5::Group root = file.root();
@@ -73,6 +89,11 @@ WindowTable read_window_table(const h5::File& file) {
   if (stride <= 0) throw input_error(path, w.object_path() + "/@" + layout::kStride, "is missing or not positive", kRealign);
   t.stride = std::size_t(stride);
   t.start = column<std::int64_t>(w, layout::kWindowStart, 0, std::size_t(-1), path);
+  if (const std::size_t most = most_windows(root, t.stride); t.size() > most)
+    throw input_error(path, w.object_path() + "/" + layout::kWindowStart,
+                      "has " + std::to_string(t.size()) + " rows, more than the " + std::to_string(most) + " windows its recordings hold at stride " +
+                          std::to_string(t.stride),
+                      kRealign);
   t.material = column<std::int32_t>(w, layout::kWindowMaterial, 0, t.size(), path);
   t.recording = column<std::int32_t>(w, layout::kWindowRecording, 0, t.size(), path);
   t.action = column<float>(w, layout::kWindowAction, kActionValues, t.size(), path);

@@ -25,6 +25,11 @@ struct WindowTable {
   std::span<const float> target_of(std::size_t w) const { return std::span(target).subspan(w * kTargetBins, kTargetBins); }
 };
 
+// The most windows a dataset's recordings can have at `stride`: per recording, its samples / stride + 1,
+// from the shapes alone. A table with more rows is damaged, and is refused before its columns are
+// read (review 12, F4: 6 MB declaring 10 million rows cost 5 GB).
+std::size_t most_windows(const h5::Group& root, std::size_t stride);
+
 // Writes /windows with its attributes (stride and the contract's sizes).
 void write_window_table(h5::Group root, const WindowTable& table);
 

@@ -42,11 +42,22 @@ std::vector<CheckResult> check_integrity(const h5::Group& root, dataset::Kind ki
   return results;
 }
 
-void require_integrity(const h5::Group& root, dataset::Kind kind) {
-  for (const CheckResult& r : check_integrity(root, kind))
+namespace {
+
+void require_passed(const h5::Group& root, const std::vector<CheckResult>& results) {
+  for (const CheckResult& r : results)
     if (r.status == Status::fail)
       throw input_error(root.file(), "", r.message + " (qa check " + r.id + ")",
                         r.hint + "; `haptex qa " + root.file() + "` lists every finding");
+}
+
+}  // namespace
+
+void require_integrity(const h5::Group& root, dataset::Kind kind) { require_passed(root, check_integrity(root, kind)); }
+
+void require_sound_windows(const std::string& dataset_path) {
+  const h5::File file = dataset::open_checked(dataset_path, dataset::Kind::dataset);
+  require_passed(file.root(), check_dataset(file.root()));
 }
 
 }  // namespace haptex::qa

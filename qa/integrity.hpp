@@ -23,4 +23,10 @@ std::vector<CheckResult> check_integrity(const h5::Group& root, dataset::Kind ki
 // when check_integrity finds anything.
 void require_integrity(const h5::Group& root, dataset::Kind kind);
 
+// The window table's checks (dataset.windows, dataset.cache) on the dataset at path, which split,
+// windows, train and evaluate read their windows, actions and targets from: a table qa fails (rows
+// twice, out of order, targets that are not the recordings' spectra) never splits, trains or scores
+// (review 12, F4). Throws as require_integrity.
+void require_sound_windows(const std::string& dataset_path);
+
 }  // namespace haptex::qa

@@ -2,6 +2,7 @@
 
 #include "core/error.hpp"
 #include "dataset/layout.hpp"
+#include "dataset/window_table.hpp"
 
 namespace haptex::qa {
 
@@ -66,6 +67,11 @@ std::optional<WindowTable> load_window_table(const h5::Group& root, std::string&
     return std::nullopt;
   }
   t.stride = std::size_t(*stride);
+  if (const std::size_t most = dataset::most_windows(root, t.stride); t.size() > most) {
+    problem = "/windows has " + std::to_string(t.size()) + " rows, more than the " + std::to_string(most) + " windows its recordings hold at stride " +
+              std::to_string(t.stride);
+    return std::nullopt;
+  }
   t.action_samples = *action;
   t.window_samples = *window;
   t.action_end = *action_end;
