@@ -298,30 +298,11 @@ def write_predictions(path, grid, spectra, source, query_seconds=None, signals=N
         sections = grid_sections(grid)
         if len(signals) != len(sections) or any(len(x) < covered for x, (_, _, _, covered) in zip(signals, sections)):
             raise HaptexFileError(f"{path}: give one signal per grid section ({len(sections)}), each covering its windows (grid_sections)")
+    image = _predictions_image(grid, spectra, source, query_seconds, signals, signal_seconds)
     partial = _temporary_file(path)
     restore = _remove_on_signals(partial)
     try:
-        with h5py.File(partial, "w") as f:
-            f.attrs["predictions_format"] = PREDICTIONS_FORMAT
-            f.attrs["dataset_sha256"] = grid.dataset_sha256
-            f.attrs["split_sha256"] = grid.split_sha256
-            f.attrs["source"] = source
-            if query_seconds is not None:
-                f.attrs["query_seconds"] = float(query_seconds)
-            f.create_dataset("spectra", data=spectra)
-            if signals is not None:
-                g = f.create_group("signals")
-                for k, x in enumerate(signals):
-                    g.create_dataset(str(k), data=np.asarray(x, dtype=np.float32))
-                if signal_seconds is not None:
-                    g.attrs["seconds"] = float(signal_seconds)
-            f.flush()  # raises on a failed write, which closing would only print
-        with open(partial, "rb") as f:
-            os.fsync(f.fileno())
-        # h5py reports a failed write (a full disk) only on stderr, and unwritten rows read back as 0:
-        # the file is read back whole and compared with what was meant.
-        if not _holds(partial, spectra, signals):
-            raise OSError(errno.ENOSPC, f"{path}: could not be written completely (the disk is full?)")
+        _write_whole(partial, path, image)
         _put_in_place(partial, path, inputs, overwrite)
         partial = None
     finally:
@@ -330,10 +311,49 @@ def write_predictions(path, grid, spectra, source, query_seconds=None, signals=N
         restore()
 
 
-def _holds(partial, spectra, signals):
-    """Whether the file at partial holds the format mark, the spectra and the signals written."""
+def _predictions_image(grid, spectra, source, query_seconds, signals, signal_seconds):
+    """The predictions file's bytes, made in memory: HDF5 never meets a full disk, where h5py fails
+    inside close() and can then crash the interpreter (review 12, F5); the bytes are read back and
+    compared with what was meant before they are written."""
+    memory = io.BytesIO()
+    with h5py.File(memory, "w") as f:
+        f.attrs["predictions_format"] = PREDICTIONS_FORMAT
+        f.attrs["dataset_sha256"] = grid.dataset_sha256
+        f.attrs["split_sha256"] = grid.split_sha256
+        f.attrs["source"] = source
+        if query_seconds is not None:
+            f.attrs["query_seconds"] = float(query_seconds)
+        f.create_dataset("spectra", data=spectra)
+        if signals is not None:
+            g = f.create_group("signals")
+            for k, x in enumerate(signals):
+                g.create_dataset(str(k), data=np.asarray(x, dtype=np.float32))
+            if signal_seconds is not None:
+                g.attrs["seconds"] = float(signal_seconds)
+    image = memory.getvalue()
+    if not _holds(io.BytesIO(image), spectra, signals):
+        raise HaptexFileError("the predictions file made in memory does not read back as written")
+    return image
+
+
+def _write_whole(partial, path, image):
+    """Writes image to partial and syncs it; a full disk is one OSError naming path."""
+    fd = os.open(partial, os.O_WRONLY | os.O_NOFOLLOW)
     try:
-        with h5py.File(partial, "r") as f:
+        view = memoryview(image)
+        while view:
+            view = view[os.write(fd, view):]
+        os.fsync(fd)
+    except OSError as e:
+        raise OSError(e.errno, f"{path}: could not be written completely ({e.strerror}; the disk is full?)") from None
+    finally:
+        os.close(fd)
+
+
+def _holds(source, spectra, signals):
+    """Whether the HDF5 file at source (a path or a file object) holds the format mark, the spectra and the signals written."""
+    try:
+        with h5py.File(source, "r") as f:
             if f.attrs["predictions_format"] != PREDICTIONS_FORMAT or not np.array_equal(f["spectra"][...], spectra):
                 return False
             return signals is None or all(np.array_equal(f["signals"][str(k)][...], np.asarray(x, dtype=np.float32))

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <sys/mount.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -138,6 +139,27 @@ TEST(DiskFull, RenderNeverLeavesAWavWithoutItsCsv) {
                                       "-o", disk.file("v.wav"), "--csv", disk.file("v.csv")});
   expect_disk_full(r, disk.file("v.csv"));
   EXPECT_EQ(disk.listing(), std::vector<std::string>{});
+}
+
+// Review 12, F5: the Python writer met a full disk inside HDF5's close and crashed the interpreter
+// (exit 139), or printed pages of h5py tracebacks. It now makes the file in memory and writes its bytes.
+TEST(DiskFull, ThePythonPredictionsWriterSaysSoInOneLine) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const TempDir inputs;
+  const SmallPipeline& p = small_pipeline();
+  ASSERT_EQ(run_haptex({"windows", p.dataset, "--split", p.split, "-o", inputs.file("w.h5")}).exit_code, 0);
+  for (const char* size : {"4k", "8k", "12k"}) {
+    SCOPED_TRACE(size);
+    const SmallDisk disk(size);
+    if (!disk.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (needs root with CAP_SYS_ADMIN)";
+    const CommandResult r = run_python({std::string(HAPTEX_SCHEMA_DIR) + "/../python/examples/knn_baseline.py", p.dataset, p.split,
+                                        inputs.file("w.h5"), "-o", disk.file("k.h5")});
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find(disk.file("k.h5") + ": could not be written completely"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(disk.listing(), std::vector<std::string>{});
+  }
 }
 
 TEST(DiskFull, CaptureKeepsThePressesAlreadyWritten) {
