@@ -7,24 +7,46 @@
 namespace haptex::text {
 namespace {
 
-// Inline markup of one line of escaped text: `code`, **bold**, *emphasis*, [text](url), \x escapes.
+std::size_t run_of(std::string_view line, std::size_t at, char c) {
+  std::size_t n = 0;
+  while (at + n < line.size() && line[at + n] == c) ++n;
+  return n;
+}
+
+// A code span opened by `fence` backticks at `at` (CommonMark): it ends at the next run of exactly as
+// many, so a name holding a backtick is written in a longer fence; one space each side is padding.
+// Returns the span's end, or npos when it is not closed.
+std::size_t code_span(std::string_view line, std::size_t at, std::size_t fence, std::string& out) {
+  for (std::size_t i = at + fence; i < line.size();) {
+    const std::size_t n = run_of(line, i, '`');
+    if (n == fence) {
+      std::string_view content = line.substr(at + fence, i - at - fence);
+      if (content.size() >= 2 && content.front() == ' ' && content.back() == ' ') content = content.substr(1, content.size() - 2);
+      out += "<code>" + std::string(content) + "</code>";
+      return i + n;
+    }
+    i += n == 0 ? 1 : n;
+  }
+  return std::string_view::npos;
+}
+
+// Inline markup of one line of escaped text: `code` (in any fence), **bold**, *emphasis*,
+// [text](url), and a backslash before any ASCII punctuation (CommonMark) for the character itself.
 std::string inline_html(std::string_view line) {
   std::string out;
-  bool code = false, bold = false, emphasis = false;
+  bool bold = false, emphasis = false;
   for (std::size_t i = 0; i < line.size(); ++i) {
     const char c = line[i];
-    if (code) {
-      if (c == '`') {
-        out += "</code>";
-        code = false;
-      } else {
-        out += c;
-      }
-    } else if (c == '\\' && i + 1 < line.size() && std::string_view("\\`*_[]()#+-.!|").find(line[i + 1]) != std::string_view::npos) {
+    if (c == '\\' && i + 1 < line.size() && std::ispunct(static_cast<unsigned char>(line[i + 1]))) {
       out += line[++i];
     } else if (c == '`') {
-      out += "<code>";
-      code = true;
+      const std::size_t fence = run_of(line, i, '`'), end = code_span(line, i, fence, out);
+      if (end == std::string_view::npos) {
+        out += std::string(fence, '`');
+        i += fence - 1;
+      } else {
+        i = end - 1;
+      }
     } else if (c == '*' && i + 1 < line.size() && line[i + 1] == '*') {
       out += bold ? "</strong>" : "<strong>";
       bold = !bold;
@@ -50,7 +72,6 @@ std::string inline_html(std::string_view line) {
       out += c;
     }
   }
-  if (code) out += "</code>";
   if (bold) out += "</strong>";
   if (emphasis) out += "</em>";
   return out;
@@ -60,8 +81,8 @@ std::vector<std::string> cells(std::string_view row) {
   std::vector<std::string> out;
   std::string cell;
   for (std::size_t i = 1; i < row.size(); ++i) {  // row starts with '|'
-    if (row[i] == '\\' && i + 1 < row.size() && row[i + 1] == '|') {
-      cell += "\\|";
+    if (row[i] == '\\' && i + 1 < row.size() && row[i + 1] == '|') {  // GFM: a cell's escaped pipe is a pipe, in code too
+      cell += '|';
       ++i;
     } else if (row[i] == '|') {
       out.push_back(cell);

@@ -29,12 +29,16 @@ std::string escaped(std::string_view raw) {
   return s;
 }
 
-// A path or hash as code in a table cell (a backtick cannot close it early; a pipe cannot end the cell).
+// A path or hash as code in a table cell: fenced by one backtick more than its longest run of them, so
+// a backtick in a name is shown as it is (CommonMark code spans); a pipe cannot end the cell.
 std::string code(std::string_view raw) {
   const std::string text = text::printable(raw);
-  std::string s = "`";
-  for (char c : text) s += c == '`' ? std::string("'") : c == '|' ? std::string("\\|") : std::string(1, c);
-  return s + "`";
+  std::size_t longest = 0;
+  for (std::size_t i = 0, run = 0; i < text.size(); ++i) longest = std::max(longest, run = text[i] == '`' ? run + 1 : 0);
+  const std::string fence(longest + 1, '`'), pad = longest > 0 ? " " : "";
+  std::string s;
+  for (char c : text) s += c == '|' ? std::string("\\|") : std::string(1, c);
+  return fence + pad + s + pad + fence;
 }
 
 std::string percent(double share) {

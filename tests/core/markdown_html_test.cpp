@@ -37,6 +37,15 @@ TEST(MarkdownHtml, NamesNeverBecomeMarkup) {
   EXPECT_NE(html.find("&quot;q&quot; &amp; &#39;a&#39;"), std::string::npos) << html;
 }
 
+// Review 12, C1: report.md escapes < > # | ` in names with a backslash, which the page showed; a
+// backtick in a path was written ' so the report named a file that does not exist.
+TEST(MarkdownHtml, EscapedNamesShowAsTheyAreAndCodeTakesAnyFence) {
+  const std::string html = markdown_html("model m\\<svg onload=x\\>.h5 \\# \\[a\\] \\`\n\n| path |\n|---|\n| ``` a`$(id)``/b\\|c ``` |\n", no_images);
+  EXPECT_NE(html.find("model m&lt;svg onload=x&gt;.h5 # [a] `"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td><code>a`$(id)``/b|c</code></td>"), std::string::npos) << html;
+  EXPECT_EQ(html.find("\\"), std::string::npos) << "no escape's backslash is shown: " << html;
+}
+
 TEST(MarkdownHtml, ImagesComeFromTheSourceGivenOrStayTheirAltText) {
   const auto source = [](const std::string& file) { return file == "speed.png" ? std::string("data:image/png;base64,AAAA") : std::string(); };
   const std::string html = markdown_html("![Speed <and> accuracy](speed.png)\n\n![Missing](gone.png)\n", source);

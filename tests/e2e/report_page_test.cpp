@@ -95,6 +95,26 @@ TEST(ReportPage, ItsWavsAre48kHzClipsOfTheTestSectionsInOrder) {
   EXPECT_GT(joined, 0u) << "the small pipeline has materials with several test sections; their clips run on over them";
 }
 
+// Review 12, C1: names with markup characters showed report.md's escape backslashes on the page, and a
+// back-quote in a path was written ' (a file that does not exist). Both pages show names as they are.
+TEST(ReportPage, NamesShowAsTheyAreInBothPages) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir dir;
+  const std::string folder = dir.file("x`$(id)<b>#|");
+  fs::create_directory(folder);
+  for (const auto& [from, to] : {std::pair{p.dataset, "d.h5"}, {p.split, "s.json"}, {quick_model(false), "m<i>.h5"}})
+    fs::copy_file(from, folder + "/" + to);
+  const CommandResult r = run_haptex({"evaluate", folder + "/d.h5", "--split", folder + "/s.json", "--model", folder + "/m<i>.h5", "--repeats", "2",
+                                      "--reconstruct", "none", "-o", dir.file("rep")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string html = text_of(dir.file("rep/report.html")), md = text_of(dir.file("rep/report.md"));
+  EXPECT_NE(html.find("<code>" + dir.file("x`$(id)&lt;b&gt;#|") + "/d.h5</code>"), std::string::npos) << "the path as it is";
+  EXPECT_NE(html.find("m&lt;i&gt;.h5"), std::string::npos);
+  EXPECT_EQ(html.find("\\&lt;"), std::string::npos) << "no Markdown escape shown";
+  EXPECT_EQ(html.find("\\#"), std::string::npos) << "no Markdown escape shown";
+  EXPECT_NE(md.find("x`$(id)<b>#\\|/d.h5"), std::string::npos) << "report.md's code keeps the back-quote";
+}
+
 TEST(ReportPage, ABrowserLoadsEveryImageAndPlayer) {
   if (!browser_installed()) GTEST_SKIP() << "chromium is not installed (make deps installs it): the page was checked, not opened";
   const std::string shot = screenshot("report_page.png");
