@@ -34,7 +34,8 @@ class CaptureExtract : public CaptureSubcommand {
     app->add_option("--pixel-threshold", pixel_threshold_,
                     "Least per-pixel change that counts, in grey levels (default: the noise of the footage's own "
                     "no-contact frames; with --reference, 6 for lossy sources, 1 for lossless)")
-        ->check(non_negative_number());
+        ->check(non_negative_number())
+        ->check(CLI::Range(0.0, 255.0));  // an 8-bit grey level changes by at most 255
     app->add_option("--trigger", trigger_,
                     "Least contact score that starts a press (default: from the footage's own no-contact frames; with "
                     "--reference, 0.25 lossy, 0.02 lossless)")

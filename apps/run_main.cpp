@@ -38,6 +38,13 @@ void require_finite_numbers(CLI::App& app) {
 // (apps/provenance.hpp lists them).
 // CLI11 reads 025 as octal 21, 0x10 as 16 and " 30" as 30, and wraps -1 into an unsigned 2^64-1:
 // a number on the command line is plain decimal, as a user means it (issue 32, review 2).
+// The option's own default where it has one, so the example lies in its range (review 12, C2).
+std::string decimal_example(const CLI::Option& option, const std::string& type, text::Decimal form) {
+  const std::string fallback = type == "FLOAT" ? "0.5" : "25";
+  const std::string default_value = option.get_default_str();
+  return !default_value.empty() && text::is_plain_decimal(default_value, form) ? default_value : fallback;
+}
+
 void check_decimal(const CLI::Option& option, const std::string& value) {
   const std::string described = option.get_type_name();  // "UINT:INT in [3 - 10000]" with a range check
   const std::string type = described.substr(0, described.find(':'));
@@ -49,7 +56,7 @@ void check_decimal(const CLI::Option& option, const std::string& value) {
   if (form && !text::is_plain_decimal(value, *form))
     throw input_error(option.get_name(), "", "'" + value + "' is not a plain decimal " + (type == "FLOAT" ? "number" : type == "UINT" ? "whole number of 0 or more" : "whole number") +
                                                  " (no leading zeros, 0x, spaces)",
-                      "Write it in decimal, e.g. " + option.get_name() + " 25");
+                      "Write it in decimal, e.g. " + option.get_name() + " " + decimal_example(option, type, *form));
 }
 
 void check_option_values(const CLI::App& app) {
@@ -184,6 +191,14 @@ int run_main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // A value CLI11's range check refused may break haptex's own rules first (0x10 is not a plain
+    // decimal, whatever its value): that is the message that names the mistake (review 12, C2).
+    if (std::string_view(e.what()).find("not in range") != std::string_view::npos) try {
+        check_option_values(app);
+      } catch (const Error&) {
+        return reported_error(parsed_command(app), argc, argv,
+                              std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; }));
+      }
     // A number too large for its option (review 6: --presses 2147483648) says what fits.
     const bool too_large = dynamic_cast<const CLI::ConversionError*>(&e) != nullptr;
     const std::string command = parsed_command(app);

@@ -185,7 +185,8 @@ void PressFile::require_frame_order(const h5::Group& root) const {
     for (std::size_t i = 1; i < sequence.size(); ++i)
       if (std::uint32_t(sequence[i] - sequence[i - 1]) >= 0x80000000u)
         refuse(std::string("/") + layout::kSequence + "[" + std::to_string(i) + "]",
-               "is " + std::to_string(sequence[i]) + ", before the frame before (" + std::to_string(sequence[i - 1]) + ")");
+               "is " + std::to_string(sequence[i]) + " after " + std::to_string(sequence[i - 1]) +
+                   ": the frame counter runs back (a jump of 2^31 or more, counted modulo 2^32 as the counter wraps)");
   }
 }
 

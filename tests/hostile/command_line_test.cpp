@@ -111,6 +111,13 @@ TEST(CommandLine, NumbersAreReadAsPlainDecimals) {
   expect_refusal(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "\u2014 !", "-o", d.file("r")}),
                  {"--material", "no letter or digit"});
   EXPECT_FALSE(fs::exists(d.file("r")));
+  // Review 12, C2: an option with a range (min-coverage, 0 to 1) gave CLI11's "not in range" for 0x10
+  // and an example outside its range; the plain-decimal rule speaks first, with the option's default.
+  for (const std::string value : {"0x10", " 0.5", "5,5", "1_000", "0.5 "})
+    expect_refusal(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--min-coverage", value}),
+                   {"--min-coverage", "'" + value + "' is not a plain decimal", "e.g. --min-coverage 0.9"});
+  // Grey levels end at 255: a larger --pixel-threshold would find no press and blame the footage.
+  expect_refusal(run_haptex({"capture", "extract", p.gelsight, "--pixel-threshold", "1000", "-o", d.file("g.h5")}), {"--pixel-threshold", "1000"});
 }
 
 // Issue 32, class 17 (second review): a value is all of its text, in decimal, within its range, once.
