@@ -5,10 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "dataset/format.hpp"
+#include "dataset/layout.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::dataset {
@@ -26,9 +29,19 @@ WindowTable two_windows() {
   return t;
 }
 
+// The recordings two_windows() is cut from, as long as it needs: a table with more rows than its
+// recordings hold is refused (most_windows).
+void write_recordings(h5::Group root) {
+  h5::Group materials = root.create_group(layout::kMaterials);
+  for (const auto& [material, recording] : {std::pair{"book", "0"}, {"brick_2", "3"}})
+    materials.create_group(material).create_group(layout::kRecordings).create_group(recording).write_array<float>(
+        layout::kAccel, std::vector<float>(1100, 0.0f), h5::Shape{1100});
+}
+
 std::string written(const test::TempDir& dir, const WindowTable& t, const std::string& name = "d.h5") {
   h5::AtomicFile out(dir.file(name), true, format_name(Kind::dataset));
   stamp(out.root(), Kind::dataset, "test");
+  write_recordings(out.root());
   write_window_table(out.root(), t);
   out.commit();
   return dir.file(name);
@@ -87,6 +100,7 @@ TEST(WindowTableFile, RefusesAnotherContractOrDamagedColumnsNamingTheObject) {
     h5::AtomicFile out(broken, true, format_name(Kind::dataset));
     stamp(out.root(), Kind::dataset, "test");
     const WindowTable t = two_windows();
+    write_recordings(out.root());
     h5::Group w = out.root().create_group("windows");
     const std::pair<const char*, std::size_t> attributes[] = {
         {"stride", 100}, {"action_samples", kActionSamples}, {"window_samples", kWindowSamples}, {"action_end", kActionEnd}, {"action_step", kActionStep}};
