@@ -143,7 +143,7 @@ TEST(AlignDataset, RefusesAnotherSampleRateAndSwappedFiles) {
   EXPECT_NE(message.find("5000"), std::string::npos) << message;
   AlignOptions swapped = options_for(in);
   std::swap(swapped.recordings, swapped.gelsight);
-  EXPECT_NE(bad_input_message([&] { align_dataset(swapped); }).find("not recordings/1"), std::string::npos);
+  EXPECT_NE(bad_input_message([&] { align_dataset(swapped); }).find("a gelsight file (haptex capture extract writes those), not a recordings file (recordings/1)"), std::string::npos);
 }
 
 }  // namespace

@@ -117,7 +117,7 @@ TEST(EvaluateCli, RefusesATruthThatIsNotOne) {
                                       dir.file("report")});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find(fake), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("not truth/2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("not a truth file (truth/2)"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir.file("report")));
   EXPECT_TRUE(temporaries_of(dir.file("report")).empty());
 }

@@ -60,7 +60,8 @@ TEST(Messages, ATruncatedHdf5FileIsBadInputWithAFixEverywhere) {
   EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
 }
 
-// A dataset whose window 3 names recording 999: split, train and evaluate name the window.
+// A dataset whose window 3 names recording 999: train names the window; split refuses it through qa's
+// window table check (review 12, F4), which `haptex qa` reports.
 TEST(Messages, AWindowOfAMissingRecordingIsNamed) {
   const TempDir dir;
   const std::string d = copy_into(dir, small_pipeline().dataset, "d.h5");
@@ -73,8 +74,11 @@ TEST(Messages, AWindowOfAMissingRecordingIsNamed) {
   nlohmann::json manifest = read_json(small_pipeline().split);
   manifest["dataset"]["sha256"] = sha256_file(d);
   write_json(dir.file("split.json"), manifest);
-  expect_refusal(run_haptex({"split", d, "-o", dir.file("s.json")}), {d, "/windows[3] (", "recording 999", "no such recording"});
+  expect_refusal(run_haptex({"split", d, "-o", dir.file("s.json")}), {d, "/windows[", "dataset.windows", "haptex qa"});
   expect_refusal(run_haptex(quick_train_args(d, dir.file("split.json"), dir.file("m.h5"))), {d, "/windows[3] (", "recording 999"});
+  const CommandResult qa = run_haptex({"qa", d});
+  EXPECT_EQ(qa.exit_code, 1);
+  EXPECT_NE(qa.out.find("dataset.windows          error     fail"), std::string::npos) << qa.out;
 }
 
 // Names must be UTF-8; the first byte that is not is named, with the file, and nothing is written.

@@ -66,6 +66,7 @@ std::vector<std::vector<std::string>> commands_under(std::vector<std::string> pa
   std::smatch m;
   for (std::string line; std::getline(help, line);) {
     if (line.rfind("Subcommands:", 0) == 0) listing = true;
+    else if (line.empty()) listing = false;  // the list ends; the flags every command takes follow
     else if (listing && std::regex_match(line, m, subcommand)) {
       std::vector<std::string> sub = path;
       sub.push_back(m[1]);
