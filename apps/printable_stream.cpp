@@ -25,6 +25,7 @@ bool PrintableBuffer::flush_pending() {
 
 PrintableBuffer::int_type PrintableBuffer::overflow(int_type c) {
   if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
+  written_ = true;
   const char ch = traits_type::to_char_type(c);
   const auto byte = static_cast<unsigned char>(ch);
   if (!pending_.empty() && (byte & 0xC0) != 0x80 && !flush_pending()) return traits_type::eof();

@@ -16,6 +16,7 @@ class PrintableBuffer : public std::streambuf {
  public:
   explicit PrintableBuffer(std::streambuf* target) : target_(target) {}
   std::streambuf* target() const { return target_; }
+  bool written() const { return written_; }  // whether anything was printed through it
 
  protected:
   int_type overflow(int_type c) override;
@@ -27,6 +28,7 @@ class PrintableBuffer : public std::streambuf {
   std::streambuf* target_;
   std::string pending_;       // the bytes of a UTF-8 character begun, not yet complete
   std::size_t expected_ = 0;  // its length
+  bool written_ = false;
 };
 
 // Installs PrintableBuffer on a stream for as long as it lives.
@@ -39,6 +41,7 @@ class PrintableStream {
   }
   PrintableStream(const PrintableStream&) = delete;
   PrintableStream& operator=(const PrintableStream&) = delete;
+  bool written() const { return buffer_.written(); }
 
  private:
   std::ostream& stream_;

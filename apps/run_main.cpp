@@ -97,7 +97,8 @@ int with_stdout_written(const std::string& command, int code) {
 
 // An error as a command reports it: on stderr, and with --json also on stdout as
 // {"error": {"command", "message", "file", "where", "fix", "exit_code"}} (docs/architecture.md,
-// "Command line"), so a script reading stdout never parses an empty or half answer.
+// "Command line") unless the command printed its own result there, so a script reading stdout always
+// parses one JSON document.
 struct Reported {
   std::string message;
   int exit_code = 1;
@@ -223,7 +224,9 @@ int run_main(int argc, char** argv) {
       return with_stdout_written(name, command->run(global));
     } catch (...) {
       let_a_taken_signal_finish();  // an error the signal caused is not reported: the signal ends the run
-      return reported_error(name, argc, argv, global.json);
+      // A command that printed its result already (extract's JSON of what it found, then exit 1) has
+      // answered on stdout: the error goes to stderr only, so stdout stays one JSON document.
+      return reported_error(name, argc, argv, global.json && !out.written());
     }
   }
   return 2;

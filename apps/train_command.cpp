@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -88,11 +89,12 @@ class TrainCommand : public Command {
         split, {}, [&](std::size_t done, std::size_t total) { if (loading) loading(done, total, "presses"); },
         per_material_ ? predict::PressImages::none : predict::PressImages::training);
     nlohmann::json epochs = nlohmann::json::array();
-    const bool show = !global.quiet && !global.json && (global.verbose > 0 || isatty(STDERR_FILENO));
+    EpochLines lines(!global.quiet && !global.json, global.verbose > 0, isatty(STDERR_FILENO));
     const predict::Model model = predict::train_model(data, options_, [&](const predict::EpochReport& r) {
       epochs.push_back(epoch_json(r));
-      if (show) print_epoch(r);
+      lines.take(r);
     });
+    lines.finish();
     // The model and its log appear together or not at all (a full disk while writing either).
     h5::AtomicFile model_file(output_, force_, dataset::format_name(dataset::Kind::model));
     predict::write_model(model, model_file, global.command_line);
@@ -128,6 +130,31 @@ class TrainCommand : public Command {
       return false;
     }
   }
+
+  // Which epoch lines go to stderr (docs/predict.md, "haptex train"): with -v every one; otherwise
+  // stage 1's (texture, up to 80 epochs) only its last, and stage 2's every one on a terminal or, where
+  // stderr is a log (Slurm, CI), one at most every 10 s and the last.
+  class EpochLines {
+   public:
+    EpochLines(bool shown, bool verbose, bool terminal) : shown_(shown), verbose_(verbose), terminal_(terminal) {}
+    void take(const predict::EpochReport& r) {
+      if (!shown_) return;
+      if (held_ && held_->stage == "texture" && r.stage != "texture") print_epoch(*held_);  // stage 1's last
+      const auto now = std::chrono::steady_clock::now();
+      const bool due = verbose_ || (r.stage != "texture" && (terminal_ || !printed_ || now - *printed_ >= std::chrono::seconds(10)));
+      if (due) print_epoch(r), printed_ = now;
+      held_ = due ? std::nullopt : std::optional(r);
+    }
+    void finish() {
+      if (held_) print_epoch(*held_);
+      held_.reset();
+    }
+
+   private:
+    bool shown_, verbose_, terminal_;
+    std::optional<predict::EpochReport> held_;  // the latest epoch not printed
+    std::optional<std::chrono::steady_clock::time_point> printed_;
+  };
 
   static void print_epoch(const predict::EpochReport& r) {
     if (r.val_accuracy >= 0)

@@ -3,6 +3,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <regex>
+#include <sstream>
 
 #include "core/process/run_program.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -52,5 +54,26 @@ CommandResult run_python(const std::vector<std::string>& args) {
 }
 
 bool python_has(const std::string& modules) { return run_python({"-c", "import " + modules}).exit_code == 0; }
+
+namespace {
+
+bool is_progress_line(const std::string& line) {
+  static const std::regex progress(R"([a-z ]+: [0-9]+/[0-9]+ [^\r\x1b]*\([0-9]+ s\))");
+  return std::regex_match(line, progress);
+}
+
+}  // namespace
+
+bool only_progress_lines(const std::string& err) {
+  return without_progress_lines(err).empty() && (err.empty() || err.back() == '\n');
+}
+
+std::string without_progress_lines(const std::string& err) {
+  std::istringstream in(err);
+  std::string kept;
+  for (std::string l; std::getline(in, l);)
+    if (!is_progress_line(l)) kept += l + "\n";
+  return kept;
+}
 
 }  // namespace haptex::test

@@ -26,5 +26,10 @@ CommandResult run_program(const std::vector<std::string>& argv, const std::strin
 CommandResult run_python(const std::vector<std::string>& args);
 // Whether /usr/bin/python3 can import these modules ("h5py, numpy").
 bool python_has(const std::string& modules);
+// Whether stderr holds only progress as a command logs it where stderr is no terminal (apps/
+// terminal_progress.hpp): whole lines "LABEL: DONE/TOTAL WHAT (N s)", no bar redrawn in place.
+bool only_progress_lines(const std::string& err);
+// stderr without those lines: what a command said besides its progress.
+std::string without_progress_lines(const std::string& err);
 
 }  // namespace haptex::test
