@@ -16,6 +16,7 @@ std::unique_ptr<Command> make_train_command();
 std::unique_ptr<Command> make_predict_command();
 std::unique_ptr<Command> make_windows_command();
 std::unique_ptr<Command> make_evaluate_command();
+std::unique_ptr<Command> make_trajectory_command();
 std::unique_ptr<Command> make_render_command();
 std::unique_ptr<Command> make_play_command();
 
@@ -34,6 +35,7 @@ std::vector<std::unique_ptr<Command>> all_commands() {
   commands.push_back(make_predict_command());
   commands.push_back(make_windows_command());
   commands.push_back(make_evaluate_command());
+  commands.push_back(make_trajectory_command());
   commands.push_back(make_render_command());
   commands.push_back(make_play_command());
   return commands;

@@ -40,11 +40,6 @@ std::string actions_path(const std::string& record) {
   return (p.extension() == ".wav" || p.extension() == ".WAV" ? p.replace_extension(".csv") : std::filesystem::path(record + ".csv")).string();
 }
 
-void check_actions_csv(const std::string& path, bool overwrite) {
-  check_replaceable_output(path, overwrite, std::string("a CSV haptex play recorded (its first line ") + predict::kTrajectoryCsvHeader + ")",
-                           predict::is_trajectory_csv);
-}
-
 class PlayCommand : public Command {
  public:
   std::string name() const override { return "play"; }
@@ -137,7 +132,7 @@ class PlayCommand : public Command {
     refuse_output_among_inputs(record_, inputs);
     refuse_output_among_inputs(actions_path(record_), inputs);
     render::check_wav_output(record_, force_);
-    check_actions_csv(actions_path(record_), force_);
+    predict::check_trajectory_csv_output(actions_path(record_), force_);
   }
 
   // --record's two files under their temporary names, both appearing together or neither
@@ -146,7 +141,7 @@ class PlayCommand : public Command {
     PartialFile wav, csv;
     Recording(const std::string& record, bool force)
         : wav(record, force, [](const std::string& p) { render::check_wav_output(p, true); }),
-          csv(actions_path(record), force, [](const std::string& p) { check_actions_csv(p, true); }) {}
+          csv(actions_path(record), force, [](const std::string& p) { predict::check_trajectory_csv_output(p, true); }) {}
   };
 
   void write_record(Recording& recording, const play::Player& player, unsigned rate, const GlobalOptions& global) const {

@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
+#include "core/text/format.hpp"
 #include "core/input_file.hpp"
 #include "core/image_header.hpp"
 #include "dataset/decode_image.hpp"
@@ -63,14 +64,6 @@ cv::Mat read_rgb(const std::string& path) {
   return image;
 }
 
-// The ids in full up to 12; a model of the whole of HaTT has 100, so longer lists end with how many more.
-std::string listed_ids(const std::vector<std::string>& ids) {
-  constexpr std::size_t kShown = 12;
-  std::string out;
-  for (std::size_t i = 0; i < std::min(ids.size(), kShown); ++i) out += (i ? ", " : "") + ids[i];
-  return ids.size() > kShown ? out + " and " + std::to_string(ids.size() - kShown) + " more" : out;
-}
-
 }  // namespace
 
 TextureCode choose_texture(const Predictor& predictor, const std::string& model_path, const TextureChoice& choice,
@@ -80,7 +73,7 @@ TextureCode choose_texture(const Predictor& predictor, const std::string& model_
     const int m = model.material_index(choice.material);
     if (m < 0)
       throw input_error(model_path, dataset::model_material_ids_path(), "no material '" + choice.material + "'",
-                        "Use one of its " + std::to_string(model.material_ids.size()) + " ids: " + listed_ids(model.material_ids) +
+                        "Use one of its " + std::to_string(model.material_ids.size()) + " ids: " + text::listed(model.material_ids) +
                             " (haptex info lists them with their names)");
     return predictor.material_code(m);
   }

@@ -9,6 +9,7 @@
 
 #include "core/text/parse_number.hpp"
 #include "core/text/utf8.hpp"
+#include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "dataset/window.hpp"
@@ -125,6 +126,11 @@ bool is_trajectory_csv(const std::string& path) {
 
 void action_at(const Trajectory& trajectory, std::size_t t, float* out) {
   dataset::action_ending_at<float>(trajectory.force, trajectory.speed, t, std::span(out, dataset::kActionValues));
+}
+
+void check_trajectory_csv_output(const std::string& path, bool overwrite) {
+  check_replaceable_output(path, overwrite, std::string("a trajectory CSV haptex wrote (its first line ") + kTrajectoryCsvHeader + ")",
+                           is_trajectory_csv);
 }
 
 }  // namespace haptex::predict

@@ -21,6 +21,9 @@ inline constexpr const char* kTrajectoryCsvHeader = "time_s,force_n,speed_mm_s";
 std::string trajectory_csv_text(const Trajectory& trajectory);
 // Whether path starts with that header: a CSV haptex wrote, which --force may replace.
 bool is_trajectory_csv(const std::string& path);
+// Before writing a trajectory CSV to path: core's output checks, and with `overwrite` a refusal to
+// replace a file that is not one haptex wrote (is_trajectory_csv). Throws haptex::Error (bad_input).
+void check_trajectory_csv_output(const std::string& path, bool overwrite);
 
 // The 20 action values (10 force, then 10 speed) ending at sample t (t >= 9).
 void action_at(const Trajectory& trajectory, std::size_t t, float* out);

@@ -23,4 +23,10 @@ std::string replace_all(std::string text, const std::string& from, const std::st
   return text;
 }
 
+std::string listed(const std::vector<std::string>& names, std::size_t shown) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size() && i < shown; ++i) out += (i ? ", " : "") + names[i];
+  return names.size() > shown ? out + " and " + std::to_string(names.size() - shown) + " more" : out;
+}
+
 }  // namespace haptex::text

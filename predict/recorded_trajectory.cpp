@@ -1,0 +1,49 @@
+#include "predict/recorded_trajectory.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/text/format.hpp"
+#include "dataset/format.hpp"
+#include "dataset/layout.hpp"
+#include "dataset/object_paths.hpp"
+#include "dataset/recordings_file.hpp"
+#include "dataset/window.hpp"
+
+namespace haptex::predict {
+
+Trajectory recorded_trajectory(const std::string& path, const RecordedStretch& stretch) {
+  constexpr std::array kinds{dataset::Kind::recordings, dataset::Kind::dataset};
+  const dataset::OpenedFile opened = dataset::open_any(path, kinds, "trajectory reads", "Give a recordings file (haptex convert) or a dataset (haptex align)");
+  const h5::Group materials = opened.file.root().open_group(dataset::layout::kMaterials);
+  if (!materials.has_group(stretch.material))
+    throw input_error(path, dataset::material_path(stretch.material), "no such material",
+                      "Use one of its ids: " + text::listed(materials.children()));
+  const h5::Group recordings = materials.open_group(stretch.material).open_group(dataset::layout::kRecordings);
+  const std::string k = std::to_string(stretch.recording);
+  if (stretch.recording < 0 || !recordings.has_group(k))
+    throw input_error(path, dataset::recording_path(stretch.material, k), "no such recording",
+                      "Give --recording 0 to " + std::to_string(int(recordings.children().size()) - 1));
+  const dataset::RecordingSignals signals = dataset::read_recording_signals(recordings.open_group(k));
+  const std::size_t total = signals.force_lp.size();
+  const double rate = dataset::kSampleRateHz;
+  const std::size_t first = std::size_t(std::llround(stretch.start_s * rate));
+  if (first >= total)
+    throw input_error(path, dataset::recording_path(stretch.material, k),
+                      text::format("starts at %g s, at or past the recording's end (%.4g s)", stretch.start_s, double(total) / rate),
+                      "Give --start before its end");
+  const std::size_t wanted = stretch.seconds > 0 ? std::size_t(std::llround(stretch.seconds * rate)) : total - first;
+  const std::size_t end = std::min(total, first + wanted);
+  Trajectory t;
+  t.force.assign(signals.force_lp.begin() + std::ptrdiff_t(first), signals.force_lp.begin() + std::ptrdiff_t(end));
+  t.speed.assign(signals.speed_lp.begin() + std::ptrdiff_t(first), signals.speed_lp.begin() + std::ptrdiff_t(end));
+  // The low-pass rings a little below 0 where a stroke starts or stops; a trajectory holds no negative
+  // force or speed (read_trajectory refuses them), and the model saturates below its range anyway.
+  for (std::vector<float>* v : {&t.force, &t.speed})
+    for (float& x : *v) x = std::max(x, 0.0f);
+  return t;
+}
+
+}  // namespace haptex::predict

@@ -1,0 +1,79 @@
+// haptex trajectory (docs/render.md, "A trajectory to start from"): a recorded stroke's low-passed
+// force and speed as the CSV render and play read, so docs/render.md's example runs as written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "dataset/format.hpp"
+#include "dataset/object_paths.hpp"
+#include "dataset/recordings_file.hpp"
+#include "tests/support/quick_models.hpp"
+#include "tests/support/run_haptex.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+TEST(TrajectoryCli, ARecordedStrokeIsWhatRenderPlays) {
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  const CommandResult t = run_haptex({"--json", "trajectory", p.dataset, "--material", small_material(), "--start", "0.5", "--seconds", "1.2",
+                                      "-o", dir.file("stroke.csv")});
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  EXPECT_EQ(nlohmann::json::parse(t.out)["samples"], 12000);
+  // The rows are the recording's low-passed force and speed from 0.5 s on (negative ringing made 0).
+  const dataset::RecordingSignals signals = dataset::read_recording_signals(
+      dataset::open_checked(p.dataset, dataset::Kind::dataset).root().open_group(dataset::recording_path(small_material(), 0).substr(1)));
+  std::ifstream csv(dir.file("stroke.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "time_s,force_n,speed_mm_s");
+  for (std::size_t i = 0; i < 12000 && std::getline(csv, line); i += 1) {
+    const std::size_t a = line.find(','), b = line.find(',', a + 1);
+    ASSERT_NEAR(std::stod(line.substr(a + 1, b - a - 1)), std::max(0.0f, signals.force_lp[5000 + i]), 1e-5) << "row " << i;
+    ASSERT_NEAR(std::stod(line.substr(b + 1)), std::max(0.0f, signals.speed_lp[5000 + i]), 1e-3) << "row " << i;
+  }
+  const CommandResult r = run_haptex({"--json", "render", quick_model(), "--material", small_material(), "--trajectory", dir.file("stroke.csv"),
+                                      "-o", dir.file("v.wav")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["samples"], 12000) << r.out;
+}
+
+TEST(TrajectoryCli, ABadChoiceIsRefusedNamingWhatThereIs) {
+  const TempDir dir;
+  const SmallPipeline& p = small_pipeline();
+  const auto run = [&](const std::vector<std::string>& more) {
+    std::vector<std::string> args = {"trajectory", p.dataset, "-o", dir.file("t.csv")};
+    args.insert(args.end(), more.begin(), more.end());
+    return run_haptex(args);
+  };
+  const CommandResult material = run({"--material", "no_such"});
+  EXPECT_EQ(material.exit_code, 2);
+  EXPECT_NE(material.err.find("no such material. Use one of its ids: "), std::string::npos) << material.err;
+  EXPECT_NE(material.err.find(small_material()), std::string::npos) << material.err;
+  const CommandResult recording = run({"--material", small_material(), "--recording", "99"});
+  EXPECT_EQ(recording.exit_code, 2);
+  EXPECT_NE(recording.err.find("no such recording. Give --recording 0 to "), std::string::npos) << recording.err;
+  const CommandResult late = run({"--material", small_material(), "--start", "1000"});
+  EXPECT_EQ(late.exit_code, 2);
+  EXPECT_NE(late.err.find("at or past the recording's end"), std::string::npos) << late.err;
+  EXPECT_FALSE(fs::exists(dir.file("t.csv")));
+  // --force replaces only a trajectory haptex wrote; never an input.
+  std::ofstream(dir.file("mine.csv")) << "my notes\n";
+  const CommandResult mine = run_haptex({"trajectory", p.dataset, "--material", small_material(), "-o", dir.file("mine.csv"), "--force"});
+  EXPECT_EQ(mine.exit_code, 2) << mine.err;
+  std::ifstream kept(dir.file("mine.csv"));
+  std::string text;
+  std::getline(kept, text);
+  EXPECT_EQ(text, "my notes");
+  const CommandResult input = run_haptex({"trajectory", p.dataset, "--material", small_material(), "-o", p.dataset, "--force"});
+  EXPECT_EQ(input.exit_code, 2);
+  EXPECT_NE(input.err.find("also an input"), std::string::npos) << input.err;
+}
+
+}  // namespace
+}  // namespace haptex::test
