@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <future>
 #include <nlohmann/json.hpp>
 
@@ -77,6 +79,62 @@ TEST(ScaleOut, FourShardsRunAtOnceMergeIntoTheDatasetOfOneRun) {
     ASSERT_EQ(run_haptex({"split", dir.file(file), "-o", dir.file(std::string(file) + ".json"), "--seed", "7", "--no-plots"}).exit_code, 0);
   EXPECT_EQ(assignment(dir.file("merged.h5.json")), assignment(dir.file("d.h5.json")));
   EXPECT_EQ(assignment(dir.file("d.h5.json")).size(), 4u);
+}
+
+// The recipe as a user runs it (docs/scale-out.md): examples/scale-out/shards.sh under `xargs -P 2` on a
+// collection laid out as the doc says, haptex found on PATH, then merged; the merged /windows are one
+// run's. A shard beyond the materials stops with exit code 2 before any work.
+TEST(ScaleOut, TheShardScriptUnderXargsGivesTheWindowsOfOneRun) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  if (run_program({"bash", "--version"}).exit_code != 0) GTEST_SKIP() << "bash is missing";
+  const TempDir dir;
+  const std::string synth = dir.file("synth");
+  ASSERT_EQ(run_haptex({"synth", "materials", "-n", "3", "--size", "320x240", "--presses", "5", "--recordings", "1", "--seconds", "3", "-o",
+                        synth, "-q"}).exit_code, 0);
+  // collection/{recordings,presses}/<Material>/ ("Brushed 1": names with spaces), in a folder whose name has one too.
+  const std::string collection = dir.file("my collection");
+  fs::create_directories(collection + "/presses");
+  for (const auto& folder : fs::directory_iterator(synth + "/gelsight")) {
+    const std::string material = folder.path().filename().string();
+    std::string xml = material;
+    for (char& c : xml) c = c == ' ' ? '_' : char(std::tolower(static_cast<unsigned char>(c)));
+    fs::create_directories(collection + "/recordings/" + material);
+    fs::copy_file(synth + "/recordings/" + xml + "_0.xml.gz", collection + "/recordings/" + material + "/" + xml + "_0.xml.gz");
+    fs::copy(folder.path(), collection + "/presses/" + material, fs::copy_options::recursive);
+  }
+  // One run over the whole collection.
+  ASSERT_EQ(run_shard({{"convert", "hatt", collection + "/recordings", "-o", dir.file("r.h5")},
+                       {"capture", "extract", collection + "/presses", "-o", dir.file("g.h5"), "--no-sheets"},
+                       {"align", "--recordings", dir.file("r.h5"), "--gelsight", dir.file("g.h5"), "-o", dir.file("d.h5")}}),
+            "");
+  const std::string path = fs::path(haptex_binary()).parent_path().string() + ":" + std::getenv("PATH");
+  const std::string script = std::string(HAPTEX_SCHEMA_DIR) + "/../examples/scale-out/shards.sh";
+  const auto shards = [&](int count, const std::string& indices) {
+    std::ofstream(dir.file("indices")) << indices;
+    return run_program({"xargs", "-P", "2", "-I{}", "-a", dir.file("indices"), "env", "PATH=" + path, "COLLECTION=" + collection,
+                        "OUT=" + dir.file("shards"), "SHARD={}", "SHARDS=" + std::to_string(count), script},
+                       dir.path());
+  };
+  const CommandResult r = shards(3, "0\n1\n2\n");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  std::vector<std::string> merge{"merge", "-o", dir.file("merged.h5")};
+  for (const char* n : {"0", "1", "2"}) merge.push_back(dir.file("shards/" + std::string(n) + "/dataset.h5"));
+  const CommandResult merged = run_haptex(merge);
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  const CommandResult same = run_python({kScripts + "same_content.py", dir.file("merged.h5"), dir.file("d.h5"), "source", "created_utc",
+                                         "recordings_file", "recordings_sha256", "gelsight_file", "gelsight_sha256"});
+  EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
+  EXPECT_NE(same.out.find("same content"), std::string::npos) << same.out;
+  // More shards than materials: the fourth has none and says so, exit 2 (xargs then 123).
+  const CommandResult empty = shards(4, "3\n");
+  EXPECT_EQ(empty.exit_code, 123) << empty.err;
+  EXPECT_NE(empty.err.find("shard 3 of 4 has no materials"), std::string::npos) << empty.err;
+  EXPECT_FALSE(fs::exists(dir.file("shards/3")));
+  // Without haptex on PATH, before any work.
+  std::ofstream(dir.file("indices")) << "0\n";
+  const CommandResult unfound = run_program({"env", "PATH=/usr/bin:/bin", "SHARD=0", "SHARDS=1", "COLLECTION=" + collection, script}, dir.path());
+  EXPECT_EQ(unfound.exit_code, 2);
+  EXPECT_NE(unfound.err.find("haptex is not on PATH"), std::string::npos) << unfound.err;
 }
 
 }  // namespace
