@@ -84,7 +84,10 @@ constexpr std::pair<std::string_view, std::string_view> kExplanations[] = {
      "generalise to new actions? This is the paper's main experiment."},
     {"unified-new-presses",
      "The same unified model, but the texture comes from the material's test press, a GelSight image the model never "
-     "saw: does it generalise to a new image of a known surface?"},
+     "saw: does it generalise to a new image of a known surface? A press is recognised (docs/predict.md, \"A new press\"): "
+     "its latent is the training materials' latents weighted by how surely the classifier takes it for each. A press "
+     "taken for its own material outright gets that material's training latent, and its figures then equal "
+     "unified-new-actions': for such a material this experiment measures recognition, not how a new image carries over."},
     {"external-",
      "A model trained outside haptex (docs/benchmark.md): its predictions file holds one spectrum per test window of the "
      "grid `haptex windows` writes, scored here exactly as the built-in models are. What it was told (the material, the "
@@ -268,10 +271,31 @@ void worse_than_mean_spectrum(std::ostringstream& s, const Experiment& x) {
        "on: " << (names.empty() ? "none" : names) << ".\n\n";
 }
 
-void experiment_section(std::ostringstream& s, const Experiment& x, const std::string& stem, const ChartResult& charts,
-                        const std::string& floor_kind) {
+// unified-new-presses beside unified-new-actions of the same model: on how many materials the
+// figures are the same, the press recognised as its material outright ("" for other experiments).
+std::string recognition_note(const Evaluation& e, const Experiment& x) {
+  constexpr std::string_view presses = "unified-new-presses", actions = "unified-new-actions";
+  if (x.id.rfind(presses, 0) != 0) return "";
+  const std::string twin = std::string(actions) + x.id.substr(presses.size());
+  const auto other = std::find_if(e.experiments.begin(), e.experiments.end(), [&](const Experiment& y) { return y.id == twin; });
+  if (other == e.experiments.end()) return "";
+  std::size_t same = 0;
+  for (const MaterialComparison& m : x.materials)
+    for (const MaterialComparison& n : other->materials)
+      same += m.id == n.id && std::abs(m.model - n.model) <= 1e-9 * std::max(std::abs(n.model), 1e-12);
+  if (same == 0) return "";
+  if (same == x.materials.size())
+    return "**Here every test press was recognised as its own material outright:** these figures equal " + code(twin) +
+           "'s and measure recognition, not how a new image carries over.\n\n";
+  return text::format("On %zu of %zu materials the test press was recognised as its own material outright: there the figures "
+                      "equal ", same, x.materials.size()) + code(twin) + "'s and measure recognition.\n\n";
+}
+
+void experiment_section(std::ostringstream& s, const Evaluation& e, const Experiment& x, const std::string& stem, const ChartResult& charts) {
+  const std::string& floor_kind = e.floor_kind;
   s << "### " << escaped(x.title) << " (" << code(x.id) << ")\n\n";
   if (const std::string_view why = experiment_explanation(x.id); !why.empty()) s << why << "\n\n";
+  s << recognition_note(e, x);
   s << "Model: " << escaped(x.model_label) << ". Baseline: " << escaped(x.baseline_label) << ".\n\n";
   if (x.materials.empty()) {
     s << "No material could be compared (see Notes).\n\n";
@@ -484,7 +508,7 @@ std::string report_markdown(const Evaluation& e, const ReportLayout& layout, con
   totals_section(s, e);
   if (!e.experiments.empty()) s << "## Experiments\n\n";
   for (std::size_t i = 0; i < e.experiments.size(); ++i)
-    experiment_section(s, e.experiments[i], layout.experiments[i], charts, e.floor_kind);
+    experiment_section(s, e, e.experiments[i], layout.experiments[i], charts);
   floor_section(s, e);
   realism_section(s, e);
   examples_section(s, e, layout, charts);

@@ -402,6 +402,29 @@ TEST(ReportWriter, MarkdownGivesTotalsPaperFiguresAndTables) {
   }
 }
 
+// Issue 35: a test press recognised as its own material outright gives unified-new-actions' figures;
+// the report says so, per material, instead of presenting recognition as generalisation to a new image.
+TEST(ReportWriter, MarkdownSaysWhereNewPressesMeasureRecognition) {
+  for (const std::size_t recognised : {std::size_t(2), std::size_t(5)}) {
+    Evaluation e = sample_evaluation();
+    Experiment& presses = *std::find_if(e.experiments.begin(), e.experiments.end(), [](const Experiment& x) { return x.id == "unified-new-presses"; });
+    presses.materials = e.experiments[0].materials;  // unified-new-actions' materials and figures
+    for (std::size_t m = recognised; m < presses.materials.size(); ++m) presses.materials[m].model += 0.05;
+    test::TempDir tmp;
+    write_report(e, tmp.file("report"), false);
+    const std::string md = test::file_text(tmp.file("report") + "/report.md");
+    if (recognised == 5)
+      EXPECT_NE(md.find("every test press was recognised as its own material outright:** these figures equal `unified-new-actions`'s"),
+                std::string::npos) << md;
+    else
+      EXPECT_NE(md.find("On 2 of 5 materials the test press was recognised as its own material outright"), std::string::npos) << md;
+  }
+  test::TempDir tmp;
+  write_report(sample_evaluation(), tmp.file("report"), false);
+  EXPECT_EQ(test::file_text(tmp.file("report") + "/report.md").find("recognised as its own material outright:"), std::string::npos)
+      << "no note where no figure is the same";
+}
+
 TEST(ReportWriter, ResultsJsonHoldsFloorsRealismAndNullWhereNotMeasured) {
   test::TempDir tmp;
   const std::string dir = tmp.file("report");
