@@ -2,7 +2,10 @@
 // that name the real problem, and scripts that read --json get an answer on stdout even for an error.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -93,6 +96,20 @@ TEST(FirstHour, EveryCommandsHelpListsTheFlagsAllCommandsTake) {
     const CommandResult help = run_haptex({"capture", part, "--help"});
     EXPECT_NE(help.out.find("--json"), std::string::npos) << "capture " << part;
   }
+}
+
+// Numbers in the docs that the code produces are checked against it (issue 35): docs/qa.md's example
+// run on a recordings file says how many checks such a file gets.
+TEST(FirstHour, TheQaPagesExampleCountsTheChecksOfARecordingsFile) {
+  std::ifstream in(std::string(HAPTEX_SCHEMA_DIR) + "/../docs/qa.md");
+  const std::string page(std::istreambuf_iterator<char>(in), {});
+  std::smatch documented;
+  ASSERT_TRUE(std::regex_search(page, documented, std::regex("\\$ haptex qa recordings.h5[^$]*?in ([0-9]+) checks\\)")));
+  const CommandResult r = run_haptex({"qa", small_pipeline().recordings});
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  std::smatch ran;
+  ASSERT_TRUE(std::regex_search(r.out, ran, std::regex("in ([0-9]+) checks\\)"))) << r.out;
+  EXPECT_EQ(documented[1], ran[1]);
 }
 
 }  // namespace
