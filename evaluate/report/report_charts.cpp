@@ -8,6 +8,7 @@
 
 #include "core/durable_file.hpp"
 #include "core/plot/gnuplot.hpp"
+#include "core/text/format.hpp"
 #include "evaluate/report/results_json.hpp"
 
 namespace haptex::evaluate {
@@ -41,8 +42,10 @@ std::string bars_script(const Experiment& x, const std::string& stem, const std:
   std::ostringstream s;
   s << header(terminal, stem, int(std::clamp<std::size_t>(160 + 18 * n, 800, 6000)), 620,
               "baseline minus model per material (the paper's Fig. 4)")
-    << "set title " << gnuplot::text(x.title + "\nbaseline - model over the test windows: median (bar) and quartiles; "
-                                                "> 0: the model is closer") << "\n"
+    // Two lines joined in gnuplot (`.` and a "\n" of the script's own): the title as it is, then how to read the bars.
+    << "set title " << gnuplot::text(x.title) << ".\"\\n\"."
+    << gnuplot::text("bars: median of baseline - model per test window; whiskers: quartiles; above 0 the model is closer", 160)
+    << "\n"
     << "set ylabel 'baseline - model spectral distance (m/s^2)'\n"
     << "set xrange [-0.6:" << double(n) - 0.4 << "]\n"
     << "set xtics nomirror rotate by 60 right font ',8' (";
@@ -56,10 +59,16 @@ std::string bars_script(const Experiment& x, const std::string& stem, const std:
     << "plot '" << stem << ".csv' using 0:'difference_median':(colour(column('better'), column('significant'))) "
     << "with boxes lc rgb variable notitle, \\\n"
     << "     '' using 0:'difference_q1':(0):(column('difference_q3') - column('difference_q1')) with vectors heads "
-    << "size screen 0.008,90 lc rgb 'black' notitle, \\\n"
-    << "     NaN with boxes lc rgb '" << kBetter << "' title 'model significantly better (p < " << kSignificanceLevel << ")', \\\n"
-    << "     NaN with boxes lc rgb '" << kNotSignificant << "' title 'not significant', \\\n"
-    << "     NaN with boxes lc rgb '" << kWorse << "' title 'model significantly worse'\n";
+    << "size screen 0.008,90 lc rgb 'black' notitle";
+  // The key lists the colours drawn, no other.
+  const auto drawn = [&](bool significant, bool better) {
+    return std::any_of(x.materials.begin(), x.materials.end(),
+                       [&](const MaterialComparison& m) { return m.significant() == significant && (!significant || m.better() == better); });
+  };
+  if (drawn(true, true)) s << ", \\\n     NaN with boxes lc rgb '" << kBetter << "' title 'model significantly better (p < " << kSignificanceLevel << ")'";
+  if (drawn(false, false)) s << ", \\\n     NaN with boxes lc rgb '" << kNotSignificant << "' title 'not significant'";
+  if (drawn(true, false)) s << ", \\\n     NaN with boxes lc rgb '" << kWorse << "' title 'model significantly worse'";
+  s << "\n";
   return s.str();
 }
 
@@ -151,6 +160,40 @@ std::string reference_line(const SpeedPanel& panel, const Evaluation& e) {
   return ", \\\n     floor with lines dt 2 lc rgb '#666666' title " + gnuplot::text(label);
 }
 
+// Where each point's label goes, in text lines below its place beside the point: a label that would
+// cover one placed before (two methods at one speed and distance, as unified-new-actions and
+// unified-new-presses when every press is recognised) moves down a line until it is clear. Positions
+// are fractions of the panel (x in decades when log_x), a label's box its characters at about 1/140
+// of the width and a line at 1/40 of the height (8-point text on an 800 x 720 panel).
+std::vector<int> label_lines(const std::vector<SpeedPoint>& points, const SpeedPanel& panel, bool log_x) {
+  constexpr double kCharWidth = 1.0 / 140, kLineHeight = 1.0 / 40;
+  std::vector<int> lines(points.size(), 0);
+  double x_min = INFINITY, x_max = -INFINITY, y_min = INFINITY, y_max = -INFINITY;
+  const auto x_of = [&](const SpeedPoint& p) { return log_x ? std::log10(p.seconds_per_second) : p.seconds_per_second; };
+  for (const SpeedPoint& p : points)
+    if (on_panel(p, panel, log_x))
+      x_min = std::min(x_min, x_of(p)), x_max = std::max(x_max, x_of(p)), y_min = std::min(y_min, panel_y(p, panel)),
+      y_max = std::max(y_max, panel_y(p, panel));
+  const double x_span = std::max(x_max - x_min, 1e-12), y_span = std::max(y_max - y_min, 1e-12);
+  struct Box {
+    double x, y, width;
+  };
+  std::vector<Box> placed;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!on_panel(points[i], panel, log_x)) continue;
+    const double x = (x_of(points[i]) - x_min) / x_span, width = kCharWidth * double(points[i].setting.size());
+    const auto covers = [&](double y) {
+      return std::any_of(placed.begin(), placed.end(), [&](const Box& b) {
+        return std::abs(b.y - y) < kLineHeight && x < b.x + b.width && b.x < x + width;
+      });
+    };
+    double y = (panel_y(points[i], panel) - y_min) / y_span;
+    while (covers(y) && lines[i] < 20) ++lines[i], y -= kLineHeight;
+    placed.push_back({x, y, width});
+  }
+  return lines;
+}
+
 // One panel: its points coloured by method (colours shared by both panels), labelled with their setting.
 void speed_panel(std::ostringstream& s, const Evaluation& e, const SpeedPanel& panel, const std::vector<std::string>& methods,
                  bool log_x) {
@@ -158,10 +201,11 @@ void speed_panel(std::ostringstream& s, const Evaluation& e, const SpeedPanel& p
   s << "unset label\n"
     << (log_x ? "set label 'real time' at 1, graph 0.5 rotate by 90 offset char -1,0 center tc rgb '#666666'\n" : "")
     << "set title " << gnuplot::text(std::string(panel.title)) << "\nset ylabel " << gnuplot::text(std::string(panel.ylabel)) << "\n";
-  for (const SpeedPoint& p : points)
-    if (on_panel(p, panel, log_x))
-      s << "set label " << gnuplot::text(p.setting) << " at " << csv_number(p.seconds_per_second) << ","
-        << csv_number(panel_y(p, panel)) << " offset char 0.8,0.4 font ',8'\n";
+  const std::vector<int> lines = label_lines(points, panel, log_x);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (on_panel(points[i], panel, log_x))
+      s << "set label " << gnuplot::text(points[i].setting) << " at " << csv_number(points[i].seconds_per_second) << ","
+        << csv_number(panel_y(points[i], panel)) << " offset char 0.8," << text::format("%.1f", 0.4 - lines[i]) << " font ',8'\n";
   s << "plot ";
   bool first = true;
   for (std::size_t m = 0; m < methods.size(); ++m) {

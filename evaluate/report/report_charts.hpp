@@ -5,12 +5,14 @@
 //
 // - experiment-<id>.png (the paper's Fig. 4), per experiment: per material a bar at the median of
 //   baseline - model over the test windows with the quartiles as error bars, coloured by the Welch
-//   test (significantly better, not significant, significantly worse);
+//   test (significantly better, not significant, significantly worse; the key lists the colours drawn),
+//   titled with the experiment and, on a second line, how to read bars and whiskers;
 // - examples.png (Fig. 5): the first four examples in a 2 x 4 grid, spectra of one test window
 //   above, the start of the stitched signals below; recorded, model and baseline;
 // - latents.png: the texture latents' 2-D PCA, mean training latents and test presses, labelled;
 // - speed.png: two panels against compute time per second of rendered vibration (log axis), one
-//   point per method and setting, labelled with the setting: left, "spectrum accuracy", the speed
+//   point per method and setting, labelled with the setting (a label that would cover another moves
+//   down a line): left, "spectrum accuracy", the speed
 //   points of kind spectrum at their mean spectral distance, with a line at the mean floor distance
 //   (read from floors.csv; "oracle" or "floor (estimate)"); right, "signal realism", the points of
 //   kind signal at their spread ratio, with a line at 1 (the recording). A panel without a point

@@ -591,6 +591,28 @@ TEST(ReportWriter, TheSpeedChartReadsTheFloorFromItsCsv) {
   EXPECT_EQ(none.find("spread_ratio"), std::string::npos);
 }
 
+// Issue 35: two points at one place had their labels printed over each other; the bar chart's title
+// was cut short, and its key listed a colour no bar had.
+TEST(ReportWriter, ChartLabelsDoNotCoverEachOtherAndTheKeyListsWhatIsDrawn) {
+  test::TempDir tmp;
+  Evaluation e = sample_evaluation();
+  e.speed.push_back({"unified-new-presses", "unified.h5, 64 hidden", 0.0008, 0.5});  // where "unified" is
+  write_report(e, tmp.file("r"), false);
+  const std::string speed = test::file_text(tmp.file("r/speed.gnuplot"));
+  EXPECT_NE(speed.find("set label 'unified.h5, 64 hidden' at 8e-04,0.5 offset char 0.8,0.4 "), std::string::npos) << speed;
+  EXPECT_NE(speed.find("set label 'unified.h5, 64 hidden' at 8e-04,0.5 offset char 0.8,-0.6 "), std::string::npos) << "a line below: " << speed;
+  // unified-new-actions: better, not significant and significantly worse materials; stitched-fgla: no worse one.
+  const std::string all = test::file_text(tmp.file("r/experiment-unified-new-actions.gnuplot"));
+  EXPECT_NE(all.find("title 'model significantly worse'"), std::string::npos) << all;
+  const std::string stitched = test::file_text(tmp.file("r/experiment-stitched-fgla.gnuplot"));
+  EXPECT_NE(stitched.find("title 'model significantly better"), std::string::npos) << stitched;
+  EXPECT_NE(stitched.find("title 'not significant'"), std::string::npos) << stitched;
+  EXPECT_EQ(stitched.find("title 'model significantly worse'"), std::string::npos) << "no such bar, no such key: " << stitched;
+  EXPECT_NE(stitched.find("set title 'Stitched signals, fast Griffin-Lim'.\"\\n\".'bars: median of baseline - model per test window; "
+                          "whiskers: quartiles; above 0 the model is closer'"),
+            std::string::npos) << stitched;
+}
+
 TEST(ReportWriter, ChartsAreValidPngsWhenGnuplotIsInstalled) {
   if (!gnuplot_installed()) GTEST_SKIP() << "gnuplot is not installed";
   test::TempDir tmp;
