@@ -35,6 +35,19 @@ nlohmann::json assignment(const std::string& split) {
   return out;
 }
 
+// Merges the shards' datasets into dir/merged.h5 and checks it holds what one run made in dir/d.h5:
+// the same materials, recordings, presses and windows, apart from provenance.
+void expect_merge_of_shards_is_one_run(const TempDir& dir, const std::vector<std::string>& datasets) {
+  std::vector<std::string> merge{"merge", "-o", dir.file("merged.h5")};
+  merge.insert(merge.end(), datasets.begin(), datasets.end());
+  const CommandResult merged = run_haptex(merge);
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  const CommandResult same = run_python({kScripts + "same_content.py", dir.file("merged.h5"), dir.file("d.h5"), "source", "created_utc",
+                                         "recordings_file", "recordings_sha256", "gelsight_file", "gelsight_sha256"});
+  EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
+  EXPECT_NE(same.out.find("same content"), std::string::npos) << same.out;
+}
+
 TEST(ScaleOut, FourShardsRunAtOnceMergeIntoTheDatasetOfOneRun) {
   if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
   const TempDir dir;
@@ -66,15 +79,7 @@ TEST(ScaleOut, FourShardsRunAtOnceMergeIntoTheDatasetOfOneRun) {
   }
   ASSERT_EQ(shards.size(), 4u);
   for (auto& s : shards) EXPECT_EQ(s.get(), "");
-  std::vector<std::string> merge{"merge", "-o", dir.file("merged.h5")};
-  merge.insert(merge.end(), datasets.begin(), datasets.end());
-  const CommandResult merged = run_haptex(merge);
-  ASSERT_EQ(merged.exit_code, 0) << merged.err;
-
-  const CommandResult same = run_python({kScripts + "same_content.py", dir.file("merged.h5"), dir.file("d.h5"), "source", "created_utc",
-                                         "recordings_file", "recordings_sha256", "gelsight_file", "gelsight_sha256"});
-  EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
-  EXPECT_NE(same.out.find("same content"), std::string::npos) << same.out;
+  expect_merge_of_shards_is_one_run(dir, datasets);
   for (const char* file : {"merged.h5", "d.h5"})
     ASSERT_EQ(run_haptex({"split", dir.file(file), "-o", dir.file(std::string(file) + ".json"), "--seed", "7", "--no-plots"}).exit_code, 0);
   EXPECT_EQ(assignment(dir.file("merged.h5.json")), assignment(dir.file("d.h5.json")));
@@ -117,14 +122,7 @@ TEST(ScaleOut, TheShardScriptUnderXargsGivesTheWindowsOfOneRun) {
   };
   const CommandResult r = shards(3, "0\n1\n2\n");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
-  std::vector<std::string> merge{"merge", "-o", dir.file("merged.h5")};
-  for (const char* n : {"0", "1", "2"}) merge.push_back(dir.file("shards/" + std::string(n) + "/dataset.h5"));
-  const CommandResult merged = run_haptex(merge);
-  ASSERT_EQ(merged.exit_code, 0) << merged.err;
-  const CommandResult same = run_python({kScripts + "same_content.py", dir.file("merged.h5"), dir.file("d.h5"), "source", "created_utc",
-                                         "recordings_file", "recordings_sha256", "gelsight_file", "gelsight_sha256"});
-  EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
-  EXPECT_NE(same.out.find("same content"), std::string::npos) << same.out;
+  expect_merge_of_shards_is_one_run(dir, {dir.file("shards/0/dataset.h5"), dir.file("shards/1/dataset.h5"), dir.file("shards/2/dataset.h5")});
   // More shards than materials: the fourth has none and says so, exit 2 (xargs then 123).
   const CommandResult empty = shards(4, "3\n");
   EXPECT_EQ(empty.exit_code, 123) << empty.err;
