@@ -204,6 +204,12 @@ int run_main(int argc, char** argv) {
     const bool too_large = dynamic_cast<const CLI::ConversionError*>(&e) != nullptr;
     const std::string command = parsed_command(app);
     const std::string help = command.empty() ? "haptex --help" : "haptex " + command + " --help";
+    // `haptex nosuch` is a name CLI11 does not know, which it reports as no subcommand at all (review 13, C3).
+    const char* const* word = std::find_if(argv + 1, argv + argc, [](const char* a) { return a[0] != '-'; });
+    if (command.empty() && word != argv + argc)
+      return report("", {"error: '" + text::printable(*word) + "' is no haptex command. Run 'haptex --help' for the list", 2, "", "",
+                         "Run 'haptex --help' for the list"},
+                    std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; }));
     const bool json = std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; });
     return report(command,
                   {"error: " + text::printable(e.what()) +

@@ -25,13 +25,22 @@ const std::string& checked_device_name(const std::string& device) {
                                                    "pipes or definitions", text::printable(device).c_str(), text::printable(std::string(1, *bad)).c_str(),
                                                    std::size_t(bad - device.begin()) + 1),
                       fix);
-  const std::string_view type = std::string_view(device).substr(0, device.find(':'));
-  for (const std::string_view writer : std::array<std::string_view, 2>{"file", "tee"})
-    if (type == writer && device.size() > type.size())
-      throw input_error("--device", "", "'" + text::printable(device) + "' is ALSA's " + std::string(writer) +
-                                            " plugin with arguments, which writes whatever file they name (or runs a command)",
-                        "Keep what is played with --record out.wav; to try play without a card, define a device in an ALSA "
-                        "configuration as docs/play.md shows");
+  // Any word of the string, not only its first: `plug:SLAVE=file:X` opens the file plugin as plug's
+  // slave (review 13, F3).
+  std::string word;
+  for (std::size_t i = 0; i <= device.size(); ++i) {
+    if (i < device.size() && std::string_view(":,=").find(device[i]) == std::string_view::npos) {
+      word += char(std::tolower(static_cast<unsigned char>(device[i])));
+      continue;
+    }
+    for (const std::string_view writer : std::array<std::string_view, 2>{"file", "tee"})
+      if (word == writer)
+        throw input_error("--device", "", "'" + text::printable(device) + "' names ALSA's " + std::string(writer) +
+                                              " plugin, which writes whatever file its arguments name (or runs a command)",
+                          "Keep what is played with --record out.wav; to try play without a card, define a device in an ALSA "
+                          "configuration as docs/play.md shows");
+    word.clear();
+  }
   return device;
 }
 

@@ -3,8 +3,8 @@
 // language: `file:FILE=model.h5` truncates any file, the command's own input included, and
 // `file:FILE=|cmd` runs cmd through a shell (review 12, F3). So haptex passes ALSA a device name
 // only: letters, digits and `_ . : , = -` (default, plughw:1,0, hw:CARD=PCH,DEV=0, sysdefault:CARD=x,
-// a name an ALSA configuration defines), never the file-writing plugins (`file`, `tee`) with their
-// arguments, and never a path, a pipe or an inline definition.
+// a name an ALSA configuration defines), never naming the file-writing plugins (`file`, `tee`) in any
+// part of it, and never a path, a pipe or an inline definition.
 #include <string>
 
 namespace haptex::play {

@@ -18,7 +18,10 @@ Trajectory recorded_trajectory(const std::string& path, const RecordedStretch& s
   constexpr std::array kinds{dataset::Kind::recordings, dataset::Kind::dataset};
   const dataset::OpenedFile opened = dataset::open_any(path, kinds, "trajectory reads", "Give a recordings file (haptex convert) or a dataset (haptex align)");
   const h5::Group materials = opened.file.root().open_group(dataset::layout::kMaterials);
-  if (!materials.has_group(stretch.material))
+  // An id, not a path into the file (review 13, F2: "/materials/x" and "x/" were followed).
+  const bool an_id = !stretch.material.empty() && stretch.material.find('/') == std::string::npos && stretch.material != "." &&
+                     stretch.material != "..";
+  if (!an_id || !materials.has_group(stretch.material))
     throw input_error(path, dataset::material_path(stretch.material), "no such material",
                       "Use one of its ids: " + text::listed(materials.children()));
   const h5::Group recordings = materials.open_group(stretch.material).open_group(dataset::layout::kRecordings);
@@ -29,13 +32,20 @@ Trajectory recorded_trajectory(const std::string& path, const RecordedStretch& s
   const dataset::RecordingSignals signals = dataset::read_recording_signals(recordings.open_group(k));
   const std::size_t total = signals.force_lp.size();
   const double rate = dataset::kSampleRateHz;
-  const std::size_t first = std::size_t(std::llround(stretch.start_s * rate));
+  // The sample at or after --start, so a start within the last sample's 0.1 ms is that sample (review 13, C1).
+  const std::size_t first = std::size_t(std::ceil(stretch.start_s * rate - 1e-9));
   if (first >= total)
     throw input_error(path, dataset::recording_path(stretch.material, k),
-                      text::format("starts at %g s, at or past the recording's end (%.4g s)", stretch.start_s, double(total) / rate),
+                      text::format("starts at %g s, after its last sample (at %.4f s)", stretch.start_s, double(total - 1) / rate),
                       "Give --start before its end");
   const std::size_t wanted = stretch.seconds > 0 ? std::size_t(std::llround(stretch.seconds * rate)) : total - first;
   const std::size_t end = std::min(total, first + wanted);
+  // What render and play need (review 13, F1: --seconds 1e-9 wrote a CSV of no sample, exit 0).
+  if (end - first < kMinTrajectorySamples)
+    throw input_error(path, dataset::recording_path(stretch.material, k),
+                      text::format("holds %zu samples from %g s for %g s, fewer than the %zu (%.1f ms) a trajectory needs", end - first,
+                                   stretch.start_s, stretch.seconds, kMinTrajectorySamples, 1000.0 * double(kMinTrajectorySamples) / rate),
+                      "Give a longer --seconds, or an earlier --start");
   Trajectory t;
   t.force.assign(signals.force_lp.begin() + std::ptrdiff_t(first), signals.force_lp.begin() + std::ptrdiff_t(end));
   t.speed.assign(signals.speed_lp.begin() + std::ptrdiff_t(first), signals.speed_lp.begin() + std::ptrdiff_t(end));

@@ -2,10 +2,14 @@
 // A force/speed trajectory from a CSV file, as `haptex predict --csv` and `haptex render` read it:
 // a header naming the columns force (or force_n, N) and speed (or speed_mm_s, mm/s), optionally
 // time_s; one row per sample at 10 kHz.
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace haptex::predict {
+
+// The shortest trajectory render and play take: one action's 10 samples (1 ms).
+inline constexpr std::size_t kMinTrajectorySamples = 10;
 
 struct Trajectory {
   std::vector<float> force, speed;  // N, mm/s

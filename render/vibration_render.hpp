@@ -37,9 +37,9 @@
 
 namespace haptex::render {
 
-// The shortest trajectory a rendering takes: 1 ms. (The action needs no history: before a trajectory's
-// first sample, that sample stands in, dataset::action_ending_at.)
-inline constexpr std::size_t kMinTrajectorySamples = 10;
+// The shortest trajectory a rendering takes: 1 ms (predict/trajectory.hpp). (The action needs no
+// history: before a trajectory's first sample, that sample stands in, dataset::action_ending_at.)
+using predict::kMinTrajectorySamples;
 // "10 samples (1 ms)", for the messages that refuse a shorter trajectory.
 std::string min_trajectory_text();
 // The trajectory sample frame m's action ends at: its middle, or the trajectory's last sample.

@@ -17,8 +17,9 @@ fail() { echo "shards.sh: $*" >&2; exit 2; }
 
 shard=${SLURM_ARRAY_TASK_ID:-${SHARD:-}}
 shards=${SLURM_ARRAY_TASK_COUNT:-${SHARDS:-}}
-[[ $shard =~ ^[0-9]+$ && $shards =~ ^[1-9][0-9]*$ ]] ||
-  fail "give the shard and the count: a Slurm array task (sbatch --array=0-N), or SHARD=n SHARDS=N"
+# Plain decimals: bash would read 010 as octal 8 (review 13, F4).
+[[ $shard =~ ^(0|[1-9][0-9]{0,8})$ && $shards =~ ^[1-9][0-9]{0,8}$ ]] ||
+  fail "give the shard and the count as plain decimals: a Slurm array task (sbatch --array=0-N), or SHARD=n SHARDS=N"
 (( shard < shards )) || fail "shard $shard of $shards: shards are numbered 0 to $((shards - 1)) (sbatch --array=0-$((shards - 1)))"
 command -v haptex > /dev/null || fail "haptex is not on PATH: make install PREFIX=DIR, then add DIR/bin to PATH"
 collection=$(realpath -e -- "${COLLECTION:-collection}") || fail "no collection at ${COLLECTION:-collection}: set COLLECTION"
@@ -28,7 +29,7 @@ out=$(realpath -m -- "${OUT:-shards}")/$shard
 recordings=() presses=()
 i=0
 while IFS= read -r -d '' folder; do
-  material=$(basename -- "$folder")
+  material=${folder##*/}  # not $(basename): command substitution drops a name's trailing newlines
   if (( i % shards == shard )); then
     [[ -d $collection/recordings/$material ]] || fail "$collection/presses/$material has no recordings/$material beside it"
     recordings+=("$collection/recordings/$material")

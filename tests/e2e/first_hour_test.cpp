@@ -53,6 +53,9 @@ TEST(FirstHour, AMissingRequiredOptionNamesTheSubcommandAndItsHelp) {
   EXPECT_EQ(train.exit_code, 2);
   EXPECT_EQ(train.err.rfind("haptex train: ", 0), 0u) << train.err;
   EXPECT_TRUE(says(train, "Run 'haptex train --help'")) << train.err;
+  const CommandResult unknown = run_haptex({"nosuch"});  // review 13, C3: said "A subcommand is required"
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_TRUE(says(unknown, "'nosuch' is no haptex command. Run 'haptex --help' for the list")) << unknown.err;
   const CommandResult extract = run_haptex({"capture", "extract"});
   EXPECT_EQ(extract.exit_code, 2);
   EXPECT_EQ(extract.err.rfind("haptex capture extract: ", 0), 0u) << extract.err;

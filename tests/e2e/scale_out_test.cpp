@@ -133,6 +133,10 @@ TEST(ScaleOut, TheShardScriptUnderXargsGivesTheWindowsOfOneRun) {
   const CommandResult unfound = run_program({"env", "PATH=/usr/bin:/bin", "SHARD=0", "SHARDS=1", "COLLECTION=" + collection, script}, dir.path());
   EXPECT_EQ(unfound.exit_code, 2);
   EXPECT_NE(unfound.err.find("haptex is not on PATH"), std::string::npos) << unfound.err;
+  // 010 is no shard number (bash would take it as octal 8 and build shard 8 into OUT/010).
+  const CommandResult octal = run_program({"env", "PATH=" + path, "SHARD=010", "SHARDS=10", "COLLECTION=" + collection, script}, dir.path());
+  EXPECT_EQ(octal.exit_code, 2);
+  EXPECT_NE(octal.err.find("plain decimals"), std::string::npos) << octal.err;
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "dataset/format.hpp"
 #include "dataset/object_paths.hpp"
@@ -60,8 +62,21 @@ TEST(TrajectoryCli, ABadChoiceIsRefusedNamingWhatThereIs) {
   EXPECT_NE(recording.err.find("no such recording. Give --recording 0 to "), std::string::npos) << recording.err;
   const CommandResult late = run({"--material", small_material(), "--start", "1000"});
   EXPECT_EQ(late.exit_code, 2);
-  EXPECT_NE(late.err.find("at or past the recording's end"), std::string::npos) << late.err;
+  EXPECT_NE(late.err.find("after its last sample (at 2.9999 s)"), std::string::npos) << late.err;
+  // Review 13: a stretch of no sample was written (exit 0); a path was taken for a material id; a start
+  // inside the last sample's 0.1 ms was called past the end.
+  const CommandResult empty = run({"--material", small_material(), "--seconds", "1e-9"});
+  EXPECT_EQ(empty.exit_code, 2);
+  EXPECT_NE(empty.err.find("fewer than the 10 (1.0 ms) a trajectory needs"), std::string::npos) << empty.err;
+  for (const std::string& path :
+       std::vector<std::string>{"/materials/" + small_material(), small_material() + "/", "/", small_material() + "/recordings"}) {
+    const CommandResult r = run({"--material", path});
+    EXPECT_EQ(r.exit_code, 2) << path;
+    EXPECT_NE(r.err.find("no such material"), std::string::npos) << r.err;
+  }
   EXPECT_FALSE(fs::exists(dir.file("t.csv")));
+  const CommandResult last = run({"--material", small_material(), "--start", "2.99895"});  // the last 10 samples of the small pipeline's 3 s recordings
+  EXPECT_EQ(last.exit_code, 0) << last.err;
   // --force replaces only a trajectory haptex wrote; never an input.
   std::ofstream(dir.file("mine.csv")) << "my notes\n";
   const CommandResult mine = run_haptex({"trajectory", p.dataset, "--material", small_material(), "-o", dir.file("mine.csv"), "--force"});

@@ -111,7 +111,9 @@ TEST(HostilePlay, TheDeviceIsANameNeverAFileOrACommand) {
   const std::string mine = file_bytes(d.file("model.h5"));
   const std::vector<std::string> devices = {"file:FILE=" + d.file("model.h5") + ",FORMAT=raw", "file:FILE=victim,FORMAT=raw",
                                             "file:FILE=|touch " + d.file("ran") + ",FORMAT=raw", "file:FILE=|touch,FORMAT=raw",
-                                            "tee:default,victim", "{type file file victim}", "plug:'file:FILE=victim'", "default;x", ""};
+                                            "tee:default,victim", "{type file file victim}", "plug:'file:FILE=victim'", "default;x", "",
+                                            // Review 13, F3: the file plugin as another plugin's slave.
+                                            "plug:SLAVE=file:victim", "plug:file:victim", "plug:SLAVE=FILE:victim", "dmix:tee:default,victim"};
   for (const std::string& device : devices) {
     SCOPED_TRACE(device);
     const CommandResult r = run_haptex_in(d.path(), {"play", d.file("model.h5"), "--material", small_material(), "--trajectory", trajectory,
