@@ -192,13 +192,14 @@ int run_main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // --json was asked for whether or not CLI11 got as far as setting global.json.
+    const bool json = std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; });
     // A value CLI11's range check refused may break haptex's own rules first (0x10 is not a plain
     // decimal, whatever its value): that is the message that names the mistake (review 12, C2).
     if (std::string_view(e.what()).find("not in range") != std::string_view::npos) try {
         check_option_values(app);
       } catch (const Error&) {
-        return reported_error(parsed_command(app), argc, argv,
-                              std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; }));
+        return reported_error(parsed_command(app), argc, argv, json);
       }
     // A number too large for its option (review 6: --presses 2147483648) says what fits.
     const bool too_large = dynamic_cast<const CLI::ConversionError*>(&e) != nullptr;
@@ -209,8 +210,7 @@ int run_main(int argc, char** argv) {
     if (command.empty() && word != argv + argc)
       return report("", {"error: '" + text::printable(*word) + "' is no haptex command. Run 'haptex --help' for the list", 2, "", "",
                          "Run 'haptex --help' for the list"},
-                    std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; }));
-    const bool json = std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; });
+                    json);
     return report(command,
                   {"error: " + text::printable(e.what()) +
                        (too_large ? ": not a number this option holds (a whole number up to 2147483647, or as its help says)" : "") +
