@@ -190,6 +190,11 @@ int run_main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
+    // With --json, one JSON document as every other answer (review 13, C4).
+    if (std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; })) {
+      std::cout << nlohmann::json{{"haptex_version", kVersion}}.dump(2) << "\n";
+      return 0;
+    }
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // --json was asked for whether or not CLI11 got as far as setting global.json.

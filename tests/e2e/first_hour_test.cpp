@@ -80,6 +80,11 @@ TEST(FirstHour, WithJsonAnErrorIsAnObjectOnStdoutToo) {
   EXPECT_EQ(u["command"], "train");
   EXPECT_EQ(u["exit_code"], 2);
   EXPECT_TRUE(u["file"].is_null());
+  // --version too (review 13, C4).
+  const CommandResult version = run_haptex({"--json", "--version"});
+  EXPECT_EQ(version.exit_code, 0);
+  const std::string plain = run_haptex({"--version"}).out;  // "haptex 0.1.0\n"
+  EXPECT_EQ(nlohmann::json::parse(version.out)["haptex_version"], plain.substr(7, plain.size() - 8));
 }
 
 TEST(FirstHour, EveryCommandsHelpListsTheFlagsAllCommandsTake) {
