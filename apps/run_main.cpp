@@ -19,6 +19,7 @@
 #include "core/temporary_name.hpp"
 #include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
+#include "apps/version_json.hpp"
 #include "core/version.hpp"
 
 namespace haptex::apps {
@@ -192,7 +193,7 @@ int run_main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     // With --json, one JSON document as every other answer (review 13, C4).
     if (std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; })) {
-      std::cout << nlohmann::json{{"haptex_version", kVersion}}.dump(2) << "\n";
+      std::cout << version_json().dump(2) << "\n";
       return 0;
     }
     return app.exit(e);

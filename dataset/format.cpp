@@ -28,6 +28,8 @@ std::string_view family_of(std::string_view name) { return name.substr(0, name.f
 
 }  // namespace
 
+std::span<const Format> formats() { return kFormats; }
+
 const Format& format_of(Kind kind) {
   for (const Format& f : kFormats)
     if (f.kind == kind) return f;

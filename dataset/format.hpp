@@ -22,6 +22,8 @@ struct Format {
 };
 
 const Format& format_of(Kind kind);
+// Every HDF5 format this haptex writes, in the order of docs/architecture.md's table.
+std::span<const Format> formats();
 std::string format_name(Kind kind);  // "dataset/4"
 // "recordings/1, gelsight/2 or dataset/4": the current formats of `kinds`, for messages.
 std::string format_list(std::span<const Kind> kinds, std::string_view last_joint = " or ");

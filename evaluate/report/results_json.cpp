@@ -167,7 +167,7 @@ nlohmann::json results_json(const Evaluation& e, const ReportLayout& layout, con
   const auto predictions_json = [](const PredictionsFile& p) {
     return nlohmann::json{{"name", p.name}, {"path", p.path}, {"sha256", p.sha256}, {"source", p.source}};
   };
-  return {{"format", "results/2"},
+  return {{"format", kResultsFormat},
           {"haptex_version", kVersion},
           {"created_utc", created_utc},
           {"inputs", {{"dataset", input_json(e.dataset)}, {"split", input_json(e.split)}, {"models", json_array(e.models, input_json)},

@@ -16,6 +16,7 @@
 
 namespace haptex::evaluate {
 
+inline constexpr const char* kResultsFormat = "results/2";  // schemas/results.schema.json
 inline constexpr double kSignificanceLevel = 0.05;  // MaterialComparison::significant(): Welch, two-sided
 
 // A double as JSON: the number, or "inf", "-inf", "nan".

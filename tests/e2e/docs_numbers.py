@@ -1,0 +1,239 @@
+#!/usr/bin/python3
+"""Numbers and names in README.md, docs/, schemas/ and python/README.md that the code defines, checked
+against the code (issue 35: "every number in README and docs that the code can produce is produced by
+the code or checked by a test").
+
+docs_numbers.py PART HAPTEX ROOT, PART one of:
+  formats   docs/architecture.md's format table, each JSON schema's format and every FAMILY/N named
+            anywhere against `haptex --json --version` (no version later than the one haptex writes)
+  defaults  option values in usage lines ("[--repeats 10]") and in prose ("`--hop` samples (default
+            100", "`--reference-frames` takes 10 to 250") against each command's --help
+  paths     every repository path a doc names in back-quotes exists (a moved or renamed file)
+  commands  every `haptex WORD ...` in a code block is a command haptex has
+Prints one line per mismatch (file:line: what the doc says, what the code says) and exits 1 if any.
+"""
+import json
+import pathlib
+import re
+import subprocess
+import sys
+
+DOCS = ["README.md", "python/README.md", "bench/README.md", "capture/README.md"]
+NUMBER = re.compile(r"^-?[0-9]+(\.[0-9]+)?([eE]-?[0-9]+)?$")
+WITH_SUBCOMMANDS = {"capture", "convert", "synth"}
+
+
+def doc_files(root):
+    files = [root / d for d in DOCS if (root / d).exists()]
+    files += sorted((root / "docs").glob("*.md")) + sorted((root / "schemas").glob("*.md"))
+    return files
+
+
+def lines_of(root):
+    for path in doc_files(root):
+        for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+            yield path.relative_to(root), number, line
+
+
+def code_lines(root):
+    """Lines inside ``` blocks."""
+    for path in doc_files(root):
+        inside = False
+        for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+            if line.lstrip().startswith("```"):
+                inside = not inside
+            elif inside:
+                yield path.relative_to(root), number, line
+
+
+def run(argv):
+    return subprocess.run(argv, capture_output=True, text=True, check=False)
+
+
+def help_text(haptex, command):
+    result = run([haptex] + command + ["--help"])
+    return result.stdout if result.returncode == 0 else None
+
+
+def commands(haptex):
+    """{"train": [], "capture": ["record", ...], ...} from the help pages."""
+    def listed(text):
+        part = text.split("Subcommands:", 1)
+        if len(part) < 2:
+            return []
+        return [m.group(1) for m in re.finditer(r"^  ([a-z][a-z-]*)\b", part[1].split("\n\n")[0], re.M)]
+
+    return {name: listed(help_text(haptex, [name]) or "") for name in listed(help_text(haptex, []))}
+
+
+def option_facts(text):
+    """{"--repeats": {"default": "10", "range": ("2", "1000")}} from one --help page."""
+    facts = {}
+    for line in text.splitlines():
+        m = re.match(r"^\s+(?:-\w,)?(--[a-z0-9-]+)(?:,-\w)?\s(.*)$", line)
+        if not m:
+            continue
+        spec, *description = re.split(r"\s{2,}", m.group(2).strip(), maxsplit=1)
+        fact = {}
+        d = re.search(r"=(\S+)$", spec)
+        if d:
+            fact["default"] = d.group(1)
+        r = re.search(r"in \[(\S+) - (\S+)\]", spec) or re.search(r"\(([0-9.]+) to ([0-9.]+)\)", " ".join(description))
+        if r:
+            fact["range"] = (r.group(1), r.group(2))
+        facts[m.group(1)] = fact
+    return facts
+
+
+def same_value(doc, code):
+    if NUMBER.match(doc) and NUMBER.match(code):
+        return float(doc) == float(code)
+    return doc == code
+
+
+def check_formats(haptex, root):
+    formats = json.loads(run([haptex, "--json", "--version"]).stdout)["formats"]
+    current = {}
+    for names in formats.values():
+        for name in names:
+            family, version = name.split("/")
+            current[family] = int(version)
+    bad = []
+    table = {}
+    text = (root / "docs/architecture.md").read_text(encoding="utf-8")
+    for m in re.finditer(r"^\| `([a-z-]+)` \| ([0-9]+) \| `haptex ", text, re.M):
+        table[m.group(1)] = int(m.group(2))
+    written = {n.split("/")[0]: int(n.split("/")[1]) for n in formats["hdf5_written"]}
+    if table != written:
+        bad.append(f"docs/architecture.md: the format table says {table}, haptex --json --version writes {written}")
+    for schema in sorted((root / "schemas").glob("*.schema.json")):
+        declared = json.loads(schema.read_text(encoding="utf-8")).get("properties", {}).get("format", {}).get("const")
+        # A format haptex only reads (tactile-sensors/1) has its one home in its schema.
+        family = (declared or "").split("/")[0]
+        if family in current and declared != f"{family}/{current[family]}":
+            bad.append(f"{schema.relative_to(root)}: format const {declared}, haptex writes {family}/{current[family]}")
+    for path, number, line in lines_of(root):
+        for m in re.finditer(r"\b([a-z][a-z-]*)/([0-9]+)\b", line):
+            family, version = m.group(1), int(m.group(2))
+            if family in current and version > current[family]:
+                bad.append(f"{path}:{number}: {family}/{version}, but haptex writes {family}/{current[family]}")
+    return bad
+
+
+def usage_values(root, known):
+    """(path, line, command, option, value) of "[--opt VALUE]" in usage lines of code blocks."""
+    command = None
+    for path, number, line in code_lines(root):
+        words = line.split()
+        if len(words) >= 2 and words[0] == "haptex" and words[1] in known:
+            command = words[1:3] if words[1] in WITH_SUBCOMMANDS and len(words) > 2 else words[1:2]
+        elif not line.startswith((" ", "\t")):
+            command = None
+        if command is None:
+            continue
+        for m in re.finditer(r"\[(--[a-z0-9-]+)[ =]([^\]\s|]+)\]", line):
+            yield path, number, command, m.group(1), m.group(2)
+
+
+def prose_values(root):
+    """(path, line, option, kind, values) of "`--opt ...` ... (default V" and "`--opt` takes A to B"."""
+    for path, number, line in lines_of(root):
+        for m in re.finditer(r"`(--[a-z0-9-]+)[^`]*`[^`.;]{0,40}?\(default ([0-9.]+)[,;) ]", line):
+            yield path, number, m.group(1), "default", (m.group(2),)
+        for m in re.finditer(r"`(--[a-z0-9-]+) ([0-9.]+)`, the default\b", line):
+            yield path, number, m.group(1), "default", (m.group(2),)
+        for m in re.finditer(r"`(--[a-z0-9-]+)` takes ([0-9.]+) to ([0-9.]+)", line):
+            yield path, number, m.group(1), "range", (m.group(2), m.group(3))
+
+
+def all_option_facts(haptex, known):
+    """{("capture", "record"): facts, ("train",): facts, ...}"""
+    pages = {}
+    for name, subs in known.items():
+        for command in ([[name, s] for s in subs] or [[name]]):
+            pages[tuple(command)] = option_facts(help_text(haptex, command) or "")
+    return pages
+
+
+def check_defaults(haptex, root):
+    known = commands(haptex)
+    pages = all_option_facts(haptex, known)
+    bad, checked = [], 0
+    for path, number, command, option, value in usage_values(root, known):
+        facts = pages.get(tuple(command), {})
+        if re.match(r"^[A-Z_]+$", value):  # a placeholder (NAME), not a value
+            continue
+        if option not in facts:
+            bad.append(f"{path}:{number}: haptex {' '.join(command)} has no option {option}")
+        elif "default" in facts[option] and (NUMBER.match(value) or not NUMBER.match(facts[option]["default"])):
+            checked += 1
+            if not same_value(value, facts[option]["default"]):
+                bad.append(f"{path}:{number}: [{option} {value}], but haptex {' '.join(command)} --help says {option}={facts[option]['default']}")
+    for path, number, option, kind, values in prose_values(root):
+        # Prose names no command: the option's facts on every page that has it must agree with the doc.
+        found = [(c, f[option]) for c, f in pages.items() if option in f]
+        if not found:
+            bad.append(f"{path}:{number}: no command has {option}")
+        for command, fact in found:
+            if kind in fact:
+                checked += 1
+                code = fact[kind] if kind == "range" else (fact[kind],)
+                if not all(same_value(d, c) for d, c in zip(values, code)):
+                    bad.append(f"{path}:{number}: {option} {kind} {values}, but haptex {' '.join(command)} --help says {code}")
+    if checked < 15:
+        bad.append(f"only {checked} option values found in the docs: the patterns no longer match what the docs write")
+    return bad
+
+
+def check_paths(root):
+    tops = {p.name for p in root.iterdir() if p.is_dir() and not p.name.startswith(".") and p.name != "build"}
+    bad, checked = [], 0
+    for path, number, line in lines_of(root):
+        for m in re.finditer(r"`([^`\s]+)`", line):
+            word = m.group(1).rstrip(".,;:")
+            candidate = word.split(":")[0]
+            first = candidate.split("/")[0]
+            if first not in tops or "/" not in candidate or re.search(r"[<>*{}$]|\.\.\.|[A-Z]{2,}", candidate):
+                continue
+            if not re.search(r"\.[a-z]+$|/$", candidate):  # a file (with an extension) or a folder
+                continue
+            checked += 1
+            if not (root / candidate).exists():
+                bad.append(f"{path}:{number}: `{word}` names {candidate}, which is not in the repository")
+    if checked < 20:
+        bad.append(f"only {checked} repository paths found in the docs: the pattern no longer matches")
+    return bad
+
+
+def check_commands(haptex, root):
+    known = commands(haptex)
+    bad = []
+    for path, number, line in code_lines(root):
+        words = re.sub(r"^\s*(\$ )?", "", line).split()
+        if len(words) < 2 or words[0] != "haptex" or words[1].startswith("-") or words[1].endswith(":"):
+            continue
+        if words[1] not in known:
+            bad.append(f"{path}:{number}: haptex {words[1]} is not a command")
+        elif known[words[1]] and len(words) > 2 and not words[2].startswith("-") and words[2] not in known[words[1]]:
+            bad.append(f"{path}:{number}: haptex {words[1]} {words[2]} is not a command")
+    return bad
+
+
+def main():
+    part, haptex, root = sys.argv[1], sys.argv[2], pathlib.Path(sys.argv[3]).resolve()
+    checks = {
+        "formats": lambda: check_formats(haptex, root),
+        "defaults": lambda: check_defaults(haptex, root),
+        "paths": lambda: check_paths(root),
+        "commands": lambda: check_commands(haptex, root),
+    }
+    bad = checks[part]()
+    if "-v" in sys.argv:
+        print(f"{part}: {len(bad)} mismatches", file=sys.stderr)
+    for line in bad:
+        print(line)
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
