@@ -159,6 +159,16 @@ void with_global_flags_help(CLI::App& app) {
   for (CLI::App* part : app.get_subcommands([](CLI::App*) { return true; })) with_global_flags_help(*part);
 }
 
+// `haptex --json CMD --help`: the help text as one JSON document, {"command", "help"}, so stdout is
+// JSON whenever --json is given (review 13).
+int help_json(const CLI::App& app) {
+  const CLI::App* shown = &app;
+  while (!shown->get_subcommands().empty()) shown = shown->get_subcommands().front();
+  std::cout << nlohmann::json{{"command", parsed_command(app)}, {"help", shown->help()}}.dump(2, ' ', false, nlohmann::json::error_handler_t::replace)
+            << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int run_main(int argc, char** argv) {
@@ -184,22 +194,24 @@ int run_main(int argc, char** argv) {
   }
   require_finite_numbers(app);
 
+  // --json was asked for whether or not CLI11 got as far as setting global.json.
+  const bool json = std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; });
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
+    if (json) return help_json(app);
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    if (json) return help_json(app);
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     // With --json, one JSON document as every other answer (review 13, C4).
-    if (std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; })) {
+    if (json) {
       std::cout << version_json().dump(2) << "\n";
       return 0;
     }
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    // --json was asked for whether or not CLI11 got as far as setting global.json.
-    const bool json = std::any_of(argv + 1, argv + argc, [](const char* a) { return std::string_view(a) == "--json"; });
     // A value CLI11's range check refused may break haptex's own rules first (0x10 is not a plain
     // decimal, whatever its value): that is the message that names the mistake (review 12, C2).
     if (std::string_view(e.what()).find("not in range") != std::string_view::npos) try {

@@ -85,6 +85,16 @@ TEST(FirstHour, WithJsonAnErrorIsAnObjectOnStdoutToo) {
   EXPECT_EQ(version.exit_code, 0);
   const std::string plain = run_haptex({"--version"}).out;  // "haptex 0.1.0\n"
   EXPECT_EQ(nlohmann::json::parse(version.out)["haptex_version"], plain.substr(7, plain.size() - 8));
+  EXPECT_EQ(nlohmann::json::parse(version.out)["formats"]["hdf5_written"][2], "dataset/4");
+  // --help too: stdout is one JSON document whenever --json is given (review 13).
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{{"--json", "capture", "extract", "--help"}, {"train", "--help", "--json"}, {"--json", "--help"}}) {
+    const CommandResult help = run_haptex(args);
+    EXPECT_EQ(help.exit_code, 0);
+    ASSERT_TRUE(nlohmann::json::accept(help.out)) << help.out;
+    const nlohmann::json doc = nlohmann::json::parse(help.out);
+    EXPECT_NE(doc["help"].get<std::string>().find("Usage:"), std::string::npos) << help.out;
+    EXPECT_EQ(doc["command"], args[0] == "--json" && args.size() == 4 ? "capture extract" : args[0] == "train" ? "train" : "");
+  }
 }
 
 TEST(FirstHour, EveryCommandsHelpListsTheFlagsAllCommandsTake) {
