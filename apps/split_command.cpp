@@ -60,7 +60,7 @@ class SplitCommand : public Command {
     const auto windows = split::read_dataset_windows(dataset_);
     const auto splits = split::search_split(windows, options_, dataset_);
     const nlohmann::json manifest = split::manifest_json(dataset_, options_, splits, global.command_line);
-    qa::require_sound_split({output_, manifest}, dataset_);
+    qa::require_sound_split({output_, manifest}, dataset_, qa::Manifest::about_to_be_written);
     split::PlotResult plots;
     if (plots_dir)
       plots_dir->fill([&](const std::string& dir) {

@@ -10,6 +10,10 @@ namespace haptex::qa {
 
 // Throws haptex::Error (bad input) naming the manifest, the place in it (material, sections) and
 // the fix when any split.* check of severity error fails against dataset_path.
-void require_sound_split(const split::SplitManifestDocument& manifest, const std::string& dataset_path);
+// A manifest `haptex split` has just made and not yet written is not the file at fault: the error
+// then names the dataset and says nothing was written (review 13, C2).
+enum class Manifest { written, about_to_be_written };
+void require_sound_split(const split::SplitManifestDocument& manifest, const std::string& dataset_path,
+                         Manifest state = Manifest::written);
 
 }  // namespace haptex::qa

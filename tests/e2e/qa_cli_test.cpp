@@ -49,6 +49,19 @@ class QaCli : public ::testing::Test {
 PipelineFiles* QaCli::files_ = nullptr;
 std::string QaCli::split_;
 
+// A split that fails its own checks names the dataset, not the manifest it never wrote, and sends the
+// user to no qa run on that missing file (review 13, C2).
+TEST_F(QaCli, AFailedSplitNamesTheDatasetNotTheManifestItDidNotWrite) {
+  const std::string wide = dir_.file("wide.h5"), manifest = dir_.file("never.json");
+  ASSERT_EQ(run_haptex({"align", "--recordings", files_->recordings, "--gelsight", files_->gelsight, "--stride", "99999", "-o", wide, "-q"}).exit_code, 0);
+  const CommandResult r = run_haptex({"split", wide, "-o", manifest, "--sections", "10", "--min-coverage", "0", "--no-plots"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("haptex split: error: " + wide + ": the split made from it fails split.", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("Nothing was written"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("never.json"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(manifest));
+}
+
 TEST_F(QaCli, RecordingsFileTableEndsWithTheVerdict) {
   const CommandResult r = run_haptex({"qa", files_->recordings});
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
