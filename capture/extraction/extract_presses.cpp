@@ -233,7 +233,8 @@ class Extraction {
                         "Give each video once");
     const auto [at, added] = spelling_.emplace(material_id(a.material), std::make_pair(a.material, path));
     if (!added && at->second.first != a.material)
-      throw input_error(path, "", "its material '" + a.material + "' and '" + at->second.first + "' (of " + at->second.second +
+      throw input_error(path, "", "its material '" + text::printable(a.material) + "' and '" + text::printable(at->second.first) + "' (of " +
+                                      text::printable(at->second.second) +
                                       ") make one material id, " + at->first,
                         "Name the two folders (or --material) alike if they hold one material, or with different letters or digits if not");
   }

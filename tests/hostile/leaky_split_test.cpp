@@ -81,6 +81,10 @@ TEST(LeakySplit, ExtractRefusesAVideoTwiceAndTwoSpellingsOfOneMaterial) {
   fs::create_directories(dir.file("spelled"));
   fs::copy(dir.file("s/gelsight/Sandpaper 1"), dir.file("spelled/polished-1"));
   fs::copy(woven, dir.file("spelled/Polished 1"));
+  // Review 13, C6: a folder name's newline was printed raw in the message (the file's was escaped).
+  fs::create_directories(dir.file("newline"));
+  fs::copy(dir.file("s/gelsight/Sandpaper 1"), dir.file("newline/Polished 1\n"));
+  fs::copy(woven, dir.file("newline/Polished 1"));
   // Review 8: a copy with 4 bytes appended has its own SHA-256 and the same frames. Extraction takes
   // it (identical noiseless test videos are common); qa's gelsight.duplicate compares peak images.
   const std::string appended = dir.file("appended.avi");
@@ -91,6 +95,7 @@ TEST(LeakySplit, ExtractRefusesAVideoTwiceAndTwoSpellingsOfOneMaterial) {
       {{woven, video}, {"is the same file as", "Give each video once"}},
       {{dir.file("linked")}, {"is the same file as", "Polished 1 link"}},
       {{dir.file("spelled")}, {"make one material id, polished_1", "'polished-1'", "'Polished 1'"}},
+      {{dir.file("newline")}, {"make one material id, polished_1", "'Polished 1\\x0a'"}},
   };
   for (const auto& [inputs, says] : cases) {
     SCOPED_TRACE(says.front() + " " + inputs.front());
