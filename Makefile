@@ -38,16 +38,7 @@ test: build
 # The whole pipeline on the built-in synthetic materials: data, checks, both models, the evaluation.
 demo: build
 	@rm -rf $(DEMO) && mkdir -p $(DEMO)
-	$(HAPTEX) synth materials -o $(DEMO)/synth
-	$(HAPTEX) capture extract $(DEMO)/synth/gelsight -o $(DEMO)/gelsight.h5
-	$(HAPTEX) convert hatt $(DEMO)/synth/recordings -o $(DEMO)/recordings.h5
-	$(HAPTEX) align --recordings $(DEMO)/recordings.h5 --gelsight $(DEMO)/gelsight.h5 -o $(DEMO)/dataset.h5
-	$(HAPTEX) split $(DEMO)/dataset.h5 -o $(DEMO)/split.json
-	$(HAPTEX) qa $(DEMO)/dataset.h5 --split $(DEMO)/split.json
-	$(HAPTEX) train $(DEMO)/dataset.h5 --split $(DEMO)/split.json -o $(DEMO)/model.h5
-	$(HAPTEX) train $(DEMO)/dataset.h5 --split $(DEMO)/split.json --per-material -o $(DEMO)/per_material.h5
-	$(HAPTEX) evaluate $(DEMO)/dataset.h5 --split $(DEMO)/split.json --model $(DEMO)/model.h5 --model $(DEMO)/per_material.h5 \
-	  --truth $(DEMO)/synth/truth.h5 -o $(DEMO)/report
+	examples/demo/run.sh $(HAPTEX) $(DEMO)
 	@echo "make demo: done; open $(DEMO)/report/report.html to read and listen (the same as text: $(DEMO)/report/report.md)"
 
 # The binary, the modules' headers and static libraries, the CMake package and haptex.pc (docs/library.md).

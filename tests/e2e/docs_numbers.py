@@ -10,6 +10,9 @@ docs_numbers.py PART HAPTEX ROOT, PART one of:
             100", "`--reference-frames` takes 10 to 250") against each command's --help
   paths     every repository path a doc names in back-quotes exists (a moved or renamed file)
   commands  every `haptex WORD ...` in a code block is a command haptex has
+  demo      (one more argument: a folder examples/demo/run.sh filled) the figures README.md,
+            docs/benchmark.md, docs/predict.md, docs/capture.md and docs/render.md quote from `make demo`
+            are the ones this demo gives, at the precision they are printed (times excepted)
 Prints one line per mismatch (file:line: what the doc says, what the code says) and exits 1 if any.
 """
 import json
@@ -17,6 +20,7 @@ import pathlib
 import re
 import subprocess
 import sys
+import tempfile
 
 DOCS = ["README.md", "python/README.md", "bench/README.md", "capture/README.md"]
 NUMBER = re.compile(r"^-?[0-9]+(\.[0-9]+)?([eE]-?[0-9]+)?$")
@@ -219,13 +223,109 @@ def check_commands(haptex, root):
     return bad
 
 
+def median(values):
+    v = sorted(values)
+    n = len(v)
+    return v[n // 2] if n % 2 else (v[n // 2 - 1] + v[n // 2]) / 2
+
+
+class DemoFacts:
+    """The demo's figures as the docs print them."""
+
+    def __init__(self, demo):
+        self.demo = demo
+        self.results = json.loads((demo / "report/results.json").read_text(encoding="utf-8"))
+        self.log = json.loads((demo / "model.training.json").read_text(encoding="utf-8"))
+        self.floors = {f["id"]: f for f in self.results["floors"]}
+
+    def experiment(self, name):
+        return next(e for e in self.results["experiments"] if e["id"] == name)
+
+    def over_input_floor(self, name):
+        ratios = [m["model"] / self.floors[m["id"]]["input_floor"] for m in self.experiment(name)["materials"]]
+        return median(ratios)
+
+    def worst(self, name):
+        m = max(self.experiment(name)["materials"], key=lambda m: m["floor_ratio"])
+        return m["floor_ratio"], m["name"]
+
+    def table_row(self, name):
+        e = self.experiment(name)
+        t = e["totals"]
+        return [f"{e['mean_model']:.3f}", f"{e['median_floor_ratio']:.2f}", f"{e['worst_floor_ratio']:.2f}", str(t["better"]),
+                str(t["materials"]), str(t["significantly_better"])]
+
+
+def demo_checks(facts):
+    """(doc, pattern, expected groups): each pattern's groups must read the expected strings."""
+    input_ratios = [f["input_floor"] / f["distance"] for f in facts.floors.values()]
+    unified, per_material = "unified-new-actions", "per-material"
+    worst, worst_name = facts.worst(unified)
+    windows = sum(m["windows"] for m in facts.experiment(unified)["materials"])
+    n = str(len(facts.floors))
+    return [
+        ("README.md", r"whole pipeline on ([0-9]+) synthetic materials", [n]),
+        ("docs/benchmark.md", r"`make demo`: ([0-9]+) synthetic materials, ([0-9]+) test windows", [n, str(windows)]),
+        ("docs/benchmark.md", r"\| `unified-new-actions` \(haptex train, defaults\) \| ([0-9.]+) \| ([0-9.]+) / ([0-9.]+) \| ([0-9]+) of ([0-9]+) \(([0-9]+)\)",
+         facts.table_row(unified)),
+        ("docs/benchmark.md", r"\| `per-material` \(haptex train --per-material\) \| ([0-9.]+) \| ([0-9.]+) / ([0-9.]+) \| ([0-9]+) of ([0-9]+) \(([0-9]+)\)",
+         facts.table_row(per_material)),
+        ("docs/benchmark.md", r"model is below both and within 10 % on ([0-9]+) of ([0-9]+)",
+         [str(facts.experiment(unified)["totals"]["within_floor_10_percent"]), n]),
+        ("docs/benchmark.md", r"is ([0-9.]+) times the oracle\s+at the median over the ([0-9]+) materials and ([0-9.]+) at worst",
+         [f"{median(input_ratios):.2f}", n, f"{max(input_ratios):.2f}"]),
+        ("docs/benchmark.md", r"haptex's unified model ([0-9.]+) \(", [f"{facts.over_input_floor(unified):.3f}"]),
+        ("docs/benchmark.md", r"the per-material models ([0-9.]+) \(", [f"{facts.over_input_floor(per_material):.3f}"]),
+        ("docs/predict.md", r"\| 7 bins \(the default\) \| ([0-9.]+) \| ([0-9.]+) \| ([0-9.]+) \| ([0-9]+) \| ([0-9.]+) \(([A-Za-z0-9 ]+)\) \| ([0-9.]+) \|",
+         [f"{facts.log['metrics']['spectrum']['val_distance']:.4f}", f"{facts.experiment(unified)['mean_model']:.3f}",
+          f"{facts.experiment(unified)['median_floor_ratio']:.3f}", str(facts.experiment(unified)["totals"]["within_floor_10_percent"]),
+          f"{worst:.2f}", worst_name, f"{facts.over_input_floor(unified):.3f}"]),
+        ("docs/capture.md", r"The demo's ([0-9]+) synthetic presses", [str(sum(1 for _ in (facts.demo / "synth/gelsight").rglob("*.avi")))]),
+        ("docs/capture.md", r"make a ([0-9]+) MB gelsight file", [str(round((facts.demo / "gelsight.h5").stat().st_size / 1e6))]),
+    ]
+
+
+def render_example(haptex, root, facts):
+    """docs/render.md's example, run on the demo: its printed lines, with the compute time masked."""
+    text = (root / "docs/render.md").read_text(encoding="utf-8")
+    block = re.search(r"```\n\$ # make demo's build/demo/dataset.h5 and model.h5.*?\n```", text, re.S).group(0)
+    bad = []
+    commands = [(line[2:], next_line) for line, next_line in zip(block.splitlines(), block.splitlines()[1:])
+                if line.startswith("$ haptex ")]
+    work = tempfile.mkdtemp(prefix="docs-example-", dir=facts.demo)
+    for command, expected in commands:
+        argv = [haptex] + command.split()[1:]
+        argv = [str(facts.demo / a) if a in ("dataset.h5", "model.h5") else a for a in argv]
+        result = subprocess.run(argv, capture_output=True, text=True, cwd=work, check=False)
+        mask = lambda line: re.sub(r"[0-9.]+ s compute per s", "T s compute per s", line.strip())
+        if mask(result.stdout + result.stderr) != mask(expected):
+            bad.append(f"docs/render.md: `{command}` prints\n  {(result.stdout + result.stderr).strip()}\nthe doc says\n  {expected}")
+    if len(commands) < 2:
+        bad.append("docs/render.md: the demo example has fewer than 2 commands: the pattern no longer matches")
+    return bad
+
+
+def check_demo(haptex, root, demo):
+    facts = DemoFacts(demo)
+    bad = []
+    for doc, pattern, expected in demo_checks(facts):
+        m = re.search(pattern, (root / doc).read_text(encoding="utf-8"))
+        if not m:
+            bad.append(f"{doc}: no text matches {pattern!r}: the doc changed; keep the check with it")
+        elif list(m.groups()) != expected:
+            line = (root / doc).read_text(encoding="utf-8")[: m.start()].count("\n") + 1
+            bad.append(f"{doc}:{line}: the doc says {list(m.groups())}, the demo gives {expected}")
+    return bad + render_example(haptex, root, facts)
+
+
 def main():
-    part, haptex, root = sys.argv[1], sys.argv[2], pathlib.Path(sys.argv[3]).resolve()
+    part, haptex, root = sys.argv[1], str(pathlib.Path(sys.argv[2]).resolve()), pathlib.Path(sys.argv[3]).resolve()
     checks = {
         "formats": lambda: check_formats(haptex, root),
         "defaults": lambda: check_defaults(haptex, root),
         "paths": lambda: check_paths(root),
         "commands": lambda: check_commands(haptex, root),
+        "demo": lambda: check_demo(haptex, root, pathlib.Path(sys.argv[4]).resolve()),
     }
     bad = checks[part]()
     if "-v" in sys.argv:
