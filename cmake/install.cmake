@@ -4,6 +4,8 @@
 include(CMakePackageConfigHelpers)
 
 install(TARGETS haptex RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# media/codecs.hpp: the codecs plugin, where the binary's RUNPATH ($ORIGIN/../lib/haptex) finds it.
+install(TARGETS haptex_opencv_codecs LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/haptex)
 foreach(target IN LISTS haptex_modules)
   string(REGEX REPLACE "^haptex_" "" module ${target})
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${module})

@@ -10,11 +10,11 @@
 
 #include <jpeglib.h>
 #include <jerror.h>
-#include <opencv2/imgcodecs.hpp>
 
 #include "core/error.hpp"
 #include "core/image_header.hpp"
 #include "core/input_file.hpp"
+#include "media/codecs.hpp"
 
 namespace haptex::dataset {
 namespace {
@@ -91,7 +91,7 @@ bool read_rows(JpegState& s, std::uint8_t* pixels, std::size_t step) {
 cv::Mat png_decode(std::span<const std::uint8_t> bytes, DecodedColour colour) {
   const cv::Mat wrapped(1, int(bytes.size()), CV_8U, const_cast<std::uint8_t*>(bytes.data()));
   try {
-    return cv::imdecode(wrapped, (colour == DecodedColour::grey ? cv::IMREAD_GRAYSCALE : cv::IMREAD_COLOR) | cv::IMREAD_IGNORE_ORIENTATION);
+    return media::decode_image(wrapped, (colour == DecodedColour::grey ? cv::IMREAD_GRAYSCALE : cv::IMREAD_COLOR) | cv::IMREAD_IGNORE_ORIENTATION);
   } catch (const cv::Exception&) {
     return {};
   }
@@ -137,7 +137,7 @@ cv::Mat read_image_file(const std::string& path) {
   if (!in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()))) return {};
   if (image_format(head).empty()) {
     try {
-      return cv::imread(path, cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);
+      return media::read_image(path, cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);
     } catch (const cv::Exception&) {
       return {};
     }

@@ -2,7 +2,6 @@
 
 #include <optional>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
@@ -12,6 +11,7 @@
 #include "dataset/decode_image.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/vlen_bytes.hpp"
+#include "media/codecs.hpp"
 
 namespace haptex::dataset {
 namespace {
@@ -84,7 +84,7 @@ EncodedImage encode_png(const cv::Mat& bgr) {
   EncodedImage png;
   // OpenCV's default settings are its fast path (SUB filter, zlib level 1); setting a compression level
   // would make libpng try every filter, twice as slow for nothing on sensor noise.
-  if (!cv::imencode(".png", bgr, png)) throw failure("cannot encode an image as PNG");
+  if (!media::encode_image(".png", bgr, png)) throw failure("cannot encode an image as PNG");
   return png;
 }
 

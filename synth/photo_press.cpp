@@ -4,13 +4,13 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <opencv2/imgcodecs.hpp>
 #include <random>
 
 #include "core/error.hpp"
 #include "synth/gelsight_camera.hpp"
 #include "synth/gelsight_renderer.hpp"
 #include "core/random_seeds.hpp"
+#include "media/codecs.hpp"
 
 namespace haptex::synth {
 namespace {
@@ -80,7 +80,7 @@ std::vector<cv::Rect> photo_crops(cv::Size image, std::uint64_t seed, const Phot
 std::vector<PressSidecar> write_photo_presses(const std::string& image_path, const std::string& out_directory,
                                               const std::string& material, std::uint64_t seed,
                                               const std::string& source, const PhotoPressOptions& options) {
-  const cv::Mat photo = cv::imread(image_path, cv::IMREAD_COLOR);
+  const cv::Mat photo = media::read_image(image_path, cv::IMREAD_COLOR);
   if (photo.empty())
     throw input_error(image_path, "", "cannot read the texture photograph", "Give a readable JPEG or PNG image");
   if (photo.cols < options.width || photo.rows < options.height)

@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/json/schema.hpp"
 #include "core/text/format.hpp"
+#include "media/codecs.hpp"
 
 namespace haptex::synth {
 namespace fs = std::filesystem;
@@ -98,9 +99,8 @@ void PressVideoWriter::add(const cv::Mat& frame) {
   if (frame.type() != CV_8UC3 || frame.empty()) throw failure("PressVideoWriter::add: frames must be CV_8UC3");
   if (frames_ == 0) {
     size_ = frame.size();
-    video_ = std::make_unique<cv::VideoWriter>(partial_video_, cv::CAP_OPENCV_MJPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
-                                               fps_, size_);
-    if (!video_->isOpened()) throw failure(partial_video_ + ": OpenCV cannot write an MJPG video here");
+    video_ = media::create_video(partial_video_, cv::CAP_OPENCV_MJPEG, media::fourcc('M', 'J', 'P', 'G'), fps_, size_, true);
+    if (!video_) throw failure(partial_video_ + ": OpenCV cannot write an MJPG video here");
     video_->set(cv::VIDEOWRITER_PROP_QUALITY, kJpegQuality);
   }
   if (frame.size() != size_) throw failure("PressVideoWriter::add: every frame of a press must have the same size");
@@ -126,7 +126,8 @@ PressSidecar PressVideoWriter::finish(PressSidecar sidecar) {
   // PNG frames, as haptex wrote presses until this round, too).
   video_->release();
   // cv::VideoWriter reports no write error: the video read back must hold every frame (a full disk).
-  if (const int read_back = int(cv::VideoCapture(partial_video_).get(cv::CAP_PROP_FRAME_COUNT)); read_back != frames_)
+  const std::unique_ptr<media::VideoReader> written = media::open_video(partial_video_, cv::CAP_ANY);
+  if (const int read_back = written ? int(written->get(cv::CAP_PROP_FRAME_COUNT)) : 0; read_back != frames_)
     throw input_error(partial_video_, "", "the video holds " + std::to_string(read_back) + " of its " + std::to_string(frames_) + " frames",
                       "Check the free space where -o points");
   fsync_path(partial_video_, O_RDONLY);

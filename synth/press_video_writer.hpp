@@ -14,6 +14,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "media/codecs.hpp"
+
 namespace haptex {
 class PartialFile;
 }
@@ -60,7 +62,7 @@ class PressVideoWriter {
   double fps_;
   std::unique_ptr<PartialFile> sidecar_;  // press_<j>.json.partial: also the lock against a second run
   std::string partial_video_;             // press_<j>.partial.avi
-  std::unique_ptr<cv::VideoWriter> video_;
+  std::unique_ptr<media::VideoWriter> video_;
   int frames_ = 0;
   cv::Size size_;
   bool finished_ = false;

@@ -1,10 +1,10 @@
 #include "capture/device/fake_scene.hpp"
+#include "media/codecs.hpp"
 
 #include <linux/videodev2.h>
 
 #include <algorithm>
 #include <cmath>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 namespace haptex::capture {
@@ -122,7 +122,7 @@ cv::Mat render_gel(int width, int height, int level, int noise_pattern, std::uin
 std::vector<std::uint8_t> FakeScene::encode(const cv::Mat& bgr) const {
   if (fourcc_ == V4L2_PIX_FMT_YUYV) return bgr_to_yuyv(bgr);
   std::vector<std::uint8_t> jpeg;
-  cv::imencode(".jpg", bgr, jpeg, {cv::IMWRITE_JPEG_QUALITY, 90});
+  media::encode_image(".jpg", bgr, jpeg, {cv::IMWRITE_JPEG_QUALITY, 90});
   return jpeg;
 }
 

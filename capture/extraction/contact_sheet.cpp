@@ -1,8 +1,8 @@
 #include "capture/extraction/contact_sheet.hpp"
+#include "media/codecs.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 namespace haptex::capture {
@@ -51,7 +51,7 @@ cv::Mat contact_sheet(const ContactSheetInput& in) {
 
 std::vector<std::uint8_t> contact_sheet_png(const ContactSheetInput& input) {
   std::vector<std::uint8_t> png;
-  cv::imencode(".png", contact_sheet(input), png);
+  media::encode_image(".png", contact_sheet(input), png);
   return png;
 }
 

@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <opencv2/imgcodecs.hpp>
 
 #include "capture/extraction/capture_inputs.hpp"
 #include "capture/extraction/frame_source.hpp"
@@ -15,6 +14,7 @@
 #include "core/image_header.hpp"
 #include "core/sha256.hpp"
 #include "dataset/decode_image.hpp"
+#include "media/codecs.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -97,7 +97,7 @@ class ImageSequenceSource : public FrameSource {
     cv::Mat image;
     try {
       if (!image_format(bytes).empty()) image = dataset::decode_image(bytes);  // empty when cut off, before libjpeg conceals it
-      else if (!bytes.empty()) image = cv::imdecode(bytes, cv::IMREAD_COLOR);  // another format OpenCV reads
+      else if (!bytes.empty()) image = media::decode_image(bytes, cv::IMREAD_COLOR);  // another format OpenCV reads
     } catch (const cv::Exception&) {
     }
     if (image.empty())

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/text/format.hpp"
+#include "media/codecs.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -73,7 +73,7 @@ std::vector<std::uint8_t> score_chart_png(const std::string& title, const ScoreC
   cv::Mat image;
   cv::vconcat(std::vector<cv::Mat>{heading, score_chart(chart, width)}, image);
   std::vector<std::uint8_t> png;
-  cv::imencode(".png", image, png);
+  media::encode_image(".png", image, png);
   return png;
 }
 

@@ -8,6 +8,7 @@
 #include "core/image_header.hpp"
 #include "core/sha256.hpp"
 #include "dataset/decode_image.hpp"
+#include "media/codecs.hpp"
 
 namespace haptex::capture {
 namespace {
@@ -24,18 +25,18 @@ class VideoSource : public FrameSource {
   double fps() const override { return probe_.fps; }
 
   void scan(const Visitor& visit, const std::function<bool(std::int64_t)>&) override {
-    cv::VideoCapture video = open(path_);
+    const std::unique_ptr<media::VideoReader> video = open(path_);
     cache_.clear();
     cached_ = true;
     cached_bytes_ = 0;
     std::int64_t read = 0;
-    for (Frame f; next(video, f, read); ++read) {
+    for (Frame f; next(*video, f, read); ++read) {
       visit(read, f.bgr.empty() ? cv::Mat() : scoring_image(f.bgr), f.bgr);
       keep(std::move(f));
     }
     // The container's count is exact for AVI and MP4 indices and an estimate (duration x fps) for
     // Matroska: one frame of slack, so only a real shortfall counts.
-    const auto announced = std::int64_t(video.get(cv::CAP_PROP_FRAME_COUNT));
+    const auto announced = std::int64_t(video->get(cv::CAP_PROP_FRAME_COUNT));
     frames_missing_ = announced > read + 1 ? announced - read : 0;
   }
 
@@ -46,17 +47,17 @@ class VideoSource : public FrameSource {
       for (std::int64_t i : indices) deliver_frame(cache_.at(std::size_t(i)), i, deliver);
       return;
     }
-    cv::VideoCapture video = open(path_);
+    const std::unique_ptr<media::VideoReader> video = open(path_);
     std::size_t next_wanted = 0;
     // Seeking is unreliable in inter-coded videos; reading on, and converting only the frames we
     // keep (grab without retrieve), is exact.
     for (std::int64_t i = 0; next_wanted < indices.size(); ++i) {
-      if (!video.grab())
+      if (!video->grab())
         throw input_error(path_, "frame " + std::to_string(indices[next_wanted]),
                           "the video ended before this frame on the second reading", "The file may be damaged; re-export it");
       if (i != indices[next_wanted]) continue;
       Frame f;
-      retrieve(video, f, i);
+      retrieve(*video, f, i);
       deliver_frame(f, i, deliver);
       ++next_wanted;
     }
@@ -71,14 +72,14 @@ class VideoSource : public FrameSource {
 
   // An MJPG video is read raw, each frame's JPEG as the file holds it: kept as it is, it costs a
   // tenth of the decoded frame, and it is decoded here exactly as it will be read back.
-  cv::VideoCapture open(const std::string& path) const {
-    cv::VideoCapture video = open_video_file(path);
-    if (probe_.mjpeg && !video.set(cv::CAP_PROP_FORMAT, -1))
+  std::unique_ptr<media::VideoReader> open(const std::string& path) const {
+    std::unique_ptr<media::VideoReader> video = open_video_file(path);
+    if (probe_.mjpeg && !video->set(cv::CAP_PROP_FORMAT, -1))
       throw failure(path + ": OpenCV's FFmpeg backend cannot read this MJPG video's frames raw");
     return video;
   }
 
-  bool next(cv::VideoCapture& video, Frame& f, std::int64_t index) const {
+  bool next(media::VideoReader& video, Frame& f, std::int64_t index) const {
     if (!probe_.mjpeg) {  // a frame that does not decode ends the reading (frames_missing counts the rest)
       if (!video.read(f.bgr)) return false;
       check_size(f.bgr, index);
@@ -89,7 +90,7 @@ class VideoSource : public FrameSource {
     return true;
   }
 
-  void retrieve(cv::VideoCapture& video, Frame& f, std::int64_t index) const {
+  void retrieve(media::VideoReader& video, Frame& f, std::int64_t index) const {
     cv::Mat raw;
     video.retrieve(raw);
     if (!probe_.mjpeg) {

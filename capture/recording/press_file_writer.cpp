@@ -3,10 +3,10 @@
 #include <linux/videodev2.h>
 
 #include <cmath>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "capture/device/fourcc.hpp"
+#include "media/codecs.hpp"
 
 namespace haptex::capture {
 
@@ -34,7 +34,7 @@ std::vector<std::uint8_t> PressFileWriter::stored(const Frame& frame) const {
   const cv::Mat yuyv(size_, CV_8UC2, const_cast<std::uint8_t*>(frame.bytes.data()));
   cv::Mat bgr;
   cv::cvtColor(yuyv, bgr, cv::COLOR_YUV2BGR_YUYV);
-  cv::imencode(".png", bgr, png, {cv::IMWRITE_PNG_COMPRESSION, 1});
+  media::encode_image(".png", bgr, png, {cv::IMWRITE_PNG_COMPRESSION, 1});
   return png;
 }
 

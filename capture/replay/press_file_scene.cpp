@@ -2,7 +2,6 @@
 
 #include <linux/videodev2.h>
 
-#include <opencv2/imgcodecs.hpp>
 
 #include "capture/device/fake_scene.hpp"
 #include "capture/replay/video_scene.hpp"
@@ -11,6 +10,7 @@
 #include "core/image_header.hpp"
 #include "dataset/decode_image.hpp"
 #include "dataset/layout.hpp"
+#include "media/codecs.hpp"
 
 namespace haptex::capture {
 
@@ -55,7 +55,7 @@ const std::vector<std::uint8_t>* PressFileScene::frame(std::uint64_t k) {
   if (order_ == dataset::ChannelOrder::bgr)
     dataset::reorder_channels({bgr.data, bgr.total() * 3}, dataset::ChannelOrder::rgb, dataset::ChannelOrder::bgr);
   if (jpeg)
-    cv::imencode(".jpg", bgr, payload_, {cv::IMWRITE_JPEG_QUALITY, kReplayJpegQuality});
+    media::encode_image(".jpg", bgr, payload_, {cv::IMWRITE_JPEG_QUALITY, kReplayJpegQuality});
   else
     payload_ = bgr_to_yuyv(bgr);
   return &payload_;

@@ -2,10 +2,10 @@
 
 #include <linux/videodev2.h>
 
-#include <opencv2/imgcodecs.hpp>
 
 #include "capture/device/fake_scene.hpp"
 #include "capture/storage/video_file.hpp"
+#include "media/codecs.hpp"
 
 namespace haptex::capture {
 
@@ -23,14 +23,14 @@ VideoScene::VideoScene(const std::string& path, std::uint32_t fourcc) : video_(o
 
 const std::vector<std::uint8_t>* VideoScene::frame(std::uint64_t) {
   cv::Mat bgr;
-  if (!video_.read(bgr) || bgr.empty()) return nullptr;
+  if (!video_->read(bgr) || bgr.empty()) return nullptr;
   // A frame of another size is sent at its size, as a faulty sensor would: the recorder finds it does
   // not decode to the stream's size and counts it corrupt.
   if (fourcc_ == V4L2_PIX_FMT_YUYV) {
     payload_ = bgr_to_yuyv(bgr);
   } else {
     payload_.clear();
-    cv::imencode(".jpg", bgr, payload_, {cv::IMWRITE_JPEG_QUALITY, kReplayJpegQuality});
+    media::encode_image(".jpg", bgr, payload_, {cv::IMWRITE_JPEG_QUALITY, kReplayJpegQuality});
   }
   return &payload_;
 }

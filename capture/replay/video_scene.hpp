@@ -4,6 +4,7 @@
 // sensors send; lossless ones (FFV1, PNG, HuffYUV, raw) become raw YUYV, so the recorder keeps them
 // lossless and scores them with the lossless floors, as `capture extract` does with the same file.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 
 #include "capture/device/camera_scene.hpp"
 #include "capture/device/fake_camera.hpp"
+#include "media/codecs.hpp"
 
 namespace haptex::capture {
 
@@ -27,7 +29,7 @@ class VideoScene : public CameraScene {
   const std::vector<std::uint8_t>* frame(std::uint64_t k) override;
 
  private:
-  cv::VideoCapture video_;
+  std::unique_ptr<media::VideoReader> video_;
   std::uint32_t fourcc_;
   std::vector<std::uint8_t> payload_;
 };

@@ -5,6 +5,7 @@
 
 #include "capture/storage/avi_frame_rate.hpp"
 #include "core/error.hpp"
+#include "media/codecs.hpp"
 
 namespace haptex::capture {
 
@@ -22,42 +23,38 @@ void prepare_video_environment() {
   });
 }
 
-cv::VideoCapture open_video_file(const std::string& path) {
+std::unique_ptr<media::VideoReader> open_video_file(const std::string& path) {
   prepare_video_environment();
-  cv::VideoCapture video;
   // FFmpeg only: other backends (GStreamer) print their own warnings on failure, and libraries
   // here never print.
-  try {
-    video.open(path, cv::CAP_FFMPEG);
-  } catch (const cv::Exception&) {
-  }
-  if (!video.isOpened())
+  std::unique_ptr<media::VideoReader> video = media::open_video(path, cv::CAP_FFMPEG);
+  if (!video)
     throw input_error(path, "", "OpenCV cannot open this as a video",
                       "Give a video file (.avi, .mkv, .mp4 ...) or a press file (.h5) from 'haptex capture record'");
   return video;
 }
 
 VideoProbe probe_video_file(const std::string& path) {
-  cv::VideoCapture video = open_video_file(path);
+  const std::unique_ptr<media::VideoReader> video = open_video_file(path);
   cv::Mat first;
-  if (!video.read(first) || first.empty())
+  if (!video->read(first) || first.empty())
     throw input_error(path, "frame 0", "the video has no readable frame",
                       "Check it plays (ffprobe " + path + "); re-export it as FFV1 .mkv or MJPG .avi");
   VideoProbe probe;
   probe.size = first.size();
   // An AVI that states no rate is reported at FFmpeg's guess of 25 fps: its own headers decide.
-  const double fps = avi_frame_rate(path).value_or(video.get(cv::CAP_PROP_FPS));
+  const double fps = avi_frame_rate(path).value_or(video->get(cv::CAP_PROP_FPS));
   probe.fps = fps > 0 && fps < 1000 ? fps : 0.0;
-  const auto fourcc = std::uint32_t(video.get(cv::CAP_PROP_FOURCC));
+  const auto fourcc = std::uint32_t(video->get(cv::CAP_PROP_FOURCC));
   probe.lossless = fourcc == 0;  // raw frames
   for (const char* codec : {"FFV1", "FFVH", "HFYU", "png ", "MPNG", "UYVY", "YUY2", "I420", "Y800", "RGBA", "BGRA"})
-    if (fourcc == std::uint32_t(cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]))) probe.lossless = true;
+    if (fourcc == std::uint32_t(media::fourcc(codec[0], codec[1], codec[2], codec[3]))) probe.lossless = true;
   probe.inter_frame = !probe.lossless;
   for (const char* codec : {"MJPG", "mjpg", "AVRn", "dmb1", "jpeg"})
-    if (fourcc == std::uint32_t(cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]))) probe.inter_frame = false;
+    if (fourcc == std::uint32_t(media::fourcc(codec[0], codec[1], codec[2], codec[3]))) probe.inter_frame = false;
   // Raw reading only for plain MJPG: AVRn and dmb1 may hold two interlaced fields per packet.
   for (const char* codec : {"MJPG", "mjpg"})
-    if (fourcc == std::uint32_t(cv::VideoWriter::fourcc(codec[0], codec[1], codec[2], codec[3]))) probe.mjpeg = true;
+    if (fourcc == std::uint32_t(media::fourcc(codec[0], codec[1], codec[2], codec[3]))) probe.mjpeg = true;
   return probe;
 }
 

@@ -4,10 +4,13 @@
 // end in a concealed, half-grey frame that scores as the strongest contact), and with the codecs that
 // keep frames exactly told apart. Extraction reads videos through it, and so does replay.
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
+
+#include "media/codecs.hpp"
 
 namespace haptex::capture {
 
@@ -15,7 +18,7 @@ namespace haptex::capture {
 // before threads start (setenv races with other threads' getenv). open_video_file calls it too.
 void prepare_video_environment();
 // Throws haptex::Error (bad_input) naming the file when OpenCV cannot open it as a video.
-cv::VideoCapture open_video_file(const std::string& path);
+std::unique_ptr<media::VideoReader> open_video_file(const std::string& path);
 
 struct VideoProbe {
   cv::Size size;       // of the first frame

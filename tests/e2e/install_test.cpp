@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "dataset/format.hpp"
+#include "dataset/layout.hpp"
+#include "dataset/press_images.hpp"
 #include "dataset/window_table.hpp"
 #include "predict/model_file.hpp"
 #include "predict/predictor.hpp"
@@ -45,7 +47,10 @@ std::string expected_output() {
   const std::string& material = windows.materials[std::size_t(windows.material[0])];
   std::vector<float> spectrum(dataset::kTargetBins);
   predictor.predict(predictor.material_code(model.material_index(material)), windows.action_of(0), spectrum);
-  std::string out = "windows " + std::to_string(windows.size()) + "\nmaterial " + material + "\n";
+  const h5::File file = dataset::open_checked(small_pipeline().dataset, dataset::Kind::dataset);
+  const h5::Group press = file.root().open_group(dataset::layout::kMaterials).open_group(material).open_group(dataset::layout::kPresses).open_group("0");
+  const std::size_t png = dataset::encode_png(dataset::read_press_image(press, dataset::layout::kPeak)).size();
+  std::string out = "windows " + std::to_string(windows.size()) + "\nmaterial " + material + "\npeak png " + std::to_string(png) + " bytes\n";
   char value[32];
   for (const float a : spectrum) out += (std::snprintf(value, sizeof value, "%.9g\n", double(a)), value);
   return out;
@@ -61,10 +66,36 @@ std::vector<std::string> words(const std::string& text) {
 TEST(Install, PutsTheBinaryHeadersLibrariesAndBothPackageFilesUnderThePrefix) {
   const std::string prefix = installed();
   EXPECT_EQ(run_program({prefix + "/bin/haptex", "--version"}).exit_code, 0);
+  EXPECT_TRUE(fs::is_regular_file(prefix + "/lib/haptex/libhaptex_opencv_codecs.so"));
   for (const char* file : {"include/haptex/predict/predictor.hpp", "include/haptex/core/version.hpp", "include/haptex/evaluate/report/report_html.hpp",
                            "lib/libhaptex_core.a", "lib/libhaptex_predict.a", "lib/cmake/haptex/haptexConfig.cmake",
                            "lib/cmake/haptex/haptexConfigVersion.cmake", "lib/pkgconfig/haptex.pc"})
     EXPECT_TRUE(fs::is_regular_file(prefix + "/" + file)) << file;
+}
+
+// The installed binary loads its codecs plugin from lib/haptex (media/codecs.hpp) to write and read
+// videos; without the plugin, a command that needs it says what is missing and how to get it back.
+TEST(Install, TheInstalledBinaryFindsItsCodecsPluginAndSaysSoWhenItIsGone) {
+  const TempDir dir;
+  const std::string prefix = dir.file("copy");
+  fs::copy(installed(), prefix, fs::copy_options::recursive);
+  const std::vector<std::string> synth = {prefix + "/bin/haptex", "synth", "materials", "-n", "1", "--presses", "1", "--recordings", "1",
+                                          "--seconds", "0.5", "--size", "64x48", "-q", "-o"};
+  std::vector<std::string> args = synth;
+  args.push_back(dir.file("s"));
+  const CommandResult made = run_program(args);
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  const CommandResult extracted = run_program({prefix + "/bin/haptex", "capture", "extract", dir.file("s/gelsight"), "-o", dir.file("g.h5"), "-q"});
+  EXPECT_EQ(extracted.exit_code, 0) << extracted.err;
+  fs::remove(prefix + "/lib/haptex/libhaptex_opencv_codecs.so");
+  args = synth;
+  args.push_back(dir.file("t"));
+  const CommandResult without = run_program(args);
+  EXPECT_EQ(without.exit_code, 1);
+  EXPECT_NE(without.err.find("cannot load OpenCV's image and video codecs"), std::string::npos) << without.err;
+  EXPECT_NE(without.err.find("libhaptex_opencv_codecs.so"), std::string::npos) << without.err;
+  EXPECT_NE(without.err.find("Reinstall haptex"), std::string::npos) << without.err;
+  EXPECT_EQ(run_program({prefix + "/bin/haptex", "info", dir.file("g.h5")}).exit_code, 0) << "commands without images run as before";
 }
 
 TEST(Install, AProjectOfItsOwnBuildsWithFindPackageAndPredictsAsHaptexDoes) {
