@@ -94,7 +94,7 @@ PartialFile::PartialFile(const std::string& final_path, bool replace, Replaceabl
 }
 
 PartialFile::~PartialFile() {
-  if (!committed_) std::remove(path_.c_str());
+  if (!committed_ && still_names(path_, fd_)) std::remove(path_.c_str());  // what another put there is theirs
   forget_temporary(path_);
   if (fd_ >= 0) ::close(fd_);  // releases the lock
 }
@@ -120,7 +120,32 @@ void PartialFile::check_place() const {
   if (replace_ && fs::exists(status) && still_replaceable_) still_replaceable_(final_path_);
 }
 
+namespace {
+
+// The name a temporary is renamed from is the one it was created as; and what the rename put at the
+// final name is that file: a link or another file swapped in by someone writing the same folder is
+// refused (and a rename that raced such a swap taken back by the caller) (review 14, F1).
+void require_still_named(const std::string& path, int fd, const std::string& final_path) {
+  if (!still_names(path, fd))
+    throw failure(final_path + ": its temporary file " + path +
+                  " was replaced (by a link or another file) while haptex wrote it; nothing was put in place. Make sure no other program writes in this folder, and run again");
+}
+
+}  // namespace
+
+void PartialFile::require_not_swapped() const { require_still_named(path_, fd_, final_path_); }
+
 void PartialFile::put_in_place() {
+  require_not_swapped();
+  rename_into_place();
+  placed_ = true;
+  if (!still_names(final_path_, fd_)) {
+    take_back();
+    require_still_named(final_path_, fd_, final_path_);
+  }
+}
+
+void PartialFile::rename_into_place() {
   std::error_code ec;
   if (!replace_ || !fs::exists(fs::symlink_status(final_path_, ec))) {
     durable_rename(path_, final_path_, false);  // nothing to replace: whatever appears there meanwhile is kept
@@ -133,7 +158,6 @@ void PartialFile::put_in_place() {
   } else {
     throw failure(path_ + ": cannot rename to " + final_path_ + ": " + std::strerror(errno));
   }
-  placed_ = true;
 }
 
 void PartialFile::take_back() noexcept {

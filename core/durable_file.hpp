@@ -51,10 +51,17 @@ class PartialFile : public StagedOutput {
   // temporaries are held (hold_temporaries): a Ctrl-C then removes the file either before (and the
   // run ends without opening it) or after the library holds it open, never in between, where the
   // library would make it anew under the name and leave it behind.
+  // The name given is the descriptor's own (core/temporary_name.hpp, name_of_descriptor): a link or a
+  // file put at the temporary name meanwhile is never what the library opens (review 14, F1).
   template <class Open>
   auto open_by_name(Open&& open) const {
     const auto held = hold_temporaries();
-    return open(path_);
+    try {
+      return open(name_of_descriptor(fd_, path_));
+    } catch (...) {
+      require_not_swapped();  // the library's failure to open it, said as what it is
+      throw;
+    }
   }
   // fsync (failed: a full disk), without renaming: outputs that appear together finish every one of
   // them before the first is renamed (core/output_set.hpp).
@@ -72,6 +79,8 @@ class PartialFile : public StagedOutput {
 
  private:
   friend void write_text(PartialFile& out, std::string_view text);
+  void rename_into_place();
+  void require_not_swapped() const;
   std::string final_path_, path_;
   int fd_ = -1;
   ReplaceableCheck still_replaceable_;

@@ -195,6 +195,18 @@ Temporary create_temporary_folder(const std::string& final_path) {
   });
 }
 
+bool still_names(const std::string& path, int fd) {
+  struct stat named {}, opened {};
+  return ::lstat(path.c_str(), &named) == 0 && ::fstat(fd, &opened) == 0 && named.st_dev == opened.st_dev && named.st_ino == opened.st_ino;
+}
+
+std::string name_of_descriptor(int fd, const std::string& path) {
+  const std::string magic = "/proc/self/fd/" + std::to_string(fd);
+  struct stat named {}, opened {};
+  const bool same = ::stat(magic.c_str(), &named) == 0 && ::fstat(fd, &opened) == 0 && named.st_dev == opened.st_dev && named.st_ino == opened.st_ino;
+  return same ? magic : path;
+}
+
 std::vector<std::string> temporaries_of(const std::string& final_path) {
   std::vector<std::string> found;
   const std::string folder = folder_of(final_path), name = fs::path(final_path).filename().string();

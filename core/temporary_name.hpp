@@ -30,6 +30,13 @@ Temporary create_temporary_file(const std::string& final_path);
 // The same for a folder (mode 0777 less the umask).
 Temporary create_temporary_folder(const std::string& final_path);
 
+// True while `path` names the file or folder `fd` was opened on, not a link or another file put in
+// its place by someone else writing the same folder (review 14, F1).
+bool still_names(const std::string& path, int fd);
+// A name for fd's own file that no change to the folder can redirect (/proc/self/fd/N), for a library
+// that opens its files by name (HDF5, libsndfile); `path` itself where /proc is not mounted.
+std::string name_of_descriptor(int fd, const std::string& path);
+
 // The temporary names of final_path that exist now: any run's, finished, killed or running.
 std::vector<std::string> temporaries_of(const std::string& final_path);
 

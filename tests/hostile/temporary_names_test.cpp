@@ -3,6 +3,7 @@
 // is a user's file or one of the inputs (core/temporary_name.hpp).
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/inotify.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -228,6 +229,79 @@ TEST(TemporaryNames, ASignalTakesTheUnfinishedOutputsAway) {
       EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << "status " << status;
       EXPECT_TRUE(fs::is_empty(d.path())) << "no output, finished or not, is left";
     }
+}
+
+// Review 14, F1: someone else writing the output's folder swaps the fresh temporary for a link to a
+// file of the user's just after haptex created it. The library reopened it by name (HDF5 with O_TRUNC)
+// and overwrote the user's file, and the link was renamed into place (exit 0). A watcher swaps the first
+// temporary it sees, as fast as inotify lets it; each command is retried until a swap lands.
+class TemporarySwapper {
+ public:
+  TemporarySwapper(const std::string& dir, std::string victim) : victim_(std::move(victim)) {
+    fd_ = inotify_init1(IN_NONBLOCK);
+    inotify_add_watch(fd_, dir.c_str(), IN_CREATE);
+    watcher_ = std::thread([this, dir] { watch(dir); });
+  }
+  ~TemporarySwapper() {
+    stop_ = true;
+    watcher_.join();
+    ::close(fd_);
+  }
+  bool swapped() const { return swapped_; }
+
+ private:
+  void watch(const std::string& dir) {
+    alignas(inotify_event) char buffer[4096];
+    while (!stop_ && !swapped_) {
+      const ssize_t n = ::read(fd_, buffer, sizeof buffer);
+      if (n <= 0) {
+        std::this_thread::yield();
+        continue;
+      }
+      for (ssize_t i = 0; i < n;) {
+        const auto* event = reinterpret_cast<const inotify_event*>(buffer + i);
+        const std::string name = event->len ? event->name : "";
+        i += ssize_t(sizeof(inotify_event) + event->len);
+        if (name.size() > 8 && name.substr(name.size() - 8) == ".partial" && !swapped_) {
+          const std::string path = dir + "/" + name;
+          swapped_ = ::unlink(path.c_str()) == 0 && ::symlink(victim_.c_str(), path.c_str()) == 0;
+        }
+      }
+    }
+  }
+  std::string victim_;
+  int fd_ = -1;
+  std::atomic<bool> stop_{false}, swapped_{false};
+  std::thread watcher_;
+};
+
+TEST(TemporaryNames, ATemporarySwappedForALinkIsNeitherWrittenThroughNorPutInPlace) {
+  const TempDir inputs;
+  for (const Command& c : commands(inputs)) {
+    if (c.name == "merge" || c.name == "split") continue;  // the same PartialFile as align's and windows'
+    SCOPED_TRACE(c.name);
+    bool swapped = false;
+    for (int attempt = 0; attempt < 20 && !swapped; ++attempt) {
+      const TempDir d;
+      const std::string out = d.file("out"), victim = d.file("thesis.tex");
+      std::ofstream(victim) << "years of work";
+      CommandResult r;
+      {
+        const TemporarySwapper swapper(d.path(), victim);
+        std::vector<std::string> args = c.args;
+        for (const std::string& a : {std::string("-o"), out}) args.push_back(a);
+        r = run_haptex(args);
+        swapped = swapper.swapped();
+      }
+      if (!swapped) continue;
+      EXPECT_EQ(file_bytes(victim), "years of work") << "the user's file was written through the link";
+      EXPECT_FALSE(fs::is_symlink(out)) << "the link was put in place as the output";
+      EXPECT_FALSE(fs::exists(fs::symlink_status(out))) << r.err;
+      EXPECT_EQ(r.exit_code, 1) << r.err;
+      EXPECT_NE(r.err.find("was replaced"), std::string::npos) << r.err;
+    }
+    EXPECT_TRUE(swapped) << "no swap landed in 20 runs: the test proved nothing";
+  }
 }
 
 }  // namespace
