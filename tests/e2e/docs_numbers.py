@@ -13,6 +13,8 @@ docs_numbers.py PART HAPTEX ROOT, PART one of:
   demo      (one more argument: a folder examples/demo/run.sh filled) the figures README.md,
             docs/benchmark.md, docs/predict.md, docs/capture.md and docs/render.md quote from `make demo`
             are the ones this demo gives, at the precision they are printed (times excepted)
+  hatt      (one more argument: a folder `examples/demo/run.sh HAPTEX OUT hatt --models ... --images ...`
+            filled from ../shared/data/hatt) docs/evaluate.md's figures of the 60 HaTT-driven materials
 Prints one line per mismatch (file:line: what the doc says, what the code says) and exits 1 if any.
 """
 import json
@@ -232,8 +234,8 @@ def median(values):
 class DemoFacts:
     """The demo's figures as the docs print them."""
 
-    def __init__(self, demo):
-        self.demo = demo
+    def __init__(self, demo, root):
+        self.demo, self.root = demo, root
         self.results = json.loads((demo / "report/results.json").read_text(encoding="utf-8"))
         self.log = json.loads((demo / "model.training.json").read_text(encoding="utf-8"))
         self.floors = {f["id"]: f for f in self.results["floors"]}
@@ -285,6 +287,55 @@ def demo_checks(facts):
     ]
 
 
+def hatt_checks(facts):
+    """docs/evaluate.md's "Where the models stand" table and the input floor's sentence."""
+    def row(name):
+        e = facts.experiment(name)
+        t = e["totals"]
+        w = max(e["materials"], key=lambda m: m["floor_ratio"])
+        lsd = median([m["model_lsd_db"] for m in e["materials"]])
+        return [f"{e['mean_model']:.3f}", f"{e['median_floor_ratio']:.3f}", str(t["within_floor_10_percent"]),
+                str(t["within_floor_15_percent"]), f"{w['floor_ratio']:.2f}", w["name"], f"{lsd:.2f}"]
+
+    cells = r"\| ([0-9.]+) \| ([0-9.]+) \| ([0-9]+) \| ([0-9]+) \| ([0-9.]+) \(([A-Za-z0-9 ]+)\) \| ([0-9.]+) dB \|"
+    unified = facts.experiment("unified-new-actions")
+    oracle = [f["distance"] for f in facts.floors.values()]
+    input_ratios = [f["input_floor"] / f["distance"] for f in facts.floors.values()]
+    over_input = [m["model"] / facts.floors[m["id"]]["input_floor"] for m in unified["materials"]]
+    doc = "docs/evaluate.md"
+    u, presses = row("unified-new-actions"), facts.experiment("unified-new-presses")["totals"]
+    default_row = [f"{facts.log['metrics']['spectrum']['val_distance']:.4f}", *u[:4], u[4], u[5], u[6], f"{median(over_input):.3f}",
+                   str(presses["within_floor_10_percent"]), str(presses["within_floor_15_percent"])]
+    return [
+        ("docs/predict.md", r"\| \*\*7 bins \(the default\)\*\* \| \*\*([0-9.]+)\*\* \| \*\*([0-9.]+)\*\* \| \*\*([0-9.]+)\*\* \| \*\*([0-9]+)\*\* \| "
+         r"\*\*([0-9]+)\*\* \| ([0-9.]+) \(([A-Za-z0-9 ]+)\) \| \*\*([0-9.]+) dB\*\* \| \*\*([0-9.]+)\*\* \| ([0-9]+) / ([0-9]+) \|", default_row),
+        (doc, r"oracle mean\s+distance ([0-9.]+) m/s\^2", [f"{sum(oracle) / len(oracle):.3f}"]),
+        (doc, r"\| unified, new actions " + cells, row("unified-new-actions")),
+        (doc, r"\| unified, new press \(recognised\) " + cells, row("unified-new-presses")),
+        (doc, r"\| per-material " + cells, row("per-material")),
+        (doc, r"\| stitched, FGLA 100 \| ([0-9.]+) \| ([0-9.]+) \| ([0-9]+) \| ([0-9]+) \| ([0-9.]+) \(([A-Za-z0-9 ]+)\) \| ([0-9.]+) dB \|",
+         row("stitched-fgla")),
+        (doc, r"\| AR \(refit\) rendered \| ([0-9.]+) \|", [f"{unified['mean_baseline']:.3f}"]),
+        (doc, r"The oracle's own LSD is ([0-9.]+) dB", [f"{median([f['lsd_db'] for f in facts.floors.values()]):.2f}"]),
+        (doc, r"On the 60\s+HaTT-driven materials it is ([0-9.]+) times the oracle \(median; ([0-9.]+) to ([0-9.]+), above 1.05 on ([0-9]+);",
+         [f"{median(input_ratios):.3f}", f"{min(input_ratios):.3f}", f"{max(input_ratios):.3f}", str(sum(r > 1.05 for r in input_ratios))]),
+        (doc, r"the unified model is within 10 % of the input\s+floor on ([0-9]+) materials, within 5 % on ([0-9]+) \(median ([0-9.]+);",
+         [str(sum(r <= 1.10 for r in over_input)), str(sum(r <= 1.05 for r in over_input)), f"{median(over_input):.3f}"]),
+    ]
+
+
+def check_figures(facts, checks):
+    bad = []
+    for doc, pattern, expected in checks:
+        text = (facts.root / doc).read_text(encoding="utf-8")
+        m = re.search(pattern, text)
+        if not m:
+            bad.append(f"{doc}: no text matches {pattern!r}: the doc changed; keep the check with it")
+        elif list(m.groups()) != expected:
+            bad.append(f"{doc}:{text[: m.start()].count(chr(10)) + 1}: the doc says {list(m.groups())}, the run gives {expected}")
+    return bad
+
+
 def render_example(haptex, root, facts):
     """docs/render.md's example, run on the demo: its printed lines, with the compute time masked."""
     text = (root / "docs/render.md").read_text(encoding="utf-8")
@@ -306,17 +357,15 @@ def render_example(haptex, root, facts):
 
 
 def check_demo(haptex, root, demo):
-    facts = DemoFacts(demo)
-    bad = []
-    for doc, pattern, expected in demo_checks(facts):
-        m = re.search(pattern, (root / doc).read_text(encoding="utf-8"))
-        if not m:
-            bad.append(f"{doc}: no text matches {pattern!r}: the doc changed; keep the check with it")
-        elif list(m.groups()) != expected:
-            line = (root / doc).read_text(encoding="utf-8")[: m.start()].count("\n") + 1
-            bad.append(f"{doc}:{line}: the doc says {list(m.groups())}, the demo gives {expected}")
-    return bad + render_example(haptex, root, facts)
+    facts = DemoFacts(demo, root)
+    return check_figures(facts, demo_checks(facts)) + render_example(haptex, root, facts)
 
+
+def check_hatt(root, run):
+    facts = DemoFacts(run, root)
+    if len(facts.floors) != 60:
+        return [f"{run}: {len(facts.floors)} materials, not the 60 HaTT-driven ones docs/evaluate.md quotes"]
+    return check_figures(facts, hatt_checks(facts))
 
 def main():
     part, haptex, root = sys.argv[1], str(pathlib.Path(sys.argv[2]).resolve()), pathlib.Path(sys.argv[3]).resolve()
@@ -326,6 +375,7 @@ def main():
         "paths": lambda: check_paths(root),
         "commands": lambda: check_commands(haptex, root),
         "demo": lambda: check_demo(haptex, root, pathlib.Path(sys.argv[4]).resolve()),
+        "hatt": lambda: check_hatt(root, pathlib.Path(sys.argv[4]).resolve()),
     }
     bad = checks[part]()
     if "-v" in sys.argv:

@@ -22,25 +22,16 @@ CommandResult check(const std::string& part, const std::string& demo = "") {
   return run_python(args);
 }
 
-TEST(DocsNumbers, FormatVersionsAreTheOnesHaptexWrites) {
-  const CommandResult r = check("formats");
+// formats: the format table and every FAMILY/N; defaults: option defaults and ranges against --help;
+// paths: every repository path named exists; commands: every `haptex WORD` in a code block is one.
+class DocsNumbersPart : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(DocsNumbersPart, AgreesWithTheCode) {
+  const CommandResult r = check(GetParam());
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
 }
 
-TEST(DocsNumbers, OptionDefaultsAndRangesAreTheHelpPages) {
-  const CommandResult r = check("defaults");
-  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-}
-
-TEST(DocsNumbers, EveryRepositoryPathNamedExists) {
-  const CommandResult r = check("paths");
-  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-}
-
-TEST(DocsNumbers, EveryCommandInACodeBlockExists) {
-  const CommandResult r = check("commands");
-  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-}
+INSTANTIATE_TEST_SUITE_P(DocsNumbers, DocsNumbersPart, ::testing::Values("formats", "defaults", "paths", "commands"));
 
 TEST(DocsNumbers, FiguresQuotedFromTheDemoAreTheDemosOwn) {
   TempDir dir;
