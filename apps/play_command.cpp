@@ -128,7 +128,8 @@ class PlayCommand : public Command {
 
   void check_outputs() const {
     if (record_.empty()) return;
-    const std::vector<std::string> inputs{model_path_, trajectory_path_, texture_.image, texture_.reference};
+    const std::vector<std::string> inputs{model_path_, trajectory_path_, texture_.image, texture_.reference,
+                                          actions_ == "-" ? kStandardInput : ""};
     refuse_output_among_inputs(record_, inputs);
     refuse_output_among_inputs(actions_path(record_), inputs);
     render::check_wav_output(record_, force_);

@@ -37,7 +37,8 @@ void refuse_output_among_inputs(const std::string& output, const std::vector<std
     struct stat in;
     if (!identity(input, in)) continue;
     if (same(out, in))
-      throw input_error(output, "", "this output is also an input of the command (" + input + "), and writing it would destroy it",
+      throw input_error(output, "", "this output is also an input of the command (" + (input == kStandardInput ? "standard input" : input) +
+                                        "), and writing it would destroy it",
                         "Choose another output name");
     if (S_ISDIR(out.st_mode) && inside(input, out))
       throw input_error(output, "", "this output folder holds an input of the command (" + input + "), which replacing it would delete",

@@ -9,6 +9,9 @@ namespace haptex {
 
 // Throws haptex::Error (bad input) naming output and the input it is, or holds. Inputs and outputs
 // that do not exist yet are skipped; empty strings (options not given) are ignored.
+// kStandardInput among the inputs stands for what a command reads on standard input (play --actions -:
+// a CSV redirected from a file is an input too; review 14, F5).
+inline constexpr const char* kStandardInput = "/dev/stdin";
 void refuse_output_among_inputs(const std::string& output, const std::vector<std::string>& inputs);
 
 // Whether two output names (which may not exist yet) are one path: "x.wav", "./x.wav" and "d/../x.wav"

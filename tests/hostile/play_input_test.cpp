@@ -98,6 +98,12 @@ TEST(HostilePlay, ARecordingNeverReplacesWhatHaptexDidNotWriteNorAnInput) {
   expect_refusal(run_haptex(play({"--trajectory", trajectory, "--record", d.file("r.wav")})), {d.file("r.wav"), "--force"});
   EXPECT_EQ(run_haptex(play({"--trajectory", trajectory, "--record", d.file("r.wav"), "--force"})).exit_code, 0);
   EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
+  // Review 14, F5: the actions played back from the CSV a recording wrote, on standard input, into the
+  // same recording: that CSV is an input, and --force does not replace it.
+  const std::string kept = file_bytes(d.file("r.csv"));
+  expect_refusal(run_haptex_fed(play({"--actions", "-", "--record", d.file("r.wav"), "--force"}), d.file("r.csv")),
+                 {d.file("r.csv"), "also an input of the command (standard input)"});
+  EXPECT_EQ(file_bytes(d.file("r.csv")), kept);
 }
 
 // Review 12, F3: an ALSA device string is a configuration language. With the system's configuration,
