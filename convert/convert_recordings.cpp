@@ -53,9 +53,13 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
     if (fs::is_directory(input, ec)) {
       std::vector<fs::path> found;
       fs::path listing = input;  // the folder being read when listing fails: the entry last seen, or input itself
-      for (auto it = fs::recursive_directory_iterator(input, ec); !ec && it != fs::recursive_directory_iterator();
-           it.increment(ec)) {
+      // A link to a folder is followed, as capture extract does; a dangling link is refused by name
+      // (review 14, F8), and so is a link to a folder holding it, which would be read forever.
+      for (auto it = fs::recursive_directory_iterator(input, fs::directory_options::follow_directory_symlink, ec);
+           !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
         listing = it->path();
+        refuse_dangling_link(it->path().string());
+        refuse_link_to_its_own_folder(it->path());
         if (is_recording_file(it->path()) && !it->is_directory()) {
           require_regular_file(it->path().string());  // a FIFO or a dangling link is refused by name, not skipped
           found.push_back(it->path());

@@ -4,8 +4,10 @@
 #include <sys/stat.h>
 #include <sys/vfs.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 
 #include "core/error.hpp"
 
@@ -42,6 +44,22 @@ void require_regular_file(const std::string& path) {
   const char* kind = S_ISFIFO(st.st_mode) ? "a FIFO (named pipe)" : S_ISSOCK(st.st_mode) ? "a socket" : "a device";
   throw input_error(path, "", std::string("is ") + kind + ", not a regular file, and haptex reads only regular files",
                     "Save what it carries to a file first, and give that file");
+}
+
+void refuse_dangling_link(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(path, ec)) && !std::filesystem::exists(path, ec)) require_regular_file(path);
+}
+
+void refuse_link_to_its_own_folder(const std::filesystem::path& entry) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_symlink(fs::symlink_status(entry, ec)) || !fs::is_directory(entry, ec)) return;
+  const fs::path target = fs::canonical(entry, ec), here = fs::canonical(entry.parent_path(), ec);
+  const auto [mismatch, unused] = std::mismatch(target.begin(), target.end(), here.begin(), here.end());
+  if (!ec && mismatch == target.end())
+    throw input_error(entry.string(), "", "is a link to " + target.string() + ", which holds the folder it is in",
+                      "Remove the link, or give the folder it points to as an input of its own");
 }
 
 }  // namespace haptex

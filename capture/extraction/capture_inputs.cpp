@@ -38,15 +38,10 @@ bool is_source_file(const fs::directory_entry& entry) {
 // A folder inside `dir` to look into. A link to a folder elsewhere is followed (materials gathered by
 // links), but one to `dir` itself or a folder holding it would read everything around the input
 // (`loop -> ../..`): it is refused by its own name.
-bool is_folder_to_read(const fs::directory_entry& entry, const std::string& dir) {
+bool is_folder_to_read(const fs::directory_entry& entry) {
   std::error_code ec;
   if (!entry.is_directory(ec)) return false;
-  if (!entry.is_symlink(ec)) return true;
-  const fs::path target = fs::canonical(entry.path(), ec), here = fs::canonical(dir, ec);
-  const auto [mismatch, unused] = std::mismatch(target.begin(), target.end(), here.begin(), here.end());
-  if (!ec && mismatch == target.end())
-    throw input_error(entry.path().string(), "", "is a link to " + target.string() + ", which holds the folder it is in",
-                      "Remove the link, or give the folder it points to as an input of its own");
+  refuse_link_to_its_own_folder(entry.path());
   return true;
 }
 
@@ -54,7 +49,7 @@ bool is_folder_to_read(const fs::directory_entry& entry, const std::string& dir)
 std::vector<std::string> sources_in(const std::string& dir) {
   std::vector<std::string> out;
   for (const auto& entry : fs::directory_iterator(dir))
-    if (is_source_file(entry) || (is_folder_to_read(entry, dir) && is_image_sequence_dir(entry.path().string())))
+    if (refuse_dangling_link(entry.path().string()); is_source_file(entry) || (is_folder_to_read(entry) && is_image_sequence_dir(entry.path().string())))
       out.push_back(entry.path().string());
   sort_by_name(out);
   return out;
@@ -63,7 +58,7 @@ std::vector<std::string> sources_in(const std::string& dir) {
 std::vector<std::string> subfolders(const std::string& dir) {
   std::vector<std::string> out;
   for (const auto& entry : fs::directory_iterator(dir))
-    if (is_folder_to_read(entry, dir)) out.push_back(entry.path().string());
+    if (refuse_dangling_link(entry.path().string()); is_folder_to_read(entry)) out.push_back(entry.path().string());
   sort_by_name(out);
   return out;
 }

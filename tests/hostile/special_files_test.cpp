@@ -140,5 +140,40 @@ TEST(SpecialFiles, AFifoOrADanglingLinkInsideAnInputFolderIsRefused) {
   EXPECT_EQ(partial_files(d.path().string()), std::vector<std::string>{});
 }
 
+// Review 14, F8: a dangling link of any name in an input folder (a material's folder, a frame folder,
+// a folder of recordings whose disk moved) was skipped without a word and its data silently missing.
+// A link to a real folder is followed, and one to a folder holding it is refused.
+TEST(SpecialFiles, ADanglingLinkOfAnyNameInAnInputFolderIsRefused) {
+  const fs::path synth = fs::path(small_pipeline().recordings).parent_path() / "synth";
+  const TempDir d;
+  fs::create_directories(d.file("g/Cork"));
+  fs::copy_file(synth / "gelsight" / "Woven 1" / "press_0.avi", d.file("g/Cork/press_0.avi"));
+  fs::create_directories(d.file("r/own"));
+  fs::create_directories(d.file("elsewhere"));
+  std::vector<fs::path> recordings;
+  for (const auto& e : fs::directory_iterator(synth / "recordings")) recordings.push_back(e.path());
+  ASSERT_GE(recordings.size(), 2u);
+  fs::copy_file(recordings[0], d.file("r/own/" + recordings[0].filename().string()));
+  fs::copy_file(recordings[1], d.file("elsewhere/" + recordings[1].filename().string()));
+  for (const std::string& link : {d.file("g/Felt"), d.file("g/Cork/press_1")}) {
+    SCOPED_TRACE(link);
+    fs::create_symlink(d.file("moved-disk"), link);
+    expect_refusal(run_haptex({"capture", "extract", d.file("g"), "-o", d.file("g.h5"), "--no-sheets"}),
+                   {link, "symbolic link to a file that does not exist"});
+    EXPECT_FALSE(fs::exists(d.file("g.h5")));
+    fs::remove(link);
+  }
+  fs::create_symlink(d.file("elsewhere"), d.file("r/more"));
+  ASSERT_EQ(run_haptex({"convert", "hatt", d.file("r"), "-o", d.file("r.h5"), "-q"}).exit_code, 0);
+  const CommandResult info = run_haptex({"info", d.file("r.h5"), "--json"});
+  EXPECT_NE(info.out.find(recordings[1].filename().string()), std::string::npos) << "the linked folder's recording: " << info.out;
+  fs::create_symlink(d.file("moved-disk"), d.file("r/own/morerecs"));
+  expect_refusal(run_haptex({"convert", "hatt", d.file("r"), "-o", d.file("r2.h5")}), {d.file("r/own/morerecs"), "does not exist"});
+  fs::remove(d.file("r/own/morerecs"));
+  fs::create_symlink(d.file("r"), d.file("r/own/loop"));
+  expect_refusal(run_haptex({"convert", "hatt", d.file("r"), "-o", d.file("r2.h5")}), {d.file("r/own/loop"), "holds the folder it is in"});
+  EXPECT_FALSE(fs::exists(d.file("r2.h5")));
+}
+
 }  // namespace
 }  // namespace haptex::test
