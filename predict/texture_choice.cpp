@@ -49,10 +49,13 @@ cv::Mat read_rgb(const std::string& path) {
   require_regular_file(path);  // a FIFO would block the reads below
   const auto size = image_header_size(path);
   if (size) check_pixels(path, size->width, size->height);
-  const std::vector<std::uint8_t> bytes = file_bytes(path);
-  const std::string format = image_format(bytes);
+  // Judged from its first bytes, before the whole file is read (review 14, F2: a 2 GB file of zeros).
+  std::vector<std::uint8_t> head(16);
+  std::ifstream(path, std::ios::binary).read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
+  const std::string format = image_format(head);
   if (format != "png" && format != "jpeg")
     throw input_error(path, "", "is not a PNG or JPEG image", "Save the sensor frame as PNG (lossless) or JPEG");
+  const std::vector<std::uint8_t> bytes = file_bytes(path);
   dataset::JpegReport report;
   cv::Mat image = format == "jpeg" ? dataset::decode_jpeg(bytes, dataset::DecodedColour::bgr, 1, &report) : dataset::decode_image(bytes);
   if (!report.first_warning.empty() || image.empty())

@@ -48,14 +48,30 @@ int column(const std::string& path, const std::vector<std::string>& header, std:
   return found;
 }
 
+// The next line (without its newline) of at most kLongestLine bytes; false at the end of the file. A
+// longer one (a file of zeros, a binary file) is refused as soon as it is seen, not read whole into
+// memory first (review 14, F2).
+constexpr std::size_t kLongestLine = 4096;  // a row of three numbers is far shorter
+bool next_line(std::istream& in, std::string& line, const std::string& path, std::size_t number) {
+  line.clear();
+  for (int c; (c = in.get()) != std::char_traits<char>::eof();) {
+    if (c == '\n') return true;
+    if (line.size() == kLongestLine)
+      throw input_error(path, "line " + std::to_string(number), "is longer than " + std::to_string(kLongestLine) + " bytes: this is no trajectory CSV",
+                        "Give one sample per line: time_s,force,speed");
+    line.push_back(char(c));
+  }
+  return !line.empty();
+}
+
 }  // namespace
 
 Trajectory read_trajectory(const std::string& path) {
   require_regular_file(path);
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw input_error(path, "", "cannot open the trajectory", "Check the path");
   std::string line;
-  if (!std::getline(in, line)) throw input_error(path, "line 1", "the file is empty", "Write a header: time_s,force,speed");
+  if (!next_line(in, line, path, 1)) throw input_error(path, "line 1", "the file is empty", "Write a header: time_s,force,speed");
   // A spreadsheet's CSV may start with a UTF-8 byte order mark and quote its column names (review 5
   // and 6: "the header names no force or no speed column").
   std::vector<std::string> header = fields(std::string(text::without_byte_order_mark(line)));
@@ -68,7 +84,7 @@ Trajectory read_trajectory(const std::string& path) {
   Trajectory out;
   double previous_time = NAN;
   std::size_t blank = 0;  // the first blank line, while only blank lines follow it
-  for (std::size_t number = 2; std::getline(in, line); ++number) {
+  for (std::size_t number = 2; next_line(in, line, path, number); ++number) {
     if (line.empty() || line == "\r") {
       if (!blank) blank = number;
       continue;

@@ -2,6 +2,7 @@
 // OpenCV decodes (and allocates) it; a real sensor-sized frame still works.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 #include "core/image_header.hpp"
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/quick_models.hpp"
+#include "tests/support/small_pipeline.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::test {
@@ -72,6 +74,26 @@ TEST(LargeInput, ASensorSizedFrameWithoutAReferenceStillWorks) {
   ASSERT_TRUE(cv::imwrite(dir.file("mini.png"), frame));
   const CommandResult r = run_haptex({"predict", quick_model(), "--image", dir.file("mini.png"), "--normal-force", "1", "--speed", "100"});
   EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+// Review 14, F2: a trajectory or image of zeros (a sparse file, 8 GiB here and 4 KiB on disk) was read
+// whole before it was judged: 5 times its size in memory, or "the file is empty" when that failed.
+// Now its first line (or bytes) refuse it at once.
+TEST(LargeInput, ASparseFileOfZerosIsRefusedFromItsFirstBytes) {
+  const TempDir d;
+  const std::string zeros = d.file("zeros.csv"), image = d.file("zeros.png");
+  for (const std::string& f : {zeros, image}) {
+    std::ofstream(f).close();
+    fs::resize_file(f, std::uintmax_t(8) << 30);
+  }
+  const std::string model = quick_model(), material = small_material();
+  const auto started = std::chrono::steady_clock::now();
+  expect_refusal(run_haptex({"predict", model, "--material", material, "--csv", zeros}), {zeros, "line 1", "longer than 4096 bytes"});
+  expect_refusal(run_haptex({"render", model, "--material", material, "--trajectory", zeros, "-o", d.file("x.wav")}),
+                 {zeros, "line 1", "longer than 4096 bytes"});
+  expect_refusal(run_haptex({"predict", model, "--image", image, "--normal-force", "1", "--speed", "100"}), {image, "not a PNG or JPEG"});
+  EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(20)) << "8 GiB were read";
+  EXPECT_FALSE(fs::exists(d.file("x.wav")));
 }
 
 }  // namespace
