@@ -75,6 +75,7 @@ class EvaluateCommand : public Command {
     refuse_output_among_inputs(output_, inputs);
     if (std::filesystem::exists(output_) && !force_)
       throw input_error(output_, "", "the report folder exists", "Choose another -o or add --force");
+    evaluate::check_report_folder(output_, force_);  // before any work: a report it could not write (review 14, F3)
     const split::DatasetSplit split = input_.read();
     std::vector<evaluate::ModelInput> models;
     for (const std::string& path : models_)

@@ -32,8 +32,11 @@ bool empty_folder(const std::string& dir) {
   return fs::is_empty(dir, ec) && !ec;
 }
 
+}  // namespace
+
 // May `dir` become (or replace) the folder? Throws bad_input saying why not.
-void check_destination(const std::string& dir, const FolderOptions& o) {
+void check_folder_destination(const std::string& path, const FolderOptions& o) {
+  const std::string dir = trimmed(path);
   const std::string name = fs::path(dir).filename().string();
   if (name.empty() || name == "." || name == "..")
     throw input_error(dir, "", "not a name for a new " + o.what, "Name the folder with " + o.option);
@@ -57,6 +60,8 @@ void check_destination(const std::string& dir, const FolderOptions& o) {
   check_only_haptex_files(dir, o.written_by);
 }
 
+namespace {
+
 // Every file and folder under dir, deepest first, then dir itself.
 void fsync_tree(const std::string& dir) {
   for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
@@ -72,7 +77,7 @@ void fsync_tree(const std::string& dir) {
 
 PartialDirectory::PartialDirectory(std::string final_path, FolderOptions options)
     : final_(trimmed(std::move(final_path))), options_(std::move(options)) {
-  check_destination(final_, options_);
+  check_folder_destination(final_, options_);
   Temporary t = create_temporary_folder(final_);
   path_ = std::move(t.path);
   fd_ = t.fd;
@@ -106,7 +111,7 @@ void PartialDirectory::commit() { commit_together({this}); }
 
 void PartialDirectory::check_place() const {
   std::error_code ec;
-  if (fs::exists(fs::symlink_status(final_, ec))) check_destination(final_, options_);  // it appeared, or got a file of the user's
+  if (fs::exists(fs::symlink_status(final_, ec))) check_folder_destination(final_, options_);  // it appeared, or got a file of the user's
 }
 
 void PartialDirectory::put_in_place() {

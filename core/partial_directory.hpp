@@ -24,6 +24,10 @@ struct FolderOptions {
   std::string written_by = "haptex";      // the command, recorded in haptex-files.json
 };
 
+// The checks PartialDirectory's constructor makes before it creates anything, for a command that
+// makes its folder only at the end: it refuses a folder it could not write before any work (review 14, F3).
+void check_folder_destination(const std::string& dir, const FolderOptions& options);
+
 class PartialDirectory : public StagedOutput {
  public:
   // Throws haptex::Error (bad_input) naming the folder: no usable name, its parent missing or not

@@ -29,10 +29,14 @@ std::vector<std::string> listed(const std::string& directory) {
   return names;
 }
 
+FolderOptions report_folder(bool overwrite) { return {overwrite, "report folder", "-o", "haptex evaluate"}; }
+
 }  // namespace
 
+void check_report_folder(const std::string& directory, bool overwrite) { check_folder_destination(directory, report_folder(overwrite)); }
+
 ReportFiles write_report(const Evaluation& e, const std::string& directory, bool overwrite) {
-  PartialDirectory partial(directory, {overwrite, "report folder", "-o", "haptex evaluate"});
+  PartialDirectory partial(directory, report_folder(overwrite));
   const std::string& dir = partial.final_path();
   const fs::path work(partial.path());
   const ReportLayout layout = report_layout(e);

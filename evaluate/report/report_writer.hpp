@@ -29,5 +29,7 @@ struct ReportFiles {
 // overwrite, an existing DIR is replaced in one step (renameat2 RENAME_EXCHANGE) only once the new
 // report is complete.
 ReportFiles write_report(const Evaluation& e, const std::string& directory, bool overwrite);
+// write_report's refusals that need no evaluation, for before it runs (review 14, F3).
+void check_report_folder(const std::string& directory, bool overwrite);
 
 }  // namespace haptex::evaluate

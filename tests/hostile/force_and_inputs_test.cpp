@@ -103,6 +103,27 @@ TEST(Force, EvaluateRefusesAReportFolderHoldingAFileOfYours) {
   EXPECT_EQ(file_bytes(dir.file("report/my_notes.md")), "notes");
 }
 
+// Review 14, F3: evaluate judged its report folder only after the whole evaluation. Given a model file
+// that is no model, each of these is refused naming the folder, so before any input was read.
+TEST(Force, EvaluateRefusesAReportFolderItCannotWriteBeforeAnyWork) {
+  const TempDir inputs, dir;
+  const SmallPipeline& p = small_pipeline();
+  std::ofstream(inputs.file("broken.h5")) << "no model";
+  fs::create_directories(dir.file("mine"));
+  std::ofstream(dir.file("mine/notes.txt")) << "mine";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {dir.file("nodir/rep"), "does not exist"}, {".", "not a name"}, {dir.file("mine"), "haptex-files.json"}};
+  for (const auto& [output, says] : cases) {
+    SCOPED_TRACE(output);
+    // Run in dir, so "." is a folder holding no input.
+    expect_refusal(run_program({haptex_binary(), "evaluate", p.dataset, "--split", p.split, "--model", inputs.file("broken.h5"), "-o", output,
+                                "--force"},
+                               dir.path().string()),
+                   {output, says});
+  }
+  EXPECT_EQ(file_bytes(dir.file("mine/notes.txt")), "mine");
+}
+
 // Each command, given one of its inputs as output (by name, through a symbolic or a hard link),
 // refuses with or without --force and leaves the input as it was.
 struct SameFileCase {
