@@ -41,6 +41,15 @@ double check_stamps(const std::string& file, const std::string& column, const st
                     const std::vector<std::size_t>& lines, bool* uniform) {
   const std::string where = "column '" + column + "'";
   if (t.size() < 2) throw input_error(file, where, "holds fewer than two samples", "Give one row per sample");
+  // Stamps so large that a double no longer holds their steps (1e12 s keeps steps of 0.12 ms) were read
+  // already rounded, and would be resampled on the wrong times (review 14, F4).
+  const double largest = std::max(std::abs(t.front()), std::abs(t.back())), kept = std::nextafter(largest, INFINITY) - largest;
+  if (const double apart = (t.back() - t.front()) / double(t.size() - 1); apart > 0 && kept > 1e-3 * apart)
+    throw input_error(file, where,
+                      text::format("the time stamps reach %.6g s, where a number keeps steps of %.2g s only, too coarse for samples "
+                                   "%.3g s apart",
+                                   largest, kept, apart),
+                      "Give the times in seconds from the recording's start (subtract the first stamp)");
   std::vector<double> steps;
   for (std::size_t i = 1; i < t.size(); ++i) {
     if (!(t[i] > t[i - 1]))

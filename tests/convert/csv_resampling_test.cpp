@@ -113,6 +113,26 @@ TEST(CsvResampling, StampsThatAreNotSecondsSaySo) {
   }
 }
 
+// Review 14, F4: stamps 1e12 s from an epoch keep steps of 0.12 ms only; the same stamps from the
+// recording's start are exact. The first are refused saying so, the second taken.
+TEST(CsvResampling, StampsTooLargeToHoldTheirStepsAreRefused) {
+  std::vector<double> times;
+  std::vector<std::size_t> lines;
+  for (int i = 0; i < 600; ++i) {
+    times.push_back(1e12 + i * 1.7e-4);
+    lines.push_back(std::size_t(i) + 2);
+  }
+  try {
+    check_stamps("accel.csv", "time", times, lines, nullptr);
+    FAIL() << "stamps of 1e12 s were taken";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("accel.csv: column 'time': the time stamps reach 1e+12 s"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("subtract the first stamp"), std::string::npos) << e.what();
+  }
+  for (std::size_t i = 0; i < times.size(); ++i) times[i] = double(i) * 1.7e-4;
+  EXPECT_NEAR(check_stamps("accel.csv", "time", times, lines, nullptr), 1 / 1.7e-4, 1e-6);
+}
+
 TEST(CsvResampling, AnXmlRecordingAt5kHzIsResampled) {
   test::SampleRecordingSpec spec;
   spec.seconds = 0.5;
