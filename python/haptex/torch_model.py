@@ -18,8 +18,9 @@ ImportError saying so.
 try:
     import torch
     from torch import nn
-except ImportError:
-    raise ImportError("haptex.torch_model needs PyTorch, which this Python cannot import: install python3-torch "
+except Exception as e:  # noqa: BLE001 - absent, or installed but broken (OSError, RuntimeError: review 14, F7)
+    raise ImportError("haptex.torch_model needs PyTorch, which this Python cannot import "
+                      f"({type(e).__name__}: {e}): install python3-torch "
                       "(Debian: apt-get install python3-torch) or `pip install torch` in a virtual environment") from None
 
 import numpy as np

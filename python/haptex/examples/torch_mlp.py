@@ -20,11 +20,15 @@ import time
 
 import numpy as np
 
+TORCH_ERROR = None
 try:
     import torch
     from torch import nn
-except ImportError:  # said in main(), once the arguments are read: --help and bad arguments work without torch
+except Exception as e:  # noqa: BLE001 - absent (ImportError) or installed but broken (OSError from a missing
+    # shared library, RuntimeError from an ABI mismatch): said in main(), once the arguments are read, so
+    # --help and bad arguments work without torch (review 14, F7)
     torch = nn = None
+    TORCH_ERROR = f"{type(e).__name__}: {e}"
 
 from haptex import data as haptex_data
 
@@ -133,7 +137,7 @@ def main():
     try:
         haptex_data.check_output(args.output, (args.dataset, args.split, args.windows), args.force)
         if torch is None:
-            print(NO_TORCH, file=sys.stderr)
+            print(NO_TORCH + (f" (import torch said {TORCH_ERROR})" if TORCH_ERROR else ""), file=sys.stderr)
             return 2
         torch.set_num_threads(1)
         split, grid = haptex_data.read_split_and_grid(args.split, args.windows)
