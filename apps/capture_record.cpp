@@ -139,14 +139,12 @@ class CaptureRecord : public CaptureSubcommand {
   }
 
   void parse_size() {
-    const auto x = size_.find('x');
-    const std::optional<long long> width = text::parse_whole_number(size_.substr(0, x));
-    const std::optional<long long> height = x == std::string::npos ? std::nullopt : text::parse_whole_number(size_.substr(x + 1));
+    const std::optional<text::FrameSize> size = text::parse_frame_size(size_);
     constexpr long long kLargestSide = 65535;  // V4L2 and every sensor haptex knows stay far below
-    if (!width || !height || *width < 1 || *height < 1 || *width > kLargestSide || *height > kLargestSide)
+    if (!size || size->width > kLargestSide || size->height > kLargestSide)
       throw input_error("--size " + size_, "", "expected WIDTHxHEIGHT, two whole numbers from 1 to 65535", "e.g. --size 3280x2464");
-    request_.format.width = std::uint32_t(*width);
-    request_.format.height = std::uint32_t(*height);
+    request_.format.width = std::uint32_t(size->width);
+    request_.format.height = std::uint32_t(size->height);
   }
 
   void print(const capture::RecordingResult& r, const GlobalOptions& global) const {

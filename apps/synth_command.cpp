@@ -8,6 +8,7 @@
 #include "apps/number_checks.hpp"
 #include "apps/terminal_progress.hpp"
 #include "core/error.hpp"
+#include "core/text/parse_number.hpp"
 #include "core/text/utf8.hpp"
 #include "synth/synth_runs.hpp"
 
@@ -16,13 +17,10 @@ namespace {
 
 // What --force may replace (core/owned_folder.hpp).
 std::pair<int, int> parse_size(const std::string& text) {
-  int width = 0, height = 0, used = 0;
-  char x = 0;
-  const bool parsed = std::sscanf(text.c_str(), "%d%c%d%n", &width, &x, &height, &used) == 3 && x == 'x' &&
-                      used == int(text.size());
-  if (!parsed || width < 64 || height < 48 || width > 4096 || height > 4096)
+  const std::optional<text::FrameSize> size = text::parse_frame_size(text);
+  if (!size || size->width < 64 || size->height < 48 || size->width > 4096 || size->height > 4096)
     throw input_error("--size", text, "not a frame size from 64x48 to 4096x4096", "Write WIDTHxHEIGHT, e.g. 960x720");
-  return {width, height};
+  return {int(size->width), int(size->height)};
 }
 
 class SynthCommand : public Command {

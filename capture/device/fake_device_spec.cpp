@@ -25,9 +25,9 @@ void apply(FakeDevice& fake, FakeMode& mode, bool& fps_given, const DeviceKeys& 
   FakeCameraConfig& c = fake.config;
   if (keys.apply_stream_key(c, key, value)) return;
   if (key == "size") {
-    const auto x = value.find('x');
-    if (x == std::string::npos) keys.refuse(key, "expected WIDTHxHEIGHT");
-    const double width = double(keys.count(key, value.substr(0, x))), height = double(keys.count(key, value.substr(x + 1)));
+    const std::optional<text::FrameSize> size = text::parse_frame_size(value);
+    if (!size) keys.refuse(key, "'" + value + "' is not WIDTHxHEIGHT in plain decimals (no sign, no leading zero, no space)");
+    const double width = double(size->width), height = double(size->height);
     // 4096: above any tactile sensor's frame (a GelSight Mini's is 3280 x 2464), and the float images
     // the fake renders its frames from stay under 1 GB (review 5: 8192x8192 took minutes to start).
     if (width > 4096 || height > 4096) keys.refuse(key, "the fake camera makes frames of at most 4096x4096");

@@ -63,4 +63,21 @@ std::string describe_bad_number(std::string_view text, bool) {
   return quoted + " is not a number";
 }
 
+std::optional<FrameSize> parse_frame_size(std::string_view text) {
+  const auto side = [](std::string_view digits) -> std::optional<long long> {
+    if (digits.empty() || digits.size() > 9 || digits.front() == '0') return std::nullopt;
+    long long value = 0;
+    for (const char c : digits) {
+      if (c < '0' || c > '9') return std::nullopt;
+      value = value * 10 + (c - '0');
+    }
+    return value;
+  };
+  const std::size_t x = text.find('x');
+  if (x == std::string_view::npos) return std::nullopt;
+  const auto width = side(text.substr(0, x)), height = side(text.substr(x + 1));
+  if (!width || !height) return std::nullopt;
+  return FrameSize{*width, *height};
+}
+
 }  // namespace haptex::text

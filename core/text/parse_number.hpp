@@ -18,6 +18,13 @@ bool is_plain_decimal(std::string_view text, Decimal kind);
 // The plain decimal integer that is all of text (a leading '-' or '+' allowed; no spaces, no 0x, no
 // leading zero, no exponent, no fraction), nullopt otherwise or when it does not fit in 64 bits.
 std::optional<long long> parse_whole_number(std::string_view text);
+// "WIDTHxHEIGHT" as a user writes a frame size: two numbers of digits only, from 1, without a sign, a
+// leading zero or a space (synth --size, capture record --size, fake:size=; review 14, F11); nullopt
+// otherwise or when a side does not fit in 9 digits. The range each command takes is its own.
+struct FrameSize {
+  long long width = 0, height = 0;
+};
+std::optional<FrameSize> parse_frame_size(std::string_view text);
 // Values haptex stores become 32-bit floats (recordings, datasets, models): a magnitude over the
 // largest one would be stored as inf, so readers refuse it.
 inline constexpr double kLargestStored = 3.4028234663852886e38;

@@ -116,6 +116,14 @@ TEST(CommandLine, NumbersAreReadAsPlainDecimals) {
   for (const std::string value : {"0x10", " 0.5", "5,5", "1_000", "0.5 "})
     expect_refusal(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--min-coverage", value}),
                    {"--min-coverage", "'" + value + "' is not a plain decimal", "e.g. --min-coverage 0.9"});
+  // Review 14, F11: a frame size is digits only, in synth, capture record and the fake device alike.
+  for (const std::string size : {"0960x720", "+960x720", " 960x720", "960x+720", "960x0720", "960X720", "960x720 "})
+    expect_refusal(run_haptex({"synth", "materials", "-n", "1", "--size", size, "-o", d.file("syn")}), {"--size", "WIDTHxHEIGHT"});
+  expect_refusal(run_haptex({"capture", "record", "--device", "fake:lockstep", "--material", "Cork", "--size", "+160x120", "-o", d.file("r")}),
+                 {"--size +160x120", "expected WIDTHxHEIGHT"});
+  expect_refusal(run_haptex({"capture", "record", "--device", "fake:size=+160x120,lockstep", "--material", "Cork", "-o", d.file("r")}),
+                 {"'+160x120'", "in plain decimals"});
+  EXPECT_FALSE(fs::exists(d.file("syn")));
   // Grey levels end at 255: a larger --pixel-threshold would find no press and blame the footage.
   expect_refusal(run_haptex({"capture", "extract", p.gelsight, "--pixel-threshold", "1000", "-o", d.file("g.h5")}), {"--pixel-threshold", "1000"});
 }
