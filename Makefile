@@ -36,7 +36,9 @@ test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) --timeout 600
 
 # The whole pipeline on the built-in synthetic materials: data, checks, both models, the evaluation.
-demo: build
+# It builds the binary (and its codecs plugin) only; the test programs are make test's.
+demo: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target haptex
 	@rm -rf $(DEMO) && mkdir -p $(DEMO)
 	examples/demo/run.sh $(HAPTEX) $(DEMO)
 	@echo "make demo: done; open $(DEMO)/report/report.html to read and listen (the same as text: $(DEMO)/report/report.md)"

@@ -199,6 +199,12 @@ echo "{\"seconds\": $seconds, \"bytes\": $bytes}" > "$out/demo.json"
 echo "make demo after the build: $seconds s, $((bytes / 1000000)) MB on disk; largest:"
 sed 's/^/  /' "$out/demo_sizes.txt"
 
+# Whole commands (issue 37): start-up included, each beside its peer in the same run, on one core.
+"$build/bench/bench_convert" --export-xml "$out/recording_10s.xml"
+echo "whole commands:"
+/usr/bin/python3 "$repo/bench/whole_commands.py" "$build/haptex" "$repo" "$out/whole" "$out/recording_10s.xml"
+rm -rf "$out/recording_10s.xml" "$out/whole"
+
 jobs=$(nproc)
 start=$(date +%s.%N)
 { cmake -S "$repo" -B "$fresh" -DCMAKE_BUILD_TYPE=Release && cmake --build "$fresh" -j "$jobs"; } > "$out/build.log" 2>&1 \
