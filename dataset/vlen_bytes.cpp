@@ -57,8 +57,11 @@ std::vector<std::uint8_t> read_vlen_bytes(const h5::Dataset& dataset, std::size_
   h5::Handle memory_space(H5Screate_simple(1, one, nullptr));
   h5::Handle type = byte_string_type();
   hvl_t element{0, nullptr};
-  h5::check_status(H5Dread(dataset.id(), type.get(), memory_space.get(), file_space.get(), H5P_DEFAULT, &element),
-                   "read frame " + std::to_string(index), dataset.where());
+  // A damaged file (its global heap overwritten) is bad input, named with the element (review 14, F10).
+  if (H5Dread(dataset.id(), type.get(), memory_space.get(), file_space.get(), H5P_DEFAULT, &element) < 0)
+    throw input_error(dataset.file(), dataset.object_path() + ", element " + std::to_string(index),
+                      "HDF5 could not read it (" + h5::last_library_error() + ")",
+                      "The file is damaged: copy it again, or make it again with the haptex command that wrote it");
   const auto* p = static_cast<const std::uint8_t*>(element.p);
   std::vector<std::uint8_t> bytes(p, p + element.len);
   H5Dvlen_reclaim(type.get(), memory_space.get(), H5P_DEFAULT, &element);

@@ -59,5 +59,23 @@ TEST(HostileReplay, FilesThatAreNoVideoAreRefused) {
   expect_refusal(record("replay:caf\xe9.avi", dir.file("s")), {"--device", "not valid UTF-8", "byte 10"});
 }
 
+// Review 14, F10: a press file whose global heap (where its JPEG frames live) is damaged was exit 1
+// with no place or fix in extract and replay, where qa says exit 2.
+TEST(HostileReplay, APressFileWithADamagedHeapIsBadInputNamingTheFrame) {
+  const TempDir dir;
+  ASSERT_EQ(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "--presses", "1", "-o", dir.file("s"),
+                        "-q"}).exit_code, 0);
+  std::string bytes = file_bytes(dir.file("s/press_0.h5"));
+  const std::size_t heap = bytes.find("GCOL", 2049);
+  ASSERT_NE(heap, std::string::npos);
+  bytes.replace(heap, 4, "XXXX");
+  const std::string damaged = dir.file("damaged.h5");
+  std::ofstream(damaged, std::ios::binary) << bytes;
+  expect_refusal(run_haptex({"capture", "extract", damaged, "-o", dir.file("g.h5"), "--no-sheets"}), {damaged, "/frames, element", "damaged"});
+  expect_refusal(record("replay:" + damaged + ",lockstep", dir.file("r")), {damaged, "/frames, element", "damaged"});
+  EXPECT_FALSE(fs::exists(dir.file("g.h5")));
+  EXPECT_FALSE(fs::exists(dir.file("r")));
+}
+
 }  // namespace
 }  // namespace haptex::test
