@@ -120,19 +120,6 @@ void PartialFile::check_place() const {
   if (replace_ && fs::exists(status) && still_replaceable_) still_replaceable_(final_path_);
 }
 
-namespace {
-
-// The name a temporary is renamed from is the one it was created as; and what the rename put at the
-// final name is that file: a link or another file swapped in by someone writing the same folder is
-// refused (and a rename that raced such a swap taken back by the caller) (review 14, F1).
-void require_still_named(const std::string& path, int fd, const std::string& final_path) {
-  if (!still_names(path, fd))
-    throw failure(final_path + ": its temporary file " + path +
-                  " was replaced (by a link or another file) while haptex wrote it; nothing was put in place. Make sure no other program writes in this folder, and run again");
-}
-
-}  // namespace
-
 void PartialFile::require_not_swapped() const { require_still_named(path_, fd_, final_path_); }
 
 void PartialFile::put_in_place() {

@@ -85,7 +85,7 @@ PartialDirectory::PartialDirectory(std::string final_path, FolderOptions options
 
 PartialDirectory::~PartialDirectory() {
   std::error_code ignored;
-  if (!committed_) fs::remove_all(path_, ignored);
+  if (!committed_ && still_names(path_, fd_)) fs::remove_all(path_, ignored);  // a folder put there by another is theirs
   forget_temporary(path_);
   if (fd_ >= 0) ::close(fd_);
 }
@@ -115,6 +115,7 @@ void PartialDirectory::check_place() const {
 }
 
 void PartialDirectory::put_in_place() {
+  require_still_named(path_, fd_, final_);  // a link or a folder of someone else's swapped in (review 14, F1)
   std::error_code ec;
   const bool replace = fs::exists(fs::symlink_status(final_, ec));
   int status = ::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, final_.c_str(), replace ? RENAME_EXCHANGE : RENAME_NOREPLACE);
@@ -127,6 +128,10 @@ void PartialDirectory::put_in_place() {
                   (replace ? " (remove the old " + options_.what + " and run again)" : ""));
   placed_ = true;
   exchanged_ = replace;
+  if (!still_names(final_, fd_)) {  // the swap came between the check and the rename
+    take_back();
+    require_still_named(final_, fd_, final_);
+  }
   fsync_path(parent_of(final_), O_RDONLY | O_DIRECTORY);
 }
 

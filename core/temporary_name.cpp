@@ -200,6 +200,13 @@ bool still_names(const std::string& path, int fd) {
   return ::lstat(path.c_str(), &named) == 0 && ::fstat(fd, &opened) == 0 && named.st_dev == opened.st_dev && named.st_ino == opened.st_ino;
 }
 
+void require_still_named(const std::string& path, int fd, const std::string& final_path) {
+  if (!still_names(path, fd))
+    throw failure(final_path + ": its temporary " + path +
+                  " was replaced (by a link or another file or folder) while haptex wrote it; nothing was put in place. Make sure no "
+                  "other program writes in this folder, and run again");
+}
+
 std::string name_of_descriptor(int fd, const std::string& path) {
   const std::string magic = "/proc/self/fd/" + std::to_string(fd);
   struct stat named {}, opened {};

@@ -33,6 +33,9 @@ Temporary create_temporary_folder(const std::string& final_path);
 // True while `path` names the file or folder `fd` was opened on, not a link or another file put in
 // its place by someone else writing the same folder (review 14, F1).
 bool still_names(const std::string& path, int fd);
+// Throws haptex::Error (failed) naming final_path unless still_names(path, fd): the temporary of
+// final_path was replaced meanwhile, so it is neither renamed nor left as the output (review 14, F1).
+void require_still_named(const std::string& path, int fd, const std::string& final_path);
 // A name for fd's own file that no change to the folder can redirect (/proc/self/fd/N), for a library
 // that opens its files by name (HDF5, libsndfile); `path` itself where /proc is not mounted.
 std::string name_of_descriptor(int fd, const std::string& path);

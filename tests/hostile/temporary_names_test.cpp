@@ -264,7 +264,8 @@ class TemporarySwapper {
         i += ssize_t(sizeof(inotify_event) + event->len);
         if (name.size() > 8 && name.substr(name.size() - 8) == ".partial" && !swapped_) {
           const std::string path = dir + "/" + name;
-          swapped_ = ::unlink(path.c_str()) == 0 && ::symlink(victim_.c_str(), path.c_str()) == 0;
+          // Moved aside, not deleted: a folder temporary may already hold files.
+          swapped_ = ::rename(path.c_str(), (path + ".aside").c_str()) == 0 && ::symlink(victim_.c_str(), path.c_str()) == 0;
         }
       }
     }
@@ -302,6 +303,32 @@ TEST(TemporaryNames, ATemporarySwappedForALinkIsNeitherWrittenThroughNorPutInPla
     }
     EXPECT_TRUE(swapped) << "no swap landed in 20 runs: the test proved nothing";
   }
+}
+
+// The same for a folder written whole: split's plot folder, the first temporary split makes, swapped
+// for a link to a folder of the user's, was renamed into place as the output's plots.
+TEST(TemporaryNames, AFolderTemporarySwappedForALinkIsNotPutInPlace) {
+  const SmallPipeline& p = small_pipeline();
+  bool swapped = false;
+  for (int attempt = 0; attempt < 20 && !swapped; ++attempt) {
+    const TempDir d;
+    const std::string out = d.file("split.json"), plots = d.file("split.plots"), victim = d.file("thesis");
+    fs::create_directories(victim);
+    std::ofstream(victim + "/chapter1.tex") << "years of work";
+    CommandResult r;
+    {
+      const TemporarySwapper swapper(d.path(), victim);
+      r = run_haptex({"split", p.dataset, "-o", out});
+      swapped = swapper.swapped();
+    }
+    if (!swapped) continue;
+    EXPECT_EQ(file_bytes(victim + "/chapter1.tex"), "years of work");
+    EXPECT_FALSE(fs::exists(fs::symlink_status(plots))) << "the link was put in place as the plots: " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << "the manifest appeared without its plots";
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("was replaced"), std::string::npos) << r.err;
+  }
+  EXPECT_TRUE(swapped) << "no swap landed in 20 runs: the test proved nothing";
 }
 
 }  // namespace
