@@ -195,10 +195,18 @@ Temporary create_temporary_folder(const std::string& final_path) {
   });
 }
 
-bool still_names(const std::string& path, int fd) {
+namespace {
+
+// Whether path (through a last link when `follow`) is the file fd was opened on: same device and inode.
+bool names_descriptor(const std::string& path, int fd, bool follow) {
   struct stat named {}, opened {};
-  return ::lstat(path.c_str(), &named) == 0 && ::fstat(fd, &opened) == 0 && named.st_dev == opened.st_dev && named.st_ino == opened.st_ino;
+  const int found = follow ? ::stat(path.c_str(), &named) : ::lstat(path.c_str(), &named);
+  return found == 0 && ::fstat(fd, &opened) == 0 && named.st_dev == opened.st_dev && named.st_ino == opened.st_ino;
 }
+
+}  // namespace
+
+bool still_names(const std::string& path, int fd) { return names_descriptor(path, fd, false); }
 
 void require_still_named(const std::string& path, int fd, const std::string& final_path) {
   if (!still_names(path, fd))
@@ -209,9 +217,7 @@ void require_still_named(const std::string& path, int fd, const std::string& fin
 
 std::string name_of_descriptor(int fd, const std::string& path) {
   const std::string magic = "/proc/self/fd/" + std::to_string(fd);
-  struct stat named {}, opened {};
-  const bool same = ::stat(magic.c_str(), &named) == 0 && ::fstat(fd, &opened) == 0 && named.st_dev == opened.st_dev && named.st_ino == opened.st_ino;
-  return same ? magic : path;
+  return names_descriptor(magic, fd, true) ? magic : path;
 }
 
 std::vector<std::string> temporaries_of(const std::string& final_path) {
