@@ -37,8 +37,10 @@ bool is_source_file(const fs::directory_entry& entry) {
 
 // A folder inside `dir` to look into. A link to a folder elsewhere is followed (materials gathered by
 // links), but one to `dir` itself or a folder holding it would read everything around the input
-// (`loop -> ../..`): it is refused by its own name.
+// (`loop -> ../..`): it is refused by its own name, and so is a dangling link of any name (review 14,
+// F8), which would otherwise be passed over as no folder.
 bool is_folder_to_read(const fs::directory_entry& entry) {
+  refuse_dangling_link(entry.path().string());
   std::error_code ec;
   if (!entry.is_directory(ec)) return false;
   refuse_link_to_its_own_folder(entry.path());
@@ -49,7 +51,7 @@ bool is_folder_to_read(const fs::directory_entry& entry) {
 std::vector<std::string> sources_in(const std::string& dir) {
   std::vector<std::string> out;
   for (const auto& entry : fs::directory_iterator(dir))
-    if (refuse_dangling_link(entry.path().string()); is_source_file(entry) || (is_folder_to_read(entry) && is_image_sequence_dir(entry.path().string())))
+    if (is_source_file(entry) || (is_folder_to_read(entry) && is_image_sequence_dir(entry.path().string())))
       out.push_back(entry.path().string());
   sort_by_name(out);
   return out;
@@ -58,7 +60,7 @@ std::vector<std::string> sources_in(const std::string& dir) {
 std::vector<std::string> subfolders(const std::string& dir) {
   std::vector<std::string> out;
   for (const auto& entry : fs::directory_iterator(dir))
-    if (refuse_dangling_link(entry.path().string()); is_folder_to_read(entry)) out.push_back(entry.path().string());
+    if (is_folder_to_read(entry)) out.push_back(entry.path().string());
   sort_by_name(out);
   return out;
 }
