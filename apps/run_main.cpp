@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "apps/number_checks.hpp"
 #include "apps/printable_stream.hpp"
 #include "apps/provenance.hpp"
+#include "core/bounded_call.hpp"
 #include "core/durable_file.hpp"
 #include "core/text/parse_number.hpp"
 #include "core/error.hpp"
@@ -243,6 +245,19 @@ int run_main(int argc, char** argv) {
     if (!command->ends_on_signals_itself()) remove_temporaries_on_signals();  // before any thread is made
     std::string name = command->name();  // "capture extract": the part of a command with parts too
     for (const CLI::App* part : sub->get_subcommands()) name += " " + part->get_name();
+    // A read that never ends (core/bounded_call.hpp) is reported as any error, its outputs removed.
+    on_stuck_call([&, name](const Error& stuck) {
+      remove_every_temporary();
+      int code = 2;
+      try {
+        throw stuck;
+      } catch (...) {
+        code = reported_error(name, argc, argv, global.json && !out.written());
+      }
+      std::cout.flush();
+      std::cerr.flush();
+      std::_Exit(code);
+    });
     try {
       check_option_values(*sub);
       return with_stdout_written(name, command->run(global));

@@ -121,9 +121,7 @@ bool remove_temporary(const std::string& path) {
 }
 
 [[noreturn]] void remove_listed_and_end(int signal) {
-  listed_lock().lock();  // never released: nothing is made from here on
-  std::size_t removed = 0;
-  for (const std::string& path : listed()) removed += remove_temporary(path) ? 1 : 0;
+  const std::size_t removed = remove_every_temporary();
   std::fprintf(stderr, "haptex: %s: stopped; %zu unfinished output%s removed\n", strsignal(signal), removed,
                removed == 1 ? "" : "s");
   std::fflush(stderr);
@@ -228,6 +226,13 @@ std::vector<std::string> temporaries_of(const std::string& final_path) {
     if (is_temporary_of(it->path().filename().string(), name))
       found.push_back((fs::path(final_path).parent_path() / it->path().filename()).string());
   return found;
+}
+
+std::size_t remove_every_temporary() {
+  listed_lock().lock();  // never released: nothing is made from here on
+  std::size_t removed = 0;
+  for (const std::string& path : listed()) removed += remove_temporary(path) ? 1 : 0;
+  return removed;
 }
 
 std::unique_lock<std::mutex> hold_temporaries() { return std::unique_lock<std::mutex>(listed_lock()); }

@@ -57,6 +57,11 @@ void forget_temporary(const std::string& path);
 // (capture record keeps the press in progress) does not call it.
 void remove_temporaries_on_signals();
 
+// For a process about to end without unwinding (a signal, a stuck call: core/bounded_call.hpp):
+// removes every listed temporary and returns how many went. No temporary is made or forgotten after
+// it (they wait for good), so call it only on the way out.
+std::size_t remove_every_temporary();
+
 // Held while outputs that belong together are renamed one after another: a signal taken meanwhile
 // waits until every one is in place (the run then ends by it, its outputs whole). Nothing that makes
 // or forgets a temporary (creating a PartialFile, destroying one) may run while it is held.

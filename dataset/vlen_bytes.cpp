@@ -1,5 +1,6 @@
 #include "dataset/vlen_bytes.hpp"
 
+#include "core/bounded_call.hpp"
 #include "core/error.hpp"
 
 namespace haptex::dataset {
@@ -57,6 +58,7 @@ std::vector<std::uint8_t> read_vlen_bytes(const h5::Dataset& dataset, std::size_
   h5::Handle memory_space(H5Screate_simple(1, one, nullptr));
   h5::Handle type = byte_string_type();
   hvl_t element{0, nullptr};
+  const BoundedCall bounded(dataset.file(), dataset.object_path() + ", element " + std::to_string(index));
   // A damaged file (its global heap overwritten) is bad input, named with the element (review 14, F10).
   if (H5Dread(dataset.id(), type.get(), memory_space.get(), file_space.get(), H5P_DEFAULT, &element) < 0)
     throw input_error(dataset.file(), dataset.object_path() + ", element " + std::to_string(index),

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/bounded_call.hpp"
 #include "core/error.hpp"
 #include "core/h5/link_rule.hpp"
 #include "core/text/format.hpp"
@@ -139,7 +140,10 @@ std::string Node::attr_string(std::string_view name) const {
   if (H5Tis_variable_str(type.get()) > 0) {
     Handle memory = utf8_string_type();
     char* text = nullptr;
-    check_input_status(H5Aread(attr.get(), memory.get(), &text), "read attribute", where());
+    {
+      const BoundedCall bounded(file_, object_path_ + " attribute '" + std::string(name) + "'");
+      check_input_status(H5Aread(attr.get(), memory.get(), &text), "read attribute", where());
+    }
     std::string value = text ? text : "";
     Handle space(H5Aget_space(attr.get()));
     H5Dvlen_reclaim(memory.get(), space.get(), H5P_DEFAULT, &text);
@@ -270,7 +274,10 @@ void Dataset::read_raw(hid_t memory_type, void* out) const {
 std::vector<std::string> Dataset::read_strings() const {
   Handle memory = utf8_string_type();
   std::vector<char*> pointers(elements_to_read(sizeof(char*)), nullptr);
-  check_input_status(H5Dread(id(), memory.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "read strings", where());
+  {
+    const BoundedCall bounded(file_, object_path_);
+    check_input_status(H5Dread(id(), memory.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "read strings", where());
+  }
   std::vector<std::string> values;
   for (const char* p : pointers) values.emplace_back(p ? p : "");
   Handle space(H5Dget_space(id()));

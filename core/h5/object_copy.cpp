@@ -10,6 +10,7 @@
 #include <map>
 #include <vector>
 
+#include "core/bounded_call.hpp"
 #include "core/error.hpp"
 #include "core/h5/link_rule.hpp"
 #include "core/h5/node.hpp"
@@ -69,6 +70,7 @@ struct Copy {
       require_readable(type.get(), space.get(), where);
       Values values(type.get(), space.get());
       if (!values.empty()) {
+        const BoundedCall bounded(source_file, where);
         check_input_status(H5Aread(attr.get(), type.get(), values.data()), "read " + where, source_file);
         values.mark_read();
       }
@@ -90,6 +92,7 @@ struct Copy {
     require_readable(type.get(), space.get(), source_path);
     Values values(type.get(), space.get());
     if (!values.empty()) {
+      const BoundedCall bounded(source_file, source_path);
       check_input_status(H5Dread(from.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + source_path,
                          source_file);
       values.mark_read();

@@ -1,0 +1,51 @@
+// Review 14, F9: libhdf5 1.10 loops forever, at full CPU, reading a variable-length value whose global
+// heap collection holds a zeroed object header (an object of index 0 and size 0 never moves its
+// parser on). No error comes back, so haptex bounds such reads by processor time
+// (core/bounded_call.hpp): the command ends with exit 2 naming the file and the value, and nothing
+// written, instead of spinning until killed.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+#include "core/bounded_call.hpp"
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+namespace fs = std::filesystem;
+
+// A press file whose frames' heap collection starts with a zeroed object header: its 16-byte
+// collection header ("GCOL", version, reserved, size) is kept, the first object's header is zeroed.
+std::string press_file_with_a_looping_heap(const TempDir& dir) {
+  const std::string session = dir.file("s");
+  EXPECT_EQ(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "--presses", "1", "-o",
+                        session, "-q"}).exit_code, 0);
+  std::string bytes = file_bytes(session + "/press_0.h5");
+  const std::size_t heap = bytes.find("GCOL", 2049);
+  EXPECT_NE(heap, std::string::npos);
+  if (heap == std::string::npos) return "";
+  bytes.replace(heap + 16, 16, std::string(16, '\0'));
+  const std::string damaged = dir.file("looping heap.h5");
+  std::ofstream(damaged, std::ios::binary) << bytes;
+  return damaged;
+}
+
+TEST(StuckRead, AHeapThatLoopsHDF5IsBadInputNamingTheFrame) {
+  const TempDir dir;
+  const std::string damaged = press_file_with_a_looping_heap(dir);
+  ASSERT_FALSE(damaged.empty());
+  const auto start = std::chrono::steady_clock::now();
+  const CommandResult r = run_haptex({"capture", "extract", damaged, "-o", dir.file("g.h5"), "--no-sheets", "--explain"});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  expect_refusal(r, {damaged, "/frames, element 0", "does not end", "damaged"});
+  EXPECT_LT(seconds, 4 * kStuckCallSeconds) << "ended by the bound, not by the test's time limit";
+  EXPECT_FALSE(fs::exists(dir.file("g.h5")));
+  EXPECT_FALSE(fs::exists(dir.file("g_explain")));
+  EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{}) << "the run's temporaries are removed";
+}
+
+}  // namespace
+}  // namespace haptex::test
