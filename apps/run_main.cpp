@@ -149,6 +149,26 @@ std::string parsed_command(const CLI::App& app) {
   return name;
 }
 
+// A word of argv that looks like an option (-x, --name, --name=value) but that neither the command
+// parsed nor haptex itself knows; "" when there is none. CLI11 reports a missing required argument
+// before an unknown flag, which then hides the real mistake (`haptex --bogus train`). Numbers such as
+// a negative value are no options, nor is anything after "--".
+std::string unknown_flag(const CLI::App& app, int argc, char** argv) {
+  const CLI::App* command = &app;
+  while (!command->get_subcommands().empty()) command = command->get_subcommands().front();
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--") break;
+    if (word.size() < 2 || word[0] != '-' || text::parse_number(word)) continue;
+    const std::string name = word.substr(0, word.find('='));
+    bool known = false;
+    for (const CLI::App* scope = command; scope && !known; scope = scope->get_parent())
+      known = scope->get_option_no_throw(name) != nullptr;
+    if (!known) return word;
+  }
+  return "";
+}
+
 // Every subcommand's help ends with the flags all of them take, which CLI11 lists only in haptex --help.
 constexpr const char* kGlobalFlagsHelp =
     "Flags of every command (before or after its name):\n"
@@ -231,6 +251,11 @@ int run_main(int argc, char** argv) {
       return report("", {"error: '" + text::printable(*word) + "' is no haptex command. Run 'haptex --help' for the list", 2, "", "",
                          "Run 'haptex --help' for the list"},
                     json);
+    if (dynamic_cast<const CLI::RequiredError*>(&e) != nullptr)
+      if (const std::string flag = unknown_flag(app, argc, argv); !flag.empty() && !command.empty())
+        return report(command, {"error: '" + text::printable(flag) + "' is no option of 'haptex " + command + "'. Run '" + help + "' for its options",
+                                2, "", "", "Run '" + help + "' for its options"},
+                      json);
     return report(command,
                   {"error: " + text::printable(e.what()) +
                        (too_large ? ": not a number this option holds (a whole number up to 2147483647, or as its help says)" : "") +

@@ -168,5 +168,20 @@ TEST(CommandLine, AnErrorNamesThePartOfTheCommandThatRan) {
   EXPECT_EQ(r.err.rfind("haptex capture extract: error: ", 0), 0u) << r.err;
 }
 
+// An unknown flag was hidden behind a missing argument: `haptex --bogus train` said "dataset is
+// required", which sends the user after the wrong mistake. A negative number is a value, not a flag.
+TEST(CommandLine, AnUnknownFlagIsNamedBeforeAMissingArgument) {
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"--bogus", "train"}, {"train", "--bogus"}, {"train", "--bogus=3"}}) {
+    const CommandResult r = run_haptex(args);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("is no option of 'haptex train'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("'--bogus"), std::string::npos) << r.err;
+  }
+  const CommandResult known = run_haptex({"train", "-v"});
+  EXPECT_NE(known.err.find("dataset is required"), std::string::npos) << known.err;
+  const CommandResult value = run_haptex({"train", "--split", "-3"});
+  EXPECT_EQ(value.err.find("no option"), std::string::npos) << value.err;
+}
+
 }  // namespace
 }  // namespace haptex::test
