@@ -1,11 +1,9 @@
 // Scoring a source's frames against its no-contact reference (docs/capture.md, "The no-contact
 // reference"): a given image or a press file's stored reference as they are; otherwise the steady
-// no-contact stretch at the start of the video, else the one at its end, else the stretch of least
-// contact (an end, or frames between). The first case costs one reading of the source; the end a
-// second reading, the least contact up to four.
+// no-contact stretch at the start of the video, else the one at its end, else the end of least
+// contact. The first case costs one reading of the source; the others read it a second time.
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <limits>
 
 #include "capture/extraction/peak_frames.hpp"
@@ -208,32 +206,17 @@ class StartupJump {
   cv::Mat previous_;
 };
 
-// Whether the first reading scored frame `index` (a usable frame: decoded, past the start-up frames).
-bool usable(const std::vector<float>& first_scores, std::int64_t index, const cv::Mat& scoring) {
-  return std::size_t(index) < first_scores.size() && !std::isnan(first_scores[std::size_t(index)]) && !scoring.empty();
-}
-
 // Reads the source again, scoring every usable frame against each reference, and hands over the full
-// frames `wanted` asks for. With `strongest`, also the scoring image of each reference's highest-scoring
-// frame.
+// frames `wanted` asks for.
 std::vector<std::vector<float>> score_again(FrameSource& source, const std::vector<float>& first_scores,
                                             const std::vector<const ContactReference*>& references,
                                             const std::function<bool(std::int64_t)>& wanted,
-                                            const std::function<void(std::int64_t, const cv::Mat&)>& take,
-                                            std::vector<cv::Mat>* strongest = nullptr) {
+                                            const std::function<void(std::int64_t, const cv::Mat&)>& take) {
   std::vector<std::vector<float>> scores(references.size(), std::vector<float>(first_scores.size(), kNaN));
-  std::vector<float> highest(references.size(), -1.0f);
-  if (strongest) strongest->assign(references.size(), cv::Mat());
   source.scan(
       [&](std::int64_t index, const cv::Mat& scoring, const cv::Mat& full) {
-        if (!usable(first_scores, index, scoring)) return;
-        for (std::size_t r = 0; r < references.size(); ++r) {
-          const float score = scores[r][std::size_t(index)] = references[r]->score(scoring);
-          if (strongest && score > highest[r]) {
-            highest[r] = score;
-            (*strongest)[r] = scoring.clone();
-          }
-        }
+        if (std::size_t(index) >= first_scores.size() || std::isnan(first_scores[std::size_t(index)]) || scoring.empty()) return;
+        for (std::size_t r = 0; r < references.size(); ++r) scores[r][std::size_t(index)] = references[r]->score(scoring);
         if (wanted(index)) take(index, full);
       },
       wanted);
@@ -320,115 +303,23 @@ void use_end(FrameSource& source, const FirstReading& first, ContactReference en
                        ", is not a steady no-contact stretch: " + why_not_start + ")";
 }
 
-float highest(const std::vector<float>& scores) {
-  float h = 0;
-  for (float x : scores) h = std::isnan(x) ? h : std::max(h, x);
-  return h;
-}
-
-// The run of `length` consecutive usable frames farthest from a frame of strong contact: the one whose
-// frame nearest to it (by the score against it) is farthest. Read once more; the frames of the best
-// run so far are kept, full frames too (for the reference's mean).
-class FarthestStretch {
- public:
-  FarthestStretch(const cv::Mat& contact, std::size_t length) : contact_(contact), length_(length) {}
-
-  void add(std::int64_t index, const cv::Mat& scoring, const cv::Mat& full) {
-    run_.push_back({index, scoring.clone(), full.clone(), float(cv::norm(scoring, contact_, cv::NORM_L1) / double(scoring.total()))});
-    if (run_.size() > length_) run_.pop_front();
-    if (run_.size() < length_) return;
-    float nearest = INFINITY;
-    for (const Frame& f : run_) nearest = std::min(nearest, f.distance);
-    if (nearest > farthest_) farthest_ = nearest, best_ = run_;
-  }
-  bool found() const { return !best_.empty(); }
-  // The first `reference` frames of the run as the reference, the rest as its calibration frames.
-  EndFrames frames(std::size_t reference) const {
-    EndFrames out;
-    for (std::size_t k = 0; k < best_.size(); ++k) {
-      Stretch& to = k < reference ? out.reference : out.calibration;
-      to.images.push_back(best_[k].scoring);
-      to.indices.push_back(best_[k].index);
-    }
-    return out;
-  }
-  cv::Mat mean(std::size_t reference) const {
-    cv::Mat sum = cv::Mat::zeros(best_.front().full.size(), CV_16UC3);
-    for (std::size_t k = 0; k < reference; ++k) cv::add(sum, best_[k].full, sum, cv::noArray(), CV_16UC3);
-    cv::Mat mean;
-    sum.convertTo(mean, CV_8UC3, 1.0 / double(reference));
-    return mean;
-  }
-
- private:
-  struct Frame {
-    std::int64_t index;
-    cv::Mat scoring, full;
-    float distance;
-  };
-  cv::Mat contact_;
-  std::size_t length_;
-  std::deque<Frame> run_, best_;
-  float farthest_ = -1;
-};
-
-// A stretch anywhere in the video may be farther from its strongest contact than either end (a video
-// touched at both ends, quiet between): the run of frames farthest from `strongest`, with its
-// reference and its scores, when it is farther than `than` (the chosen end's highest score). Reads the
-// source twice more.
-struct QuietStretch {
-  ContactReference contact;
-  std::vector<float> scores;
-  Stretch reference;
-  cv::Mat mean;
-};
-std::optional<QuietStretch> quieter_stretch(FrameSource& source, const std::vector<float>& first_scores,
-                                            const cv::Mat& strongest, const ScoreSettings& score, int reference_frames,
-                                            float than) {
-  const int calibration = source.inter_frame() ? calibration_frames(source.fps()) : 0;
-  FarthestStretch run(strongest, std::size_t(reference_frames + calibration));
-  source.scan(
-      [&](std::int64_t index, const cv::Mat& scoring, const cv::Mat& full) {
-        if (usable(first_scores, index, scoring) && !full.empty()) run.add(index, scoring, full);
-      },
-      [](std::int64_t) { return true; });
-  if (!run.found()) return std::nullopt;
-  const EndFrames frames = run.frames(std::size_t(reference_frames));
-  ContactReference contact = reference_of(frames, score, source.inter_frame());
-  std::vector<float> scores = score_again(source, first_scores, {&contact}, [](std::int64_t) { return false; },
-                                          [](std::int64_t, const cv::Mat&) {})[0];
-  if (!(highest(scores) > than)) return std::nullopt;
-  return QuietStretch{std::move(contact), std::move(scores), frames.reference, run.mean(std::size_t(reference_frames))};
-}
-
 // Neither end is steady: of the start's and the end's reference frames, those farther from the
 // source's strongest contact (its highest score against them is the larger) are the no-contact
 // reference, with the thresholds their own scores give (raised by their unsteadiness: a cautious
-// trigger); and a stretch between them is, when it is farther still (quieter_stretch). The source is
-// read again to score against both ends.
-void use_least_contact(FrameSource& source, const FirstReading& first, ContactReference end, const ScoreSettings& score,
-                       int reference_frames, SourceScores& out) {
+// trigger). The source is read again to score against both.
+void use_least_contact(FrameSource& source, const FirstReading& first, ContactReference end, SourceScores& out) {
   const Stretch& start_frames = first.start_frames();
   const Stretch end_frames = first.end_frames().reference;
   const ContactReference& start = *first.start();
   StretchSum end_sum(source.path(), end_frames);
-  std::vector<cv::Mat> strongest;
   auto scores = score_again(source, out.scores, {&start, &end}, [&](std::int64_t i) { return end_sum.wanted(i); },
-                            [&](std::int64_t, const cv::Mat& full) { end_sum.add(full); }, &strongest);
+                            [&](std::int64_t, const cv::Mat& full) { end_sum.add(full); });
+  const auto highest = [](const std::vector<float>& v) {
+    float h = 0;
+    for (float x : v) h = std::isnan(x) ? h : std::max(h, x);
+    return h;
+  };
   const bool at_end = highest(scores[1]) > highest(scores[0]);
-  const std::size_t chosen_end = at_end ? 1 : 0;
-  if (!strongest[chosen_end].empty())
-    if (auto quiet = quieter_stretch(source, out.scores, strongest[chosen_end], score, reference_frames, highest(scores[chosen_end]))) {
-      out.reference = quiet->mean;
-      out.scores = std::move(quiet->scores);
-      out.contact = std::move(quiet->contact);
-      out.reference_kind = ReferenceKind::least_contact;
-      out.reference_first = quiet->reference.first(), out.reference_last = quiet->reference.last();
-      out.reference_note = "mean of " + frame_range(out.reference_first, out.reference_last) +
-                           ", the video's stretch of least contact (neither end is a steady no-contact stretch, and "
-                           "these frames lie farther than either from its strongest contact)";
-      return;
-    }
   const Stretch& chosen = at_end ? end_frames : start_frames;
   if (at_end) out.reference = end_sum.mean();
   else first.start_sum().convertTo(out.reference, CV_8UC3, 1.0 / double(chosen.indices.size()));
@@ -512,7 +403,7 @@ SourceScores score_from(FrameSource& source, const ExtractSettings& settings, st
   } else {
     ContactReference end = first.end_reference();
     if (end.steady()) use_end(source, first, std::move(end), unsteadiness(start), out);
-    else use_least_contact(source, first, std::move(end), score, settings.reference_frames, out);
+    else use_least_contact(source, first, std::move(end), out);
   }
   if (first_live > 0)
     out.reference_note += (first_live == 1 ? "; frame 0 is a stale start-up frame"

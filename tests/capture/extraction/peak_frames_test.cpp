@@ -299,30 +299,6 @@ TEST_F(VideoScores, NeitherEndSteadyTakesTheEndOfLeastContact) {
   EXPECT_NEAR(double(plans[0].contact.peak), 20.0, 1.0);
 }
 
-// A grasp filmed from mid-squeeze to mid-squeeze: the press (centre) eases from 15 grey levels to 0
-// by frame 12, the gel is untouched for frames 12-22, the press rises to 30 at frame 30 and is gone
-// by frame 38, untouched again for frames 38-43, then it rises to 12 by the last frame. Neither end is
-// still; the end is the end of least contact, but the untouched frames between lie farther from the
-// strongest contact: they are the reference, and no press is found in them.
-TEST_F(VideoScores, NeitherEndSteadyTakesTheStretchOfLeastContactAnywhere) {
-  std::vector<double> depth;
-  for (int i = 0; i < 50; ++i)
-    depth.push_back(i < 12 ? 15.0 - 1.25 * i : i < 22 ? 0.0 : i < 38 ? std::max(0.0, 30.0 - 3.75 * std::abs(i - 30)) : i < 44 ? 0.0 : 2.0 * (i - 43));
-  auto source = open_image_sequence(pressed_sequence(dir_.file("between"), {{{80, 60}, depth}}));
-  const SourceScores scores = score_source(*source, {});
-  EXPECT_EQ(scores.reference_kind, ReferenceKind::least_contact);
-  EXPECT_NE(scores.reference_note.find("the video's stretch of least contact"), std::string::npos) << scores.reference_note;
-  EXPECT_GE(scores.reference_first, 12);
-  EXPECT_LE(scores.reference_last, 21);
-  const auto plans = plan_presses(scores.scores, scores.contact->segmenter({}), 12, 10);
-  ASSERT_FALSE(plans.empty());
-  EXPECT_TRUE(std::any_of(plans.begin(), plans.end(), [](const PressPlan& p) { return std::abs(p.contact.peak - 30) <= 1; }))
-      << "the press of frame 30 is found";
-  for (const PressPlan& p : plans)
-    EXPECT_FALSE((p.contact.peak >= 13 && p.contact.peak <= 21) || (p.contact.peak >= 39 && p.contact.peak <= 42))
-        << "no press peaks where the gel is untouched: " << p.contact.peak;
-}
-
 TEST_F(VideoScores, AGivenReferenceMustHaveTheFrameSize) {
   const std::string video = dir_.file("v.mkv");
   fixtures::write_press_video(video, quick_presses(1), 40);
