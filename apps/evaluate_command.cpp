@@ -9,6 +9,7 @@
 #include <iostream>
 #include <map>
 
+#include "apps/input_file_option.hpp"
 #include "apps/dataset_split_input.hpp"
 #include "apps/output_options.hpp"
 #include "apps/command.hpp"
@@ -52,7 +53,7 @@ class EvaluateCommand : public Command {
     app.add_option("--truth", options_.truth,
                    "truth.h5 of haptex synth hatt or synth materials: the oracle noise floor (and, for synth materials, "
                    "the models against the noise-free spectra grid)")
-        ->check(CLI::ExistingFile);
+        ->check(input_file());
     add_output_options(app, output_, force_, "Report folder to write");
   }
 

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/input_file_option.hpp"
 #include "apps/command.hpp"
 #include "apps/number_checks.hpp"
 #include "apps/stop_on_signal.hpp"
@@ -48,10 +49,10 @@ class PlayCommand : public Command {
   }
 
   void declare(CLI::App& app) override {
-    app.add_option("model", model_path_, "Model file (haptex train)")->required()->check(CLI::ExistingFile);
+    app.add_option("model", model_path_, "Model file (haptex train)")->required()->check(input_file());
     add_texture_options(app, texture_);
     auto* trajectory = app.add_option("--trajectory", trajectory_path_, "Force/speed trajectory at 10 kHz, played at its own pace")
-                           ->check(CLI::ExistingFile);
+                           ->check(input_file());
     auto* actions = app.add_option("--actions", actions_, "- : a live stream on standard input, one 'force speed' or 't,force,speed' line per sample");
     trajectory->excludes(actions);
     app.add_option("--device", device_, "ALSA playback device (default, plughw:CARD,DEVICE, or one an ALSA configuration defines)")

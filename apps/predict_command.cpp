@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "apps/input_file_option.hpp"
 #include "apps/command.hpp"
 #include "core/text/format.hpp"
 #include "core/error.hpp"
@@ -27,16 +28,16 @@ class PredictCommand : public Command {
   std::string summary() const override { return "Predict the vibration spectrum for a texture image and a force and speed"; }
 
   void declare(CLI::App& app) override {
-    app.add_option("model", model_path_, "Model file (haptex train)")->required()->check(CLI::ExistingFile);
-    auto* image = app.add_option("--image", image_, "GelSight press image (PNG/JPEG), unified models")->check(CLI::ExistingFile);
-    app.add_option("--reference", reference_, "The sensor's no-contact frame for --image")->check(CLI::ExistingFile)->needs(image);
+    app.add_option("model", model_path_, "Model file (haptex train)")->required()->check(input_file());
+    auto* image = app.add_option("--image", image_, "GelSight press image (PNG/JPEG), unified models")->check(input_file());
+    app.add_option("--reference", reference_, "The sensor's no-contact frame for --image")->check(input_file())->needs(image);
     auto* material = app.add_option("--material", material_, "A training material's id instead of an image")->excludes(image);
     auto* force = app.add_option("--normal-force", force_, "Normal force, N")->check(CLI::Range(0.0, 1e6));
     // --force means "replace the output" in every other command: here it is refused, naming the new option.
     app.add_option("--force", old_force_)->group("");
     auto* speed = app.add_option("--speed", speed_, "Tangential speed, mm/s")->check(CLI::Range(0.0, 1e9));
     auto* csv = app.add_option("--csv", csv_, "Force/speed trajectory at 10 kHz: columns force, speed (time_s optional)")
-                    ->check(CLI::ExistingFile)->excludes(force)->excludes(speed);
+                    ->check(input_file())->excludes(force)->excludes(speed);
     app.add_option("--hop", hop_, "Samples between predictions along --csv (the model's window step)")->capture_default_str()->check(CLI::Range(1, 100000));
     // --normal-force and --speed go together: checked in run(), after the old --force spelling is named.
     (void)material;

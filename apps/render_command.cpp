@@ -7,6 +7,7 @@
 #include <iostream>
 #include <optional>
 
+#include "apps/input_file_option.hpp"
 #include "apps/output_options.hpp"
 #include "apps/command.hpp"
 #include "apps/number_checks.hpp"
@@ -34,10 +35,10 @@ class RenderCommand : public Command {
   }
 
   void declare(CLI::App& app) override {
-    app.add_option("model", model_path_, "Model file (haptex train)")->required()->check(CLI::ExistingFile);
+    app.add_option("model", model_path_, "Model file (haptex train)")->required()->check(input_file());
     add_texture_options(app, texture_);
     app.add_option("--trajectory", trajectory_path_, "Force/speed trajectory at 10 kHz: columns force, speed (time_s optional)")
-        ->required()->check(CLI::ExistingFile);
+        ->required()->check(input_file());
     add_output_options(app, output_, force_, "WAV file to write (mono, 10 kHz, 24-bit PCM)");
     app.add_option("--csv", csv_, "Also write the vibration as CSV: time_s, force_n, speed_mm_s, accel_m_s2");
     reconstruct_option_ = app.add_option("--reconstruct", reconstruction_,

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.hpp"
+#include "apps/input_file_option.hpp"
 #include "apps/number_checks.hpp"
 #include "apps/printable_stream.hpp"
 #include "apps/provenance.hpp"
@@ -18,6 +19,7 @@
 #include "core/text/parse_number.hpp"
 #include "core/error.hpp"
 #include "core/freed_memory.hpp"
+#include "core/input_file.hpp"
 #include "core/temporary_name.hpp"
 #include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
@@ -72,6 +74,7 @@ void check_option_values(const CLI::App& app) {
         throw input_error(option->get_name(), "", "is empty, which names no file", "Name the output with " + option->get_name());
       if (value.empty())  // `--names ""` named no file and was taken as no option at all
         throw input_error(option->get_name(), "", "is empty", "Give it a value, or leave the option out");
+      if (is_input_file_option(*option)) require_regular_file(value);
     }
   }
   for (const CLI::App* sub : app.get_subcommands()) check_option_values(*sub);

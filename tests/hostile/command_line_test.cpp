@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/small_pipeline.hpp"
@@ -181,6 +183,30 @@ TEST(CommandLine, AnUnknownFlagIsNamedBeforeAMissingArgument) {
   EXPECT_NE(known.err.find("dataset is required"), std::string::npos) << known.err;
   const CommandResult value = run_haptex({"train", "--split", "-3"});
   EXPECT_EQ(value.err.find("no option"), std::string::npos) << value.err;
+}
+
+// Review 15, R1: the model of predict, render and play (and their images, trajectories, evaluate's
+// --truth) went through CLI11's ExistingFile, which answered in its own words, without the fix, and
+// with "file": null in --json. They are checked as every other input is.
+TEST(CommandLine, AMissingModelIsNamedAsEveryOtherInputIs) {
+  const TempDir d;
+  std::filesystem::create_symlink(d.file("nowhere"), d.file("dangling.h5"));
+  std::filesystem::create_directory(d.file("folder.h5"));
+  const std::vector<std::pair<std::string, std::string>> models = {
+      {d.file("none.h5"), "no such file"}, {d.file("dangling.h5"), "symbolic link to a file that does not exist"}, {d.file("folder.h5"), "is a folder"}};
+  for (const auto& [model, why] : models) {
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"--json", "predict", model, "--material", "x", "--normal-force", "1", "--speed", "1"},
+                                                 {"--json", "render", model, "--material", "x", "--trajectory", d.file("t.csv"), "-o", d.file("o.wav")},
+                                                 {"--json", "play", model, "--material", "x", "--trajectory", d.file("t.csv")}}) {
+      const CommandResult r = run_haptex(args);
+      expect_refusal(r, {model, why});
+      const nlohmann::json error = nlohmann::json::parse(r.out, nullptr, false);
+      ASSERT_TRUE(error.is_object()) << r.out;
+      EXPECT_EQ(error["error"]["file"], model) << r.out;
+      EXPECT_FALSE(error["error"]["fix"].is_null()) << r.out;
+    }
+  }
+  EXPECT_FALSE(std::filesystem::exists(d.file("o.wav")));
 }
 
 }  // namespace
