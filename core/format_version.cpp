@@ -24,6 +24,11 @@ std::optional<int> version_of(std::string_view name, std::string_view family) {
 
 }  // namespace
 
+bool is_format_name(std::string_view name) {
+  const std::size_t slash = name.find('/');
+  return slash != std::string_view::npos && slash > 0 && version_of(name, name.substr(0, slash)).has_value();
+}
+
 bool is_newer_version(std::string_view found, std::string_view wanted) {
   const std::string_view family = wanted.substr(0, wanted.find('/'));
   const std::optional<int> have = version_of(found, family), want = version_of(wanted, family);

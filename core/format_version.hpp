@@ -9,6 +9,9 @@
 
 namespace haptex {
 
+// True when `name` is FAMILY/N with N a version haptex writes: 1, 2, ... in plain decimal ("recordings/01",
+// "recordings/-1" and "recordings/ 1" are not: review 15, R2).
+bool is_format_name(std::string_view name);
 // True when `found` names wanted's family with a higher version ("split/2" for "split/1").
 bool is_newer_version(std::string_view found, std::string_view wanted);
 // The refusal (bad_input) for such a file: "FILE: WHERE: is split/2, written by a newer haptex ...".

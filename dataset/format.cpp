@@ -73,6 +73,11 @@ void require_kind(const h5::File& file, Kind kind) {
   const std::string found = read_format(file);
   if (found == wanted) return;
   if (family_of(found) == want.family) {
+    if (!is_format_name(found))
+      throw input_error(path, "/@haptex_format",
+                        "is '" + found + "', which is no version haptex writes (" + std::string(want.family) +
+                            "/N, N a plain decimal from 1): the attribute was edited or damaged",
+                        "Make the file again with " + std::string(want.written_by));
     if (is_newer_version(found, wanted)) throw newer_version_error(path, "/@haptex_format", found, wanted);
     if (!want.older.empty())
       throw input_error(path, "/@haptex_format", "is " + found + ", written by an older haptex: " + std::string(want.older),

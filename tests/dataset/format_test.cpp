@@ -88,6 +88,14 @@ TEST(Format, OpensTheRightKindAndRefusesEveryOtherWithTheFix) {
   EXPECT_NE(other.find("'recordings/1': a recordings file (haptex convert writes those), not a dataset file (dataset/4)"), std::string::npos) << other;
   EXPECT_NE(other.find("haptex align wrote"), std::string::npos) << other;
 
+  // Review 15, R2: a version that is no plain decimal was "a recordings file ..., not a recordings file".
+  int n = 0;
+  for (const std::string bad : {"recordings/01", "recordings/-1", "recordings/+1", "recordings/ 1", "recordings/99999999999999999999"}) {
+    const std::string edited = refusal(file_with_format(dir, "edited" + std::to_string(++n) + ".h5", bad), Kind::recordings);
+    EXPECT_NE(edited.find("is '" + bad + "', which is no version haptex writes (recordings/N"), std::string::npos) << edited;
+    EXPECT_NE(edited.find("Make the file again with haptex convert"), std::string::npos) << edited;
+  }
+
   const std::string plain = refusal(file_with_format(dir, "plain.h5", ""), Kind::model);
   EXPECT_NE(plain.find("no haptex_format"), std::string::npos) << plain;
   EXPECT_NE(plain.find("haptex train"), std::string::npos) << plain;
