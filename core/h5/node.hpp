@@ -88,7 +88,9 @@ class Dataset : public Node {
   // Refuses (bad_input) a dataset stored in chunks of over kLargestChunkBytes that hold more than the
   // whole dataset: reading one value would inflate the whole chunk (review 9, F5: a 4 GiB chunk for
   // 30 000 samples took 4.3 GB and 20 s). read() and read_strings() call it.
+  // Also refuses a dataset compressed with a filter this HDF5 lacks, naming it (require_available_filters).
   void require_sensible_chunks() const;
+  void require_available_filters() const;
   // What require_sensible_chunks refuses ("is stored in chunks of ..."), or empty (qa's layout.shape).
   std::string chunk_problem() const;
   // When the dataset declares more than haptex reads at once (kMostBytesRead) of its stored type,

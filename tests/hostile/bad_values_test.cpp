@@ -467,6 +467,33 @@ TEST(BadValues, ANulInAManifestNameIsRefused) {
                  {"/materials/0/name", "NUL"});
 }
 
+// Review 15, R5 and R6: `"sections": 1000000000` made qa, windows, train and evaluate allocate until the
+// OOM killer came (24 GB), and 20 000 repeats of one section number took the schema check 24 GB. Both
+// are refused at once, naming the place.
+TEST(BadValues, AManifestsSizesAndRepeatsAreBoundedBeforeAnyWork) {
+  const TempDir d;
+  const auto refused = [&](const std::string& name, const nlohmann::json& manifest, const std::vector<std::string>& says) {
+    write_json(d.file(name), manifest);
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"timeout", "60", haptex_binary(), "windows", small_pipeline().dataset,
+                                                                          "--split", d.file(name), "-o", d.file("w.h5")},
+                                                 {"timeout", "60", haptex_binary(), "qa", d.file(name)}}) {
+      const CommandResult r = run_program(args);
+      EXPECT_NE(r.exit_code, 124) << "ended by the time limit";
+      EXPECT_TRUE(r.exit_code == 1 || r.exit_code == 2) << r.exit_code << r.err;
+      for (const std::string& s : says) EXPECT_NE((r.out + r.err).find(s), std::string::npos) << s << "\n" << r.out << r.err;
+    }
+    EXPECT_FALSE(fs::exists(d.file("w.h5")));
+  };
+  nlohmann::json sections = read_json(small_pipeline().split);
+  sections["parameters"]["sections"] = 1000000000;
+  refused("sections.json", sections, {"/parameters/sections", "is 1000000000, more than the 10000 haptex split allows"});
+  nlohmann::json repeats = read_json(small_pipeline().split);
+  repeats["materials"][0]["sections"]["train"] = std::vector<int>(20000, 0);
+  refused("repeats.json", repeats, {"/materials/0/sections/train", "lists 20000 numbers, more than the 10000"});
+  repeats["materials"][0]["sections"]["train"] = std::vector<int>(5000, 1);
+  refused("twice.json", repeats, {"/materials/0/sections/train", "lists 1 twice"});
+}
+
 // A key given twice was kept as the last one without a word, in every JSON reader (issue 32, reviews 5
 // and 6): the CSV forms refuse a column given twice, and readers differ in which of the two they keep.
 TEST(BadValues, AJsonKeyGivenTwiceIsRefusedWhereItIs) {
@@ -495,6 +522,25 @@ TEST(BadValues, InfoShowsControlCharactersEscaped) {
   EXPECT_NE(r.out.find("felt\\x1b]0;pwned\\x07"), std::string::npos) << r.out;
   for (const char* raw : {"\u202e", "\u2028", "\u0085", "\u00ad", "\U000E0041"}) EXPECT_EQ(r.out.find(raw), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\\u202eRLO \\u2028LS \\u0085NEL \\u00adSHY \\U000e0041TAG"), std::string::npos) << r.out;
+}
+
+// Review 15, R3: a dataset compressed with a filter haptex's HDF5 lacks (h5py's lzf) was called
+// truncated or damaged ("copy it again"). It is named, with how to store it instead.
+TEST(BadValues, ACompressionFilterHDF5LacksIsNamed) {
+  if (!python_has("h5py")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const TempDir d;
+  const std::string copy = copy_into(d, small_pipeline().recordings, "lzf.h5");
+  const CommandResult made = run_python({"-c",
+                                         "import h5py,sys\n"
+                                         "f=h5py.File(sys.argv[1],'r+'); found=[]\n"
+                                         "f.visititems(lambda n,o: found.append(n) if isinstance(o,h5py.Dataset) and o.ndim==1 and o.size>100 and o.dtype.kind=='f' else None)\n"
+                                         "n=found[0]; data=f[n][()]; attrs=dict(f[n].attrs); del f[n]\n"
+                                         "f.create_dataset(n, data=data, compression='lzf', chunks=True)\n"
+                                         "[f[n].attrs.__setitem__(k,v) for k,v in attrs.items()]\n"
+                                         "print(n)",
+                                         copy});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  expect_refusal(run_haptex({"qa", copy}), {copy, "HDF5 filter 32000", "lzf", "compression='gzip'"});
 }
 
 // Review 5, #8: "Wo&#0;ven" in a HaTT recording became the material "Wo".
