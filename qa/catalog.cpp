@@ -35,8 +35,8 @@ const std::vector<CheckInfo>& all_checks() {
        "every object is reached by one hard link, is a group or a dataset and keeps its values in the file: no soft or external "
        "link, nothing linked twice, no named datatype, no external or virtual storage, no dataset declaring more than haptex reads "
        "at once, no object reference (when it fails, no other check runs: looking objects up would follow the links)",
-       "Remove the extra link (h5py: del f[path]) or store the values in the file, or make the file again with the haptex "
-       "command that wrote it"},
+       "Each finding says what to do with its object (remove an extra link or a dataset too large to read, store values in the "
+       "file); or make the file again with the haptex command that wrote it"},
       // recordings (also inside dataset files)
       {"signal.nan", error, "no NaN or Inf in any signal of a recording",
        "Fix or cut the broken stretch of the source recording and convert it again"},

@@ -104,7 +104,7 @@ std::vector<Breach> breaches(const TempDir& dir) {
          const hid_t d = H5Dcreate2(edit.root().id(), (a.substr(0, a.rfind('/')) + "/junk").c_str(), H5T_NATIVE_FLOAT, space, H5P_DEFAULT,
                                     list, H5P_DEFAULT);
          H5Dclose(d), H5Pclose(list), H5Sclose(space);
-       }, "more than haptex reads at once"},
+       }, "more than haptex reads at once (4 GiB). The file is damaged or not what haptex wrote: remove the dataset"},  // qa too (review 15, R4)
       // Review 5: 40 000 attributes on one object took info minutes (each found by reading those before it).
       {"attributes", [](const std::string& f, const std::string& a) {
          Edit edit(f);
