@@ -180,7 +180,7 @@ std::vector<Recount> recount_windows(const SplitManifest& m, const std::vector<M
 CheckResult check_split_schema(const SplitManifestDocument& doc) {
   CheckTally tally("split.schema", "manifests");
   try {
-    json::validate(doc.json, "split.schema.json", doc.path);
+    split::validate_split_manifest(doc);
     tally.pass();
   } catch (const Error& e) {
     std::string message = e.what();

@@ -1,13 +1,65 @@
 #include "split/manifest_reader.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
+#include "core/error.hpp"
 #include "core/json/schema.hpp"
 
 namespace haptex::split {
 namespace fs = std::filesystem;
 
 SplitManifestDocument read_split_manifest(const std::string& path) { return {path, json::read_file(path)}; }
+
+namespace {
+
+// As `haptex split` allows (--sections, --val, --test: 3 to 10 000), and more presses than any
+// material holds.
+constexpr std::int64_t kMostSections = 10000;
+constexpr std::size_t kMostPresses = 1000000;
+
+// A list of section or press numbers: no longer than `most`, no number twice.
+void check_numbers(const nlohmann::json& list, std::size_t most, const std::string& path, const std::string& where) {
+  if (!list.is_array()) return;  // the schema names it
+  if (list.size() > most)
+    throw input_error(path, where, "lists " + std::to_string(list.size()) + " numbers, more than the " + std::to_string(most) + " a split holds",
+                      "Make the split again with haptex split");
+  std::vector<std::int64_t> numbers;
+  for (const nlohmann::json& n : list)
+    if (n.is_number_integer()) numbers.push_back(n.get<std::int64_t>());
+  std::sort(numbers.begin(), numbers.end());
+  if (const auto twice = std::adjacent_find(numbers.begin(), numbers.end()); twice != numbers.end())
+    throw input_error(path, where, "lists " + std::to_string(*twice) + " twice", "Make the split again with haptex split");
+}
+
+void check_sizes(const nlohmann::json& doc, const std::string& path) {
+  if (!doc.is_object()) return;
+  if (const auto parameters = doc.find("parameters"); parameters != doc.end() && parameters->is_object())
+    for (const char* key : {"sections", "val", "test"})
+      if (const auto value = parameters->find(key); value != parameters->end() && value->is_number() && value->get<double>() > double(kMostSections))
+        throw input_error(path, std::string("/parameters/") + key, "is " + value->dump() + ", more than the " + std::to_string(kMostSections) + " haptex split allows",
+                          "Make the split again with haptex split");
+  const auto materials = doc.find("materials");
+  if (materials == doc.end() || !materials->is_array()) return;
+  for (std::size_t m = 0; m < materials->size(); ++m) {
+    const nlohmann::json& material = (*materials)[m];
+    if (!material.is_object()) continue;
+    for (const auto& [field, most] : {std::pair{"sections", std::size_t(kMostSections)}, std::pair{"presses", kMostPresses}}) {
+      const auto sets = material.find(field);
+      if (sets == material.end() || !sets->is_object()) continue;
+      for (const char* set : kSetNames)
+        if (const auto list = sets->find(set); list != sets->end())
+          check_numbers(*list, most, path, "/materials/" + std::to_string(m) + "/" + field + "/" + set);
+    }
+  }
+}
+
+}  // namespace
+
+void validate_split_manifest(const SplitManifestDocument& document) {
+  check_sizes(document.json, document.path);
+  json::validate(document.json, "split.schema.json", document.path);
+}
 
 SplitManifest parse_split_manifest(const nlohmann::json& doc) {
   SplitManifest m;

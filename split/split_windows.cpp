@@ -43,7 +43,7 @@ DatasetSplit read_dataset_split(const std::string& dataset_path, const SplitMani
   // A damaged dataset, or a recordings or gelsight file given for one, is named as such, not as
   // "another dataset" by its hash.
   dataset::open_checked(dataset_path, dataset::Kind::dataset);
-  json::validate(document.json, "split.schema.json", manifest_path);
+  validate_split_manifest(document);
   const SplitManifest manifest = parse_split_manifest(document.json);
   DatasetSplit out{dataset_path, manifest_path, sha256_file(dataset_path), sha256_file(manifest_path),
                    std::size_t(manifest.sections), {}};
