@@ -30,6 +30,7 @@ contact is within 80 % of its maximum in 95 % of those, and no press in any stil
 """
 import argparse
 import glob
+import hashlib
 import json
 import os
 import pickle
@@ -220,12 +221,19 @@ def main():
     if shutil.which("ffmpeg") is None:
         print("skipped: ffmpeg is not installed", file=sys.stderr)
         return 77
-    rows, stills = [], []
+    rows, stills, seen, copies = [], [], set(), 0
     with tempfile.TemporaryDirectory() as folder:
         for group in args.groups.split(","):
             pattern, log_suffix = GROUPS[group]
             videos = sorted(glob.glob(os.path.join(args.footage, pattern), recursive=True))[::args.every]
             for video in videos:
+                # The grasp-and-slip repository holds most clips two or three times (by object, and
+                # again under base_data and its training and validation folders): each counts once.
+                digest = hashlib.sha1(open(video, "rb").read()).hexdigest()
+                if digest in seen:
+                    copies += 1
+                    continue
+                seen.add(digest)
                 rows.append(judge(video, group, log_suffix, args.haptex, folder))
                 if log_suffix and os.path.exists(video.rsplit(".", 1)[0] + log_suffix):
                     for clip in still_clips(video, video.rsplit(".", 1)[0] + log_suffix, folder):
@@ -234,6 +242,8 @@ def main():
             print(f"no footage under {args.footage}", file=sys.stderr)
             return 77
     print(summarise(rows, stills))
+    if copies:
+        print(f"left out, byte-for-byte copies of a video measured: {copies}")
     if args.list_misses:
         for r in rows:
             if len(r["presses"]) != 1 or r.get("peak_share", 1) < 0.8:
