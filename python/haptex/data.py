@@ -299,15 +299,16 @@ def write_predictions(path, grid, spectra, source, query_seconds=None, signals=N
         if len(signals) != len(sections) or any(len(x) < covered for x, (_, _, _, covered) in zip(signals, sections)):
             raise HaptexFileError(f"{path}: give one signal per grid section ({len(sections)}), each covering its windows (grid_sections)")
     image = _predictions_image(grid, spectra, source, query_seconds, signals, signal_seconds)
-    partial = _temporary_file(path)
+    partial, fd = _temporary_file(path)
     restore = _remove_on_signals(partial)
     try:
-        _write_whole(partial, path, image)
-        _put_in_place(partial, path, inputs, overwrite)
+        _write_whole(fd, path, image)
+        _put_in_place(partial, fd, path, inputs, overwrite)
         partial = None
     finally:
+        os.close(fd)
         if partial is not None:
-            os.remove(partial)
+            os.remove(partial)  # the name only: a link swapped in is removed, never what it points at
         restore()
 
 
@@ -336,9 +337,10 @@ def _predictions_image(grid, spectra, source, query_seconds, signals, signal_sec
     return image
 
 
-def _write_whole(partial, path, image):
-    """Writes image to partial and syncs it; a full disk is one OSError naming path."""
-    fd = os.open(partial, os.O_WRONLY | os.O_NOFOLLOW)
+def _write_whole(fd, path, image):
+    """Writes image through fd, the descriptor of the exclusive create (never the name again: another
+    program writing the folder may have swapped it, review 15, R11), and syncs it; a full disk is one
+    OSError naming path."""
     try:
         view = memoryview(image)
         while view:
@@ -346,8 +348,22 @@ def _write_whole(partial, path, image):
         os.fsync(fd)
     except OSError as e:
         raise OSError(e.errno, f"{path}: could not be written completely ({e.strerror}; the disk is full?)") from None
-    finally:
-        os.close(fd)
+
+
+def _still_names(name, fd):
+    """Whether name is still the file fd was opened on (core/temporary_name.hpp, still_names)."""
+    try:
+        here, made = os.lstat(name), os.fstat(fd)
+    except OSError:
+        return False
+    return (here.st_dev, here.st_ino) == (made.st_dev, made.st_ino)
+
+
+def _require_still_named(name, fd, path):
+    """An OSError (exit 1: the work failed) unless name is still the file this run made."""
+    if not _still_names(name, fd):
+        raise OSError(errno.EIO, f"{path}: its temporary {name} was replaced by another program writing the folder "
+                                 "while this run wrote it; nothing was put in place. Find out what writes there, and run again")
 
 
 def _holds(source, spectra, signals):
@@ -362,9 +378,12 @@ def _holds(source, spectra, signals):
         return False
 
 
-def _put_in_place(partial, path, inputs, overwrite):
-    """Renames partial to path. Without overwrite a file that appeared at path meanwhile is kept (a hard
-    link never replaces, as RENAME_NOREPLACE); with it, path is checked again just before the swap."""
+def _put_in_place(partial, fd, path, inputs, overwrite):
+    """Renames partial to path, once it is sure partial is still the file this run wrote (fd), and
+    checks path is that file afterwards. Without overwrite a file that appeared at path meanwhile is
+    kept (a hard link never replaces, as RENAME_NOREPLACE); with it, path is checked again just before
+    the swap."""
+    _require_still_named(partial, fd, path)
     if not overwrite:
         try:
             os.link(partial, path)
@@ -374,11 +393,16 @@ def _put_in_place(partial, path, inputs, overwrite):
         except OSError:  # a file system without hard links: the last look, then the rename
             check_output(path, inputs, overwrite)
             os.rename(partial, path)
+            _require_still_named(path, fd, path)
             return
+        if not _still_names(path, fd):  # the name was swapped between the look and the link
+            os.remove(path)  # the link this run just made, not the file it names
+            _require_still_named(partial, fd, path)
         os.remove(partial)
         return
     check_output(path, inputs, overwrite)
     os.replace(partial, path)
+    _require_still_named(path, fd, path)
 
 
 def _remove_on_signals(partial):
@@ -455,15 +479,15 @@ def _version(mark):
 
 def _temporary_file(path):
     """A new empty file at PATH.<8 letters and digits>.partial, created exclusively (core/temporary_name.hpp
-    holds the rule): a name that exists is never opened, followed or reused."""
+    holds the rule): a name that exists is never opened, followed or reused. Returns the name and the
+    open descriptor, through which alone the file is written."""
     import secrets
     import string
     letters = string.ascii_letters + string.digits
     for _ in range(100):
         partial = path + "." + "".join(secrets.choice(letters) for _ in range(8)) + ".partial"
         try:
-            os.close(os.open(partial, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o666))
-            return partial
+            return partial, os.open(partial, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW | os.O_CLOEXEC, 0o666)
         except FileExistsError:
             continue
         except OSError as e:  # a read-only or full file system, a folder without write permission

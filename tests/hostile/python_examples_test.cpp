@@ -146,6 +146,21 @@ TEST(PythonExamples, TheWriterKeepsNewerFilesAndFilesThatAppearAndLeavesNothingO
   EXPECT_NE(term.exit_code, 0);
   EXPECT_FALSE(fs::exists(ended));
   EXPECT_TRUE(temporaries_of(ended).empty()) << "the .partial was left";
+
+  // Review 15, R11: the writer reopened its temporary by name and linked whatever was there into place,
+  // so a hard link to a user's file swapped in got that file overwritten, and a link swapped in became
+  // the output, exit 0. Another program writing the folder swaps it here once it is written.
+  for (const std::string kind : {"link", "symlink"}) {
+    const std::string out = d.file("swapped_" + kind + ".h5"), victim = out + ".victim";
+    std::ofstream(victim) << "a user's own file";
+    const CommandResult swapped = write_with(out, "import glob; t = glob.glob(out + '.*.partial')[0]; os.unlink(t); os." + kind +
+                                                      "(out + '.victim', t)");
+    EXPECT_EQ(swapped.exit_code, 1) << swapped.err;
+    EXPECT_NE(swapped.err.find("was replaced by another program writing the folder"), std::string::npos) << swapped.err;
+    EXPECT_FALSE(fs::exists(fs::symlink_status(out))) << "nothing is put in place";
+    EXPECT_EQ(file_bytes(victim), "a user's own file");
+    EXPECT_EQ(fs::hard_link_count(victim), 1u);
+  }
 }
 
 // A torch that is absent (ImportError) or installed but broken (OSError from a missing shared library,
