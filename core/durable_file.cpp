@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "core/content_mark.hpp"
 #include "core/error.hpp"
 #include "core/temporary_name.hpp"
 
@@ -68,9 +69,11 @@ void check_replaceable_output(const std::string& path, bool overwrite, const std
                               bool (*haptex_wrote)(const std::string& path)) {
   check_output_path(path, overwrite);
   std::error_code ec;
-  if (!overwrite || !fs::exists(path, ec) || haptex_wrote(path)) return;
-  throw input_error(path, "", "--force replaces only " + what + ", and this file is not one",
-                    "Choose another output name, or move the file away yourself");
+  if (!overwrite || !fs::exists(path, ec)) return;
+  if (!haptex_wrote(path))
+    throw input_error(path, "", "--force replaces only " + what + ", and this file is not one",
+                      "Choose another output name, or move the file away yourself");
+  require_content_mark(path);
 }
 
 void durable_rename(const std::string& from, const std::string& to, bool replace) {
@@ -101,6 +104,7 @@ PartialFile::~PartialFile() {
 
 void PartialFile::finish() {
   if (finished_) return;
+  if (still_replaceable_) mark_content(fd_);  // an output --force may replace later (core/content_mark.hpp)
   if (::fsync(fd_) != 0) throw failure(final_path_ + ": cannot write it: " + why_not_written(errno));
   finished_ = true;
 }

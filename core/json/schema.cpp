@@ -15,6 +15,7 @@
 #include <valijson/validation_results.hpp>
 #include <valijson/validator.hpp>
 
+#include "core/content_mark.hpp"
 #include "core/durable_file.hpp"
 #include "core/embedded.hpp"
 #include "core/error.hpp"
@@ -165,6 +166,7 @@ void check_replaceable_json(const std::string& path, bool overwrite, const std::
   if (overwrite && std::filesystem::exists(path, ec)) {
     const auto [found, written_by] = format_of_file(path);
     require_replaceable_format(path, found, format, written_by);
+    require_content_mark(path);
   }
 }
 

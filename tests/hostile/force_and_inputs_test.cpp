@@ -269,6 +269,36 @@ TEST(Force, TextOutputsReplaceTheirOwn) {
   }
 }
 
+// Review 15, R10: --force took the documented header or "format" field as haptex's mark, so a user's
+// own trajectory in the documented format, or a haptex output edited since, was replaced. The mark is
+// now the SHA-256 of what haptex wrote (core/content_mark.hpp).
+TEST(Force, AFileInHaptexsFormatThatHaptexDidNotWriteOrThatWasEditedIsKept) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::vector<std::string> trajectory = {"trajectory", p.dataset, "--material", small_material(), "--seconds", "1", "-o",
+                                               d.file("t.csv"), "-q"};
+  const std::vector<std::string> split = {"split", p.dataset, "-o", d.file("s.json"), "--no-plots", "-q"};
+  std::ofstream(d.file("t.csv")) << "time_s,force_n,speed_mm_s\n0,1,50\n0.5,2,80\n";  // the user's own stroke
+  const auto with_force = [](std::vector<std::string> args) {
+    args.push_back("--force");
+    return args;
+  };
+  std::string before = file_bytes(d.file("t.csv"));
+  expect_refusal(run_haptex(with_force(trajectory)), {d.file("t.csv"), "its bytes are not those haptex wrote", "user.haptex.sha256"});
+  EXPECT_EQ(file_bytes(d.file("t.csv")), before);
+  fs::remove(d.file("t.csv"));
+  for (const std::vector<std::string>& command : {trajectory, split}) {
+    SCOPED_TRACE(command.front());
+    ASSERT_EQ(run_haptex(command).exit_code, 0);
+    ASSERT_EQ(run_haptex(with_force(command)).exit_code, 0) << "haptex's own, unchanged, is replaced";
+    const std::string output = command[command.size() - (command.front() == "split" ? 3 : 2)];
+    std::ofstream(output, std::ios::app) << (command.front() == "split" ? " " : "1,1,1\n");  // an edit
+    before = file_bytes(output);
+    expect_refusal(run_haptex(with_force(command)), {output, "its bytes are not those haptex wrote"});
+    EXPECT_EQ(file_bytes(output), before);
+  }
+}
+
 // Review 2, #12 and #13: --force replaced a haptex output of another kind (train over a gelsight
 // file) or of a newer haptex (model/4, split/2) silently, and called a newer JSON output "not one".
 // Now it replaces only an earlier output of the kind it writes, and says which rule the file breaks.
@@ -579,7 +609,8 @@ TEST(Force, AFileANewerHaptexWroteIsNotReplaced) {
       expect_refusal(s, {split, "which no haptex writes"});
     } else {
       EXPECT_EQ(w.exit_code, 0) << w.err;
-      EXPECT_EQ(s.exit_code, 0) << s.err;
+      // An older version is replaceable, but this manifest was edited to say it (review 15, R10).
+      expect_refusal(s, {split, "its bytes are not those haptex wrote"});
     }
   }
 }
