@@ -56,6 +56,23 @@ std::string material_id(std::string_view name) {
   return id;
 }
 
+namespace {
+
+// A name's letters and digits in order, case folded: what tells two materials apart.
+std::u32string letters_of(std::string_view name) {
+  std::u32string letters;
+  for (const text::Utf8Character& c : text::utf8_characters(name)) {
+    const char32_t u = c.valid ? c.code_point : char32_t(static_cast<unsigned char>(c.bytes.front()));
+    if (ascii_alnum(u)) letters += (u >= 'A' && u <= 'Z') ? u + ('a' - 'A') : u;
+    else if (u >= 0x80 && !separates(u)) letters += lower(u);
+  }
+  return letters;
+}
+
+}  // namespace
+
+bool same_material_name(std::string_view a, std::string_view b) { return letters_of(a) == letters_of(b); }
+
 std::string checked_material_id(std::string_view name, const std::string& file, const std::string& where) {
   const std::string id = material_id(name);
   const std::string shown = text::printable(name.size() > 60 ? std::string(name.substr(0, 60)) + "..." : std::string(name));

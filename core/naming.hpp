@@ -15,6 +15,10 @@ namespace haptex {
 // An id is its own id.
 std::string material_id(std::string_view name);
 
+// Whether two names are one material's: they differ only in case, spaces and punctuation. Not the
+// same as one id: "Caf u00e9 1" spells out in letters the id "Café 1" gets (review 15, R9).
+bool same_material_name(std::string_view a, std::string_view b);
+
 // The longest material id haptex takes, in bytes: file names are made of it (a contact sheet
 // "<id>_press_12.png", split's "<id>_points.csv"), and a file name holds at most 255 (review 10, F5:
 // a 300-character name passed every reader, then split and extract failed at their end).

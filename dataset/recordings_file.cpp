@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/naming.hpp"
+#include "core/text/utf8.hpp"
 #include "dataset/description.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/window.hpp"
@@ -72,6 +73,12 @@ WrittenRecording write_recording(h5::Group root, const RecordingToWrite& r) {
   const bool first = !materials.has_group(written.material_id);
   h5::Group material = materials.require_group(written.material_id);
   if (first) material.set_attr(layout::kName, r.material);
+  // Names that differ in letters yet make one id ("Café 1", "Caf u00e9 1") are two surfaces (review 15, R9).
+  if (const std::string earlier = first ? r.material : material.attr_string(layout::kName); !same_material_name(earlier, r.material))
+    throw input_error(r.source_path, "material name",
+                      "'" + text::printable(r.material) + "' and '" + text::printable(earlier) + "' (an earlier recording's) make one material id, " +
+                          written.material_id + ", but differ in letters: two materials would become one",
+                      "Name them alike if they are one material, or with different letters or digits if not");
   h5::Group recordings = material.require_group(layout::kRecordings);
   written.index = static_cast<int>(recordings.children().size());
   h5::Group g = recordings.create_group(std::to_string(written.index));

@@ -562,6 +562,28 @@ TEST(BadValues, ANulCharacterReferenceInXmlIsRefused) {
   EXPECT_FALSE(fs::exists(d.file("r.h5")));
 }
 
+// Review 15, R9: "Café 1" and "Caf u00e9 1" make one id, caf_u00e9_1, and convert joined the two
+// surfaces' recordings into one material. Names that differ only in case and punctuation still join.
+TEST(BadValues, NamesThatDifferInLettersButMakeOneIdAreRefused) {
+  const TempDir d;
+  const auto write_pair = [&](const std::string& folder, const std::string& first, const std::string& second) {
+    fs::create_directories(d.file(folder));
+    test::SampleRecordingSpec spec;
+    spec.seconds = 0.5;
+    spec.material = first;
+    test::write_text_file(d.file(folder + "/a.xml"), test::sample_recording_xml(spec));
+    spec.material = second, spec.seed = 2;
+    test::write_text_file(d.file(folder + "/b.xml"), test::sample_recording_xml(spec));
+    return d.file(folder);
+  };
+  expect_refusal(run_haptex({"convert", "hatt", write_pair("two", "Caf\u00e9 1", "Caf u00e9 1"), "-o", d.file("r.h5")}),
+                 {"make one material id, caf_u00e9_1, but differ in letters"});
+  EXPECT_FALSE(fs::exists(d.file("r.h5")));
+  const CommandResult one = run_haptex({"convert", "hatt", write_pair("one", "Woven 1", "woven-1"), "-o", d.file("w.h5")});
+  EXPECT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_EQ(material_ids(d.file("w.h5")), std::vector<std::string>{"woven_1"});
+}
+
 // Reviews 5 and 6: a second <material> or <speed> element was skipped without a word (which one holds
 // the data is not knowable), so was a second document element, and a CDATA name read as empty.
 TEST(BadValues, AnXmlElementGivenTwiceIsRefusedAndCdataIsText) {
