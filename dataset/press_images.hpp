@@ -29,8 +29,9 @@ h5::Dataset write_press_images(h5::Group& press, const std::string& name, const 
 // Every image of dataset `name` of `press`, decoded, in BGR whatever order the press states. Throws
 // haptex::Error (bad_input) naming the file and the object when the dataset is not encoded images,
 // an element is neither JPEG nor PNG, its header is damaged, states over 64 megapixels or another
-// size than the press's `width` and `height` (unless `stated_size` is false: qa compares them itself),
-// or it does not decode.
+// size than the press's `width` and `height` (unless `stated_size` is false: qa compares them itself,
+// but even then an image that states more pixels than the press is refused, never decoded), or it
+// does not decode.
 std::vector<cv::Mat> read_press_images(const h5::Group& press, const std::string& name, bool stated_size = true);
 // The one image of a dataset that holds one (`reference`, `peak`).
 cv::Mat read_press_image(const h5::Group& press, const std::string& name);

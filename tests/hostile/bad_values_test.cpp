@@ -5,12 +5,15 @@
 
 #include "core/sha256.hpp"
 
+#include <algorithm>
 #include <functional>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <tuple>
 #include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/mutations.hpp"
@@ -541,6 +544,39 @@ TEST(BadValues, ACompressionFilterHDF5LacksIsNamed) {
                                          copy});
   ASSERT_EQ(made.exit_code, 0) << made.err;
   expect_refusal(run_haptex({"qa", copy}), {copy, "HDF5 filter 32000", "lzf", "compression='gzip'"});
+}
+
+// Review 15, R12: qa decoded a press's frames before comparing their headers with the press's size,
+// so 12 frames whose headers (JPEG there, PNG here) claim 8192 x 8192 (64 megapixels, at the limit) took 3.6 GB and
+// ended in "unexpected error: OpenCV ... Insufficient memory". Under a 2 GB address space it now
+// reports the frames.
+TEST(BadValues, QaDecodesNoFrameLargerThanItsPressStates) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const TempDir d;
+  const std::string copy = copy_into(d, small_pipeline().dataset, "huge_frames.h5");
+  cv::Mat frame(120, 160, CV_8UC3, cv::Scalar(90, 120, 150));
+  std::vector<std::uint8_t> jpeg;
+  ASSERT_TRUE(cv::imencode(".jpg", frame, jpeg));
+  const std::uint8_t marker[] = {0xFF, 0xC0};
+  const auto sof = std::search(jpeg.begin(), jpeg.end(), std::begin(marker), std::end(marker));
+  ASSERT_NE(sof, jpeg.end());
+  for (int k : {5, 7}) sof[k] = 0x20, sof[k + 1] = 0;  // height and width: 8192
+  std::ofstream(d.file("huge.jpg"), std::ios::binary).write(reinterpret_cast<const char*>(jpeg.data()), std::streamsize(jpeg.size()));
+  // The first press's frames become 12 such JPEGs, as a JPEG-storing capture would hold them.
+  const CommandResult made = run_python({"-c",
+                                         "import h5py,sys,numpy as np\n"
+                                         "f=h5py.File(sys.argv[1],'r+'); m=sorted(f['materials'])[0]; p=f['materials'][m]['presses']['0']\n"
+                                         "attrs=dict(p['frames'].attrs); n=len(p['frames']); del p['frames']\n"
+                                         "b=np.frombuffer(open(sys.argv[2],'rb').read(),np.uint8)\n"
+                                         "d=p.create_dataset('frames',(n,),dtype=h5py.vlen_dtype(np.uint8))\n"
+                                         "for i in range(n): d[i]=b\n"
+                                         "[d.attrs.__setitem__(k,v) for k,v in attrs.items()]; d.attrs['encoding']='jpeg'\n",
+                                         copy, d.file("huge.jpg")});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  const CommandResult r = run_program({"prlimit", "--as=2000000000", haptex_binary(), "qa", copy});
+  EXPECT_TRUE(r.exit_code == 1 || r.exit_code == 2) << r.exit_code << r.err;
+  EXPECT_EQ(r.err.find("unexpected error"), std::string::npos) << r.err;
+  EXPECT_NE((r.out + r.err).find("8192 x 8192"), std::string::npos) << r.out << r.err;
 }
 
 // Review 5, #8: "Wo&#0;ven" in a HaTT recording became the material "Wo".
