@@ -56,8 +56,17 @@ def _regular_file(path):
     return path
 
 
-def _text(value):
-    return value.decode() if isinstance(value, bytes) else str(value)
+def _text(value, where=""):
+    """A string attribute or element as text; a HaptexFileError naming `where` when it is no UTF-8
+    text (review 15, R15: a traceback)."""
+    if isinstance(value, bytes):
+        try:
+            return value.decode()
+        except UnicodeDecodeError:
+            raise HaptexFileError(f"{where or 'a text attribute'}: is not UTF-8 text; make the file again with the haptex command that wrote it") from None
+    if not isinstance(value, str) and where:
+        raise HaptexFileError(f"{where}: is {type(value).__name__}, not text; make the file again with the haptex command that wrote it")
+    return str(value)
 
 
 def _check_format(f, path, wanted):
@@ -101,12 +110,24 @@ def _read_table(group, path):
         return a
     n = len(column("start"))
     absent = np.full(n, -1, dtype=np.int32)
-    w = Windows([_text(m) for m in column("materials")], column("material"), column("recording"),
+    w = Windows([_text(m, f"{path}: {group.name}/materials") for m in column("materials")], column("material"), column("recording"),
                 column("section") if "section" in group else absent, column("start"),
                 column("press") if "press" in group else absent,
                 column("action", 2 * ACTION_SAMPLES), column("target", TARGET_BINS))
     if any(len(a) != n for a in (w.material, w.recording, w.section, w.press, w.action, w.target)):
         raise HaptexFileError(f"{path}: the columns of {group.name} differ in length")
+    # Numbers that index something: a negative material index would pick another material from the
+    # end of the list (review 15, R15).
+    for name, values, least, most in (("material", w.material, 0, len(w.materials) - 1), ("recording", w.recording, 0, None),
+                                      ("section", w.section, -1, None), ("press", w.press, -1, None), ("start", w.start, 0, None)):
+        if values.dtype.kind not in "iu":
+            raise HaptexFileError(f"{path}: {group.name}/{name} holds {values.dtype} values, not whole numbers; "
+                                  "make the file again with the haptex command that wrote it")
+        bad = np.flatnonzero((values < least) | (values > most if most is not None else False))
+        if bad.size:
+            allowed = f"{least} to {most}" if most is not None else f"{least} or more"
+            raise HaptexFileError(f"{path}: {group.name}/{name} row {bad[0]} is {values[bad[0]]}, not {allowed}; "
+                                  "make the file again with the haptex command that wrote it")
     # As haptex's own readers: a NaN or infinite action or target is a damaged file (review 10, F7).
     for name, values in (("action", w.action), ("target", w.target)):
         bad = np.flatnonzero(~np.isfinite(values).all(axis=1))
@@ -118,11 +139,15 @@ def _read_table(group, path):
 
 def read_windows(path):
     """The evaluation's grid written by `haptex windows` (windows/2), in the order evaluate scores it."""
-    with h5py.File(_regular_file(path), "r") as f:
+    try:
+        f = h5py.File(_regular_file(path), "r")
+    except OSError as e:
+        raise HaptexFileError(f"{path}: not an HDF5 file haptex windows wrote ({e}); make it again with haptex windows") from None
+    with f:
         _check_format(f, path, "windows/2")
         w = _read_table(f["windows"], path)
-        w.dataset_sha256 = _text(f.attrs["dataset_sha256"])
-        w.split_sha256 = _text(f.attrs["split_sha256"])
+        w.dataset_sha256 = _text(f.attrs["dataset_sha256"], f"{path}: /@dataset_sha256")
+        w.split_sha256 = _text(f.attrs["split_sha256"], f"{path}: /@split_sha256")
     return w
 
 

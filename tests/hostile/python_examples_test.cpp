@@ -84,6 +84,22 @@ TEST(PythonExamples, KnnRefusesABadKAndADamagedWindowsFile) {
   expect_refusal(r, {damaged, "/windows/action row 3 holds a value that is not finite"});
   EXPECT_EQ(r.err.find("Warning"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(d.file("k.h5")));
+  // Review 15, R15: a negative material index picked another material from the end of the list (exit
+  // 0), a hash that is not UTF-8 was a traceback, a cut-off file was not named.
+  const std::vector<std::pair<std::string, std::string>> edits = {
+      {"f['windows/material'][0] = -1", "/windows/material row 0 is -1, not 0 to"},
+      {"f.attrs['dataset_sha256'] = numpy.bytes_(bytes([255] * 64))", "/@dataset_sha256: is not UTF-8 text"},
+  };
+  for (const auto& [edit, says] : edits) {
+    fs::copy_file(knn.windows, damaged, fs::copy_options::overwrite_existing);
+    ASSERT_EQ(run_python({"-c", "import h5py, numpy, sys\nwith h5py.File(sys.argv[1], 'r+') as f: " + edit, damaged}).exit_code, 0);
+    expect_refusal(run_python({kExamples + "knn_baseline.py", p.dataset, p.split, damaged, "-o", d.file("k.h5")}), {damaged, says});
+  }
+  const std::string cut = file_bytes(knn.windows);
+  std::ofstream(damaged, std::ios::binary | std::ios::trunc) << cut.substr(0, cut.size() / 2);
+  expect_refusal(run_python({kExamples + "knn_baseline.py", p.dataset, p.split, damaged, "-o", d.file("k.h5")}),
+                 {damaged, "not an HDF5 file haptex windows wrote"});
+  EXPECT_FALSE(fs::exists(d.file("k.h5")));
 }
 
 TEST(PythonExamples, KnnForceReplacesOnlyAnEarlierPredictionsFile) {
