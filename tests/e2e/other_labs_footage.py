@@ -164,15 +164,20 @@ def too_short(row):
     return row["frames"] < 10
 
 
+def tallies(rows):
+    """Per group measured: its videos long enough, those with a press, and those whose peak is where
+    the contact is within 80 % of its maximum."""
+    for group in GROUPS:
+        g = [r for r in rows if r["group"] == group and not too_short(r)]
+        if g:
+            found = [r for r in g if r["presses"]]
+            yield group, g, found, [r for r in found if r.get("peak_share", 0) >= 0.8]
+
+
 def failed_goals(rows, stills):
     """Issue 31's goals, per group: what does not hold."""
     failures = []
-    for group in GROUPS:
-        g = [r for r in rows if r["group"] == group and not too_short(r)]
-        if not g:
-            continue
-        found = [r for r in g if r["presses"]]
-        good = [r for r in found if r.get("peak_share", 0) >= 0.8]
+    for group, g, found, good in tallies(rows):
         if len(found) < 0.95 * len(g):
             failures.append(f"{group}: a press found in {len(found)} of {len(g)} videos, under 95 %")
         if len(good) < 0.95 * len(found):
@@ -184,12 +189,7 @@ def failed_goals(rows, stills):
 def summarise(rows, stills):
     lines = ["| footage | videos | press found | peak where contact >= 80 % of its maximum | exactly one press | reference: start / end / least contact |",
              "|---|---|---|---|---|---|"]
-    for group in GROUPS:
-        g = [r for r in rows if r["group"] == group and not too_short(r)]
-        if not g:
-            continue
-        found = [r for r in g if r["presses"]]
-        good = [r for r in found if r.get("peak_share", 0) >= 0.8]
+    for group, g, found, good in tallies(rows):
         one = [r for r in g if len(r["presses"]) == 1]
         kinds = [sum(r["reference_kind"] == k for r in g) for k in ("start", "end", "least contact")]
         lines.append(f"| {group} | {len(g)} | {len(found)} ({100 * len(found) / len(g):.1f} %) | "
