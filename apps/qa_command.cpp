@@ -49,9 +49,9 @@ class QaCommand : public Command {
         header = true;
       }
       std::cout << std::left << std::setw(int(width) + 2) << c.id << std::setw(10) << qa::to_string(c.severity)
-                << std::setw(8) << qa::to_string(c.status) << c.message << "\n";
+                << std::setw(8) << qa::to_string(c.status) << text::printable(c.message) << "\n";  // one line: a newline in a name is escaped (review 15, R13)
       if (c.status == qa::Status::fail) {
-        std::cout << indent << "fix: " << c.hint << "\n";
+        std::cout << indent << "fix: " << text::printable(c.hint) << "\n";
         if (global.verbose)
           for (const auto& w : c.where) std::cout << indent << "at " << text::printable(w) << "\n";
       }

@@ -64,6 +64,14 @@ void check_decimal(const CLI::Option& option, const std::string& value) {
                       "Write it in decimal, e.g. " + option.get_name() + " " + decimal_example(option, type, *form));
 }
 
+// Whether `word` (-x, --name, --name=value) names an option of `command` or of haptex itself.
+bool names_an_option(const CLI::App* command, const std::string& word) {
+  const std::string name = word.substr(0, word.find('='));
+  for (const CLI::App* scope = command; scope; scope = scope->get_parent())
+    if (scope->get_option_no_throw(name) != nullptr) return true;
+  return false;
+}
+
 void check_option_values(const CLI::App& app) {
   for (const CLI::Option* option : app.get_options()) {
     if (option->count() == 0) continue;
@@ -74,6 +82,10 @@ void check_option_values(const CLI::App& app) {
         throw input_error(option->get_name(), "", "is empty, which names no file", "Name the output with " + option->get_name());
       if (value.empty())  // `--names ""` named no file and was taken as no option at all
         throw input_error(option->get_name(), "", "is empty", "Give it a value, or leave the option out");
+      // `-o --force` took the flag as the output's name and wrote a file called --force (review 15, R14).
+      if (value.size() > 1 && value[0] == '-' && !text::parse_number(value) && names_an_option(&app, value))
+        throw input_error(option->get_name(), "", "is followed by '" + value + "', which is an option, not its value",
+                          "Give " + option->get_name() + " its value right after it");
       if (is_input_file_option(*option)) require_regular_file(value);
     }
   }
@@ -163,11 +175,7 @@ std::string unknown_flag(const CLI::App& app, int argc, char** argv) {
     const std::string word = argv[i];
     if (word == "--") break;
     if (word.size() < 2 || word[0] != '-' || text::parse_number(word)) continue;
-    const std::string name = word.substr(0, word.find('='));
-    bool known = false;
-    for (const CLI::App* scope = command; scope && !known; scope = scope->get_parent())
-      known = scope->get_option_no_throw(name) != nullptr;
-    if (!known) return word;
+    if (!names_an_option(command, word)) return word;
   }
   return "";
 }

@@ -185,6 +185,22 @@ TEST(CommandLine, AnUnknownFlagIsNamedBeforeAMissingArgument) {
   EXPECT_EQ(value.err.find("no option"), std::string::npos) << value.err;
 }
 
+// Review 15, R14: an option whose value was left out took the next flag as it: `-o --force` wrote a
+// file named --force, without --force applied. R13: qa printed a newline inside an object's name raw.
+TEST(CommandLine, AFlagIsNoOptionsValueAndQaKeepsANameOnItsLine) {
+  const TempDir d;
+  for (const std::string flag : {"--force", "--json", "-q"}) {
+    const CommandResult r = run_program({haptex_binary(), "split", small_pipeline().dataset, "--no-plots", "-o", flag}, d.path().string());
+    expect_refusal(r, {"-o", "is followed by '" + flag + "', which is an option, not its value"});
+    EXPECT_FALSE(fs::exists(d.file(flag)));
+  }
+  const std::string copy = copy_into(d, small_pipeline().dataset, "named.h5");
+  ASSERT_EQ(run_python({"-c", "import h5py,sys\nwith h5py.File(sys.argv[1],'r+') as f: f['materials/x\\ny\\tz'] = [1.0]", copy}).exit_code, 0);
+  const CommandResult qa = run_haptex({"qa", copy});
+  EXPECT_NE(qa.out.find("x\\x0ay\\x09z"), std::string::npos) << qa.out;
+  EXPECT_EQ(qa.out.find("x\ny"), std::string::npos) << "the line splits where the name does";
+}
+
 // Review 15, R1: the model of predict, render and play (and their images, trajectories, evaluate's
 // --truth) went through CLI11's ExistingFile, which answered in its own words, without the fix, and
 // with "file": null in --json. They are checked as every other input is.
