@@ -108,17 +108,20 @@ h5::Dataset write_press_images(h5::Group& press, const std::string& name, const 
 std::vector<cv::Mat> read_press_images(const h5::Group& press, const std::string& name, bool stated_size) {
   const ChannelOrder order = read_channel_order(press, name);
   const h5::Dataset d = open_images(press, name);
-  const std::optional<cv::Size> stated = size_stated_by(press), expected = stated_size ? stated : std::nullopt;
+  const std::optional<cv::Size> expected = stated_size ? size_stated_by(press) : std::nullopt;
+  cv::Size largest;  // without the size check, the most an image may state: the press's size (0 x 0: none)
+  if (!stated_size)
+    if (const std::optional<cv::Size> stated = size_stated_by(press)) largest = *stated;
   std::vector<cv::Mat> images;
   for (std::size_t i = 0; i < d.shape()[0]; ++i) {
     const EncodedImage bytes = read_vlen_bytes(d, i);
     // Without the size check, an image is still never decoded at more pixels than the press states:
     // a dozen frames whose headers claim 64 megapixels each took qa 3.6 GB (review 15, R12).
-    if (const std::optional<ImageSize> header = image_header_size(bytes); !stated_size && stated && header &&
-                                                                        double(header->width) * header->height > double(stated->area()))
+    if (const std::optional<ImageSize> header = image_header_size(bytes);
+        largest.area() > 0 && header && double(header->width) * header->height > double(largest.area()))
       throw bad_image(d, i, "its header states " + std::to_string(header->width) + " x " + std::to_string(header->height) +
-                                " pixels, more than the press's width and height " + std::to_string(stated->width) + " x " +
-                                std::to_string(stated->height));
+                                " pixels, more than the press's width and height " + std::to_string(largest.width) + " x " +
+                                std::to_string(largest.height));
     cv::Mat image = decode(d, i, bytes, expected);
     if (order == ChannelOrder::bgr) cv::cvtColor(image, image, cv::COLOR_RGB2BGR);  // the stored pixels were blue first
     images.push_back(image);

@@ -16,8 +16,18 @@ File File::open(const std::string& path, bool writable) {
   require_regular_file(path);
   if (H5Fis_hdf5(path.c_str()) <= 0)
     throw input_error(path, "", "not an HDF5 file", "Give a file written by haptex (recordings, gelsight, dataset or model)");
-  Handle file(check_input(H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT), "open the file",
-                    path));
+  const hid_t id = H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT);
+  // HDF5 locks a file another program writes (an h5py session, a running haptex): the file is whole,
+  // and "copy it again" would mislead (review 15, R8).
+  if (id < 0) {
+    const std::string detail = last_library_error();
+    if (detail.find("Resource temporarily unavailable") != std::string::npos || detail.find("unable to lock file") != std::string::npos)
+      throw input_error(path, "", "another program has it open for writing (HDF5's file lock: " + detail + ")",
+                        "Close it there (an h5py session, a haptex run) and run again; on a file system whose locks do not "
+                        "work, set HDF5_USE_FILE_LOCKING=FALSE");
+    throw input_failure("open the file", path, detail);
+  }
+  Handle file(id);
   return File(std::move(file), path);
 }
 

@@ -84,13 +84,14 @@ void check_status(herr_t status, const std::string& what, const std::string& pat
   if (status < 0) check(H5I_INVALID_HID, what, path);
 }
 
+Error input_failure(const std::string& what, const std::string& path, const std::string& detail) {
+  return input_error(path, "", "HDF5 could not " + what + (detail.empty() ? "" : " (" + detail + ")"),
+                     "The file is truncated, damaged or not what haptex wrote there: copy it again, or make it again with "
+                     "the haptex command that wrote it (h5clear does not repair a truncated file)");
+}
+
 hid_t check_input(hid_t id, const std::string& what, const std::string& path) {
-  if (id < 0) {
-    const std::string detail = last_library_error();
-    throw input_error(path, "", "HDF5 could not " + what + (detail.empty() ? "" : " (" + detail + ")"),
-                      "The file is truncated, damaged or not what haptex wrote there: copy it again, or make it again with "
-                      "the haptex command that wrote it (h5clear does not repair a truncated file)");
-  }
+  if (id < 0) throw input_failure(what, path, last_library_error());
   return id;
 }
 

@@ -2,6 +2,8 @@
 // RAII ownership of one HDF5 identifier, and the error check every C call goes through.
 #include <hdf5.h>
 
+#include "core/error.hpp"
+
 #include <string>
 #include <utility>
 
@@ -46,6 +48,8 @@ class Handle {
 void silence_library_errors();
 // The innermost message of HDF5's current error stack, for our own error text.
 std::string last_library_error();
+// The bad-input error check_input throws, for HDF5's `detail` (last_library_error) of a failure to `what`.
+[[nodiscard]] Error input_failure(const std::string& what, const std::string& path, const std::string& detail);
 // Throws haptex::Error (failed) naming `what` and `path` when id < 0; returns id otherwise. For
 // creating and writing: a failure there is the machine's (disk full, permissions), exit code 1.
 hid_t check(hid_t id, const std::string& what, const std::string& path);

@@ -579,6 +579,18 @@ TEST(BadValues, QaDecodesNoFrameLargerThanItsPressStates) {
   EXPECT_NE((r.out + r.err).find("8192 x 8192"), std::string::npos) << r.out << r.err;
 }
 
+// Review 15, R8: a file another program holds open for writing (HDF5's lock) was called truncated or
+// damaged, "copy it again". This test holds it open as an h5py session would.
+TEST(BadValues, AFileAnotherProgramWritesIsNamedAsLocked) {
+  const TempDir d;
+  const std::string copy = copy_into(d, small_pipeline().recordings, "open elsewhere.h5");
+  const hid_t held = H5Fopen(copy.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(held, 0);
+  expect_refusal(run_haptex({"info", copy}), {copy, "another program has it open for writing", "HDF5_USE_FILE_LOCKING=FALSE"});
+  H5Fclose(held);
+  EXPECT_EQ(run_haptex({"info", copy}).exit_code, 0);
+}
+
 // Review 5, #8: "Wo&#0;ven" in a HaTT recording became the material "Wo".
 TEST(BadValues, ANulCharacterReferenceInXmlIsRefused) {
   if (!python_has("gzip")) GTEST_SKIP() << "python3 is missing";
