@@ -591,6 +591,22 @@ TEST(BadValues, AFileAnotherProgramWritesIsNamedAsLocked) {
   EXPECT_EQ(run_haptex({"info", copy}).exit_code, 0);
 }
 
+// Review 15, R7: a layer's unknown activation was exit 1 naming neither the file nor the layer.
+TEST(BadValues, AModelLayersUnknownActivationIsNamedWhereItIs) {
+  if (!python_has("h5py")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const TempDir d;
+  const std::string model = copy_into(d, quick_model(), "gelu.h5");
+  const CommandResult made = run_python({"-c",
+                                         "import h5py,sys\nf=h5py.File(sys.argv[1],'r+'); found=[]\n"
+                                         "f.visititems(lambda n,o: found.append(o) if 'activation' in o.attrs else None)\n"
+                                         "found[0].attrs['activation']='gelu'; print(found[0].name)",
+                                         model});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  std::string layer = made.out.substr(0, made.out.find('\n'));
+  expect_refusal(run_haptex({"predict", model, "--material", small_material(), "--normal-force", "1", "--speed", "100"}),
+                 {model, layer + "@activation", "'gelu' is not linear, relu or softplus", "Train the model again"});
+}
+
 // Review 5, #8: "Wo&#0;ven" in a HaTT recording became the material "Wo".
 TEST(BadValues, ANulCharacterReferenceInXmlIsRefused) {
   if (!python_has("gzip")) GTEST_SKIP() << "python3 is missing";
