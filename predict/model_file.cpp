@@ -235,7 +235,7 @@ Model read_model(const std::string& path) {
   Model m;
   const std::string variant = root.attr_string(layout::kModelVariant);
   if (variant != variant_name(Variant::unified) && variant != variant_name(Variant::per_material))
-    throw input_error(path, "/ attribute 'variant'", "is '" + variant + "', neither unified nor per_material", kRetrain);
+    throw input_error(path, "/ attribute 'variant'", "is '" + variant + "', neither " + variant_name(Variant::unified) + " nor " + variant_name(Variant::per_material), kRetrain);
   m.variant = variant == variant_name(Variant::unified) ? Variant::unified : Variant::per_material;
   m.dataset_sha256 = root.attr_string(dataset::layout::kDatasetSha256);
   m.split_sha256 = root.attr_string(dataset::layout::kSplitSha256);

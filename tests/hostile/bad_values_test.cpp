@@ -605,6 +605,11 @@ TEST(BadValues, AModelLayersUnknownActivationIsNamedWhereItIs) {
   std::string layer = made.out.substr(0, made.out.find('\n'));
   expect_refusal(run_haptex({"predict", model, "--material", small_material(), "--normal-force", "1", "--speed", "100"}),
                  {model, layer + "@activation", "'gelu' is not linear, relu or softplus", "Train the model again"});
+  // The variant's own spelling was wrong in the message ("neither unified nor per_material").
+  const std::string variant = copy_into(d, quick_model(), "variant.h5");
+  ASSERT_EQ(run_python({"-c", "import h5py,sys\nwith h5py.File(sys.argv[1],'r+') as f: f.attrs['variant']='per_material'", variant}).exit_code, 0);
+  expect_refusal(run_haptex({"predict", variant, "--material", small_material(), "--normal-force", "1", "--speed", "100"}),
+                 {variant, "is 'per_material', neither unified nor per-material"});
 }
 
 // Review 5, #8: "Wo&#0;ven" in a HaTT recording became the material "Wo".
