@@ -38,10 +38,11 @@ struct SplitManifestDocument {
 // Reads the JSON; throws haptex::Error (bad_input) naming the file when it is not readable JSON.
 SplitManifestDocument read_split_manifest(const std::string& path);
 // Throws haptex::Error (bad_input) naming the file and the place unless the document satisfies
-// split.schema.json. Its sizes and repeats are checked first, in linear time: the schema validator
-// compares every pair of a list's items (uniqueItems) and keeps an error per repeated pair, so 10 000
-// repeats took gigabytes (review 15, R6), and `parameters.sections` bounds what the readers allocate
-// (R5: 1e9 sections took 24 GB).
+// split.schema.json. Its sizes and repeats (the schema's uniqueItems, which core/json leaves to this
+// check) are checked first, in linear time: the schema validator compares every pair of a list's
+// items and keeps an error per repeated pair, so 10 000 repeats took gigabytes and a million distinct
+// numbers never finished (review 15, R6); `parameters.sections` bounds what the readers allocate (R5:
+// 1e9 sections took 24 GB).
 void validate_split_manifest(const SplitManifestDocument& document);
 // The fields; call only once the document satisfies split.schema.json.
 SplitManifest parse_split_manifest(const nlohmann::json& doc);

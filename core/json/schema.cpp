@@ -25,13 +25,24 @@
 namespace haptex::json {
 namespace {
 
+// valijson compares every pair of an array's items for uniqueItems, and keeps an error per repeated
+// pair: a 7 MB list never finishes, 10 000 repeats take gigabytes (review 15, R6). So the keyword is
+// the readers' to check, in linear time (split/manifest_reader.hpp, validate_split_manifest, for
+// split.schema.json, the one schema that has it); the schema files keep it for other validators.
+void drop_unique_items(nlohmann::json& schema) {
+  if (schema.is_object()) schema.erase("uniqueItems");
+  if (schema.is_structured())
+    for (nlohmann::json& part : schema) drop_unique_items(part);
+}
+
 const valijson::Schema& compiled_schema(std::string_view name) {
   static std::mutex mutex;
   static std::map<std::string, std::unique_ptr<valijson::Schema>, std::less<>> cache;
   std::lock_guard lock(mutex);
   auto it = cache.find(name);
   if (it != cache.end()) return *it->second;
-  const nlohmann::json schema_doc = nlohmann::json::parse(embedded::schema(name));
+  nlohmann::json schema_doc = nlohmann::json::parse(embedded::schema(name));
+  drop_unique_items(schema_doc);
   auto schema = std::make_unique<valijson::Schema>();
   valijson::SchemaParser parser;
   valijson::adapters::NlohmannJsonAdapter adapter(schema_doc);

@@ -495,6 +495,12 @@ TEST(BadValues, AManifestsSizesAndRepeatsAreBoundedBeforeAnyWork) {
   refused("repeats.json", repeats, {"/materials/0/sections/train", "lists 20000 numbers, more than the 10000"});
   repeats["materials"][0]["sections"]["train"] = std::vector<int>(5000, 1);
   refused("twice.json", repeats, {"/materials/0/sections/train", "lists 1 twice"});
+  // 300 000 distinct press numbers: the schema check compared every pair (4.5e10 comparisons).
+  nlohmann::json distinct = read_json(small_pipeline().split);
+  std::vector<int> presses(300000);
+  for (int i = 0; i < 300000; ++i) presses[std::size_t(i)] = i;
+  distinct["materials"][0]["presses"]["train"] = presses;
+  refused("distinct.json", distinct, {});
 }
 
 // A key given twice was kept as the last one without a word, in every JSON reader (issue 32, reviews 5
