@@ -332,7 +332,7 @@ def write_predictions(path, grid, spectra, source, query_seconds=None, signals=N
         partial = None
     finally:
         os.close(fd)
-        if partial is not None:
+        if partial is not None and os.path.lexists(partial):
             os.remove(partial)  # the name only: a link swapped in is removed, never what it points at
         restore()
 
@@ -418,7 +418,7 @@ def _put_in_place(partial, fd, path, inputs, overwrite):
         except OSError:  # a file system without hard links: the last look, then the rename
             check_output(path, inputs, overwrite)
             os.rename(partial, path)
-            _require_still_named(path, fd, path)
+            _take_back_unless_ours(path, fd)
             return
         if not _still_names(path, fd):  # the name was swapped between the look and the link
             os.remove(path)  # the link this run just made, not the file it names
@@ -427,7 +427,16 @@ def _put_in_place(partial, fd, path, inputs, overwrite):
         return
     check_output(path, inputs, overwrite)
     os.replace(partial, path)
-    _require_still_named(path, fd, path)
+    _take_back_unless_ours(path, fd)
+
+
+def _take_back_unless_ours(path, fd):
+    """After a rename: when what reached path is not this run's file (the temporary was swapped in the
+    instant between the last look and the rename), its name is taken away again (a link or a name of
+    another's file, never the file it names), and the run fails."""
+    if not _still_names(path, fd):
+        os.remove(path)
+        _require_still_named(path, fd, path)
 
 
 def _remove_on_signals(partial):
