@@ -26,13 +26,6 @@ std::string hash_of(int fd) {
   }
 }
 
-}  // namespace
-
-void mark_content(int fd) {
-  const std::string hex = hash_of(fd);
-  if (!hex.empty()) ::fsetxattr(fd, kContentMarkAttribute, hex.data(), hex.size(), 0);  // unsupported: left unmarked
-}
-
 bool carries_content_mark(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) return false;
@@ -41,6 +34,13 @@ bool carries_content_mark(const std::string& path) {
   const bool marked = size == 64 && std::string(stored.data(), 64) == hash_of(fd);
   ::close(fd);
   return marked;
+}
+
+}  // namespace
+
+void mark_content(int fd) {
+  const std::string hex = hash_of(fd);
+  if (!hex.empty()) ::fsetxattr(fd, kContentMarkAttribute, hex.data(), hex.size(), 0);  // unsupported: left unmarked
 }
 
 void require_content_mark(const std::string& path) {

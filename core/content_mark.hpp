@@ -15,9 +15,8 @@ inline constexpr const char* kContentMarkAttribute = "user.haptex.sha256";
 // Sets the mark on the open file fd (its bytes as they are now). A file system that keeps no extended
 // attributes leaves the file unmarked: it is written all the same.
 void mark_content(int fd);
-// True when path carries the mark and its bytes still hash to it.
-bool carries_content_mark(const std::string& path);
-// Throws haptex::Error (bad_input) naming path unless carries_content_mark(path): for --force.
+// Throws haptex::Error (bad_input) naming path unless it carries the mark and its bytes still hash
+// to it: for --force.
 void require_content_mark(const std::string& path);
 
 }  // namespace haptex
