@@ -60,7 +60,10 @@ XmlFile::XmlFile(std::string source, std::vector<char> bytes, std::string sha256
                       "a character reference to NUL (&#0;), which XML does not allow and no name may hold",
                       "Remove it from the file");
   // Minimal parsing keeps the <value> text in place; the doctype node is kept only so it can be refused.
-  const unsigned flags = pugi::parse_minimal | pugi::parse_escapes | pugi::parse_doctype | pugi::parse_cdata;
+  // An element's first piece of text is its value, not a node of its own: half the nodes (and the
+  // memory they take) of a recording of a sample per element (issue 37).
+  const unsigned flags =
+      pugi::parse_minimal | pugi::parse_escapes | pugi::parse_doctype | pugi::parse_cdata | pugi::parse_embed_pcdata;
   const pugi::xml_parse_result result = doc_.load_buffer_inplace(bytes_.data(), bytes_.size(), flags);
   if (!result)
     throw input_error(source_, "line " + std::to_string(line_of(result.offset)),
@@ -110,7 +113,7 @@ pugi::xml_node XmlFile::require(const pugi::xml_node& parent, const std::string&
 }
 
 std::string XmlFile::text(const pugi::xml_node& node) const {
-  std::string text;
+  std::string text = node.value();  // the first piece of text, kept in the element (parse_embed_pcdata)
   for (const pugi::xml_node& part : node.children()) {
     if (part.type() == pugi::node_element)
       throw error(node, "holds element <" + std::string(part.name()) + ">, where text is expected", "Write the text alone");
@@ -155,10 +158,11 @@ std::vector<double> XmlFile::values(const pugi::xml_node& array, const std::stri
   const char* name = value_name.c_str();
   std::string joined;
   for (pugi::xml_node value = array.child(name); value; value = value.next_sibling(name)) {
-    const char* text = value.child_value();
+    const char* text = value.value();
     // Text in pieces (a comment or processing instruction between them, review 10 F2: "5<!-- -->00"
-    // was read as 5) is joined, as XML means it; an element inside is refused (text()). One piece: as is.
-    if (const pugi::xml_node first = value.first_child(); first && first.next_sibling()) {
+    // was read as 5) is joined, as XML means it; an element inside is refused (text()). One piece, kept
+    // in the element (parse_embed_pcdata): as is.
+    if (value.first_child()) {
       joined = this->text(value);
       text = joined.c_str();
     }

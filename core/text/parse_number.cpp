@@ -1,6 +1,8 @@
 #include "core/text/parse_number.hpp"
 
+#include <algorithm>
 #include <charconv>
+#include <cstdint>
 #include <regex>
 #include <cmath>
 
@@ -13,10 +15,39 @@ std::string_view trim(std::string_view text) {
   return text;
 }
 
+namespace {
+
+// Plain decimals of at most 15 digits and no exponent ("-0.299263", a HaTT sample), without
+// from_chars: the digits make an integer under 2^53 and the power of ten (at most 10^15) is exact, so
+// one IEEE division rounds the exact quotient once, as from_chars does (Clinger's fast path). It
+// cuts the parse of a 26 MB HaTT recording by a third (issue 37). nullopt: any other text.
+std::optional<double> plain_short_decimal(std::string_view text) {
+  static constexpr double kPowers[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+  const bool negative = !text.empty() && text.front() == '-';
+  if (negative) text.remove_prefix(1);
+  std::uint64_t digits = 0;
+  int count = 0, after_point = -1;
+  for (const char c : text) {
+    if (c == '.' && after_point < 0) {
+      after_point = 0;
+      continue;
+    }
+    if (c < '0' || c > '9' || ++count > 15) return std::nullopt;
+    digits = digits * 10 + std::uint64_t(c - '0');
+    if (after_point >= 0) ++after_point;
+  }
+  if (count == 0) return std::nullopt;
+  const double value = double(digits) / kPowers[std::max(after_point, 0)];
+  return negative ? -value : value;
+}
+
+}  // namespace
+
 std::optional<double> parse_number(std::string_view text) {
   text = trim(text);
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);
   if (text.empty()) return std::nullopt;
+  if (const std::optional<double> quick = plain_short_decimal(text)) return quick;
   double value = 0;
   auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
