@@ -48,6 +48,18 @@ std::string format_list(std::span<const Kind> kinds, std::string_view last_joint
   return list;
 }
 
+std::string format_remark(std::string_view found) {
+  for (const Format& f : kFormats) {
+    if (family_of(found) != f.family) continue;
+    const std::string current = format_name(f.kind);
+    if (found == current) return "";
+    if (!is_format_name(found)) return "no version haptex writes: the attribute was edited or damaged";
+    if (is_newer_version(found, current)) return "written by a newer haptex: this one reads " + current;
+    return "an older version: this haptex reads " + current + ", which " + std::string(f.written_by) + " writes";
+  }
+  return "no kind of file haptex writes";
+}
+
 std::string read_format(const h5::File& file) {
   const h5::Group root = file.root();
   if (!root.has_attr(h5::kFormatAttribute))

@@ -28,6 +28,12 @@ std::string format_name(Kind kind);  // "dataset/4"
 // "recordings/1, gelsight/2 or dataset/4": the current formats of `kinds`, for messages.
 std::string format_list(std::span<const Kind> kinds, std::string_view last_joint = " or ");
 
+// Why this haptex cannot read a file whose /@haptex_format is `found`, for `haptex info`, which shows
+// any file: "" when `found` is a format this haptex reads; else "written by a newer haptex: this one
+// reads dataset/4", "an older version: this haptex reads dataset/4, which haptex align writes", "no
+// version haptex writes: the attribute was edited or damaged" or "no kind of file haptex writes".
+std::string format_remark(std::string_view found);
+
 // The file's /@haptex_format. Throws haptex::Error (bad_input) naming the file when the attribute
 // is missing (not a haptex file) or not a string.
 std::string read_format(const h5::File& file);

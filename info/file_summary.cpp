@@ -73,6 +73,7 @@ FileSummary summarize_file(const std::string& path) {
   summary.path = path;
   summary.bytes = std::filesystem::file_size(path);
   summary.format = dataset::read_format(file);
+  summary.format_remark = dataset::format_remark(summary.format);
   summary.version = optional_string(root, "haptex_version");
   summary.created_utc = optional_string(root, "created_utc");
   summary.source = optional_string(root, "source");
@@ -112,9 +113,11 @@ nlohmann::json to_json(const FileSummary& s) {
   }
   nlohmann::json others = nlohmann::json::array();
   for (const auto& d : s.other_datasets) others.push_back(dataset_json(d));
-  return {{"path", s.path},           {"bytes", s.bytes},     {"format", s.format},
-          {"haptex_version", s.version}, {"created_utc", s.created_utc}, {"source", s.source},
-          {"materials", materials},   {"other_datasets", others}};
+  nlohmann::json out = {{"path", s.path},           {"bytes", s.bytes},     {"format", s.format},
+                        {"haptex_version", s.version}, {"created_utc", s.created_utc}, {"source", s.source},
+                        {"materials", materials},   {"other_datasets", others}};
+  if (!s.format_remark.empty()) out["format_remark"] = s.format_remark;
+  return out;
 }
 
 }  // namespace haptex::info

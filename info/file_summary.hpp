@@ -34,6 +34,7 @@ struct MaterialSummary {
 
 struct FileSummary {
   std::string path, format, version, created_utc, source;
+  std::string format_remark;  // why this haptex cannot read the file ("" when it can: dataset::format_remark)
   std::uintmax_t bytes = 0;
   std::vector<MaterialSummary> materials;
   std::vector<DatasetSummary> other_datasets;  // datasets outside /materials, by full path

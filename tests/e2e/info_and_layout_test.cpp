@@ -62,6 +62,29 @@ TEST_F(ConvertedFile, InfoJsonFollowsItsSchema) {
   EXPECT_THROW(json::validate(broken, "info.schema.json", "info output"), Error);
 }
 
+// Issue 32: info shows any haptex file, and says when this haptex cannot read it and why.
+TEST_F(ConvertedFile, InfoSaysWhyAFormatCannotBeRead) {
+  if (!python_has("h5py")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"recordings/1", ""},
+      {"recordings/9", "written by a newer haptex: this one reads recordings/1"},
+      {"recordings/01", "no version haptex writes: the attribute was edited or damaged"},
+      {"dataset/3", "an older version: this haptex reads dataset/4, which haptex align writes"},
+      {"spectra/1", "no kind of file haptex writes"}};
+  for (const auto& [format, remark] : cases) {
+    const CommandResult edit = run_python({"-c", "import h5py, sys; h5py.File(sys.argv[1], 'a').attrs['haptex_format'] = sys.argv[2]",
+                                           file_, format});
+    ASSERT_EQ(edit.exit_code, 0) << edit.err;
+    const CommandResult text = run_haptex({"info", file_}), json = run_haptex({"info", file_, "--json"});
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    const std::string shown = "format   " + format + (remark.empty() ? "," : " (" + remark + "),");
+    EXPECT_NE(text.out.find(shown), std::string::npos) << text.out;
+    const nlohmann::json doc = nlohmann::json::parse(json.out);
+    EXPECT_NO_THROW(json::validate(doc, "info.schema.json", "info output")) << format;
+    EXPECT_EQ(doc.value("format_remark", ""), remark);
+  }
+}
+
 TEST_F(ConvertedFile, InfoRefusesFilesHaptexDidNotWrite) {
   write_text_file(out_.file("plain.txt"), "hello");
   const CommandResult r = run_haptex({"info", out_.file("plain.txt")});
