@@ -9,7 +9,9 @@ option at its default. Where a press is found, its peak frame is judged without 
   or two;
 - without one, the mean absolute difference of the blurred grey frame from the median of the five
   frames at whichever end of the video lies farther from its most distinct frame, after any stale
-  start-up frames (one jump in the first 10 frames, far over the usual change between frames).
+  start-up frames (one jump in the first 10 frames, far over the usual change between frames); for
+  the grasp-and-slip takes, the five frames at the start, which their recording protocol leaves
+  without contact (GROUPS).
 
 Still clips, cut from the no-contact stretch before each Wedge grasp (until 3 frames before the
 logged force first rises 0.15 N; a frame copy of the MJPG, and
@@ -46,10 +48,14 @@ except ImportError as missing:  # python3-opencv (make bench's packages) is not 
     print(f"skipped: {missing}", file=sys.stderr)
     sys.exit(77)
 
+# Per group: the videos, the force log's suffix beside a video (None: none), and where the judge's
+# no-contact image comes from without a log: "farther end", or "start" where the recording protocol
+# says so (the grasp-and-slip script, docs/franka-servo/wriggle.sh in that repository, homes the gripper
+# open before it grasps, and many takes end still holding the object, so their far end is in contact).
 GROUPS = {
-    "physiclear": ("clear-nus+octopi/dataset/*.mov", None),
-    "wedge": ("GelSight-lab+EstimateModulus/example_data/*/*.avi", "_forces.pkl"),
-    "slip": ("amitparag+Incipient-Slip-Detection/docs/franka-servo/datasets/**/camera_*.avi", None),
+    "physiclear": ("clear-nus+octopi/dataset/*.mov", None, "farther end"),
+    "wedge": ("GelSight-lab+EstimateModulus/example_data/*/*.avi", "_forces.pkl", "farther end"),
+    "slip": ("amitparag+Incipient-Slip-Detection/docs/franka-servo/datasets/**/camera_*.avi", None, "start"),
 }
 
 
@@ -78,14 +84,15 @@ def live_start(frames):
     return jumps[-1] + 1 if jumps else 0
 
 
-def image_contact(frames):
-    """Contact per frame: distance from the median of the five frames at the end farther from the
-    video's most distinct frame; stale start-up frames get none."""
+def image_contact(frames, no_contact):
+    """Contact per frame: distance from the median of the five frames at the start (after stale
+    start-up frames), or, with no_contact "farther end", at the end farther from the video's most
+    distinct frame; stale start-up frames get none."""
     live = live_start(frames)
     stack = np.stack(frames[live:])
     ends = [np.median(stack[:5], axis=0), np.median(stack[-5:], axis=0)]
     curves = [np.abs(stack - e).mean(axis=(1, 2)) for e in ends]
-    curve = curves[0] if curves[0].max() >= curves[1].max() else curves[1]
+    curve = curves[0] if no_contact == "start" or curves[0].max() >= curves[1].max() else curves[1]
     return np.concatenate([np.zeros(live), curve])
 
 
@@ -141,7 +148,7 @@ def still_clips(video, log_path, folder):
     return clips
 
 
-def judge(video, group, log_suffix, haptex, folder):
+def judge(video, group, log_suffix, no_contact, haptex, folder):
     frames = grey_frames(video)
     row = {"video": video, "group": group, "frames": len(frames)}
     row.update(extract(haptex, video, folder))
@@ -152,7 +159,7 @@ def judge(video, group, log_suffix, haptex, folder):
             contact = force_contact(log, len(frames))
             row["judged_by"] = "force"
     if contact is None and len(frames) >= 10:
-        contact = image_contact(frames)
+        contact = image_contact(frames, no_contact)
         row["judged_by"] = "image"
     if row["presses"] and contact is not None:
         peak = max(row["presses"], key=lambda p: contact[p] if p < len(contact) else -1)
@@ -224,7 +231,7 @@ def main():
     rows, stills, seen, copies = [], [], set(), 0
     with tempfile.TemporaryDirectory() as folder:
         for group in args.groups.split(","):
-            pattern, log_suffix = GROUPS[group]
+            pattern, log_suffix, no_contact = GROUPS[group]
             videos = sorted(glob.glob(os.path.join(args.footage, pattern), recursive=True))[::args.every]
             for video in videos:
                 # The grasp-and-slip repository holds most clips two or three times (by object, and
@@ -234,7 +241,7 @@ def main():
                     copies += 1
                     continue
                 seen.add(digest)
-                rows.append(judge(video, group, log_suffix, args.haptex, folder))
+                rows.append(judge(video, group, log_suffix, no_contact, args.haptex, folder))
                 if log_suffix and os.path.exists(video.rsplit(".", 1)[0] + log_suffix):
                     for clip in still_clips(video, video.rsplit(".", 1)[0] + log_suffix, folder):
                         stills.append({"video": clip, **extract(args.haptex, clip, folder)})
