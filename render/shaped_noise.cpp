@@ -9,7 +9,6 @@ namespace haptex::render {
 namespace {
 
 using dataset::kWindowSamples;
-constexpr std::size_t kHop = kReconstructionHop;
 
 }  // namespace
 
@@ -18,7 +17,7 @@ ShapedNoise::ShapedNoise(const ShapedNoiseOptions& options)
       noise_(options.seed),
       frame_(kWindowSamples),
       sum_(kWindowSamples, 0.0),
-      output_(kWindowSamples - kHop),
+      output_(kWindowSamples - kReconstructionHop),
       spectrum_(kReconstructionBins) {
   fft_.inverse(spectrum_, frame_);  // sizes FFTW's per-thread scratch on this thread now
 }
@@ -26,8 +25,8 @@ ShapedNoise::ShapedNoise(const ShapedNoiseOptions& options)
 std::span<const double> ShapedNoise::push(std::span<const double> magnitudes) {
   check_magnitude_frame(magnitudes, "shaped noise");
   if (frames_ > 0) {  // the next frame starts 100 samples on: advance the running sum
-    std::copy(sum_.begin() + kHop, sum_.end(), sum_.begin());
-    std::fill(sum_.end() - kHop, sum_.end(), 0.0);
+    std::copy(sum_.begin() + kReconstructionHop, sum_.end(), sum_.begin());
+    std::fill(sum_.end() - kReconstructionHop, sum_.end(), 0.0);
   }
   const std::span<const std::complex<double>> noise = noise_.next();
   const double gain = noise_.unit_gain();
@@ -35,16 +34,16 @@ std::span<const double> ShapedNoise::push(std::span<const double> magnitudes) {
   fft_.inverse(spectrum_, frame_);
   const std::span<const double> window = noise_.window();
   for (std::size_t i = 0; i < kWindowSamples; ++i) sum_[i] += window[i] * frame_[i];
-  const std::size_t first = frames_ * kHop;
+  const std::size_t first = frames_ * kReconstructionHop;
   ++frames_;
-  for (std::size_t i = 0; i < kHop; ++i) output_[i] = sum_[i] * synthesis_gain(window, first + i, frames_);
-  return std::span<const double>(output_).first(kHop);
+  for (std::size_t i = 0; i < kReconstructionHop; ++i) output_[i] = sum_[i] * synthesis_gain(window, first + i, frames_);
+  return std::span<const double>(output_).first(kReconstructionHop);
 }
 
 std::span<const double> ShapedNoise::flush() {
   if (frames_ == 0) return {};
-  const std::size_t first = frames_ * kHop;  // the last frame's samples not yet returned
-  for (std::size_t i = 0; i < output_.size(); ++i) output_[i] = sum_[kHop + i] * synthesis_gain(noise_.window(), first + i, frames_);
+  const std::size_t first = frames_ * kReconstructionHop;  // the last frame's samples not yet returned
+  for (std::size_t i = 0; i < output_.size(); ++i) output_[i] = sum_[kReconstructionHop + i] * synthesis_gain(noise_.window(), first + i, frames_);
   std::fill(sum_.begin(), sum_.end(), 0.0);
   noise_.restart();  // the next stream's first frame: fresh noise
   frames_ = 0;

@@ -48,7 +48,10 @@ cv::Mat noise_pattern(int width, int height, std::uint64_t seed) {
   return noise;
 }
 
-// The float images every payload is made from.
+}  // namespace
+
+// The float images every payload is made from. Outside the anonymous namespace: FakeScene::Images
+// derives from it.
 struct SceneImages {
   cv::Mat base, blob, noise[2];
   SceneImages(int width, int height, std::uint64_t seed)
@@ -62,8 +65,6 @@ struct SceneImages {
     return out;
   }
 };
-
-}  // namespace
 
 std::vector<std::uint8_t> bgr_to_yuyv(const cv::Mat& bgr) {
   // ITU-R BT.601 in video range (Y 16..235, U and V 16..240), as UVC cameras send it and as OpenCV's

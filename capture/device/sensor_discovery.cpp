@@ -2,25 +2,18 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 
+#include "capture/device/sysfs_line.hpp"
 #include "core/error.hpp"
 
 namespace haptex::capture {
 namespace fs = std::filesystem;
 namespace {
 
-std::string read_line(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  return line;
-}
-
 int read_int(const fs::path& path, int fallback) {
   try {
-    return std::stoi(read_line(path));
+    return std::stoi(sysfs_line(path));
   } catch (...) {
     return fallback;
   }
@@ -50,7 +43,7 @@ std::vector<VideoNode> video_nodes(const std::string& sysfs_root, const std::str
   for_each_video_node(sysfs_root, [&](const std::string& interface, const fs::path& node) {
     if (interface.rfind(usb_name + ":", 0) != 0) return;
     const std::string node_name = node.filename().string();
-    nodes.push_back({node_name, "/dev/" + node_name, read_line(node / "name"), read_int(node / "index", 0), false});
+    nodes.push_back({node_name, "/dev/" + node_name, sysfs_line(node / "name"), read_int(node / "index", 0), false});
   });
   std::sort(nodes.begin(), nodes.end(), [](const VideoNode& a, const VideoNode& b) {
     return a.index != b.index ? a.index < b.index : a.name < b.name;

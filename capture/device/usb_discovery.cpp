@@ -5,22 +5,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 
+#include "capture/device/sysfs_line.hpp"
 #include "core/error.hpp"
 #include "core/text/format.hpp"
 #include "core/text/parse_number.hpp"
 
 namespace haptex::capture {
 namespace {
-
-std::string read_line(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  return line;
-}
 
 std::string descriptor_string(libusb_device_handle* handle, std::uint8_t index) {
   if (!handle || index == 0) return {};
@@ -31,9 +24,9 @@ std::string descriptor_string(libusb_device_handle* handle, std::uint8_t index) 
 
 void fill_strings(libusb_device* device, const libusb_device_descriptor& d, const std::string& sysfs_root, UsbDevice& out) {
   const std::filesystem::path dir = std::filesystem::path(sysfs_root) / "bus/usb/devices" / out.sysfs_name();
-  out.manufacturer = read_line(dir / "manufacturer");
-  out.product = read_line(dir / "product");
-  out.serial = read_line(dir / "serial");
+  out.manufacturer = sysfs_line(dir / "manufacturer");
+  out.product = sysfs_line(dir / "product");
+  out.serial = sysfs_line(dir / "serial");
   if (!out.product.empty() || (d.iProduct == 0 && d.iSerialNumber == 0)) return;
   libusb_device_handle* handle = nullptr;
   if (libusb_open(device, &handle) != 0) return;  // no permission: the IDs still identify known sensors
@@ -46,7 +39,7 @@ void fill_strings(libusb_device* device, const libusb_device_descriptor& d, cons
 // A positive number in a sysfs file, or nullopt: a missing file, or one holding anything else
 // (wireless USB's "53.3-480", a truncated read) is unknown, never an error.
 std::optional<double> read_positive(const std::filesystem::path& path) {
-  const std::optional<double> value = text::parse_number(read_line(path));
+  const std::optional<double> value = text::parse_number(sysfs_line(path));
   if (!value || !std::isfinite(*value) || *value <= 0) return std::nullopt;
   return value;
 }

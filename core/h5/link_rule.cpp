@@ -17,8 +17,6 @@ herr_t add_name(hid_t, const char* name, const Info*, void* names) {
   return 0;
 }
 
-std::string joined(const std::string& path, const std::string& name) { return path == "/" ? "/" + name : path + "/" + name; }
-
 // Attributes (and the values of dataset `object`) holding object references: links in all but name.
 void reference_faults(hid_t object, bool dataset, const std::string& path, const std::string& file, LinkReport& report) {
   if (dataset) {
@@ -42,7 +40,7 @@ void reference_faults(hid_t object, bool dataset, const std::string& path, const
 
 void collect(hid_t group, const std::string& path, const std::string& file, CopiedObjects& seen, LinkReport& report) {
   for (const std::string& name : link_names(group, path, file)) {
-    const std::string member = joined(path, name);
+    const std::string member = member_path(path, name);
     ++report.links;
     H5O_info_t info;
     if (const std::optional<LinkFault> fault = follow_link(group, name, member, file, seen, info)) {
@@ -63,6 +61,10 @@ void collect(hid_t group, const std::string& path, const std::string& file, Copi
 }
 
 }  // namespace
+
+std::string member_path(const std::string& group_path, const std::string& name) {
+  return group_path == "/" ? "/" + name : group_path + "/" + name;
+}
 
 std::vector<std::string> link_names(hid_t group, const std::string& group_path, const std::string& file) {
   // One pass: looking each name up by its index (H5Lget_name_by_idx) builds the group's sorted name

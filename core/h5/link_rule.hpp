@@ -22,6 +22,9 @@ struct LinkFault {
   std::string what, fix;
 };
 
+// The path of member `name` of the group at `group_path` ("/name" at the root), for messages.
+std::string member_path(const std::string& group_path, const std::string& name);
+
 // The names of a group's links, in name order; throws haptex::Error (bad_input) naming `file` and
 // `group_path` when they cannot be listed.
 std::vector<std::string> link_names(hid_t group, const std::string& group_path, const std::string& file);

@@ -18,7 +18,6 @@
 namespace haptex::h5 {
 namespace {
 
-std::string joined(const std::string& path, const std::string& name) { return path == "/" ? "/" + name : path + "/" + name; }
 
 // Whether values of the type hold pointers to memory HDF5 allocates (variable-length sequences or strings).
 bool variable_length(hid_t type) {
@@ -139,7 +138,7 @@ struct Copy {
                     target_file + ":" + target_path));
     attributes(from.get(), to.get(), source_path, target_path);
     for (const std::string& member : link_names(from.get(), source_path, source_file))
-      object(from.get(), member, to.get(), member, joined(source_path, member), joined(target_path, member));
+      object(from.get(), member, to.get(), member, member_path(source_path, member), member_path(target_path, member));
   }
 
   void object(hid_t from_parent, const std::string& name, hid_t to_parent, const std::string& new_name,
@@ -165,7 +164,7 @@ void Group::copy_from(const Group& source, std::string_view name, std::string_vi
 
 void Group::copy_from(const Group& source, std::string_view name, std::string_view new_name, CopiedObjects& copied) {
   Copy copy{source.file(), file_, copied};
-  copy.object(source.id(), std::string(name), id(), std::string(new_name), joined(source.object_path(), std::string(name)),
+  copy.object(source.id(), std::string(name), id(), std::string(new_name), member_path(source.object_path(), std::string(name)),
               child_path(new_name));
 }
 
