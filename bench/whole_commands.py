@@ -43,16 +43,17 @@ def opencv_loop(folder):
     frames = 0
     for path in sorted(glob.glob(os.path.join(folder, "**", "*.avi"), recursive=True)):
         video = cv2.VideoCapture(path)
-        grey, first = [], []
+        grey, first, reference = [], [], None
         while True:
             ok, frame = video.read()
             if not ok:
                 break
             g = cv2.GaussianBlur(cv2.cvtColor(frame, cv2.COLOR_BGR2GRAY), (5, 5), 0)
-            if len(first) < 5:
+            if reference is None:  # the median of the first five frames, taken once
                 first.append(g)
-            reference = np.median(np.stack(first), axis=0).astype(np.uint8) if len(first) == 5 else g
-            grey.append(float(cv2.absdiff(g, reference).sum()))
+                if len(first) == 5:
+                    reference = np.median(np.stack(first), axis=0).astype(np.uint8)
+            grey.append(float(cv2.absdiff(g, g if reference is None else reference).sum()))
             frames += 1
         int(np.argmax(grey))
     print(frames)
