@@ -38,7 +38,7 @@ void check_channels(const Recording& recording, const std::function<std::string(
   // After the units are applied, every sample must still fit the float32 the recordings file stores.
   for (const auto& [channel, samples] : recording.channels)
     for (std::size_t i = 0; i < samples.size(); ++i)
-      if (!std::isfinite(samples[i]) || std::abs(samples[i]) > text::kLargestStored)
+      if (!text::within_float_range(samples[i]))
         throw input_error(file, where(channel) + ", sample " + std::to_string(i + 1),
                           text::format("%g is beyond 3.4e38, the largest magnitude of the 32-bit floats the recordings file stores",
                                        samples[i]),

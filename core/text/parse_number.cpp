@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
-#include <regex>
+#include <limits>
 #include <cmath>
 
 namespace haptex::text {
@@ -45,8 +45,10 @@ std::optional<double> plain_short_decimal(std::string_view text) {
 
 std::optional<double> parse_number(std::string_view text) {
   text = trim(text);
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-  if (text.empty()) return std::nullopt;
+  const bool plus = !text.empty() && text.front() == '+';
+  if (plus) text.remove_prefix(1);
+  // One sign: from_chars would read the '-' of "+-1" (review 16, F2).
+  if (text.empty() || (plus && (text.front() == '-' || text.front() == '+'))) return std::nullopt;
   if (const std::optional<double> quick = plain_short_decimal(text)) return quick;
   double value = 0;
   auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -54,11 +56,31 @@ std::optional<double> parse_number(std::string_view text) {
   return value;
 }
 
+// Read left to right: std::regex matched these forms recursively, a frame a character, and a format
+// attribute of 50 000 digits overflowed the stack (review 16, F4).
 bool is_plain_decimal(std::string_view text, Decimal kind) {
-  static const std::regex whole("[+-]?(0|[1-9][0-9]*)"), natural("\\+?(0|[1-9][0-9]*)"),
-      real("[+-]?((0|[1-9][0-9]*)(\\.[0-9]*)?|\\.[0-9]+)([eE][+-]?[0-9]+)?");
-  const std::regex& form = kind == Decimal::whole ? whole : kind == Decimal::natural ? natural : real;
-  return std::regex_match(text.begin(), text.end(), form);
+  std::size_t i = 0;
+  const auto digits = [&] {
+    const std::size_t from = i;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+    return i - from;
+  };
+  if (i < text.size() && (text[i] == '+' || (text[i] == '-' && kind != Decimal::natural))) ++i;
+  const std::size_t first = i, integer = digits();
+  if (integer > 1 && text[first] == '0') return false;  // a leading zero
+  if (kind != Decimal::real) return integer > 0 && i == text.size();
+  std::size_t fraction = 0;
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    fraction = digits();
+  }
+  if (integer == 0 && fraction == 0) return false;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == text.size();
 }
 
 std::optional<long long> parse_whole_number(std::string_view text) {
@@ -71,10 +93,19 @@ std::optional<long long> parse_whole_number(std::string_view text) {
   return value;
 }
 
+bool within_float_range(double value) {
+  // Half a unit in the last place above FLT_MAX: from there on, a value rounds to infinity.
+  constexpr double kRoundsToInfinity = 3.4028235677973366e38;
+  return std::isfinite(value) && std::abs(value) < kRoundsToInfinity;
+}
+
+bool fits_stored_float(double value) {
+  return value == 0 || (within_float_range(value) && std::abs(float(value)) >= std::numeric_limits<float>::min());
+}
+
 std::optional<double> parse_stored_number(std::string_view text) {
   const std::optional<double> value = parse_number(text);
-  if (!value || !std::isfinite(*value) || std::abs(*value) > kLargestStored) return std::nullopt;
-  if (*value != 0 && std::abs(*value) < kSmallestStored) return std::nullopt;
+  if (!value || !fits_stored_float(*value)) return std::nullopt;
   return value;
 }
 
@@ -82,7 +113,7 @@ std::string describe_bad_number(std::string_view text, bool) {
   const std::string quoted = "'" + std::string(text.substr(0, 40)) + (text.size() > 40 ? "...'" : "'");
   if (const std::optional<double> value = parse_number(text)) {
     if (!std::isfinite(*value)) return quoted + " is not a finite number (NaN or Inf)";
-    if (std::abs(*value) > kLargestStored) return quoted + " is beyond 3.4e38, the largest magnitude of the 32-bit floats haptex stores";
+    if (!within_float_range(*value)) return quoted + " is beyond 3.4e38, the largest magnitude of the 32-bit floats haptex stores";
     return quoted + " is under 1.2e-38, the least magnitude the 32-bit floats haptex stores keep with all its digits (write 0 for none)";
   }
   std::string_view t = trim(text);

@@ -25,13 +25,16 @@ struct FrameSize {
   long long width = 0, height = 0;
 };
 std::optional<FrameSize> parse_frame_size(std::string_view text);
-// Values haptex stores become 32-bit floats (recordings, datasets, models): a magnitude over the
-// largest one would be stored as inf, so readers refuse it.
-inline constexpr double kLargestStored = 3.4028234663852886e38;
 // The least magnitude but 0 a 32-bit float holds with all its digits (FLT_MIN): smaller ones are
 // subnormal, stored with their digits lost or as 0, so readers refuse them as they refuse one too large.
 inline constexpr double kSmallestStored = 1.1754943508222875e-38;
-// parse_number, for a finite value of kSmallestStored to kLargestStored in magnitude, or 0, only.
+// True when value rounds to a finite 32-bit float: up to FLT_MAX and half a unit in the last place
+// beyond it, so 3.4028235e38, FLT_MAX as float printers write it, does (review 16, F3).
+bool within_float_range(double value);
+// True when value is 0, or rounds to a finite 32-bit float of FLT_MIN or more in magnitude (not to a
+// subnormal one, whose digits are lost): 1.17549435e-38, FLT_MIN as printed, does.
+bool fits_stored_float(double value);
+// parse_number, for a value fits_stored_float takes only.
 std::optional<double> parse_stored_number(std::string_view text);
 // Why text is no number parse_stored_number takes, for messages: "'abc' is not a number", "'1e-400' is
 // out of range for a 64-bit float ...", "'nan' is not a finite number (NaN or Inf)", "'1e39' is beyond

@@ -70,13 +70,16 @@ TEST_F(ConvertedFile, InfoSaysWhyAFormatCannotBeRead) {
       {"recordings/9", "written by a newer haptex: this one reads recordings/1"},
       {"recordings/01", "no version haptex writes: the attribute was edited or damaged"},
       {"dataset/3", "an older version: this haptex reads dataset/4, which haptex align writes"},
-      {"spectra/1", "no kind of file haptex writes"}};
+      {"spectra/1", "no kind of file haptex writes"},
+      // Review 16, F4: a version of 50 000 digits overflowed the stack of the pattern match.
+      {"recordings/" + std::string(50000, '9'), "no version haptex writes: the attribute was edited or damaged"}};
   for (const auto& [format, remark] : cases) {
     const CommandResult edit = run_python({"-c", "import h5py, sys; h5py.File(sys.argv[1], 'a').attrs['haptex_format'] = sys.argv[2]",
                                            file_, format});
     ASSERT_EQ(edit.exit_code, 0) << edit.err;
     const CommandResult text = run_haptex({"info", file_}), json = run_haptex({"info", file_, "--json"});
     ASSERT_EQ(text.exit_code, 0) << text.err;
+    ASSERT_EQ(json.exit_code, 0) << json.err;
     const std::string shown = "format   " + format + (remark.empty() ? "," : " (" + remark + "),");
     EXPECT_NE(text.out.find(shown), std::string::npos) << text.out;
     const nlohmann::json doc = nlohmann::json::parse(json.out);
