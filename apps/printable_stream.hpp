@@ -3,8 +3,9 @@
 // name taken from a file or the command line may hold a terminal's escape sequences, which must not
 // reach the terminal. Every character text::acts_on_text names (controls but newline and tab; the
 // format characters that reorder or break text, U+202E RIGHT-TO-LEFT OVERRIDE among them) is written
-// as \xHH or \uHHHH; everything else passes unchanged (JSON output holds no control: nlohmann
-// escapes them itself). A UTF-8 character is held until its last byte has come.
+// as \xHH or \uHHHH (DEL as \u007f, a character beyond U+FFFF as a surrogate pair \uHHHH\uHHHH, so
+// that JSON output stays JSON); everything else passes unchanged (JSON output holds no control below
+// 0x20: nlohmann escapes them itself). A UTF-8 character is held until its last byte has come.
 #include <ostream>
 #include <streambuf>
 #include <string>

@@ -63,7 +63,8 @@ XmlFile::XmlFile(std::string source, std::vector<char> bytes, std::string sha256
   // An element's first piece of text is its value, not a node of its own: half the nodes (and the
   // memory they take) of a recording of a sample per element (issue 37).
   const unsigned flags =
-      pugi::parse_minimal | pugi::parse_escapes | pugi::parse_doctype | pugi::parse_cdata | pugi::parse_embed_pcdata;
+      pugi::parse_minimal | pugi::parse_escapes | pugi::parse_doctype | pugi::parse_cdata | pugi::parse_embed_pcdata |
+      pugi::parse_comments | pugi::parse_pi;  // so that text() sees where pieces of text were cut
   const pugi::xml_parse_result result = doc_.load_buffer_inplace(bytes_.data(), bytes_.size(), flags);
   if (!result)
     throw input_error(source_, "line " + std::to_string(line_of(result.offset)),
@@ -114,10 +115,21 @@ pugi::xml_node XmlFile::require(const pugi::xml_node& parent, const std::string&
 
 std::string XmlFile::text(const pugi::xml_node& node) const {
   std::string text = node.value();  // the first piece of text, kept in the element (parse_embed_pcdata)
+  // pugixml drops a piece of text that is only white space, which it is when it stands between two
+  // comments, processing instructions or CDATA sections ("1<!-- --> <!-- -->5" is "1 5", not "15":
+  // review 16, F1). Such a gap inside the text, with text before and after it, is refused.
+  bool markup_before = false, gap = false;
   for (const pugi::xml_node& part : node.children()) {
     if (part.type() == pugi::node_element)
       throw error(node, "holds element <" + std::string(part.name()) + ">, where text is expected", "Write the text alone");
-    if (part.type() == pugi::node_pcdata || part.type() == pugi::node_cdata) text += part.value();
+    const bool pcdata = part.type() == pugi::node_pcdata, cdata = part.type() == pugi::node_cdata;
+    gap = gap || (markup_before && !pcdata && !trim(text).empty());
+    if ((pcdata || cdata) && !trim(part.value()).empty() && gap)
+      throw error(node, "holds text split by comments, processing instructions or CDATA sections with two of them side by side, "
+                        "where white space between them cannot be told from none",
+                  "Write the text as one piece");
+    if (pcdata || cdata) text += part.value();
+    markup_before = !pcdata;
   }
   return std::string(trim(text));
 }

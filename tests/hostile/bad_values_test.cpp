@@ -533,6 +533,23 @@ TEST(BadValues, InfoShowsControlCharactersEscaped) {
   EXPECT_NE(r.out.find("\\u202eRLO \\u2028LS \\u0085NEL \\u00adSHY \\U000e0041TAG"), std::string::npos) << r.out;
 }
 
+// Review 16, F5: DEL went out as \x7f (and a tag character as \U000e0041), which JSON does not have,
+// so `info --json` printed a document no JSON reader takes. The name now comes back as stored.
+TEST(BadValues, JsonOutputKeepsEveryCharacterOfANameAsJson) {
+  const TempDir d;
+  const std::string dataset = d.file("d.h5");
+  fs::copy_file(small_pipeline().dataset, dataset);
+  const std::string material = material_ids(dataset).front();
+  const std::string name = "felt\x7f \x1b[2J \u202e \u0085 \U000E0041 end";
+  Edit(dataset).group("materials/" + material).set_attr("name", name);
+  const CommandResult r = run_haptex({"info", dataset, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find('\x7f'), std::string::npos) << "a raw DEL reached the terminal";
+  nlohmann::json doc;
+  ASSERT_NO_THROW(doc = nlohmann::json::parse(r.out)) << r.out;
+  EXPECT_EQ(doc["materials"][0]["name"], name);
+}
+
 // Review 15, R3: a dataset compressed with a filter haptex's HDF5 lacks (h5py's lzf) was called
 // truncated or damaged ("copy it again"). It is named, with how to store it instead.
 TEST(BadValues, ACompressionFilterHDF5LacksIsNamed) {
@@ -719,6 +736,24 @@ TEST(BadValues, AnXmlValueInPiecesIsReadWholeAndMarkupInsideIsRefused) {
                                        .open_dataset("materials/" + material_ids(d.file("r.h5")).front() + "/recordings/0/accel_xyz")
                                        .read<float>();
   EXPECT_FLOAT_EQ(accel.at(0), 500.f) << "500 m/s^2, the pieces joined";
+  // Review 16, F1: white space between two comments (or PIs, or CDATA sections) is dropped by the XML
+  // reader, so "1<!-- --> <!-- -->5" (XML: "1 5", no number) was stored as 15, and a unit "m<!-- -->
+  // <!-- -->N" read as mN divided every force by 1000.
+  for (const std::string& split : {std::string("1<!-- --> <!-- -->5"), std::string("-<?a?> <?b?>1"), std::string("<![CDATA[1]]> <![CDATA[5]]>"),
+                                   std::string("1<!-- --><![CDATA[5]]>")}) {
+    SCOPED_TRACE(split);
+    const std::string file = write("gap_1.xml", split);
+    expect_refusal(run_haptex({"convert", "hatt", file, "-o", d.file("g.h5")}), {file, "side by side", "Write the text as one piece"});
+  }
+  const std::string unit = d.file("unit_1.xml");
+  test::write_text_file(unit, std::string(xml).replace(xml.find("<ForceUnits>N</ForceUnits>"), 26, "<ForceUnits>m<!-- --> <!-- -->N</ForceUnits>"));
+  expect_refusal(run_haptex({"convert", "hatt", unit, "-o", d.file("g.h5")}), {unit, "<ForceUnits>", "side by side"});
+  EXPECT_FALSE(fs::exists(d.file("g.h5")));
+  for (const std::string& fine : {std::string("<!-- --> <!-- -->5"), std::string("5<!-- --> <!-- -->"), std::string(" <![CDATA[5]]> ")}) {
+    SCOPED_TRACE(fine);
+    const std::string file = write("fine_1.xml", fine);
+    EXPECT_EQ(run_haptex({"convert", "hatt", file, "-o", d.file("f.h5"), "--force"}).exit_code, 0) << "white space at either end is trimmed anyway";
+  }
 }
 
 // Review 7: a CSV column named twice was read from its first copy without a word (Python's
