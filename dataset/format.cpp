@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "core/format_version.hpp"
 #include "core/h5/link_rule.hpp"
+#include "core/text/parse_number.hpp"
 
 namespace haptex::dataset {
 namespace {
@@ -49,12 +50,23 @@ std::string format_list(std::span<const Kind> kinds, std::string_view last_joint
 }
 
 std::string format_remark(std::string_view found) {
+  const auto digits = [](std::string_view t) { return !t.empty() && t.find_first_not_of("0123456789") == std::string_view::npos; };
   for (const Format& f : kFormats) {
-    if (family_of(found) != f.family) continue;
     const std::string current = format_name(f.kind);
     if (found == current) return "";
-    if (!is_format_name(found)) return "no version haptex writes: the attribute was edited or damaged";
-    if (is_newer_version(found, current)) return "written by a newer haptex: this one reads " + current;
+    if (family_of(found) != f.family) {
+      // " recordings/1" or "Recordings/1": one of haptex's kinds, edited (review 16, F7).
+      std::string family(text::trim(family_of(found)));
+      for (char& c : family) c = char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+      if (family == f.family)
+        return "no version haptex writes: the attribute was edited or damaged";
+      continue;
+    }
+    const std::string_view version = found.substr(f.family.size() + 1);
+    if (!is_format_name(found) && !(digits(version) && version.front() != '0'))
+      return "no version haptex writes: the attribute was edited or damaged";
+    // Any version above this one, 2^31 and beyond too (F7), came from a newer haptex.
+    if (version.size() > 9 || is_newer_version(found, current)) return "written by a newer haptex: this one reads " + current;
     return "an older version: this haptex reads " + current + ", which " + std::string(f.written_by) + " writes";
   }
   return "no kind of file haptex writes";

@@ -71,8 +71,12 @@ TEST_F(ConvertedFile, InfoSaysWhyAFormatCannotBeRead) {
       {"recordings/01", "no version haptex writes: the attribute was edited or damaged"},
       {"dataset/3", "an older version: this haptex reads dataset/4, which haptex align writes"},
       {"spectra/1", "no kind of file haptex writes"},
-      // Review 16, F4: a version of 50 000 digits overflowed the stack of the pattern match.
-      {"recordings/" + std::string(50000, '9'), "no version haptex writes: the attribute was edited or damaged"}};
+      // Review 16, F4: a version of 50 000 digits overflowed the stack of the pattern match; F7: any
+      // version above this haptex's is newer, 2^31 and beyond too, and a kind edited is a kind edited.
+      {"recordings/" + std::string(50000, '9'), "written by a newer haptex: this one reads recordings/1"},
+      {"recordings/2147483648", "written by a newer haptex: this one reads recordings/1"},
+      {" recordings/1", "no version haptex writes: the attribute was edited or damaged"},
+      {"Recordings/1", "no version haptex writes: the attribute was edited or damaged"}};
   for (const auto& [format, remark] : cases) {
     const CommandResult edit = run_python({"-c", "import h5py, sys; h5py.File(sys.argv[1], 'a').attrs['haptex_format'] = sys.argv[2]",
                                            file_, format});

@@ -756,6 +756,24 @@ TEST(BadValues, AnXmlValueInPiecesIsReadWholeAndMarkupInsideIsRefused) {
   }
 }
 
+// Review 16, F8: a lone CR ends a line in XML (classic Mac line ends), but messages counted only LFs
+// and named line 1 for every place.
+TEST(BadValues, AnXmlFileWithCarriageReturnLineEndsIsToldByLine) {
+  const TempDir d;
+  test::SampleRecordingSpec spec;
+  spec.seconds = 0.5;
+  std::string xml = test::sample_recording_xml(spec);
+  const std::size_t value = xml.find("<value>", xml.find("<accelX")) + 7;
+  xml.replace(value, xml.find("</value>", value) - value, "1.2.3");
+  const std::string line = std::to_string(std::count(xml.begin(), xml.begin() + std::ptrdiff_t(value), '\n') + 1);
+  for (const std::string& end : {std::string("\r"), std::string("\r\n")}) {
+    std::string ended;
+    for (const char c : xml) ended += c == '\n' ? end : std::string(1, c);
+    test::write_text_file(d.file("cr_1.xml"), ended);
+    expect_refusal(run_haptex({"convert", "hatt", d.file("cr_1.xml"), "-o", d.file("r.h5")}), {"line " + line + " ", "'1.2.3'"});
+  }
+}
+
 // Review 7: a CSV column named twice was read from its first copy without a word (Python's
 // csv.DictReader keeps the last), a blank line between rows was passed over, and 1e-40 was stored
 // with its digits lost.
