@@ -62,7 +62,7 @@ std::string format_remark(std::string_view found) {
         return "no version haptex writes: the attribute was edited or damaged";
       continue;
     }
-    const std::string_view version = found.substr(f.family.size() + 1);
+    const std::string_view version = found.size() > f.family.size() ? found.substr(f.family.size() + 1) : std::string_view();
     if (!is_format_name(found) && !(digits(version) && version.front() != '0'))
       return "no version haptex writes: the attribute was edited or damaged";
     // Any version above this one, 2^31 and beyond too (F7), came from a newer haptex.

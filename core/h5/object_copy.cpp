@@ -18,7 +18,6 @@
 namespace haptex::h5 {
 namespace {
 
-
 // Whether values of the type hold pointers to memory HDF5 allocates (variable-length sequences or strings).
 bool variable_length(hid_t type) {
   return H5Tdetect_class(type, H5T_VLEN) > 0 || (H5Tget_class(type) == H5T_STRING && H5Tis_variable_str(type) > 0);

@@ -76,7 +76,9 @@ TEST_F(ConvertedFile, InfoSaysWhyAFormatCannotBeRead) {
       {"recordings/" + std::string(50000, '9'), "written by a newer haptex: this one reads recordings/1"},
       {"recordings/2147483648", "written by a newer haptex: this one reads recordings/1"},
       {" recordings/1", "no version haptex writes: the attribute was edited or damaged"},
-      {"Recordings/1", "no version haptex writes: the attribute was edited or damaged"}};
+      {"Recordings/1", "no version haptex writes: the attribute was edited or damaged"},
+      {"recordings", "no version haptex writes: the attribute was edited or damaged"},
+      {"recordings/", "no version haptex writes: the attribute was edited or damaged"}};
   for (const auto& [format, remark] : cases) {
     const CommandResult edit = run_python({"-c", "import h5py, sys; h5py.File(sys.argv[1], 'a').attrs['haptex_format'] = sys.argv[2]",
                                            file_, format});
