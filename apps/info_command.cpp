@@ -25,7 +25,8 @@ class InfoCommand : public Command {
   int run(const GlobalOptions& global) override {
     const info::FileSummary summary = info::summarize_file(file_);
     if (global.json) {
-      std::cout << info::to_json(summary).dump(2) << "\n";
+      // A format attribute that is not UTF-8 is shown, not refused (docs/info.md): as U+FFFD in JSON.
+      std::cout << info::to_json(summary).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
       return 0;
     }
     print(summary, global.verbose > 0);

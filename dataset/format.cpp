@@ -72,17 +72,21 @@ std::string format_remark(std::string_view found) {
   return "no kind of file haptex writes";
 }
 
-std::string read_format(const h5::File& file) {
+namespace {
+
+std::string format_attribute(const h5::File& file, std::string (h5::Node::*read)(std::string_view) const) {
   const h5::Group root = file.root();
   if (!root.has_attr(h5::kFormatAttribute))
     throw input_error(file.path(), "/", "no haptex_format attribute: the file was not written by haptex",
                       "Give a file haptex wrote (haptex info FILE tells what a file is)");
-  try {
-    return root.attr_string(h5::kFormatAttribute);
-  } catch (const Error&) {
-    throw input_error(file.path(), "/@haptex_format", "is not a string", "Write the file again with haptex");
-  }
+  return (root.*read)(h5::kFormatAttribute);
 }
+
+}  // namespace
+
+std::string read_format(const h5::File& file) { return format_attribute(file, &h5::Node::attr_string); }
+
+std::string read_format_bytes(const h5::File& file) { return format_attribute(file, &h5::Node::attr_bytes); }
 
 namespace {
 

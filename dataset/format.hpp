@@ -35,8 +35,10 @@ std::string format_list(std::span<const Kind> kinds, std::string_view last_joint
 std::string format_remark(std::string_view found);
 
 // The file's /@haptex_format. Throws haptex::Error (bad_input) naming the file when the attribute
-// is missing (not a haptex file) or not a string.
+// is missing (not a haptex file), not a string or not UTF-8.
 std::string read_format(const h5::File& file);
+// The same attribute's bytes as stored, UTF-8 or not: for showing a file haptex cannot read (info).
+std::string read_format_bytes(const h5::File& file);
 
 // Opens path and checks it is a file of `kind` in the current version whose every object keeps the
 // link rule (core/h5/link_rule.hpp). Throws haptex::Error (bad_input) naming the file and

@@ -72,7 +72,7 @@ FileSummary summarize_file(const std::string& path) {
   FileSummary summary;
   summary.path = path;
   summary.bytes = std::filesystem::file_size(path);
-  summary.format = dataset::read_format(file);
+  summary.format = dataset::read_format_bytes(file);
   summary.format_remark = dataset::format_remark(summary.format);
   summary.version = optional_string(root, "haptex_version");
   summary.created_utc = optional_string(root, "created_utc");

@@ -14,12 +14,16 @@
 namespace haptex::h5 {
 namespace {
 
-Handle utf8_string_type() {
+// Variable-length strings in `cset`. Reads use the file's own character set: HDF5 converts no string
+// between ASCII and UTF-8, and older h5py and other tools write ASCII (review 16, F6).
+Handle string_type(H5T_cset_t cset = H5T_CSET_UTF8) {
   Handle type(H5Tcopy(H5T_C_S1));
   H5Tset_size(type.get(), H5T_VARIABLE);
-  H5Tset_cset(type.get(), H5T_CSET_UTF8);
+  H5Tset_cset(type.get(), cset);
   return type;
 }
+
+Handle string_type_of(hid_t stored) { return string_type(H5Tget_cset(stored)); }
 
 // Object creation without timestamps, so the same content gives the same bytes.
 Handle untimed_creation_list(hid_t list_class) {
@@ -65,7 +69,7 @@ void Node::set_attr(std::string_view name, std::int64_t value) {
 
 void Node::set_attr(std::string_view name, std::string_view value) {
   Handle space(H5Screate(H5S_SCALAR));
-  Handle type = utf8_string_type();
+  Handle type = string_type();
   const std::string copy(value);
   const char* pointer = copy.c_str();
   write_attr(name, type.get(), space.get(), &pointer);
@@ -131,14 +135,14 @@ std::int64_t Node::attr_int(std::string_view name) const {
   return value;
 }
 
-std::string Node::attr_string(std::string_view name) const {
+std::string Node::attr_bytes(std::string_view name) const {
   Handle attr = open_scalar_attr(name);
   Handle type(H5Aget_type(attr.get()));
   if (H5Tget_class(type.get()) != H5T_STRING)
     throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' is not a string",
                       "Rewrite the file with haptex");
   if (H5Tis_variable_str(type.get()) > 0) {
-    Handle memory = utf8_string_type();
+    Handle memory = string_type_of(type.get());
     char* text = nullptr;
     {
       const BoundedCall bounded(file_, object_path_ + " attribute '" + std::string(name) + "'");
@@ -147,7 +151,6 @@ std::string Node::attr_string(std::string_view name) const {
     std::string value = text ? text : "";
     Handle space(H5Aget_space(attr.get()));
     H5Dvlen_reclaim(memory.get(), space.get(), H5P_DEFAULT, &text);
-    text::require_utf8(value, file_, object_path_ + " attribute '" + std::string(name) + "'");
     return value;
   }
   std::string value(H5Tget_size(type.get()), '\0');  // fixed-length strings, as other tools write them
@@ -158,6 +161,11 @@ std::string Node::attr_string(std::string_view name) const {
     throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' holds a NUL byte inside its text",
                       "Write the attribute without NUL bytes (haptex writes names as UTF-8 text)");
   value.resize(end);
+  return value;
+}
+
+std::string Node::attr_string(std::string_view name) const {
+  std::string value = attr_bytes(name);
   text::require_utf8(value, file_, object_path_ + " attribute '" + std::string(name) + "'");
   return value;
 }
@@ -291,7 +299,8 @@ void Dataset::read_raw(hid_t memory_type, void* out) const {
 }
 
 std::vector<std::string> Dataset::read_strings() const {
-  Handle memory = utf8_string_type();
+  Handle stored(H5Dget_type(id()));
+  Handle memory = string_type_of(stored.get());
   std::vector<char*> pointers(elements_to_read(sizeof(char*)), nullptr);
   {
     const BoundedCall bounded(file_, object_path_);
@@ -414,7 +423,7 @@ Dataset Group::write_strings(std::string_view name, const std::vector<std::strin
   const std::string path = child_path(name);
   const hsize_t dims[1] = {values.size()};
   Handle space(H5Screate_simple(1, dims, nullptr));
-  Handle type = utf8_string_type();
+  Handle type = string_type();
   Handle list = untimed_creation_list(H5P_DATASET_CREATE);
   Handle dataset(check(H5Dcreate2(id(), std::string(name).c_str(), type.get(), space.get(), H5P_DEFAULT, list.get(),
                                   H5P_DEFAULT),

@@ -52,7 +52,10 @@ class Node {
   // Readers throw haptex::Error (bad_input) naming the object when the attribute is missing or of another kind.
   double attr_double(std::string_view name) const;
   std::int64_t attr_int(std::string_view name) const;
-  std::string attr_string(std::string_view name) const;
+  std::string attr_string(std::string_view name) const;  // UTF-8 text, else an error naming the byte
+  // A string attribute's bytes as stored, ASCII or UTF-8, valid or not: for showing what a file holds
+  // (haptex info escapes what is not printable); readers that use the text take attr_string.
+  std::string attr_bytes(std::string_view name) const;
   std::vector<double> attr_doubles(std::string_view name) const;
   // The attribute as T (double, std::int64_t or std::string), or nullopt when it is missing or does
   // not read as T: for checks and summaries that report such an attribute themselves.

@@ -94,6 +94,39 @@ TEST_F(ConvertedFile, InfoSaysWhyAFormatCannotBeRead) {
   }
 }
 
+// Review 16, F6: a format written as an ASCII string (older h5py, other HDF5 tools) is read, and one
+// whose bytes are not UTF-8 is shown escaped with its remark, not refused as "not a string".
+TEST_F(ConvertedFile, InfoShowsAFormatInAnyCharacterSet) {
+  if (!python_has("h5py")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const std::string write =
+      "import h5py, os, sys; f = h5py.File(sys.argv[1], 'a'); value = os.fsencode(sys.argv[3]);\n"
+      "kind = {'ascii': h5py.string_dtype('ascii'), 'fixed': 'S%d' % len(value)}[sys.argv[2]]\n"
+      "f.attrs.create('haptex_format', value, dtype=kind)";
+  struct Case {
+    std::string kind, format, shown, remark;
+  };
+  const std::vector<Case> cases = {
+      {"ascii", "recordings/1", "recordings/1", ""},
+      {"ascii", "recordings/\xff", "recordings/\\xff", "no version haptex writes: the attribute was edited or damaged"},
+      {"fixed", "recordings/\xff\xfe", "recordings/\\xff\\xfe", "no version haptex writes: the attribute was edited or damaged"}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.kind + " " + c.shown);
+    const CommandResult edit = run_python({"-c", write, file_, c.kind, c.format});
+    ASSERT_EQ(edit.exit_code, 0) << edit.err;
+    const CommandResult text = run_haptex({"info", file_}), json = run_haptex({"info", file_, "--json"});
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    ASSERT_EQ(json.exit_code, 0) << json.err;
+    EXPECT_NE(text.out.find("format   " + c.shown + (c.remark.empty() ? "," : " (" + c.remark + "),")), std::string::npos) << text.out;
+    const nlohmann::json doc = nlohmann::json::parse(json.out);
+    EXPECT_NO_THROW(json::validate(doc, "info.schema.json", "info output"));
+    EXPECT_EQ(doc.value("format_remark", ""), c.remark);
+  }
+  // The current format in ASCII is the current format for every reader, not only info.
+  ASSERT_EQ(run_python({"-c", write, file_, "ascii", "recordings/1"}).exit_code, 0);
+  const CommandResult stroke = run_haptex({"trajectory", file_, "--material", "cork", "-o", out_.file("stroke.csv")});
+  EXPECT_EQ(stroke.exit_code, 0) << stroke.err;
+}
+
 TEST_F(ConvertedFile, InfoRefusesFilesHaptexDidNotWrite) {
   write_text_file(out_.file("plain.txt"), "hello");
   const CommandResult r = run_haptex({"info", out_.file("plain.txt")});
