@@ -150,7 +150,9 @@ class FirstReading {
         pool.calibration.images.push_back(tail_.images[i]);
         pool.calibration.indices.push_back(tail_.indices[i]);
       }
-    start_->take_thresholds(reference_of(pool, score_, true));
+    // A contact held over the second after the reference holds at the end too, as a rule: the
+    // reference's own level stands (ContactReference::held_contact).
+    if (!start_->held_contact()) start_->take_thresholds(reference_of(pool, score_, true));
   }
 
   const ExtractSettings& settings_;
@@ -405,6 +407,9 @@ SourceScores score_from(FrameSource& source, const ExtractSettings& settings, st
     if (end.steady()) use_end(source, first, std::move(end), unsteadiness(start), out);
     else use_least_contact(source, first, std::move(end), out);
   }
+  if (out.contact->held_contact())
+    out.reference_note += "; the frames after it hold a steady contact (a grasp from the first second), so the "
+                          "level is the reference frames' own";
   if (first_live > 0)
     out.reference_note += (first_live == 1 ? "; frame 0 is a stale start-up frame"
                                            : "; frames 0-" + std::to_string(first_live - 1) + " are stale start-up frames") +

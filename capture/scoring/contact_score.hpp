@@ -108,9 +108,12 @@ class ContactReference {
   // no-contact frames `later` (ContactReference's rules above), leaving out those that score over the
   // trigger their quietest quarter sets: a press in up to three quarters of them. Steadiness is judged
   // by the leave-one-out level of those quiet frames (the copies' own is near 0). With fewer than five
-  // quiet frames, the reference frames' own thresholds, and no trend.
+  // quiet frames, the reference frames' own thresholds, and no trend. Quiet frames that all differ
+  // from the reference far beyond their noise hold a contact (a grasp held from the first second):
+  // the level is then what the reference frames show (held_contact()).
   static ContactReference from_calibration(const std::vector<cv::Mat>& frames, const std::vector<cv::Mat>& later,
                                            const ScoreSettings& settings = {});
+  bool held_contact() const { return held_contact_; }
   // The reference frames were a steady no-contact stretch: no two in a row count as contact, and
   // they do not change from the first to the last as a press coming or going does.
   bool steady() const { return worst_reference_score_ <= reference_limit_ && !trending(); }
@@ -132,6 +135,7 @@ class ContactReference {
   DriftFit fit_;
   float noise_ = 0, pixel_threshold_ = 0, trigger_ = 0, level_ = 0, spread_ = 0, worst_reference_score_ = 0;
   float reference_limit_ = INFINITY, trend_ = 0, trend_limit_ = INFINITY;
+  bool held_contact_ = false;
 };
 
 }  // namespace haptex::capture

@@ -133,6 +133,26 @@ TEST(WeakFootage, BuiltInStillGelsGiveNoPress) {
   check_no_contact(built_in_pairs(), dir.path().string());
 }
 
+// A gripper that closes within a second of the start and holds to the end (the grasp-and-slip clips
+// of docs/capture.md, "Measured"): every calibration frame after the reference is in contact, and
+// must not set the no-contact level the grasp is judged by.
+TEST(WeakFootage, AGraspHeldToTheEndIsFound) {
+  TempDir dir;
+  PressTiming timing;
+  timing.before = 14, timing.ramp = 3, timing.hold = 100, timing.after = 0;
+  for (const Pair& pair : built_in_pairs())
+    for (int fourcc : {kMpeg4, kMjpg}) {
+      const std::string path = dir.file("held_" + pair.name + (fourcc == kMjpg ? "_mjpg.avi" : "_mp4v.avi"));
+      std::vector<cv::Mat> frames = fixtures::press_sequence(pair.no_contact, pair.pressed, timing);
+      frames.resize(frames.size() - std::size_t(timing.ramp));  // no release: held to the last frame
+      fixtures::write_weak_video(path, frames, pair.no_contact, {}, fourcc);
+      const auto plans = presses_in(path);
+      SCOPED_TRACE(path + ": " + describe(plans));
+      ASSERT_EQ(plans.size(), 1u);
+      EXPECT_GE(plans[0].contact.peak, timing.first_contact());
+    }
+}
+
 TEST(WeakFootage, RealPressesAreFoundWheneverTheyStandThreeTimesAboveTheNoise) {
   const std::vector<Pair> pairs = real_pairs();
   if (pairs.empty()) GTEST_SKIP() << "../shared/data/gelsight is absent";

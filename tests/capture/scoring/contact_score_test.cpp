@@ -168,6 +168,7 @@ TEST(ContactReference, CalibrationTakesTheThresholdsFromLaterFrames) {
   EXPECT_NEAR(c.level(), 0.798f * 2.0f, 0.06f) << "the press in frames 3 and 4 does not move the median";
   EXPECT_FLOAT_EQ(c.trigger(), c.level() + std::max({5 * c.spread(), 0.5f * c.level(), 0.05f}));
   EXPECT_TRUE(c.steady());
+  EXPECT_FALSE(c.held_contact());
   EXPECT_GT(c.score(later[3]), c.trigger() + 2 * (c.trigger() - c.level()));
   ScoreSettings fixed;
   fixed.trigger = 0.4f;
@@ -228,6 +229,42 @@ TEST(ContactReference, CalibrationLeavesOutAPressInMostOfItsFrames) {
   EXPECT_NEAR(c.level(), 0.798f * 2.0f, 0.06f);
   EXPECT_GT(c.score(later[10]), c.trigger()) << "the press is found";
   EXPECT_LT(c.score(later[22]), c.trigger());
+}
+
+// A grasp held from right after the reference to the end (docs/capture.md, "The thresholds"): every
+// calibration frame is in contact, and their level against the reference, far over their noise, is
+// the contact's. The reference frames' own level judges, so the grasp stands over the trigger.
+TEST(ContactReference, ACalibrationHeldInContactKeepsTheReferencesLevel) {
+  const cv::Mat gel = flat_gel();
+  std::vector<cv::Mat> frames, later;
+  for (int i = 0; i < 10; ++i) frames.push_back(with_noise(gel, 2.0, 600 + std::uint64_t(i)));
+  for (int i = 0; i < 25; ++i) later.push_back(with_noise(pressed(gel, 40, 30), 2.0, 700 + std::uint64_t(i)));
+  const ContactReference own = ContactReference::from_frames(frames);
+  const ContactReference c = ContactReference::from_calibration(frames, later);
+  EXPECT_TRUE(c.held_contact());
+  EXPECT_EQ(c.level(), own.level());
+  EXPECT_GT(c.score(later[12]), c.trigger());
+  EXPECT_TRUE(c.steady()) << "trend " << c.trend() << " limit " << c.trend_limit();
+}
+
+// A still MPEG-4 clip (WeakFootage's still_synthetic_gel_0_mp4v): its reference frames copy one frame,
+// and each later group of pictures changes a few pixels of it (the median pixel not at all, so the
+// noise is about 0), by as much against the group before as against the first. That is the codec,
+// not a contact, though its level stands far over the noise.
+TEST(ContactReference, ACodecsStepAfterCopiedReferenceFramesIsNoHeldContact) {
+  const cv::Mat gel = flat_gel();
+  const cv::Mat first = with_noise(gel, 2.0, 90);
+  const std::vector<cv::Mat> copies(10, first);
+  std::vector<cv::Mat> later;
+  for (int i = 0; i < 36; ++i) {  // groups of 12 frames
+    cv::RNG rng(800 + std::uint64_t(i / 12));
+    cv::Mat group = first.clone();
+    for (auto& v : cv::Mat_<float>(group)) v += rng.uniform(0.0f, 1.0f) < 0.1f ? float(rng.gaussian(5.0)) : 0.0f;
+    later.push_back(group);
+  }
+  const ContactReference c = ContactReference::from_calibration(copies, later);
+  EXPECT_GT(c.level(), 2.5f * c.noise()) << "the level alone would call it held";
+  EXPECT_FALSE(c.held_contact());
 }
 
 TEST(ContactReference, AGivenImageUsesTheFloors) {
