@@ -38,7 +38,7 @@ class InfoCommand : public Command {
     // Every string in the file is shown escaped: a name's control characters never reach the terminal.
     const auto shown = [](const std::string& t) { return text::printable(t); };
     std::cout << shown(s.path) << " (" << s.bytes << " bytes)\n"
-              << "  format   " << shown(s.format) << (s.format_remark.empty() ? "" : " (" + s.format_remark + ")")
+              << "  format   " << shown(text::shortened(s.format)) << (s.format_remark.empty() ? "" : " (" + s.format_remark + ")")
               << ", written by haptex " << shown(s.version) << " at " << shown(s.created_utc) << "\n"
               << "  source   " << shown(s.source) << "\n"
               << "  materials " << s.materials.size() << "\n";

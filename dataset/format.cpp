@@ -7,6 +7,7 @@
 #include "core/format_version.hpp"
 #include "core/h5/link_rule.hpp"
 #include "core/text/parse_number.hpp"
+#include "core/text/utf8.hpp"
 
 namespace haptex::dataset {
 namespace {
@@ -98,26 +99,26 @@ void require_kind(const h5::File& file, Kind kind) {
   const std::string give = "Give the file " + std::string(want.written_by) + " wrote";
   if (!file.root().has_attr(h5::kFormatAttribute))
     throw input_error(path, "/", "no haptex_format attribute: not a " + wanted + " file haptex wrote", give);
-  const std::string found = read_format(file);
+  const std::string found = read_format(file), shown = text::shortened(found);
   if (found == wanted) return;
   if (family_of(found) == want.family) {
     if (!is_format_name(found))
       throw input_error(path, "/@haptex_format",
-                        "is '" + found + "', which is no version haptex writes (" + std::string(want.family) +
+                        "is '" + shown + "', which is no version haptex writes (" + std::string(want.family) +
                             "/N, N a plain decimal from 1): the attribute was edited or damaged",
                         "Make the file again with " + std::string(want.written_by));
-    if (is_newer_version(found, wanted)) throw newer_version_error(path, "/@haptex_format", found, wanted);
+    if (is_newer_version(found, wanted)) throw newer_version_error(path, "/@haptex_format", shown, wanted);
     if (!want.older.empty())
-      throw input_error(path, "/@haptex_format", "is " + found + ", written by an older haptex: " + std::string(want.older),
+      throw input_error(path, "/@haptex_format", "is " + shown + ", written by an older haptex: " + std::string(want.older),
                         "Run " + std::string(want.written_by) + " again to write " + wanted);
   }
   for (const Format& other : kFormats)  // another kind of haptex file: say which, and what writes each
     if (family_of(found) == other.family)
       throw input_error(path, "/@haptex_format",
-                        "is '" + found + "': a " + std::string(other.family) + " file (" + std::string(other.written_by) + " writes those), not a " +
+                        "is '" + shown + "': a " + std::string(other.family) + " file (" + std::string(other.written_by) + " writes those), not a " +
                             std::string(want.family) + " file (" + wanted + ")",
                         give);
-  throw input_error(path, "/@haptex_format", "is '" + found + "', not " + wanted, give);
+  throw input_error(path, "/@haptex_format", "is '" + shown + "', not " + wanted, give);
 }
 
 }  // namespace
@@ -139,7 +140,7 @@ OpenedFile open_any(const std::string& path, std::span<const Kind> kinds, const 
       if (links == Links::refuse) h5::require_link_rule(file.root());
       return {std::move(file), kind};
     }
-  throw input_error(path, "/@" + std::string(h5::kFormatAttribute), "is '" + found + "': " + who + " " + format_list(kinds) + " files", fix);
+  throw input_error(path, "/@" + std::string(h5::kFormatAttribute), "is '" + text::shortened(found) + "': " + who + " " + format_list(kinds) + " files", fix);
 }
 
 void stamp(h5::Group root, Kind kind, const std::string& source) { h5::stamp_root(root, format_name(kind), source); }

@@ -32,6 +32,10 @@ bool acts_on_text(char32_t u, bool keep_newlines = false);
 // and before they are written into a report.
 std::string printable(std::string_view text, bool keep_newlines = false);
 
+// At most `most` bytes of text, cut before a character's continuation bytes, and "... (N bytes)" after
+// it when cut: what a file holds, quoted in one line whatever its length (a 2 MB attribute).
+std::string shortened(std::string_view text, std::size_t most = 80);
+
 // text without a leading UTF-8 byte order mark, which spreadsheets and some editors write before
 // CSV and JSON (nlohmann's parser skips it too).
 std::string_view without_byte_order_mark(std::string_view text);

@@ -86,7 +86,9 @@ TEST_F(ConvertedFile, InfoSaysWhyAFormatCannotBeRead) {
     const CommandResult text = run_haptex({"info", file_}), json = run_haptex({"info", file_, "--json"});
     ASSERT_EQ(text.exit_code, 0) << text.err;
     ASSERT_EQ(json.exit_code, 0) << json.err;
-    const std::string shown = "format   " + format + (remark.empty() ? "," : " (" + remark + "),");
+    // A format of more than 80 bytes is quoted by its first 80 and its length (review 17, F6).
+    const std::string quoted = format.size() > 80 ? format.substr(0, 80) + "... (" + std::to_string(format.size()) + " bytes)" : format;
+    const std::string shown = "format   " + quoted + (remark.empty() ? "," : " (" + remark + "),");
     EXPECT_NE(text.out.find(shown), std::string::npos) << text.out;
     const nlohmann::json doc = nlohmann::json::parse(json.out);
     EXPECT_NO_THROW(json::validate(doc, "info.schema.json", "info output")) << format;
@@ -121,6 +123,12 @@ TEST_F(ConvertedFile, InfoShowsAFormatInAnyCharacterSet) {
     EXPECT_NO_THROW(json::validate(doc, "info.schema.json", "info output"));
     EXPECT_EQ(doc.value("format_remark", ""), c.remark);
   }
+  // A format of 100 000 bytes is quoted by its start and length, not whole (review 17, F6).
+  ASSERT_EQ(run_python({"-c", write, file_, "ascii", "recordings/1" + std::string(100000, 'x')}).exit_code, 0);
+  const CommandResult huge = run_haptex({"trajectory", file_, "--material", "cork", "-o", out_.file("huge.csv")});
+  EXPECT_EQ(huge.exit_code, 2);
+  EXPECT_LT(huge.err.size(), 1000u) << huge.err.substr(0, 300);
+  EXPECT_NE(huge.err.find("(100012 bytes)"), std::string::npos) << huge.err.substr(0, 300);
   // The current format in ASCII is the current format for every reader, not only info.
   ASSERT_EQ(run_python({"-c", write, file_, "ascii", "recordings/1"}).exit_code, 0);
   const CommandResult stroke = run_haptex({"trajectory", file_, "--material", "cork", "-o", out_.file("stroke.csv")});
