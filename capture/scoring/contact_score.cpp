@@ -347,24 +347,60 @@ std::vector<cv::Mat> quiet_frames(const std::vector<cv::Mat>& later, const cv::M
   return kept;
 }
 
-// The largest score of a frame against the one before it: an inter-frame codec's jump at each new
-// group of pictures, which noise-free copies otherwise hide.
-float largest_step(const std::vector<cv::Mat>& frames, const DriftFit& fit, float t) {
-  float largest = 0;
-  for (std::size_t i = 1; i < frames.size(); ++i) largest = std::max(largest, fit.score(frames[i], frames[i - 1], t));
-  return largest;
+// The share of the change from `reference` to `later` (their mean |residual| under an offset, a gain and
+// a tilt) that is left under a lighting model as well: the reference's grey squared (a gamma or exposure
+// curve) and the position squared (light falling off towards the edges). A change of the light leaves
+// little of itself; a contact, which moves some places and not others of the same grey, leaves most.
+float share_beyond_lighting(const cv::Mat& reference, const cv::Mat& later) {
+  const int w = reference.cols, h = reference.rows, n = w * h;
+  double lo = 0, hi = 0;
+  cv::minMaxLoc(reference, &lo, &hi);
+  const double span = hi > lo ? hi - lo : 1.0;
+  cv::Mat design(n, 8, CV_64F), change(n, 1, CV_64F);
+  for (int j = 0, k = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i, ++k) {
+      const double g = (reference.at<float>(j, i) - lo) / span - 0.5, x = (i + 0.5) / w - 0.5, y = (j + 0.5) / h - 0.5;
+      const double row[8] = {1, g, x, y, g * g, x * x, y * y, x * y};
+      std::copy(row, row + 8, design.ptr<double>(k));
+      change.at<double>(k) = double(later.at<float>(j, i)) - reference.at<float>(j, i);
+    }
+  const auto left = [&](int terms) {
+    const cv::Mat a = design.colRange(0, terms);
+    cv::Mat c;
+    cv::solve(a, change, c, cv::DECOMP_SVD);
+    return cv::norm(change - a * c, cv::NORM_L1) / n;
+  };
+  const double plain = left(4);
+  return plain > 0 ? float(left(8) / plain) : 0.0f;
 }
 
-// Calibration frames whose level against the reference is more than kHeldContact times their own
-// noise hold a steady contact, not noise (measured: 1 of PhysiCLeAR's 473 press videos over 2.5, the
-// 95th percentile 1.52; 28 of 44 grasps held from the first second, up to 9.9; docs/capture.md). Where
-// the reference frames are copies of one another (no noise: a codec's first group of pictures, a
-// driver's stale buffers), the level must also exceed kCodecJump times the largest step between two
-// calibration frames: a still MPEG-4 clip whose first group of pictures differs from the rest jumps by
-// as much as that level at each new group.
-constexpr float kHeldContact = 2.5f, kCodecJump = 2.0f;
-// Reference frames with less noise than this (grey levels) copy one another: a camera's own noise is
-// tenths of a grey level after the scoring image's blur, float rounding of a mean of copies 1e-5.
+// How much more the most changed part of the image changed than the typical part: the mean |change|
+// (less its mean) over each block of an 8 x 6 grid, the largest over the median. Something touching
+// the gel changes some places and not others; noise, a codec's texture and the light change the
+// whole image alike (1.2 to 1.5 in still H.264 and MPEG-4 clips).
+float concentration(const cv::Mat& reference, const cv::Mat& later) {
+  cv::Mat change = later - reference;
+  change = cv::abs(change - cv::mean(change)[0]);
+  constexpr int kAcross = 8, kDown = 6;
+  const int w = change.cols / kAcross, h = change.rows / kDown;
+  std::vector<float> blocks;
+  for (int by = 0; by < kDown; ++by)
+    for (int bx = 0; bx < kAcross; ++bx) blocks.push_back(float(cv::mean(change(cv::Rect(bx * w, by * h, w, h)))[0]));
+  const float largest = *std::max_element(blocks.begin(), blocks.end());
+  std::nth_element(blocks.begin(), blocks.begin() + std::ptrdiff_t(blocks.size() / 2), blocks.end());
+  const float median = blocks[blocks.size() / 2];
+  return median > 0 ? largest / median : (largest > 0 ? INFINITY : 1.0f);
+}
+
+// Calibration frames hold a steady contact, not noise, when all of these hold (docs/capture.md, "The
+// thresholds"): their level against the reference is over kHeldContact times their own per-pixel noise
+// (1 of PhysiCLeAR's 473 press videos over 2.5, the 95th percentile 1.52; grasps held from the first
+// second up to 9.9); they are not copies of one another (kCopiesNoise: copies say nothing of noise);
+// over kBeyondLighting of the change is left beyond a change of the light (review 17, F1); and the change
+// is concentrated, its most changed block over kConcentrated times the median one (F2, F5: an
+// inter-frame codec's groups of pictures, and live noise after stale copies, change the image alike).
+constexpr float kHeldContact = 2.5f, kBeyondLighting = 0.5f, kConcentrated = 2.0f;
+// A camera's own noise is tenths of a grey level after the scoring image's blur; copies show none.
 constexpr float kCopiesNoise = 0.01f;
 
 }  // namespace
@@ -404,8 +440,10 @@ ContactReference ContactReference::from_calibration(const std::vector<cv::Mat>& 
   std::vector<float> scores;
   for (const auto& f : quiet) scores.push_back(r.fit_.score(f, r.mean_, t));
   const Spread s = spread_of(scores);
-  const bool copies = r.noise_ < kCopiesNoise;
-  const bool held = s.level > kHeldContact * noise && (!copies || s.level > kCodecJump * largest_step(quiet, r.fit_, t));
+  const cv::Mat later_mean = mean_of(quiet);
+  const bool held = noise >= kCopiesNoise && s.level > kHeldContact * noise &&
+                    share_beyond_lighting(r.mean_, later_mean) > kBeyondLighting &&
+                    concentration(r.mean_, later_mean) > kConcentrated;
   // Held: a frame free of contact scores what the reference frames score among themselves, and the
   // quiet frames' spread is the contact's.
   const float level = held ? r.level_ : s.level, spread = held ? r.spread_ : s.spread;

@@ -247,24 +247,68 @@ TEST(ContactReference, ACalibrationHeldInContactKeepsTheReferencesLevel) {
   EXPECT_TRUE(c.steady()) << "trend " << c.trend() << " limit " << c.trend_limit();
 }
 
-// A still MPEG-4 clip (WeakFootage's still_synthetic_gel_0_mp4v): its reference frames copy one frame,
-// and each later group of pictures changes a few pixels of it (the median pixel not at all, so the
-// noise is about 0), by as much against the group before as against the first. That is the codec,
-// not a contact, though its level stands far over the noise.
-TEST(ContactReference, ACodecsStepAfterCopiedReferenceFramesIsNoHeldContact) {
+// A still clip of an inter-frame codec (WeakFootage's still_synthetic_gel_0_mp4v; review 17, F2's
+// H.264 clips): each group of 12 pictures nearly copies its key frame, and each key frame changes a few
+// pixels of the gel (the median pixel not at all, so the noise is tiny), by as much against the group
+// before as against the reference's. That is the codec, not a contact, though its level stands far
+// over the noise; and where the frames copy one another exactly, no noise is seen at all.
+TEST(ContactReference, ACodecsGroupsOfPicturesAreNoHeldContact) {
   const cv::Mat gel = flat_gel();
   const cv::Mat first = with_noise(gel, 2.0, 90);
-  const std::vector<cv::Mat> copies(10, first);
-  std::vector<cv::Mat> later;
-  for (int i = 0; i < 36; ++i) {  // groups of 12 frames
-    cv::RNG rng(800 + std::uint64_t(i / 12));
-    cv::Mat group = first.clone();
-    for (auto& v : cv::Mat_<float>(group)) v += rng.uniform(0.0f, 1.0f) < 0.1f ? float(rng.gaussian(5.0)) : 0.0f;
-    later.push_back(group);
+  for (double jitter : {0.02, 0.0}) {
+    SCOPED_TRACE("jitter " + std::to_string(jitter));
+    const auto frame = [&](const cv::Mat& key, int i) { return jitter > 0 ? with_noise(key, jitter, 1000 + std::uint64_t(i)) : key.clone(); };
+    std::vector<cv::Mat> reference, later;
+    for (int i = 0; i < 10; ++i) reference.push_back(frame(first, i));
+    for (int i = 0; i < 36; ++i) {  // groups of 12 frames
+      cv::RNG rng(800 + std::uint64_t(i / 12));
+      cv::Mat key = first.clone();
+      for (auto& v : cv::Mat_<float>(key)) v += rng.uniform(0.0f, 1.0f) < 0.1f ? float(rng.gaussian(5.0)) : 0.0f;
+      later.push_back(frame(key, 100 + i));
+    }
+    const ContactReference c = ContactReference::from_calibration(reference, later);
+    if (jitter > 0) {
+      EXPECT_GT(c.level(), 2.5f * c.noise()) << "the level alone would call it held";
+    }
+    EXPECT_FALSE(c.held_contact());
   }
-  const ContactReference c = ContactReference::from_calibration(copies, later);
+}
+
+// A driver's stale buffers: ten copies of one frame, then the live stream, whose noise an inter-frame
+// codec bakes into a texture that barely changes from frame to frame (review 17, F5). The live frames
+// stand far from the copies against their own small noise, but the change is everywhere alike.
+TEST(ContactReference, LiveNoiseAfterStaleCopiesIsNoHeldContact) {
+  const cv::Mat gel = flat_gel();
+  const std::vector<cv::Mat> stale(10, gel);
+  const cv::Mat live = with_noise(gel, 1.0, 77);
+  std::vector<cv::Mat> later;
+  for (int i = 0; i < 25; ++i) later.push_back(with_noise(live, 0.05, 1100 + std::uint64_t(i)));
+  const ContactReference c = ContactReference::from_calibration(stale, later);
   EXPECT_GT(c.level(), 2.5f * c.noise()) << "the level alone would call it held";
   EXPECT_FALSE(c.held_contact());
+}
+
+// The camera's exposure changes for good right after the reference (review 17, F1: a gamma on the whole
+// image, and the light falling off towards the edges): every calibration frame is far from the
+// reference, as in a grasp, but a change of the light explains it, and it is no contact.
+TEST(ContactReference, AChangeOfTheLightAfterTheReferenceIsNoHeldContact) {
+  const cv::Mat gel = 20.0f + (flat_gel() - 80.0f) * 1.8f;  // grey 20 to 228: a gamma bends it
+  cv::Mat gamma(gel.size(), CV_32F), edges(gel.size(), CV_32F);
+  for (int y = 0; y < gel.rows; ++y)
+    for (int x = 0; x < gel.cols; ++x) {
+      const float g = gel.at<float>(y, x), u = float(x) / float(gel.cols) - 0.5f;
+      gamma.at<float>(y, x) = 255.0f * std::pow(g / 255.0f, 0.6f);
+      edges.at<float>(y, x) = g + 40.0f * u * u;
+    }
+  std::vector<cv::Mat> frames;
+  for (int i = 0; i < 10; ++i) frames.push_back(with_noise(gel, 0.5, 900 + std::uint64_t(i)));
+  for (const cv::Mat& lit : {gamma, edges}) {
+    std::vector<cv::Mat> later;
+    for (int i = 0; i < 25; ++i) later.push_back(with_noise(lit, 0.5, 950 + std::uint64_t(i)));
+    const ContactReference c = ContactReference::from_calibration(frames, later);
+    EXPECT_GT(c.level(), 2.5f * c.noise()) << "far from the reference, as a grasp is";
+    EXPECT_FALSE(c.held_contact());
+  }
 }
 
 TEST(ContactReference, AGivenImageUsesTheFloors) {
