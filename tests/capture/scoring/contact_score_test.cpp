@@ -22,6 +22,13 @@ cv::Mat with_noise(const cv::Mat& image, double sigma, std::uint64_t seed) {
   return image + noise;
 }
 
+// `count` frames of image, each with its own noise (seeds from `seed` up).
+std::vector<cv::Mat> noisy_frames(const cv::Mat& image, double sigma, int count, std::uint64_t seed) {
+  std::vector<cv::Mat> frames;
+  for (int i = 0; i < count; ++i) frames.push_back(with_noise(image, sigma, seed + std::uint64_t(i)));
+  return frames;
+}
+
 cv::Mat pressed(const cv::Mat& image, float depth, int radius = 25) {
   cv::Mat out = image.clone();
   cv::circle(out, {80, 60}, radius, cv::Scalar(0), cv::FILLED);  // mask, filled below
@@ -236,9 +243,7 @@ TEST(ContactReference, CalibrationLeavesOutAPressInMostOfItsFrames) {
 // the contact's. The reference frames' own level judges, so the grasp stands over the trigger.
 TEST(ContactReference, ACalibrationHeldInContactKeepsTheReferencesLevel) {
   const cv::Mat gel = flat_gel();
-  std::vector<cv::Mat> frames, later;
-  for (int i = 0; i < 10; ++i) frames.push_back(with_noise(gel, 2.0, 600 + std::uint64_t(i)));
-  for (int i = 0; i < 25; ++i) later.push_back(with_noise(pressed(gel, 40, 30), 2.0, 700 + std::uint64_t(i)));
+  const std::vector<cv::Mat> frames = noisy_frames(gel, 2.0, 10, 600), later = noisy_frames(pressed(gel, 40, 30), 2.0, 25, 700);
   const ContactReference own = ContactReference::from_frames(frames);
   const ContactReference c = ContactReference::from_calibration(frames, later);
   EXPECT_TRUE(c.held_contact());
@@ -280,9 +285,7 @@ TEST(ContactReference, ACodecsGroupsOfPicturesAreNoHeldContact) {
 TEST(ContactReference, LiveNoiseAfterStaleCopiesIsNoHeldContact) {
   const cv::Mat gel = flat_gel();
   const std::vector<cv::Mat> stale(10, gel);
-  const cv::Mat live = with_noise(gel, 1.0, 77);
-  std::vector<cv::Mat> later;
-  for (int i = 0; i < 25; ++i) later.push_back(with_noise(live, 0.05, 1100 + std::uint64_t(i)));
+  const std::vector<cv::Mat> later = noisy_frames(with_noise(gel, 1.0, 77), 0.05, 25, 1100);
   const ContactReference c = ContactReference::from_calibration(stale, later);
   EXPECT_GT(c.level(), 2.5f * c.noise()) << "the level alone would call it held";
   EXPECT_FALSE(c.held_contact());
@@ -300,12 +303,9 @@ TEST(ContactReference, AChangeOfTheLightAfterTheReferenceIsNoHeldContact) {
       gamma.at<float>(y, x) = 255.0f * std::pow(g / 255.0f, 0.6f);
       edges.at<float>(y, x) = g + 40.0f * u * u;
     }
-  std::vector<cv::Mat> frames;
-  for (int i = 0; i < 10; ++i) frames.push_back(with_noise(gel, 0.5, 900 + std::uint64_t(i)));
+  const std::vector<cv::Mat> frames = noisy_frames(gel, 0.5, 10, 900);
   for (const cv::Mat& lit : {gamma, edges}) {
-    std::vector<cv::Mat> later;
-    for (int i = 0; i < 25; ++i) later.push_back(with_noise(lit, 0.5, 950 + std::uint64_t(i)));
-    const ContactReference c = ContactReference::from_calibration(frames, later);
+    const ContactReference c = ContactReference::from_calibration(frames, noisy_frames(lit, 0.5, 25, 950));
     EXPECT_GT(c.level(), 2.5f * c.noise()) << "far from the reference, as a grasp is";
     EXPECT_FALSE(c.held_contact());
   }
