@@ -109,8 +109,9 @@ class ContactReference {
   // trigger their quietest quarter sets: a press in up to three quarters of them. Steadiness is judged
   // by the leave-one-out level of those quiet frames (the copies' own is near 0). With fewer than five
   // quiet frames, the reference frames' own thresholds, and no trend. Quiet frames that all differ
-  // from the reference far beyond their noise hold a contact (a grasp held from the first second):
-  // the level is then what the reference frames show (held_contact()).
+  // from the reference far beyond their noise, in a concentrated change the light does not explain,
+  // hold a contact (a grasp held from the first second): the level is then what the reference frames
+  // show (held_contact(); the four conditions in contact_score.cpp and docs/capture.md).
   static ContactReference from_calibration(const std::vector<cv::Mat>& frames, const std::vector<cv::Mat>& later,
                                            const ScoreSettings& settings = {});
   bool held_contact() const { return held_contact_; }
