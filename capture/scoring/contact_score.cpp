@@ -435,12 +435,12 @@ ContactReference ContactReference::from_calibration(const std::vector<cv::Mat>& 
     r.trend_limit_ = INFINITY;  // the copies' own level is near 0, which any change would pass
     return r;
   }
-  const float noise = temporal_noise(quiet, mean_of(quiet));
+  const cv::Mat later_mean = mean_of(quiet);
+  const float noise = temporal_noise(quiet, later_mean);
   const float t = settings.pixel_threshold.value_or(0.0f);
   std::vector<float> scores;
   for (const auto& f : quiet) scores.push_back(r.fit_.score(f, r.mean_, t));
   const Spread s = spread_of(scores);
-  const cv::Mat later_mean = mean_of(quiet);
   const bool held = noise >= kCopiesNoise && s.level > kHeldContact * noise &&
                     share_beyond_lighting(r.mean_, later_mean) > kBeyondLighting &&
                     concentration(r.mean_, later_mean) > kConcentrated;
