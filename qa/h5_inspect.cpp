@@ -34,7 +34,7 @@ AttributeInfo attribute_info(const h5::Node& node, const std::string& name) {
   h5::Handle attr(h5::check(H5Aopen(node.id(), name.c_str(), H5P_DEFAULT), "open attribute " + name, node.where()));
   h5::Handle type(H5Aget_type(attr.get()));
   h5::Handle space(H5Aget_space(attr.get()));
-  return {dtype_name(type.get()), H5Sget_simple_extent_type(space.get()) == H5S_SCALAR};
+  return {dtype_name(type.get()), static_cast<long long>(H5Sget_simple_extent_npoints(space.get()))};
 }
 
 ObjectType object_type(const h5::Group& root, const std::string& path) {

@@ -10,7 +10,7 @@ namespace haptex::qa {
 
 struct AttributeInfo {
   std::string dtype;  // as h5::Dataset::dtype() names types
-  bool scalar = true;
+  long long values = 1;  // a scalar or an array of one holds one, as haptex's readers take it
 };
 AttributeInfo attribute_info(const h5::Node& node, const std::string& name);
 

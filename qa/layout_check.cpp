@@ -41,7 +41,7 @@ struct FoundObject {
   std::string where;  // the dataset's path, or OWNER/@attribute
   bool present = false;  // the attribute exists; the path is a dataset (not a group)
   std::string dtype;
-  bool scalar = true;  // an attribute holding one value (datasets: always)
+  long long values = 1;  // how many an attribute holds (datasets: 1)
   h5::Shape shape;     // datasets
   std::optional<std::string> units;  // datasets whose row names units: their `units` attribute, when they have one
   bool readable_text = true;  // string attributes: UTF-8 without a NUL inside, as haptex reads names
@@ -65,9 +65,9 @@ FoundObject find_attribute(const h5::Group& root, const LayoutRow& row, const st
   const AttributeInfo info = attribute_info(node, row.attribute);
   f.present = true;
   f.dtype = info.dtype;
-  f.scalar = info.scalar;
-  if (f.dtype == "string" && f.scalar) f.readable_text = node.try_attr<std::string>(row.attribute).has_value();
-  if (f.dtype.rfind("float", 0) == 0 && f.scalar) {
+  f.values = info.values;
+  if (f.dtype == "string" && f.values == 1) f.readable_text = node.try_attr<std::string>(row.attribute).has_value();
+  if (f.dtype.rfind("float", 0) == 0 && f.values == 1) {
     const std::optional<double> value = node.try_attr<double>(row.attribute);
     f.finite = value && std::isfinite(*value);
   }
@@ -209,7 +209,8 @@ CheckResult check_layout_dtype(const std::vector<RowFindings>& rows) {
     for (const auto& f : r.found) {
       if (!f.present) continue;
       if (f.dtype != r.row->dtype) tally.fail(f.where, "dtype " + f.dtype + ", expected " + r.row->dtype);
-      else if (r.row->shape.empty() && !f.scalar) tally.fail(f.where, "holds several values, expected one " + r.row->dtype);
+      else if (r.row->shape.empty() && f.values != 1)
+        tally.fail(f.where, "holds " + std::to_string(f.values) + " values, expected one " + r.row->dtype);
       else if (!f.readable_text) tally.fail(f.where, "is not UTF-8 text, or holds a NUL byte inside its text");
       else if (!f.finite) tally.fail(f.where, "is not a finite number (NaN or infinite)");
       else tally.pass();

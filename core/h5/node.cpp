@@ -106,10 +106,22 @@ Handle Node::open_attr(std::string_view name) const {
 Handle Node::open_scalar_attr(std::string_view name) const {
   Handle attr = open_attr(name);
   Handle space(H5Aget_space(attr.get()));
-  if (H5Sget_simple_extent_npoints(space.get()) != 1)
-    throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' holds several values, expected one",
+  if (const hssize_t values = H5Sget_simple_extent_npoints(space.get()); values != 1)
+    throw input_error(file_, object_path_,
+                      "attribute '" + std::string(name) + "' holds " + std::to_string(values) + " values, expected one",
                       "Rewrite the file with haptex");
   return attr;
+}
+
+// One fixed-length string as stored: padding is NULs to the end; text after a NUL would be cut off
+// unseen (issue 32), so it is refused.
+std::string Node::fixed_length_text(std::string stored, const std::string& what) const {
+  const std::size_t end = std::min(stored.size(), stored.find('\0'));
+  if (stored.find_first_not_of('\0', end) != std::string::npos)
+    throw input_error(file_, object_path_, what + " holds a NUL byte inside its text",
+                      "Write it without NUL bytes (haptex writes names as UTF-8 text)");
+  stored.resize(end);
+  return stored;
 }
 
 double Node::attr_double(std::string_view name) const {
@@ -155,13 +167,7 @@ std::string Node::attr_bytes(std::string_view name) const {
   }
   std::string value(H5Tget_size(type.get()), '\0');  // fixed-length strings, as other tools write them
   check_input_status(H5Aread(attr.get(), type.get(), value.data()), "read attribute", where());
-  // Padding is NULs to the end; text after a NUL would be cut off unseen (issue 32), so it is refused.
-  const std::size_t end = std::min(value.size(), value.find('\0'));
-  if (value.find_first_not_of('\0', end) != std::string::npos)
-    throw input_error(file_, object_path_, "attribute '" + std::string(name) + "' holds a NUL byte inside its text",
-                      "Write the attribute without NUL bytes (haptex writes names as UTF-8 text)");
-  value.resize(end);
-  return value;
+  return fixed_length_text(value, "attribute '" + std::string(name) + "'");
 }
 
 std::string Node::attr_string(std::string_view name) const {
@@ -300,7 +306,29 @@ void Dataset::read_raw(hid_t memory_type, void* out) const {
 
 std::vector<std::string> Dataset::read_strings() const {
   Handle stored(H5Dget_type(id()));
-  Handle memory = string_type_of(stored.get());
+  std::vector<std::string> values =
+      H5Tis_variable_str(stored.get()) > 0 ? read_variable_strings(stored.get()) : read_fixed_strings(stored.get());
+  for (std::size_t i = 0; i < values.size(); ++i) text::require_utf8(values[i], file_, object_path_ + "[" + std::to_string(i) + "]");
+  return values;
+}
+
+std::vector<std::string> Dataset::read_fixed_strings(hid_t stored) const {
+  if (H5Tget_class(stored) != H5T_STRING)
+    throw input_error(file_, object_path_, "holds " + dtype() + " values, not text", "Write the names as strings");
+  const std::size_t size = H5Tget_size(stored);
+  std::string raw(elements_to_read(size) * size, '\0');
+  {
+    const BoundedCall bounded(file_, object_path_);
+    check_input_status(H5Dread(id(), stored, H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()), "read strings", where());
+  }
+  std::vector<std::string> values;
+  for (std::size_t at = 0; at < raw.size(); at += size)
+    values.push_back(fixed_length_text(raw.substr(at, size), "element " + std::to_string(at / size)));
+  return values;
+}
+
+std::vector<std::string> Dataset::read_variable_strings(hid_t stored) const {
+  Handle memory = string_type_of(stored);
   std::vector<char*> pointers(elements_to_read(sizeof(char*)), nullptr);
   {
     const BoundedCall bounded(file_, object_path_);
@@ -310,7 +338,6 @@ std::vector<std::string> Dataset::read_strings() const {
   for (const char* p : pointers) values.emplace_back(p ? p : "");
   Handle space(H5Dget_space(id()));
   H5Dvlen_reclaim(memory.get(), space.get(), H5P_DEFAULT, pointers.data());
-  for (std::size_t i = 0; i < values.size(); ++i) text::require_utf8(values[i], file_, object_path_ + "[" + std::to_string(i) + "]");
   return values;
 }
 

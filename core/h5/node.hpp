@@ -63,6 +63,9 @@ class Node {
   std::optional<T> try_attr(std::string_view name) const;
 
  protected:
+  // A fixed-length string's text without its NUL padding; refuses a NUL inside it (`what` names it).
+  std::string fixed_length_text(std::string stored, const std::string& what) const;
+
   Handle handle_;
   std::string file_;
   std::string object_path_;
@@ -87,6 +90,7 @@ class Dataset : public Node {
     read_raw(native_type<T>(), out.data());
     return out;
   }
+  // Variable- or fixed-length strings (h5py writes numpy bytes arrays as fixed-length), each UTF-8.
   std::vector<std::string> read_strings() const;
   // Refuses (bad_input) a dataset stored in chunks of over kLargestChunkBytes that hold more than the
   // whole dataset: reading one value would inflate the whole chunk (review 9, F5: a 4 GiB chunk for
@@ -104,6 +108,8 @@ class Dataset : public Node {
   // elements(), after a refusal (bad_input) of a dataset too large to read at once (kMostBytesRead).
   std::size_t elements_to_read(std::size_t element_size) const;
   void read_raw(hid_t memory_type, void* out) const;
+  std::vector<std::string> read_variable_strings(hid_t stored) const;
+  std::vector<std::string> read_fixed_strings(hid_t stored) const;
 };
 
 struct DatasetOptions {

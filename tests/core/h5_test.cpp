@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
 #include "core/temporary_name.hpp"
+#include "tests/support/mutations.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::h5 {
@@ -48,6 +49,36 @@ TEST(H5, DatasetsOfAnyRankRoundTrip) {
   EXPECT_EQ(g.open_dataset("cube").read<std::uint8_t>(), cube);
   EXPECT_EQ(g.open_dataset("empty").elements(), 0u);
   EXPECT_EQ(g.open_dataset("names").read_strings(), (std::vector<std::string>{"Book", "Brick 2", "Ünïcode"}));
+}
+
+// Review 17, F7: h5py writes numpy bytes arrays as fixed-length strings; they read as the
+// variable-length ones do, and what is no text says so (it was "truncated or damaged").
+TEST(H5, FixedLengthStringDatasetsRead) {
+  TempDir dir;
+  const std::string path = dir.file("fixed.h5");
+  {
+    AtomicFile out(path, false);
+    out.root().write("numbers", std::vector<double>{1.0});
+    out.commit();
+  }
+  {
+    test::Edit edit(path);
+    edit.write_fixed_strings("names", {"Book", "Brick 2", "\xC3\x9Cn"});
+    edit.write_fixed_strings("nul", {"Book", std::string("Bri\0ck", 6)});
+  }
+  const Group root = File::open(path).root();
+  EXPECT_EQ(root.open_dataset("names").read_strings(), (std::vector<std::string>{"Book", "Brick 2", "Ün"}));
+  const auto refusal = [&](const std::string& name) {
+    try {
+      root.open_dataset(name).read_strings();
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(refusal("nul").find("element 1 holds a NUL byte inside its text"), std::string::npos) << refusal("nul");
+  EXPECT_NE(refusal("numbers").find("holds float64 values, not text"), std::string::npos) << refusal("numbers");
 }
 
 TEST(H5, CompressedDatasetsUseGzipAndShuffle) {

@@ -203,18 +203,6 @@ struct BrokenShard {
   bool align_refuses = true;
 };
 
-// A fixed-length string attribute as other tools write one, holding exactly `text` (NULs included).
-void set_fixed_string(Edit& edit, const std::string& object, const std::string& name, const std::string& text) {
-  edit.remove(object + "@" + name);
-  const hid_t type = H5Tcopy(H5T_C_S1), space = H5Screate(H5S_SCALAR);
-  H5Tset_size(type, text.size());
-  H5Tset_strpad(type, H5T_STR_NULLPAD);
-  const hid_t owner = H5Oopen(edit.root().id(), object.c_str(), H5P_DEFAULT);
-  const hid_t attr = H5Acreate2(owner, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(attr, type, text.data());
-  H5Aclose(attr), H5Oclose(owner), H5Sclose(space), H5Tclose(type);
-}
-
 void add_reference_attribute(Edit& edit, const std::string& object, const std::string& target) {
   hobj_ref_t ref;
   H5Rcreate(&ref, edit.root().id(), target.c_str(), H5R_OBJECT, -1);
@@ -257,7 +245,10 @@ std::vector<BrokenShard> broken_shards() {
          e.remove(m + "/recordings");
          e.group(m).write<float>("recordings", {0, 0, 0});
        }, {"/recordings: is not a group", "layout.required"}},
-      {"a name with a NUL inside", p.recordings, [](Edit& e, const std::string& m) { set_fixed_string(e, m, "name", std::string("Sand\0paper", 10)); },
+      {"a name with a NUL inside", p.recordings, [](Edit& e, const std::string& m) {
+         e.remove(m + "@name");
+         e.write_fixed_strings(m + "@name", {std::string("Sand\0paper", 10)});
+       },
        {"/@name", "NUL byte", "layout.dtype"}},
       {"an object reference", p.recordings, [](Edit& e, const std::string& m) { add_reference_attribute(e, m + "/recordings/0", m + "/recordings/0/speed"); },
        {"/recordings/0@odd", "object references"}},

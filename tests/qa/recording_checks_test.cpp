@@ -57,6 +57,26 @@ TEST_F(RecordingsMutation, IntegerSampleRateAttributeIsLayoutDtype) {
   expect_only(qa(), "layout.dtype");
 }
 
+// Review 17, F7: an array of one string is one value, as every reader takes it; an array of two is not.
+TEST_F(RecordingsMutation, AnAttributeIsOneValueWhenItsArrayHoldsOne) {
+  const std::string created = h5::File::open(file_).root().attr_string("created_utc");
+  {
+    Edit e(file_);
+    e.remove("@created_utc");
+    e.write_fixed_strings("@created_utc", {created}, true);
+  }
+  EXPECT_EQ(qa().find("layout.dtype")->status, qa::Status::pass) << qa().find("layout.dtype")->message;
+  {
+    Edit e(file_);
+    e.remove("@created_utc");
+    e.write_fixed_strings("@created_utc", {created, created});
+  }
+  const qa::Report r = qa();
+  expect_only(r, "layout.dtype");
+  EXPECT_NE(r.find("layout.dtype")->message.find("/@created_utc: holds 2 values, expected one string"), std::string::npos)
+      << r.find("layout.dtype")->message;
+}
+
 TEST_F(RecordingsMutation, TwoColumnPositionIsLayoutShape) {
   {
     Edit e(file_);

@@ -1,5 +1,6 @@
 #include "tests/support/mutations.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <stdexcept>
 
@@ -23,6 +24,34 @@ void Edit::remove(const std::string& path) {
     return;
   }
   if (H5Ldelete(root().id(), ("/" + path).c_str(), H5P_DEFAULT) < 0) throw std::runtime_error("cannot delete " + path);
+}
+
+void Edit::write_fixed_strings(const std::string& path, const std::vector<std::string>& texts, bool array) {
+  std::size_t size = 1;
+  for (const auto& t : texts) size = std::max(size, t.size());
+  std::string bytes;
+  for (const auto& t : texts) bytes += t + std::string(size - t.size(), '\0');
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, size);
+  H5Tset_strpad(type, H5T_STR_NULLPAD);
+  const hsize_t count[1] = {texts.size()};
+  const auto at = path.find('@');
+  const hid_t space = at == std::string::npos || array || texts.size() != 1 ? H5Screate_simple(1, count, nullptr)
+                                                                            : H5Screate(H5S_SCALAR);
+  herr_t status = -1;
+  if (at != std::string::npos) {
+    const std::string owner = path.substr(0, at).empty() ? "/" : "/" + path.substr(0, at);
+    const hid_t object = H5Oopen(root().id(), owner.c_str(), H5P_DEFAULT);
+    const hid_t attr = H5Acreate2(object, path.substr(at + 1).c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
+    status = H5Awrite(attr, type, bytes.data());
+    H5Aclose(attr), H5Oclose(object);
+  } else {
+    const hid_t d = H5Dcreate2(root().id(), ("/" + path).c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    status = H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data());
+    H5Dclose(d);
+  }
+  H5Sclose(space), H5Tclose(type);
+  if (status < 0) throw std::runtime_error("cannot write fixed-length strings at " + path);
 }
 
 void Edit::copy(const std::string& from, const std::string& to) {

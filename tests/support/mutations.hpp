@@ -27,6 +27,10 @@ class Edit {
   // Lets `change` edit the encoded bytes of image `index` of an image dataset (a press's reference,
   // peak or frames), written back with the dataset's string attributes.
   void change_image(const std::string& path, std::size_t index, const std::function<void(std::vector<std::uint8_t>&)>& change);
+  // Fixed-length NUL-padded strings as other tools write them (h5py: numpy bytes), holding exactly
+  // `texts` (NULs included; as long as the longest): at `path` "a/b@name" an attribute (scalar unless
+  // `array` or several texts), else a new dataset (always an array).
+  void write_fixed_strings(const std::string& path, const std::vector<std::string>& texts, bool array = false);
   // Replaces a dataset by new values and shape (and dtype T), keeping its string attributes.
   template <typename T>
   void replace(const std::string& path, const std::vector<T>& values, const h5::Shape& shape);
