@@ -176,35 +176,68 @@ float settled_end_level(const FirstReading& first, const std::vector<float>& sco
 }
 
 // Drivers may hand over stale buffers when a stream starts: frames of an earlier moment (another
-// grasp, another exposure) that end in one jump to the live image. So the frames before a change
-// between consecutive frames, within the first `within` usable frames, that is more than twice any
-// later change (and over half a grey level) are start-up frames, as black ones are. A press under way
-// at the start is no such jump: its own release changes the image as much.
+// grasp, another exposure), one or several images, that end in a jump to the live image. The live
+// start is the last frame, within the first `within` usable frames, that
+// - follows a change of over half a grey level that is more than twice any change between the
+//   `steady` frames from it on (a reference can be made there), and
+// - comes after frames whose image never recurs: the frame before the jump, and the frames before it
+//   while the changes stay over half the jump (a ramp of several), each differ from every later frame
+//   by over half the jump.
+// A press coming on at the start is no such jump: the untouched gel before its ramp recurs when it is
+// released. One under way at the start and released in a single frame within `within` frames would be
+// taken for stale frames; docs/capture.md, "Stale start-up frames", says so.
 class StartupJump {
  public:
+  explicit StartupJump(int within) : within_(std::size_t(std::max(within, 0))) {}
+
   void add(std::int64_t index, const cv::Mat& scoring) {
-    if (!previous_.empty())
-      changes_.push_back({index, float(cv::norm(scoring, previous_, cv::NORM_L1) / double(scoring.total()))});
+    if (!indices_.empty()) changes_.push_back(difference(scoring, previous_));
+    for (std::size_t q = 0; q < early_.size(); ++q) distances_[q].push_back(difference(scoring, early_[q]));
+    if (early_.size() < within_) {
+      early_.push_back(scoring);
+      distances_.emplace_back();
+    }
+    indices_.push_back(index);
     previous_ = scoring;
   }
-  // The first frame after the last such jump, or -1 when there is none.
-  std::int64_t first_live(int within) const {
-    constexpr float kFactor = 2.0f, kLeast = 0.5f;
-    float later = kLeast;  // the largest change after the one looked at
+
+  // The index of the first live frame, or -1 when there is no such jump.
+  std::int64_t first_live(int steady) const {
     std::int64_t live = -1;
-    for (std::size_t k = changes_.size(); k-- > 0;) {
-      if (k + 1 < std::size_t(within) && live < 0 && changes_[k].change > kFactor * later) live = changes_[k].index;
-      later = std::max(later, changes_[k].change);
-    }
+    for (std::size_t s = 1; s < within_ && s + std::size_t(steady) <= indices_.size(); ++s)
+      if (steady_after(s, std::size_t(steady)) && never_recurs_before(s)) live = indices_[s];
     return live;
   }
 
  private:
-  struct Change {
-    std::int64_t index;  // the later frame
-    float change;        // mean |difference| of the two scoring images, grey levels
-  };
-  std::vector<Change> changes_;
+  static constexpr float kFactor = 2.0f, kLeast = 0.5f;
+
+  static float difference(const cv::Mat& a, const cv::Mat& b) {
+    return float(cv::norm(a, b, cv::NORM_L1) / double(a.total()));  // mean |difference|, grey levels
+  }
+  // changes_[k] is between usable frames k and k + 1; the jump into frame s is changes_[s - 1].
+  bool steady_after(std::size_t s, std::size_t steady) const {
+    const float jump = changes_[s - 1];
+    const auto from = changes_.begin() + std::ptrdiff_t(s), to = from + std::ptrdiff_t(steady - 1);
+    return jump > kLeast && jump > kFactor * *std::max_element(from, to);
+  }
+  bool never_recurs_before(std::size_t s) const {
+    const float jump = changes_[s - 1];
+    std::size_t first = s - 1;
+    while (first > 0 && changes_[first - 1] >= jump / kFactor) --first;
+    for (std::size_t q = first; q < s; ++q) {
+      // distances_[q][p - q - 1] is between usable frames q and p
+      const auto later = distances_[q].begin() + std::ptrdiff_t(s - q - 1);
+      if (*std::min_element(later, distances_[q].end()) <= jump / kFactor) return false;
+    }
+    return true;
+  }
+
+  std::size_t within_;
+  std::vector<cv::Mat> early_;                 // the first `within` usable frames
+  std::vector<std::vector<float>> distances_;  // from each of them to every later frame
+  std::vector<float> changes_;
+  std::vector<std::int64_t> indices_;
   cv::Mat previous_;
 };
 
@@ -362,7 +395,7 @@ SourceScores score_from(FrameSource& source, const ExtractSettings& settings, st
   const ScoreSettings score = score_settings(source, settings);
   out.contact = given_reference(source, settings, out);
   FirstReading first(settings, score, source);
-  StartupJump jump;
+  StartupJump jump(settings.reference_frames);
   bool started = false;  // past the black frames sensors send after stream start
   source.scan(
       [&](std::int64_t index, const cv::Mat& scoring, const cv::Mat& full) {
@@ -411,9 +444,11 @@ SourceScores score_from(FrameSource& source, const ExtractSettings& settings, st
     out.reference_note += "; the frames after it hold a steady contact (a grasp from the first second), so the "
                           "level is the reference frames' own";
   if (first_live > 0)
-    out.reference_note += (first_live == 1 ? "; frame 0 is a stale start-up frame"
-                                           : "; frames 0-" + std::to_string(first_live - 1) + " are stale start-up frames") +
-                          std::string(" (they end in a jump over twice any later change)");
+    out.reference_note += first_live == 1 ? "; frame 0 is a stale start-up frame (a jump to a steady image follows it, and "
+                                            "its image never recurs)"
+                                          : "; frames 0-" + std::to_string(first_live - 1) +
+                                                " are stale start-up frames (a jump to a steady image follows them, and their "
+                                                "images never recur)";
   return out;
 }
 
