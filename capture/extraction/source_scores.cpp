@@ -188,24 +188,26 @@ float settled_end_level(const FirstReading& first, const std::vector<float>& sco
 // taken for stale frames; docs/capture.md, "Stale start-up frames", says so.
 class StartupJump {
  public:
-  explicit StartupJump(int within) : within_(std::size_t(std::max(within, 0))) {}
+  StartupJump(int within, int steady) : within_(std::size_t(std::max(within, 0))), steady_(std::size_t(std::max(steady, 1))) {}
 
   void add(std::int64_t index, const cv::Mat& scoring) {
     if (!indices_.empty()) changes_.push_back(difference(scoring, previous_));
-    for (std::size_t q = 0; q < early_.size(); ++q) distances_[q].push_back(difference(scoring, early_[q]));
+    for (std::size_t q = 0; q < early_.size(); ++q)
+      if (!early_[q].empty()) distances_[q].push_back(difference(scoring, early_[q]));
     if (early_.size() < within_) {
       early_.push_back(scoring);
       distances_.emplace_back();
     }
     indices_.push_back(index);
     previous_ = scoring;
+    if (indices_.size() == within_ + steady_ - 1) keep_only_candidates();
   }
 
   // The index of the first live frame, or -1 when there is no such jump.
-  std::int64_t first_live(int steady) const {
+  std::int64_t first_live() const {
     std::int64_t live = -1;
-    for (std::size_t s = 1; s < within_ && s + std::size_t(steady) <= indices_.size(); ++s)
-      if (steady_after(s, std::size_t(steady)) && never_recurs_before(s)) live = indices_[s];
+    for (std::size_t s = 1; decidable(s); ++s)
+      if (steady_after(s) && never_recurs_before(s)) live = indices_[s];
     return live;
   }
 
@@ -215,26 +217,39 @@ class StartupJump {
   static float difference(const cv::Mat& a, const cv::Mat& b) {
     return float(cv::norm(a, b, cv::NORM_L1) / double(a.total()));  // mean |difference|, grey levels
   }
+  bool decidable(std::size_t s) const { return s < within_ && s + steady_ <= indices_.size(); }
   // changes_[k] is between usable frames k and k + 1; the jump into frame s is changes_[s - 1].
-  bool steady_after(std::size_t s, std::size_t steady) const {
+  bool steady_after(std::size_t s) const {
     const float jump = changes_[s - 1];
-    const auto from = changes_.begin() + std::ptrdiff_t(s), to = from + std::ptrdiff_t(steady - 1);
+    const auto from = changes_.begin() + std::ptrdiff_t(s), to = from + std::ptrdiff_t(steady_ - 1);
     return jump > kLeast && jump > kFactor * *std::max_element(from, to);
   }
-  bool never_recurs_before(std::size_t s) const {
-    const float jump = changes_[s - 1];
+  // The first frame of the ramp the jump into frame s ends (s - 1 for a jump alone).
+  std::size_t ramp_start(std::size_t s) const {
     std::size_t first = s - 1;
-    while (first > 0 && changes_[first - 1] >= jump / kFactor) --first;
-    for (std::size_t q = first; q < s; ++q) {
+    while (first > 0 && changes_[first - 1] >= changes_[s - 1] / kFactor) --first;
+    return first;
+  }
+  bool never_recurs_before(std::size_t s) const {
+    for (std::size_t q = ramp_start(s); q < s; ++q) {
       // distances_[q][p - q - 1] is between usable frames q and p
       const auto later = distances_[q].begin() + std::ptrdiff_t(s - q - 1);
-      if (*std::min_element(later, distances_[q].end()) <= jump / kFactor) return false;
+      if (*std::min_element(later, distances_[q].end()) <= changes_[s - 1] / kFactor) return false;
     }
     return true;
   }
+  // Once every jump can be judged steady or not, only the frames before steady ones are compared on.
+  void keep_only_candidates() {
+    std::vector<bool> needed(early_.size(), false);
+    for (std::size_t s = 1; decidable(s); ++s)
+      if (steady_after(s))
+        for (std::size_t q = ramp_start(s); q < s; ++q) needed[q] = true;
+    for (std::size_t q = 0; q < early_.size(); ++q)
+      if (!needed[q]) early_[q].release();
+  }
 
-  std::size_t within_;
-  std::vector<cv::Mat> early_;                 // the first `within` usable frames
+  std::size_t within_, steady_;
+  std::vector<cv::Mat> early_;                 // the first `within` usable frames (released when not needed)
   std::vector<std::vector<float>> distances_;  // from each of them to every later frame
   std::vector<float> changes_;
   std::vector<std::int64_t> indices_;
@@ -395,7 +410,7 @@ SourceScores score_from(FrameSource& source, const ExtractSettings& settings, st
   const ScoreSettings score = score_settings(source, settings);
   out.contact = given_reference(source, settings, out);
   FirstReading first(settings, score, source);
-  StartupJump jump(settings.reference_frames);
+  StartupJump jump(settings.reference_frames, settings.reference_frames);
   bool started = false;  // past the black frames sensors send after stream start
   source.scan(
       [&](std::int64_t index, const cv::Mat& scoring, const cv::Mat& full) {
@@ -421,7 +436,7 @@ SourceScores score_from(FrameSource& source, const ExtractSettings& settings, st
       [&](std::int64_t) { return !out.contact && !first.start(); });
   if (out.contact) return out;
   if (first_live == 0)
-    if (const std::int64_t live = jump.first_live(settings.reference_frames); live > 0) return score_from(source, settings, live);
+    if (const std::int64_t live = jump.first_live(); live > 0) return score_from(source, settings, live);
   first.finish(source.path(), out);
   const ContactReference& start = *first.start();
   if (start.steady() || !first.end_usable()) {
