@@ -84,7 +84,10 @@ WindowTable read_window_table(const h5::File& file) {
   WindowTable t;
   if (!w.has_dataset(layout::kWindowMaterials) || w.open_dataset(layout::kWindowMaterials).dtype() != "string")
     throw input_error(path, w.object_path() + "/" + layout::kWindowMaterials, "is missing or not strings", kRealign);
-  t.materials = w.open_dataset(layout::kWindowMaterials).read_strings();
+  const h5::Dataset names = w.open_dataset(layout::kWindowMaterials);
+  if (names.shape().size() != 1)  // review 18, F9: qa and view refused these, split and train read them flat
+    throw input_error(path, names.object_path(), "has shape " + h5::shape_text(names.shape()) + ", expected (materials)", kRealign);
+  t.materials = names.read_strings();
   const std::int64_t stride = w.has_attr(layout::kStride) ? w.attr_int(layout::kStride) : 0;
   if (stride <= 0) throw input_error(path, w.object_path() + "/@" + layout::kStride, "is missing or not positive", kRealign);
   t.stride = std::size_t(stride);

@@ -113,9 +113,22 @@ Handle Node::open_scalar_attr(std::string_view name) const {
   return attr;
 }
 
-// One fixed-length string as stored: padding is NULs to the end; text after a NUL would be cut off
-// unseen (issue 32), so it is refused.
-std::string Node::fixed_length_text(std::string stored, const std::string& what) const {
+// Names and labels are short: a fixed-length string type declaring more is refused before its
+// buffer is made (review 18, F8: 2 x 1 GiB declared in a 19 MB file ran out of memory).
+std::size_t Node::fixed_length_size(hid_t type, const std::string& what) const {
+  const std::size_t size = H5Tget_size(type);
+  if (size > kLongestFixedString)
+    throw input_error(file_, object_path_,
+                      (what.empty() ? "" : what + " ") + "declares fixed-length strings of " + std::to_string(size) + " bytes each, over the " +
+                          std::to_string(kLongestFixedString >> 10) + " KiB a name or label may take",
+                      "The file is damaged or not what haptex wrote: make it again with the haptex command that wrote it");
+  return size;
+}
+
+// One fixed-length string as stored: padding is NULs to the end (spaces, for a space-padded type:
+// Fortran and MATLAB write them); text after a NUL would be cut off unseen (issue 32), so it is refused.
+std::string Node::fixed_length_text(std::string stored, hid_t type, const std::string& what) const {
+  if (H5Tget_strpad(type) == H5T_STR_SPACEPAD) stored.erase(stored.find_last_not_of(' ') + 1);
   const std::size_t end = std::min(stored.size(), stored.find('\0'));
   if (stored.find_first_not_of('\0', end) != std::string::npos)
     throw input_error(file_, object_path_, what + " holds a NUL byte inside its text",
@@ -165,9 +178,10 @@ std::string Node::attr_bytes(std::string_view name) const {
     H5Dvlen_reclaim(memory.get(), space.get(), H5P_DEFAULT, &text);
     return value;
   }
-  std::string value(H5Tget_size(type.get()), '\0');  // fixed-length strings, as other tools write them
+  const std::string what = "attribute '" + std::string(name) + "'";
+  std::string value(fixed_length_size(type.get(), what), '\0');  // fixed-length strings, as other tools write them
   check_input_status(H5Aread(attr.get(), type.get(), value.data()), "read attribute", where());
-  return fixed_length_text(value, "attribute '" + std::string(name) + "'");
+  return fixed_length_text(value, type.get(), what);
 }
 
 std::string Node::attr_string(std::string_view name) const {
@@ -315,7 +329,7 @@ std::vector<std::string> Dataset::read_strings() const {
 std::vector<std::string> Dataset::read_fixed_strings(hid_t stored) const {
   if (H5Tget_class(stored) != H5T_STRING)
     throw input_error(file_, object_path_, "holds " + dtype() + " values, not text", "Write the names as strings");
-  const std::size_t size = H5Tget_size(stored);
+  const std::size_t size = fixed_length_size(stored, "");
   std::string raw(elements_to_read(size) * size, '\0');
   {
     const BoundedCall bounded(file_, object_path_);
@@ -323,7 +337,7 @@ std::vector<std::string> Dataset::read_fixed_strings(hid_t stored) const {
   }
   std::vector<std::string> values;
   for (std::size_t at = 0; at < raw.size(); at += size)
-    values.push_back(fixed_length_text(raw.substr(at, size), "element " + std::to_string(at / size)));
+    values.push_back(fixed_length_text(raw.substr(at, size), stored, "element " + std::to_string(at / size)));
   return values;
 }
 

@@ -18,6 +18,8 @@ using Shape = std::vector<hsize_t>;
 // The most bytes one dataset or attribute may hold to be read at once: far beyond any haptex file's
 // (a file declaring more, in a few bytes of chunks, is refused instead of exhausting memory).
 inline constexpr std::uint64_t kMostBytesRead = std::uint64_t(4) << 30;
+// The longest fixed-length string (a name, a label, a format) haptex reads.
+inline constexpr std::size_t kLongestFixedString = std::size_t(64) << 10;
 // haptex writes chunks of about 64 KiB; h5py's own are at most 1 MiB.
 inline constexpr std::uint64_t kLargestChunkBytes = std::uint64_t(16) << 20;
 // Throws haptex::Error (bad_input) naming `where` in `file` when count values of `element_size` bytes exceed it.
@@ -63,8 +65,11 @@ class Node {
   std::optional<T> try_attr(std::string_view name) const;
 
  protected:
-  // A fixed-length string's text without its NUL padding; refuses a NUL inside it (`what` names it).
-  std::string fixed_length_text(std::string stored, const std::string& what) const;
+  // A fixed-length string of `type` without its padding; refuses a NUL inside it (`what` names it).
+  std::string fixed_length_text(std::string stored, hid_t type, const std::string& what) const;
+  // A fixed-length string type's size; refuses (bad_input) one over kLongestFixedString (`what`
+  // names an attribute; empty for the dataset itself).
+  std::size_t fixed_length_size(hid_t type, const std::string& what) const;
 
   Handle handle_;
   std::string file_;

@@ -65,9 +65,14 @@ TEST(H5, FixedLengthStringDatasetsRead) {
     test::Edit edit(path);
     edit.write_fixed_strings("names", {"Book", "Brick 2", "\xC3\x9Cn"});
     edit.write_fixed_strings("nul", {"Book", std::string("Bri\0ck", 6)});
+    edit.write_fixed_strings("long", {std::string(kLongestFixedString + 1, 'x')});  // review 18, F8
+    edit.write_fixed_strings("spaces", {"Book", "Brick 2"}, false, true);           // review 18, F10
+    edit.write_fixed_strings("@label", {"Brick 2"}, false, true);
   }
   const Group root = File::open(path).root();
   EXPECT_EQ(root.open_dataset("names").read_strings(), (std::vector<std::string>{"Book", "Brick 2", "Ün"}));
+  EXPECT_EQ(root.open_dataset("spaces").read_strings(), (std::vector<std::string>{"Book", "Brick 2"}));
+  EXPECT_EQ(root.attr_string("label"), "Brick 2");
   const auto refusal = [&](const std::string& name) {
     try {
       root.open_dataset(name).read_strings();
@@ -79,6 +84,8 @@ TEST(H5, FixedLengthStringDatasetsRead) {
   };
   EXPECT_NE(refusal("nul").find("element 1 holds a NUL byte inside its text"), std::string::npos) << refusal("nul");
   EXPECT_NE(refusal("numbers").find("holds float64 values, not text"), std::string::npos) << refusal("numbers");
+  EXPECT_NE(refusal("long").find("declares fixed-length strings of 65537 bytes each, over the 64 KiB"), std::string::npos)
+      << refusal("long");
 }
 
 TEST(H5, CompressedDatasetsUseGzipAndShuffle) {

@@ -94,6 +94,22 @@ TEST(WindowTableFile, RefusesAnotherContractOrDamagedColumnsNamingTheObject) {
   m = refusal(path);
   EXPECT_NE(m.find("/windows/@action_step"), std::string::npos) << m;
   EXPECT_NE(m.find("is 1, this haptex's windows have 50"), std::string::npos) << m;
+  {  // review 18, F9: the material names as a (1, 2) table were read flat by split and train
+    h5::File f = h5::File::open(path, true);
+    f.root().open_group("windows").set_attr("action_step", std::int64_t(kActionStep));
+    const h5::Group group = f.root().open_group("windows");
+    const hid_t windows = group.id();
+    H5Ldelete(windows, "materials", H5P_DEFAULT);
+    const hsize_t dims[2] = {1, 2};
+    const hid_t type = H5Tcopy(H5T_C_S1), space = H5Screate_simple(2, dims, nullptr);
+    H5Tset_size(type, 8);
+    const char names[] = "book\0\0\0\0brick_2";
+    const hid_t d = H5Dcreate2(windows, "materials", type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, names);
+    H5Dclose(d), H5Sclose(space), H5Tclose(type);
+  }
+  m = refusal(path);
+  EXPECT_NE(m.find("/windows/materials: has shape (1, 2), expected (materials)"), std::string::npos) << m;
 
   const std::string broken = dir.file("broken \"`x`\".h5");
   {

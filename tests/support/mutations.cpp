@@ -26,14 +26,14 @@ void Edit::remove(const std::string& path) {
   if (H5Ldelete(root().id(), ("/" + path).c_str(), H5P_DEFAULT) < 0) throw std::runtime_error("cannot delete " + path);
 }
 
-void Edit::write_fixed_strings(const std::string& path, const std::vector<std::string>& texts, bool array) {
+void Edit::write_fixed_strings(const std::string& path, const std::vector<std::string>& texts, bool array, bool space_padded) {
   std::size_t size = 1;
-  for (const auto& t : texts) size = std::max(size, t.size());
+  for (const auto& t : texts) size = std::max(size, t.size() + (space_padded ? 3 : 0));
   std::string bytes;
-  for (const auto& t : texts) bytes += t + std::string(size - t.size(), '\0');
+  for (const auto& t : texts) bytes += t + std::string(size - t.size(), space_padded ? ' ' : '\0');
   const hid_t type = H5Tcopy(H5T_C_S1);
   H5Tset_size(type, size);
-  H5Tset_strpad(type, H5T_STR_NULLPAD);
+  H5Tset_strpad(type, space_padded ? H5T_STR_SPACEPAD : H5T_STR_NULLPAD);
   const hsize_t count[1] = {texts.size()};
   const auto at = path.find('@');
   const hid_t space = at == std::string::npos || array || texts.size() != 1 ? H5Screate_simple(1, count, nullptr)

@@ -30,7 +30,9 @@ class Edit {
   // Fixed-length NUL-padded strings as other tools write them (h5py: numpy bytes), holding exactly
   // `texts` (NULs included; as long as the longest): at `path` "a/b@name" an attribute (scalar unless
   // `array` or several texts), else a new dataset (always an array).
-  void write_fixed_strings(const std::string& path, const std::vector<std::string>& texts, bool array = false);
+  // `space_padded`: padded with spaces and typed so (H5T_STR_SPACEPAD, as Fortran and MATLAB write).
+  void write_fixed_strings(const std::string& path, const std::vector<std::string>& texts, bool array = false,
+                           bool space_padded = false);
   // Replaces a dataset by new values and shape (and dtype T), keeping its string attributes.
   template <typename T>
   void replace(const std::string& path, const std::vector<T>& values, const h5::Shape& shape);
