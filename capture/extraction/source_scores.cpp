@@ -176,24 +176,26 @@ float settled_end_level(const FirstReading& first, const std::vector<float>& sco
 }
 
 // Drivers may hand over stale buffers when a stream starts: frames of an earlier moment (another
-// grasp, another exposure), one or several images, that end in a jump to the live image. The live
+// grasp, another exposure), one image or several, that end in a jump to the live image. The live
 // start is the last frame, within the first `within` usable frames, that
-// - follows a change of over half a grey level that is more than twice any change between the
-//   `steady` frames from it on (a reference can be made there), and
-// - comes after frames whose image never recurs: the frame before the jump, and the frames before it
-//   while the changes stay over half the jump (a ramp of several), each differ from every later frame
-//   by over half the jump.
-// A press coming on at the start is no such jump: the untouched gel before its ramp recurs when it is
-// released. One under way at the start and released in a single frame within `within` frames would be
-// taken for stale frames; docs/capture.md, "Stale start-up frames", says so.
+// - follows a change of more than twice any change among the `steady` frames from it on (so a
+//   reference can be made there) and more than a grey level,
+// - ends a jump of one or two frames (a ramp of three or more changes over half the jump is motion:
+//   a press eased off), and
+// - comes after frames whose image never recurs: the frame before the jump (and the one between, for
+//   a jump over two frames) differs from every later frame, its mean aside (the light drifts), by more
+//   than half of what it differs from the frames after the jump.
+// A press coming on at the start is no such jump: the untouched gel before its onset recurs when it
+// is released. One under way at the start and released within a frame or two of the first `within`
+// frames would be taken for stale frames; docs/capture.md, "Stale start-up frames", says so.
 class StartupJump {
  public:
   StartupJump(int within, int steady) : within_(std::size_t(std::max(within, 0))), steady_(std::size_t(std::max(steady, 1))) {}
 
   void add(std::int64_t index, const cv::Mat& scoring) {
-    if (!indices_.empty()) changes_.push_back(difference(scoring, previous_));
+    if (!indices_.empty() && indices_.size() < within_ + steady_) changes_.push_back(mean_abs(scoring, previous_, false));
     for (std::size_t q = 0; q < early_.size(); ++q)
-      if (!early_[q].empty()) distances_[q].push_back(difference(scoring, early_[q]));
+      if (!early_[q].empty()) distances_[q].push_back(mean_abs(scoring, early_[q], true));
     if (early_.size() < within_) {
       early_.push_back(scoring);
       distances_.emplace_back();
@@ -213,16 +215,24 @@ class StartupJump {
 
  private:
   static constexpr float kFactor = 2.0f, kLeast = 0.5f;
+  static constexpr std::size_t kLongestJump = 2;  // changes
 
-  static float difference(const cv::Mat& a, const cv::Mat& b) {
-    return float(cv::norm(a, b, cv::NORM_L1) / double(a.total()));  // mean |difference|, grey levels
+  // Mean |a - b| in grey levels; `offset_free`: less the mean of a - b.
+  static float mean_abs(const cv::Mat& a, const cv::Mat& b, bool offset_free) {
+    if (!offset_free) return float(cv::norm(a, b, cv::NORM_L1) / double(a.total()));
+    cv::Mat d;
+    cv::subtract(a, b, d, cv::noArray(), CV_32F);
+    d -= cv::mean(d)[0];
+    return float(cv::norm(d, cv::NORM_L1) / double(d.total()));
   }
-  bool decidable(std::size_t s) const { return s < within_ && s + steady_ <= indices_.size(); }
+  // Short videos judge a jump by the frames they have after it.
+  std::size_t window_end(std::size_t s) const { return std::min(s + steady_, indices_.size()); }
+  bool decidable(std::size_t s) const { return s < within_ && s + 1 < indices_.size(); }
   // changes_[k] is between usable frames k and k + 1; the jump into frame s is changes_[s - 1].
   bool steady_after(std::size_t s) const {
     const float jump = changes_[s - 1];
-    const auto from = changes_.begin() + std::ptrdiff_t(s), to = from + std::ptrdiff_t(steady_ - 1);
-    return jump > kLeast && jump > kFactor * *std::max_element(from, to);
+    const auto from = changes_.begin() + std::ptrdiff_t(s), to = changes_.begin() + std::ptrdiff_t(window_end(s) - 1);
+    return jump > kFactor * std::max(kLeast, *std::max_element(from, to)) && s - ramp_start(s) <= kLongestJump;
   }
   // The first frame of the ramp the jump into frame s ends (s - 1 for a jump alone).
   std::size_t ramp_start(std::size_t s) const {
@@ -233,8 +243,9 @@ class StartupJump {
   bool never_recurs_before(std::size_t s) const {
     for (std::size_t q = ramp_start(s); q < s; ++q) {
       // distances_[q][p - q - 1] is between usable frames q and p
-      const auto later = distances_[q].begin() + std::ptrdiff_t(s - q - 1);
-      if (*std::min_element(later, distances_[q].end()) <= changes_[s - 1] / kFactor) return false;
+      const auto after = distances_[q].begin() + std::ptrdiff_t(s - q - 1);
+      const float apart = *std::max_element(after, distances_[q].begin() + std::ptrdiff_t(window_end(s) - q - 1));
+      if (*std::min_element(after, distances_[q].end()) <= apart / kFactor) return false;
     }
     return true;
   }
@@ -250,8 +261,8 @@ class StartupJump {
 
   std::size_t within_, steady_;
   std::vector<cv::Mat> early_;                 // the first `within` usable frames (released when not needed)
-  std::vector<std::vector<float>> distances_;  // from each of them to every later frame
-  std::vector<float> changes_;
+  std::vector<std::vector<float>> distances_;  // from each of them to every later frame, offset-free
+  std::vector<float> changes_;                 // between consecutive frames, over the first within + steady
   std::vector<std::int64_t> indices_;
   cv::Mat previous_;
 };

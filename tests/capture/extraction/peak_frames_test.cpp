@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <regex>
+#include <tuple>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -199,14 +200,17 @@ TEST_F(VideoScores, AVideoThatStartsInContactTakesItsEnd) {
   EXPECT_EQ(depth[std::size_t(plans[0].contact.peak)], 1.0) << "the peak is a fully pressed frame";
 }
 
-// Frames of a gel pressed over discs (one depth list per disc centre), with noise, as a PNG sequence.
-std::string pressed_sequence(const std::string& folder, const std::vector<std::pair<cv::Point, std::vector<double>>>& discs) {
+// Frames of a gel pressed over discs (one depth list per disc centre), with noise, as a PNG sequence;
+// `light` grey levels per frame, when given, are added to the whole image (a drifting light).
+std::string pressed_sequence(const std::string& folder, const std::vector<std::pair<cv::Point, std::vector<double>>>& discs,
+                             const std::vector<double>& light = {}) {
   std::filesystem::create_directories(folder);
   cv::RNG rng(5);
   for (std::size_t i = 0; i < discs.front().second.size(); ++i) {
     cv::Mat frame(120, 160, CV_32FC3);
+    const float offset = light.empty() ? 0.0f : float(light[i]);
     for (int y = 0; y < frame.rows; ++y)
-      for (int x = 0; x < frame.cols; ++x) frame.at<cv::Vec3f>(y, x) = cv::Vec3f::all(80.0f + 0.5f * float(x) + 0.3f * float(y));
+      for (int x = 0; x < frame.cols; ++x) frame.at<cv::Vec3f>(y, x) = cv::Vec3f::all(80.0f + offset + 0.5f * float(x) + 0.3f * float(y));
     for (const auto& [centre, depth] : discs) {
       cv::Mat mask = cv::Mat::zeros(frame.size(), CV_8U);
       cv::circle(mask, centre, discs.size() == 1 ? 50 : 25, cv::Scalar(255), cv::FILLED);
@@ -279,6 +283,28 @@ TEST_F(VideoScores, APressComingOnAtTheStartIsNoStaleStart) {
   ASSERT_EQ(plans.size(), 1u);
   EXPECT_GE(plans[0].contact.peak, 9);
   EXPECT_LT(plans[0].contact.peak, 31);
+}
+
+// Review 18, F1 and F2: a press on at frame 3 under a light that brightens 4 grey levels over the
+// video (the untouched gel recurs, brighter), and one under way at frame 0 eased off over five frames
+// (motion, not a driver's jump): neither start is stale, and each press is found.
+TEST_F(VideoScores, APressAtTheStartUnderADriftingLightOrEasedOffIsNoStaleStart) {
+  std::vector<double> on_at_3, eased, light;
+  for (int i = 0; i < 100; ++i) {
+    on_at_3.push_back(i >= 3 && i <= 60 ? 6.0 : 0.0);  // a mean change of 2.5 grey levels: less than the drift
+    eased.push_back(i < 5 ? 30.0 : std::max(0.0, 30.0 - 6.0 * (i - 4)));
+    light.push_back(4.0 * i / 99.0);
+  }
+  for (const auto& [name, depth, drift] : {std::tuple{"drift", on_at_3, light}, std::tuple{"eased", eased, std::vector<double>{}}}) {
+    SCOPED_TRACE(name);
+    auto source = open_image_sequence(pressed_sequence(dir_.file(name), {{{80, 60}, depth}}, drift));
+    const SourceScores scores = score_source(*source, {});
+    EXPECT_EQ(scores.stale_frames, 0) << scores.reference_note;
+    const auto plans = plan_presses(scores.scores, scores.contact->segmenter({}), 12, 10);
+    ASSERT_EQ(plans.size(), 1u) << scores.reference_note;
+    EXPECT_EQ(depth[std::size_t(plans[0].contact.peak)], *std::max_element(depth.begin(), depth.end()))
+        << "the peak is a fully pressed frame";
+  }
 }
 
 // A video that starts mid-touch and ends with dark frames (the sensor unplugged, a fade): the dark
