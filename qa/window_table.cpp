@@ -1,5 +1,7 @@
 #include "qa/window_table.hpp"
 
+#include <string_view>
+
 #include "core/error.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/window_table.hpp"
@@ -59,11 +61,20 @@ std::optional<WindowTable> load_window_table(const h5::Group& root, std::string&
   const auto stride = windows.try_attr<std::int64_t>(layout::kStride), action = windows.try_attr<std::int64_t>(layout::kActionSamplesAttr),
              window = windows.try_attr<std::int64_t>(layout::kWindowSamplesAttr), action_end = windows.try_attr<std::int64_t>(layout::kActionEndAttr),
              action_step = windows.try_attr<std::int64_t>(layout::kActionStepAttr);
-  if (!stride || !action || !window || !action_end || !action_step || *stride <= 0 || *action <= 0 || *window <= 0 ||
-      *action_step <= 0 || *action > *window || *action_step > *window || (*action - 1) > *action_end / *action_step ||
-      *action_end >= *window) {
-    problem = "/windows has no positive integer stride, action_samples, action_step, window_samples and action_end attributes "
-              "(action_end: the action's last sample inside the window, its first action_step (action_samples - 1) before it)";
+  // Review 18, F11: the attribute at fault is named.
+  const std::pair<const char*, const std::optional<std::int64_t>&> attributes[] = {
+      {layout::kStride, stride}, {layout::kActionSamplesAttr, action}, {layout::kWindowSamplesAttr, window},
+      {layout::kActionStepAttr, action_step}, {layout::kActionEndAttr, action_end}};
+  for (const auto& [name, value] : attributes) {
+    const bool may_be_zero = std::string_view(name) == layout::kActionEndAttr;  // the window's first sample
+    if (!value || *value < (may_be_zero ? 0 : 1)) {
+      problem = "/windows/@" + std::string(name) + " is missing or not one " + (may_be_zero ? "non-negative" : "positive") + " integer";
+      return std::nullopt;
+    }
+  }
+  if (*action > *window || *action_step > *window || (*action - 1) > *action_end / *action_step || *action_end >= *window) {
+    problem = "/windows' action_samples, action_step, window_samples and action_end do not fit together (action_end: the "
+              "action's last sample inside the window, its first action_step (action_samples - 1) before it)";
     return std::nullopt;
   }
   t.stride = std::size_t(*stride);

@@ -298,7 +298,7 @@ std::vector<BrokenShard> broken_shards() {
        {"/@comment", "is not an attribute haptex writes"}},
       {"a window table of stride 0 (review 4: qa called it clean)", p.dataset, [](Edit& e, const std::string&) {
          e.group("windows").set_attr("stride", std::int64_t(0));
-       }, {"/windows has no positive integer stride", "dataset.windows"}},
+       }, {"/windows/@stride is missing or not one positive integer", "dataset.windows"}},
       {"a material hard-linked under a second name", p.recordings, [](Edit& e, const std::string& m) {
          H5Lcreate_hard(e.root().id(), m.c_str(), e.root().id(), "materials/zz_again", H5P_DEFAULT, H5P_DEFAULT);
        }, {"second link to"}, false},
