@@ -202,6 +202,10 @@ class StartupJump {
     }
     indices_.push_back(index);
     previous_ = scoring;
+    // A frame matters only before a jump into the next frame or the one after it.
+    if (const std::size_t n = indices_.size(); n >= 3 && n - 3 < early_.size() &&
+                                               std::max(changes_[n - 3], changes_[n - 2]) <= kFactor * kLeast)
+      early_[n - 3].release();
     if (indices_.size() == within_ + steady_ - 1) keep_only_candidates();
   }
 
