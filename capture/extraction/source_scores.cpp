@@ -206,7 +206,6 @@ class StartupJump {
     if (const std::size_t n = indices_.size(); n >= 3 && n - 3 < early_.size() &&
                                                std::max(changes_[n - 3], changes_[n - 2]) <= kFactor * kLeast)
       early_[n - 3].release();
-    if (indices_.size() == within_ + steady_ - 1) keep_only_candidates();
   }
 
   // The index of the first live frame, or -1 when there is no such jump.
@@ -253,18 +252,9 @@ class StartupJump {
     }
     return true;
   }
-  // Once every jump can be judged steady or not, only the frames before steady ones are compared on.
-  void keep_only_candidates() {
-    std::vector<bool> needed(early_.size(), false);
-    for (std::size_t s = 1; decidable(s); ++s)
-      if (steady_after(s))
-        for (std::size_t q = ramp_start(s); q < s; ++q) needed[q] = true;
-    for (std::size_t q = 0; q < early_.size(); ++q)
-      if (!needed[q]) early_[q].release();
-  }
 
   std::size_t within_, steady_;
-  std::vector<cv::Mat> early_;                 // the first `within` usable frames (released when not needed)
+  std::vector<cv::Mat> early_;                 // the first `within` usable frames (released when no jump follows)
   std::vector<std::vector<float>> distances_;  // from each of them to every later frame, offset-free
   std::vector<float> changes_;                 // between consecutive frames, over the first within + steady
   std::vector<std::int64_t> indices_;
