@@ -14,7 +14,7 @@ void DatasetSplitInput::declare(CLI::App& app, const std::string& split_help) {
 split::DatasetSplit DatasetSplitInput::read() const {
   const split::SplitManifestDocument manifest = split::read_split_manifest(split);  // read once, for both
   split::DatasetSplit windows = split::read_dataset_split(dataset, manifest);
-  qa::require_sound_windows(dataset);
+  qa::require_sound_dataset(dataset);
   qa::require_sound_split(manifest, dataset);
   return windows;
 }

@@ -56,7 +56,7 @@ class SplitCommand : public Command {
     // The plots go into a folder written whole (refused now, before any work, when it may not be replaced).
     std::optional<PartialDirectory> plots_dir;
     if (!no_plots_) plots_dir.emplace(plots_folder(), FolderOptions{force_, "plot folder", "-o", "haptex split"});
-    qa::require_sound_windows(dataset_);
+    qa::require_sound_dataset(dataset_);
     const auto windows = split::read_dataset_windows(dataset_);
     const auto splits = split::search_split(windows, options_, dataset_);
     const nlohmann::json manifest = split::manifest_json(dataset_, options_, splits, global.command_line);

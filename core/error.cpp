@@ -13,7 +13,7 @@ Error input_error(const std::string& file, const std::string& where, const std::
   message += ": " + what;
   if (!fix.empty()) message += ". " + fix;
   Error error(Error::Kind::bad_input, message);
-  error.file_ = file, error.where_ = where, error.fix_ = fix;
+  error.file_ = file, error.where_ = where, error.finding_ = what, error.fix_ = fix;
   return error;
 }
 
@@ -22,7 +22,7 @@ Error failure(const std::string& what) { return Error(Error::Kind::failed, what)
 Error renamed_in(const Error& error, const std::string& from, const std::string& to) {
   const std::string message = text::replace_all(error.what(), text::printable(from), text::printable(to));  // as input_error wrote them
   Error renamed(error.kind(), text::replace_all(message, from, to));
-  renamed.file_ = error.file_ == from ? to : error.file_, renamed.where_ = error.where_, renamed.fix_ = error.fix_;
+  renamed.file_ = error.file_ == from ? to : error.file_, renamed.where_ = error.where_, renamed.finding_ = error.finding_, renamed.fix_ = error.fix_;
   return renamed;
 }
 

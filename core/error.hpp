@@ -19,6 +19,7 @@ class Error : public std::runtime_error {
   // What input_error was given, for `--json` errors (apps/run_main.cpp); empty for other errors.
   const std::string& file() const { return file_; }
   const std::string& where() const { return where_; }
+  const std::string& finding() const { return finding_; }  // WHAT: what is wrong there
   const std::string& fix() const { return fix_; }
 
  private:
@@ -29,7 +30,7 @@ class Error : public std::runtime_error {
     return text;
   }
   Kind kind_;
-  std::string file_, where_, fix_;
+  std::string file_, where_, finding_, fix_;
 };
 
 // "FILE: WHERE: WHAT. FIX" — the shape every bad-input message takes; FILE and WHERE are shown

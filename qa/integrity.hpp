@@ -23,10 +23,12 @@ std::vector<CheckResult> check_integrity(const h5::Group& root, dataset::Kind ki
 // when check_integrity finds anything.
 void require_integrity(const h5::Group& root, dataset::Kind kind);
 
-// The window table's checks (dataset.windows, dataset.cache) on the dataset at path, which split,
-// windows, train and evaluate read their windows, actions and targets from: a table qa fails (rows
-// twice, out of order, targets that are not the recordings' spectra) never splits, trains or scores
-// (review 12, F4). Throws as require_integrity.
-void require_sound_windows(const std::string& dataset_path);
+// The layout checks (layout.*) and the window table's (dataset.windows, dataset.cache) on the dataset
+// at path, which split, windows, train and evaluate read their windows, actions and targets from: a
+// table qa fails (rows twice, out of order, targets that are not the recordings' spectra) never
+// splits, trains or scores (review 12, F4), and neither does a file whose objects qa calls malformed,
+// even ones these commands do not read (review 18, F9: a press @fps of two values or NaN). The image
+// and signal checks stay qa's and align's: they decode every image. Throws as require_integrity.
+void require_sound_dataset(const std::string& dataset_path);
 
 }  // namespace haptex::qa

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/h5/link_rule.hpp"
 #include "core/naming.hpp"
+#include "core/text/utf8.hpp"
 #include "dataset/object_paths.hpp"
 #include "dataset/layout.hpp"
 #include "dataset/root_content.hpp"
@@ -44,7 +45,7 @@ struct FoundObject {
   long long values = 1;  // how many an attribute holds (datasets: 1)
   h5::Shape shape;     // datasets
   std::optional<std::string> units;  // datasets whose row names units: their `units` attribute, when they have one
-  bool readable_text = true;  // string attributes: UTF-8 without a NUL inside, as haptex reads names
+  std::string text_problem;  // string attributes: why haptex cannot read it as a name (not UTF-8, a NUL inside); empty when it can
   bool finite = true;         // scalar float attributes: not NaN or infinite (rates, durations, thresholds)
 };
 
@@ -57,6 +58,15 @@ struct RowFindings {
 
 bool is_attribute_row(const LayoutRow& row) { return !row.attribute.empty(); }
 
+// The first bad byte is named, as the readers of names name it (README, "Names and paths").
+std::string text_problem(const h5::Node& node, const std::string& name) {
+  try {
+    return text::utf8_problem(node.attr_bytes(name)).value_or("");
+  } catch (const Error& e) {  // a NUL inside a fixed-length string, a damaged or absurd type
+    return "is not readable as text (" + e.finding() + ")";
+  }
+}
+
 FoundObject find_attribute(const h5::Group& root, const LayoutRow& row, const std::string& owner) {
   FoundObject f;
   f.where = (owner == "/" ? "/" : owner + "/") + "@" + row.attribute;
@@ -66,7 +76,7 @@ FoundObject find_attribute(const h5::Group& root, const LayoutRow& row, const st
   f.present = true;
   f.dtype = info.dtype;
   f.values = info.values;
-  if (f.dtype == "string" && f.values == 1) f.readable_text = node.try_attr<std::string>(row.attribute).has_value();
+  if (f.dtype == "string" && f.values == 1) f.text_problem = text_problem(node, row.attribute);
   if (f.dtype.rfind("float", 0) == 0 && f.values == 1) {
     const std::optional<double> value = node.try_attr<double>(row.attribute);
     f.finite = value && std::isfinite(*value);
@@ -211,7 +221,7 @@ CheckResult check_layout_dtype(const std::vector<RowFindings>& rows) {
       if (f.dtype != r.row->dtype) tally.fail(f.where, "dtype " + f.dtype + ", expected " + r.row->dtype);
       else if (r.row->shape.empty() && f.values != 1)
         tally.fail(f.where, "holds " + std::to_string(f.values) + " values, expected one " + r.row->dtype);
-      else if (!f.readable_text) tally.fail(f.where, "is not UTF-8 text, or holds a NUL byte inside its text");
+      else if (!f.text_problem.empty()) tally.fail(f.where, f.text_problem);
       else if (!f.finite) tally.fail(f.where, "is not a finite number (NaN or infinite)");
       else tally.pass();
     }

@@ -84,14 +84,21 @@ std::string printable(std::string_view text, bool keep_newlines) {
   return out;
 }
 
-void require_utf8(std::string_view text, const std::string& file, const std::string& what) {
+std::optional<std::string> utf8_problem(std::string_view text) {
   if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos)
-    throw input_error(file, what, "holds a NUL character (byte " + std::to_string(nul) + "), which no name may hold",
-                      "Remove it: HDF5 and C strings end at a NUL, so the name would be cut there");
+    return "holds a NUL character (byte " + std::to_string(nul) + "), which no name may hold";
   const std::size_t offset = invalid_utf8_offset(text);
-  if (offset == std::string_view::npos) return;
-  throw input_error(file, what, "is not valid UTF-8 (byte " + std::to_string(offset) + " of \"" + printable(text) + "\")",
-                    "Write it in UTF-8 (iconv -f latin1 -t utf-8 converts a file, convmv a folder name)");
+  if (offset == std::string_view::npos) return std::nullopt;
+  return "is not valid UTF-8 (byte " + std::to_string(offset) + " of \"" + printable(text) + "\")";
+}
+
+void require_utf8(std::string_view text, const std::string& file, const std::string& what) {
+  const std::optional<std::string> problem = utf8_problem(text);
+  if (!problem) return;
+  throw input_error(file, what, *problem,
+                    text.find('\0') != std::string_view::npos
+                        ? "Remove it: HDF5 and C strings end at a NUL, so the name would be cut there"
+                        : "Write it in UTF-8 (iconv -f latin1 -t utf-8 converts a file, convmv a folder name)");
 }
 
 }  // namespace haptex::text

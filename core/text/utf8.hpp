@@ -2,6 +2,7 @@
 // UTF-8, strictly (RFC 3629): no overlong forms, no surrogates, nothing past U+10FFFF. Names enter
 // haptex from files, folders and the command line; they must be UTF-8 before anything stores them
 // (JSON and HDF5 strings are UTF-8), so readers refuse the rest at the door with require_utf8().
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -39,6 +40,10 @@ std::string shortened(std::string_view text, std::size_t most = 80);
 // text without a leading UTF-8 byte order mark, which spreadsheets and some editors write before
 // CSV and JSON (nlohmann's parser skips it too).
 std::string_view without_byte_order_mark(std::string_view text);
+
+// What is wrong with text as a name, said as a finding about it ("is not valid UTF-8 (byte 3 of
+// \"Caf\\xe9\")", "holds a NUL character (byte 2), ..."); nullopt when it is UTF-8 without a NUL.
+std::optional<std::string> utf8_problem(std::string_view text);
 
 // Throws haptex::Error (bad input) naming file, what (e.g. "the material name") and the byte
 // offset when text is not UTF-8, or holds a NUL (which HDF5 and C strings would cut the name at).

@@ -5,8 +5,11 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <span>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -81,6 +84,36 @@ TEST(Messages, AWindowOfAMissingRecordingIsNamed) {
   EXPECT_NE(qa.out.find("dataset.windows          error     fail"), std::string::npos) << qa.out;
 }
 
+// Review 18, F9: a press @fps of NaN or of two values is malformed (qa's layout.* fails it), so split,
+// windows and train refuse the dataset although they never read the press's rate, naming the place.
+TEST(Messages, AMalformedPressAttributeStopsEveryCommandThatReadsTheDataset) {
+  const TempDir dir;
+  const double two[] = {30.0, 60.0};
+  const std::vector<std::pair<std::string, std::function<void(h5::Group&)>>> cases = {
+      {"NaN", [](h5::Group& press) { press.set_attr("fps", std::nan("")); }},
+      {"two values", [&two](h5::Group& press) { press.set_attr("fps", std::span<const double>(two)); }}};
+  for (const auto& [what, change] : cases) {
+    SCOPED_TRACE(what);
+    const std::string d = copy_into(dir, small_pipeline().dataset, "d.h5");
+    std::string place;
+    {
+      Edit edit(d);
+      const std::string material = edit.group("materials").children().at(0);
+      h5::Group press = edit.group("materials/" + material + "/presses/0");
+      change(press);
+      place = "/materials/" + material + "/presses/0/@fps";
+    }
+    nlohmann::json manifest = read_json(small_pipeline().split);
+    manifest["dataset"]["sha256"] = sha256_file(d);
+    write_json(dir.file("split.json"), manifest);
+    expect_refusal(run_haptex({"split", d, "-o", dir.file("s.json")}), {d, place, "haptex qa"});
+    expect_refusal(run_haptex({"windows", d, "--split", dir.file("split.json"), "-o", dir.file("w.h5")}), {d, place});
+    expect_refusal(run_haptex(quick_train_args(d, dir.file("split.json"), dir.file("m.h5"))), {d, place});
+    EXPECT_EQ(files_named(dir.path().string(), {"s.json", "w.h5", "m.h5"}), std::vector<std::string>{});
+    fs::remove(d);
+  }
+}
+
 // Names must be UTF-8; the first byte that is not is named, with the file, and nothing is written.
 TEST(Messages, ANameThatIsNotUtf8IsRefusedAtTheDoor) {
   const TempDir dir;
@@ -114,7 +147,9 @@ TEST(Messages, ANameThatIsNotUtf8IsRefusedAtTheDoor) {
   }
   const std::string where = "/materials/" + small_material() + " attribute 'name'";
   expect_refusal(run_haptex({"info", d, "--json"}), {d, where, "not valid UTF-8"});
-  expect_refusal(run_haptex({"split", d, "-o", dir.file("split.json")}), {d, where, "not valid UTF-8"});
+  // split's gate (qa's layout checks, review 18 F9) finds it first, and names the byte as well.
+  expect_refusal(run_haptex({"split", d, "-o", dir.file("split.json")}),
+                 {d, "/materials/" + small_material() + "/@name", "not valid UTF-8 (byte 3", "layout.dtype"});
   EXPECT_FALSE(fs::exists(dir.file("split.json")));
 }
 
