@@ -1,6 +1,10 @@
 #include "dataset/window_table.hpp"
 
+#include <optional>
+#include <string_view>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 
 #include "core/error.hpp"
 #include "dataset/layout.hpp"
@@ -10,30 +14,86 @@ namespace {
 
 constexpr const char* kRealign = "Run haptex align again to rebuild the dataset";
 
-// A column of `rows` values (width 0) or a (rows, width) matrix; rows unknown: any.
+std::string object(const char* name) { return "/" + std::string(layout::kWindows) + "/" + name; }
+
+std::string expected_shape(std::size_t rows, std::size_t width) {
+  return "expected (" + (rows == std::size_t(-1) ? std::string("windows") : std::to_string(rows)) +
+         (width == 0 ? "" : ", " + std::to_string(width)) + ")";
+}
+
+// A column of `rows` values (width 0) or a (rows, width) matrix of T's kind (rows unknown: any), or
+// what is wrong with it.
 template <typename T>
-std::vector<T> column(const h5::Group& windows, const char* name, std::size_t width, std::size_t rows, const std::string& path) {
-  if (!windows.has_dataset(name)) throw input_error(path, "/" + std::string(layout::kWindows) + "/" + name, "is missing", kRealign);
+std::optional<WindowTableProblem> read_column(const h5::Group& windows, const char* name, std::size_t width, std::size_t rows,
+                                              std::vector<T>& out) {
+  if (!windows.has_dataset(name)) return WindowTableProblem{object(name), "is missing"};
   const h5::Dataset d = windows.open_dataset(name);
   const std::string kind = std::is_integral_v<T> ? "int" : "float";
-  if (d.dtype().rfind(kind, 0) != 0)
-    throw input_error(path, d.object_path(), "holds " + d.dtype() + ", expected " + kind + " values", kRealign);
+  if (d.dtype().rfind(kind, 0) != 0) return WindowTableProblem{object(name), "holds " + d.dtype() + ", expected " + kind + " values"};
   const h5::Shape shape = d.shape();
   const bool fits = width == 0 ? shape.size() == 1 : shape.size() == 2 && shape[1] == width;
   if (!fits || (rows != std::size_t(-1) && shape[0] != rows))
-    throw input_error(path, d.object_path(),
-                      "has shape " + h5::shape_text(shape) + ", expected (" + (rows == std::size_t(-1) ? "windows" : std::to_string(rows)) +
-                          (width == 0 ? "" : ", " + std::to_string(width)) + ")",
-                      kRealign);
-  return d.read<T>();
+    return WindowTableProblem{object(name), "has shape " + h5::shape_text(shape) + ", " + expected_shape(rows, width)};
+  out = d.read<T>();
+  return std::nullopt;
 }
 
-void expect_attribute(const h5::Group& windows, const char* name, std::size_t value, const std::string& path) {
-  const std::int64_t found = windows.has_attr(name) ? windows.attr_int(name) : -1;
-  if (found != std::int64_t(value))
+// A (rows, any width) float matrix, or nothing (width 0): qa reports its width against the contract.
+void read_any_width(const h5::Group& windows, const char* name, std::size_t rows, std::vector<float>& out, std::size_t& width) {
+  if (!windows.has_dataset(name)) return;
+  const h5::Dataset d = windows.open_dataset(name);
+  const h5::Shape shape = d.shape();
+  if (shape.size() != 2 || shape[0] != rows || shape[1] == 0 || d.dtype().rfind("float", 0) != 0) return;
+  width = shape[1];
+  out = d.read<float>();
+}
+
+// The contract's attributes as stored: one positive integer each (action_end, the window's first
+// sample at the least, may be 0); stride too.
+std::optional<WindowTableProblem> read_attributes(const h5::Group& windows, StatedWindowTable& t) {
+  std::int64_t stride = 0;
+  const std::pair<const char*, std::int64_t*> attributes[] = {
+      {layout::kStride, &stride}, {layout::kActionSamplesAttr, &t.action_samples}, {layout::kWindowSamplesAttr, &t.window_samples},
+      {layout::kActionStepAttr, &t.action_step}, {layout::kActionEndAttr, &t.action_end}};
+  for (const auto& [name, value] : attributes) {
+    const bool may_be_zero = std::string_view(name) == layout::kActionEndAttr;
+    const std::optional<std::int64_t> stated = windows.try_attr<std::int64_t>(name);
+    // Review 18, F11: the attribute at fault is named.
+    if (!stated || *stated < (may_be_zero ? 0 : 1))
+      return WindowTableProblem{windows.object_path() + "/@" + name,
+                                std::string("is missing or not one ") + (may_be_zero ? "non-negative" : "positive") + " integer"};
+    *value = *stated;
+  }
+  t.stride = std::size_t(stride);
+  return std::nullopt;
+}
+
+std::optional<WindowTableProblem> read_materials(const h5::Group& windows, StatedWindowTable& t) {
+  if (!windows.has_dataset(layout::kWindowMaterials) || windows.open_dataset(layout::kWindowMaterials).dtype() != "string")
+    return WindowTableProblem{object(layout::kWindowMaterials), "is missing or not strings"};
+  const h5::Dataset names = windows.open_dataset(layout::kWindowMaterials);
+  if (names.shape().size() != 1)  // review 18, F9: split and train read a (1, 2) table flat
+    return WindowTableProblem{names.object_path(), "has shape " + h5::shape_text(names.shape()) + ", expected (materials)"};
+  t.materials = names.read_strings();
+  return std::nullopt;
+}
+
+// The integer columns, of one length, no longer than the recordings allow (a windows file has no
+// recordings: haptex windows).
+std::optional<WindowTableProblem> read_rows(const h5::Group& root, const h5::Group& windows, StatedWindowTable& t) {
+  if (auto problem = read_column<std::int64_t>(windows, layout::kWindowStart, 0, std::size_t(-1), t.start)) return problem;
+  if (const std::size_t most = most_windows(root, t.stride); root.has_group(layout::kMaterials) && t.size() > most)
+    return WindowTableProblem{object(layout::kWindowStart), "has " + std::to_string(t.size()) + " rows, more than the " + std::to_string(most) +
+                                                                " windows its recordings hold at stride " + std::to_string(t.stride)};
+  if (auto problem = read_column<std::int32_t>(windows, layout::kWindowMaterial, 0, t.size(), t.material)) return problem;
+  return read_column<std::int32_t>(windows, layout::kWindowRecording, 0, t.size(), t.recording);
+}
+
+// An attribute of the table that differs from this haptex's contract, refused naming it.
+void expect_attribute(const h5::Group& windows, const char* name, std::int64_t stated, std::size_t value, const std::string& path) {
+  if (stated != std::int64_t(value))
     throw input_error(path, windows.object_path() + "/@" + name,
-                      found < 0 ? "is missing" : "is " + std::to_string(found) + ", this haptex's windows have " + std::to_string(value),
-                      kRealign);
+                      "is " + std::to_string(stated) + ", this haptex's windows have " + std::to_string(value), kRealign);
 }
 
 }  // namespace
@@ -72,37 +132,37 @@ std::size_t most_windows(const h5::Group& root, std::size_t stride) {
   return most;
 }
 
+std::variant<StatedWindowTable, WindowTableProblem> read_stated_window_table(const h5::Group& root) {
+  if (!root.has_group(layout::kWindows)) return WindowTableProblem{"/" + std::string(layout::kWindows), "is missing"};
+  const h5::Group windows = root.open_group(layout::kWindows);
+  StatedWindowTable t;
+  if (auto problem = read_attributes(windows, t)) return *problem;
+  if (auto problem = read_materials(windows, t)) return *problem;
+  if (auto problem = read_rows(root, windows, t)) return *problem;
+  read_any_width(windows, layout::kWindowAction, t.size(), t.action, t.action_width);
+  read_any_width(windows, layout::kWindowTarget, t.size(), t.target, t.target_width);
+  return t;
+}
+
 WindowTable read_window_table(const h5::File& file) {
   const std::string& path = file.path();
-  const h5::Group root = file.root();
-  if (!root.has_group(layout::kWindows)) throw input_error(path, "/" + std::string(layout::kWindows), "is missing", kRealign);
-  const h5::Group w = root.open_group(layout::kWindows);
-  expect_attribute(w, layout::kActionSamplesAttr, kActionSamples, path);
-  expect_attribute(w, layout::kWindowSamplesAttr, kWindowSamples, path);
-  expect_attribute(w, layout::kActionEndAttr, kActionEnd, path);
-  expect_attribute(w, layout::kActionStepAttr, kActionStep, path);
-  WindowTable t;
-  if (!w.has_dataset(layout::kWindowMaterials) || w.open_dataset(layout::kWindowMaterials).dtype() != "string")
-    throw input_error(path, w.object_path() + "/" + layout::kWindowMaterials, "is missing or not strings", kRealign);
-  const h5::Dataset names = w.open_dataset(layout::kWindowMaterials);
-  if (names.shape().size() != 1)  // review 18, F9: qa and view refused these, split and train read them flat
-    throw input_error(path, names.object_path(), "has shape " + h5::shape_text(names.shape()) + ", expected (materials)", kRealign);
-  t.materials = names.read_strings();
-  const std::int64_t stride = w.has_attr(layout::kStride) ? w.attr_int(layout::kStride) : 0;
-  if (stride <= 0) throw input_error(path, w.object_path() + "/@" + layout::kStride, "is missing or not positive", kRealign);
-  t.stride = std::size_t(stride);
-  t.start = column<std::int64_t>(w, layout::kWindowStart, 0, std::size_t(-1), path);
-  // A dataset's table (a windows file has the same columns and no recordings: haptex windows).
-  if (const std::size_t most = most_windows(root, t.stride); root.has_group(layout::kMaterials) && t.size() > most)
-    throw input_error(path, w.object_path() + "/" + layout::kWindowStart,
-                      "has " + std::to_string(t.size()) + " rows, more than the " + std::to_string(most) + " windows its recordings hold at stride " +
-                          std::to_string(t.stride),
-                      kRealign);
-  t.material = column<std::int32_t>(w, layout::kWindowMaterial, 0, t.size(), path);
-  t.recording = column<std::int32_t>(w, layout::kWindowRecording, 0, t.size(), path);
-  t.action = column<float>(w, layout::kWindowAction, kActionValues, t.size(), path);
-  t.target = column<float>(w, layout::kWindowTarget, kTargetBins, t.size(), path);
-  return t;
+  auto read = read_stated_window_table(file.root());
+  if (const auto* problem = std::get_if<WindowTableProblem>(&read)) throw input_error(path, problem->where, problem->what, kRealign);
+  StatedWindowTable& t = std::get<StatedWindowTable>(read);
+  const h5::Group windows = file.root().open_group(layout::kWindows);
+  expect_attribute(windows, layout::kActionSamplesAttr, t.action_samples, kActionSamples, path);
+  expect_attribute(windows, layout::kWindowSamplesAttr, t.window_samples, kWindowSamples, path);
+  expect_attribute(windows, layout::kActionEndAttr, t.action_end, kActionEnd, path);
+  expect_attribute(windows, layout::kActionStepAttr, t.action_step, kActionStep, path);
+  const std::tuple<const char*, std::size_t, std::size_t> matrices[] = {{layout::kWindowAction, t.action_width, kActionValues},
+                                                                        {layout::kWindowTarget, t.target_width, kTargetBins}};
+  for (const auto& [name, stated, width] : matrices)
+    if (stated != width) {  // missing, of another type or shape: said precisely
+      std::vector<float> unused;
+      const auto problem = read_column<float>(windows, name, width, t.size(), unused);
+      throw input_error(path, problem ? problem->where : object(name), problem ? problem->what : "is unreadable", kRealign);
+    }
+  return std::move(static_cast<WindowTable&>(t));
 }
 
 }  // namespace haptex::dataset

@@ -11,19 +11,18 @@
 
 namespace haptex::qa {
 
-// The table as the file holds it, read leniently: dataset.windows compares its widths and attributes
-// with the contract (dataset/window.hpp) instead of refusing the file, as dataset::read_window_table does.
-struct WindowTable : dataset::WindowTable {
-  std::size_t action_width = 0, target_width = 0;  // action and target rows (empty when unreadable)
-  std::int64_t action_samples = 0, window_samples = 0, action_end = 0, action_step = 0;
-
+// The table as the file states it (dataset::read_stated_window_table, the one reading of /windows):
+// dataset.windows compares its attributes and widths with the contract (dataset/window.hpp) instead
+// of refusing the file, as dataset::read_window_table does.
+struct WindowTable : dataset::StatedWindowTable {
   // The first and one-past-last sample window w uses: [t, t + window_samples); its action samples are
   // t + action_end - (action_samples - 1 - j) action_step, j = 0 .. action_samples - 1.
   std::int64_t first_sample(std::size_t w) const { return start[w]; }
   std::int64_t end_sample(std::size_t w) const { return start[w] + window_samples; }
 };
 
-// The table, or nullopt with `problem` saying what is missing or inconsistent (layout.* reports it).
+// The table, or nullopt with `problem` saying what is missing or inconsistent, or which attributes do
+// not fit together (layout.* reports it).
 std::optional<WindowTable> load_window_table(const h5::Group& root, std::string& problem);
 
 // The `samples` attribute of /materials/{id}/recordings/{k}, when that recording exists.
