@@ -33,13 +33,16 @@ Trajectory recorded_trajectory(const std::string& path, const RecordedStretch& s
   const std::size_t total = signals.force_lp.size();
   const double rate = dataset::kSampleRateHz;
   // The sample at or after --start, so a start within the last sample's 0.1 ms is that sample (review 13, C1).
-  const std::size_t first = std::size_t(std::ceil(stretch.start_s * rate - 1e-9));
-  if (first >= total)
+  // Compared as doubles: a start or length beyond 2^64 samples does not wrap to 0 (review 19, F1).
+  const double first_sample = std::max(0.0, std::ceil(stretch.start_s * rate - 1e-9));
+  if (!(first_sample < double(total)))
     throw input_error(path, dataset::recording_path(stretch.material, k),
                       text::format("starts at %g s, after its last sample (at %.4f s)", stretch.start_s, double(total - 1) / rate),
                       "Give --start before its end");
-  const std::size_t wanted = stretch.seconds > 0 ? std::size_t(std::llround(stretch.seconds * rate)) : total - first;
-  const std::size_t end = std::min(total, first + wanted);
+  const std::size_t first = std::size_t(first_sample);
+  const double left = double(total - first);
+  const double wanted = stretch.seconds > 0 ? std::min(left, std::round(stretch.seconds * rate)) : left;
+  const std::size_t end = first + std::size_t(wanted);
   // What render and play need (review 13, F1: --seconds 1e-9 wrote a CSV of no sample, exit 0).
   if (end - first < kMinTrajectorySamples)
     throw input_error(path, dataset::recording_path(stretch.material, k),

@@ -63,6 +63,18 @@ TEST(TrajectoryCli, ABadChoiceIsRefusedNamingWhatThereIs) {
   const CommandResult late = run({"--material", small_material(), "--start", "1000"});
   EXPECT_EQ(late.exit_code, 2);
   EXPECT_NE(late.err.find("after its last sample (at 2.9999 s)"), std::string::npos) << late.err;
+  // Review 19, F1: a start of 2^64 samples or more wrapped to sample 0 (exit 0, "from 1e+16 s"); a length as
+  // long is the rest of the recording.
+  for (const std::string start : {"1e16", "3.4e38"}) {
+    const CommandResult far = run({"--material", small_material(), "--start", start, "--seconds", "0.5"});
+    EXPECT_EQ(far.exit_code, 2) << start << far.err;
+    EXPECT_NE(far.err.find("after its last sample"), std::string::npos) << far.err;
+  }
+  const CommandResult whole = run_haptex({"--json", "trajectory", p.dataset, "--material", small_material(), "--start", "2", "--seconds", "1e30",
+                                          "-o", dir.file("rest.csv")});
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  EXPECT_EQ(nlohmann::json::parse(whole.out).at("samples"), 10000) << whole.out;  // 2 s to the end of a 3 s recording
+  fs::remove(dir.file("rest.csv"));
   // Review 13: a stretch of no sample was written (exit 0); a path was taken for a material id; a start
   // inside the last sample's 0.1 ms was called past the end.
   const CommandResult empty = run({"--material", small_material(), "--seconds", "1e-9"});

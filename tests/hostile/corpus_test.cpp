@@ -327,6 +327,19 @@ std::vector<HostileCase> hdf5_cases() {
         e.group("feature_spec").set_attr("size", std::int64_t(1000000000));
       }, "size"),
       model_edit("no materials", [](Edit& e) { e.remove("materials"); }, "materials"),
+      // Review 19, F2: the second material was unreachable, the empty id accepted.
+      model_edit("an id given twice", [](Edit& e) {
+        std::vector<std::string> ids = e.dataset("materials/ids").read_strings();
+        ids.back() = ids.front();
+        e.remove("materials/ids");
+        e.group("materials").write_strings("ids", ids);
+      }, "/materials/ids[1]: '" + small_material() + "' is given twice"),
+      model_edit("an empty id", [](Edit& e) {
+        std::vector<std::string> ids = e.dataset("materials/ids").read_strings();
+        ids.back() = "";
+        e.remove("materials/ids");
+        e.group("materials").write_strings("ids", ids);
+      }, "is not a material id"),
   };
 }
 
