@@ -4,6 +4,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/naming.hpp"
 #include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
 #include "core/json/schema.hpp"
@@ -196,15 +197,19 @@ void check_nets(const Model& m, const std::string& path) {
       throw input_error(path, root_path(layout::kNets), "the networks' sizes do not fit together", "Train the model again");
 }
 
-// An id names one material, so --material reaches each (review 19, F2: an id given twice left the
-// second material unreachable, and an empty one was accepted).
-void require_distinct_ids(const std::string& path, const std::vector<std::string>& ids) {
+// An id names one material, so --material reaches each, and it is its name's id (review 19, F2: an
+// id given twice left the second material unreachable, an empty one was accepted; review 20, F2: swapped
+// names were printed and used).
+void require_material_ids(const std::string& path, const std::vector<std::string>& ids, const std::vector<std::string>& names) {
   std::set<std::string> seen;
   for (std::size_t i = 0; i < ids.size(); ++i) {
     const std::string& id = ids[i];
     const std::string where = root_path(layout::kMaterials) + "/" + layout::kMaterialIds + "[" + std::to_string(i) + "]";
-    if (id.empty() || id.find('/') != std::string::npos)
-      throw input_error(path, where, "'" + text::printable(id) + "' is not a material id (empty, or holding a '/')", kRetrain);
+    if (id.empty() || material_id(names[i]) != id)
+      throw input_error(path, where,
+                        "'" + text::printable(text::shortened(id)) + "' is not the id of the material's name '" +
+                            text::printable(text::shortened(names[i])) + "' (" + layout::kMaterialNames + "[" + std::to_string(i) + "])",
+                        kRetrain);
     if (!seen.insert(id).second)
       throw input_error(path, where, "'" + text::printable(id) + "' is given twice (each material has its own id)", kRetrain);
   }
@@ -262,7 +267,7 @@ Model read_model(const std::string& path) {
   if (m.material_ids.empty() || m.material_names.size() != m.material_ids.size())
     throw input_error(path, root_path(layout::kMaterials), std::to_string(m.material_ids.size()) + " ids and " + std::to_string(m.material_names.size()) +
                                               " names", kRetrain);
-  require_distinct_ids(path, m.material_ids);
+  require_material_ids(path, m.material_ids, m.material_names);
   m.descriptor = r.spec(root.open_group(layout::kFeatureSpec));
   const h5::Group g = root.open_group(layout::kNormalisation);
   Normalisation& n = m.normalisation;

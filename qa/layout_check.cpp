@@ -185,6 +185,30 @@ void judge_shape(const h5::Group& root, const LayoutRow& row, const FoundObject&
   else tally.pass();
 }
 
+// Review 20, F2 and F4: a material's name gives its id (so no two materials share a name, and align,
+// which joins by name, joins what the ids say), and its recordings and presses are numbered 0, 1, ...
+// as every reader indexes them (a recording named "best" or "00" passed qa, then align ended in an
+// uncaught exception or wrote windows of a recording that does not exist).
+void check_material_group(const h5::Group& materials, const std::string& id, CheckTally& tally) {
+  if (!materials.has_group(id)) return;
+  const h5::Group material = materials.open_group(id);
+  const std::string path = dataset::material_path(id);
+  if (const std::optional<std::string> name = material.try_attr<std::string>(dataset::layout::kName); name && material_id(*name) != id)
+    tally.fail(path + "/@" + dataset::layout::kName, "'" + text::printable(text::shortened(*name)) + "' is the name of the material '" + text::shortened(material_id(*name)) +
+                                                         "', not of '" + id + "' (a material's id is its name's, core/naming.hpp)");
+  for (const char* numbered : {dataset::layout::kRecordings, dataset::layout::kPresses}) {
+    if (!material.has_group(numbered)) continue;
+    const std::vector<std::string> children = material.open_group(numbered).children();
+    std::set<std::string> expected;
+    for (std::size_t k = 0; k < children.size(); ++k) expected.insert(std::to_string(k));
+    for (const std::string& child : children)
+      if (!expected.count(child))
+        tally.fail(path + "/" + numbered + "/" + text::printable(child),
+                   "is not numbered as the " + std::to_string(children.size()) + " " + numbered + " of a material are: 0 to " +
+                       std::to_string(children.size() - 1) + ", without gaps or leading zeros");
+  }
+}
+
 CheckResult check_layout_required(const h5::Group& root, dataset::Kind kind, const std::vector<RowFindings>& rows) {
   CheckTally tally("layout.required", "objects and attributes");
   for (const dataset::StrayRootContent& stray : dataset::stray_root_content(root, kind))
@@ -199,6 +223,7 @@ CheckResult check_layout_required(const h5::Group& root, dataset::Kind kind, con
       else if (id.size() > kLongestMaterialId)  // review 10, F5: split and extract then failed at their end
         tally.fail(dataset::material_path(id).substr(0, 80) + "...", "is a material id of " + std::to_string(id.size()) + " bytes, longer than the " +
                                                                           std::to_string(kLongestMaterialId) + " haptex takes");
+      else check_material_group(root.open_group(dataset::layout::kMaterials), id, tally);
     }
   }
   for (const auto& [row, missing, not_groups, found] : rows) {

@@ -1,6 +1,8 @@
 // A folder of frame images read as a video: how `haptex synth` wrote press videos (press_<j>/frame_0000.png ...)
 // until it wrote MJPG AVIs, and how many tactile datasets are published.
 #include <algorithm>
+#include <charconv>
+#include <optional>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
@@ -34,7 +36,31 @@ class ImageSequenceSource : public FrameSource {
     });
     if (files_.empty())
       throw input_error(path_, "", "the folder holds no frame images", "Give a folder of PNG or JPEG frames, or a video file");
+    require_consecutive_numbers();
     size_ = load(0).size();
+  }
+
+  // Frame k is the k-th file, so the numbers in the names must run on by one: a missing file would join
+  // frames apart in time as neighbours, and two files of one number would be two frames (review 20, F3).
+  void require_consecutive_numbers() const {
+    const std::string fix = "Name the frames by their numbers, one file each, none missing (frame_0000.png, frame_0001.png, ...)";
+    std::optional<unsigned long long> before;
+    for (std::size_t k = 0; k < files_.size(); ++k) {
+      const std::string name = fs::path(files_[k]).stem().string();
+      const auto last_digit = std::find_if(name.rbegin(), name.rend(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+      if (last_digit == name.rend()) throw input_error(path_, fs::path(files_[k]).filename().string(), "holds no frame number", fix);
+      const auto first_digit = std::find_if_not(last_digit, name.rend(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+      const std::string digits(first_digit.base(), last_digit.base());
+      unsigned long long number = 0;
+      if (std::from_chars(digits.data(), digits.data() + digits.size(), number).ec != std::errc() || number > (1ULL << 62))
+        throw input_error(path_, fs::path(files_[k]).filename().string(), "holds the frame number " + digits + ", beyond any video's", fix);
+      if (before && number != *before + 1)
+        throw input_error(path_, fs::path(files_[k]).filename().string(),
+                          "is frame " + std::to_string(number) + ", after " + fs::path(files_[k - 1]).filename().string() + " (frame " +
+                              std::to_string(*before) + ")" + (number == *before ? ": two files give one frame" : ": frames are missing between them"),
+                          fix);
+      before = number;
+    }
   }
 
   const std::string& path() const override { return path_; }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 
 #include "core/bounded_call.hpp"
 #include "core/error.hpp"
@@ -113,6 +114,14 @@ Handle Node::open_scalar_attr(std::string_view name) const {
   return attr;
 }
 
+void Node::require_short_text(std::size_t bytes, const std::string& what) const {
+  if (bytes > kLongestText)
+    throw input_error(file_, object_path_,
+                      what + " holds " + std::to_string(bytes) + " bytes of text, over the " + std::to_string(kLongestText >> 20) +
+                          " MiB the longest text haptex writes may take",
+                      "The file is damaged or not what haptex wrote: make it again with the haptex command that wrote it");
+}
+
 // Names and labels are short: a fixed-length string type declaring more is refused before its
 // buffer is made (review 18, F8: 2 x 1 GiB declared in a 19 MB file ran out of memory).
 std::size_t Node::fixed_length_size(hid_t type, const std::string& what) const {
@@ -176,6 +185,7 @@ std::string Node::attr_bytes(std::string_view name) const {
     std::string value = text ? text : "";
     Handle space(H5Aget_space(attr.get()));
     H5Dvlen_reclaim(memory.get(), space.get(), H5P_DEFAULT, &text);
+    require_short_text(value.size(), "attribute '" + std::string(name) + "'");
     return value;
   }
   const std::string what = "attribute '" + std::string(name) + "'";
@@ -349,9 +359,13 @@ std::vector<std::string> Dataset::read_variable_strings(hid_t stored) const {
     check_input_status(H5Dread(id(), memory.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()), "read strings", where());
   }
   std::vector<std::string> values;
-  for (const char* p : pointers) values.emplace_back(p ? p : "");
+  std::size_t longest = 0;
+  for (const char* p : pointers) longest = std::max(longest, p ? std::strlen(p) : 0);
+  if (longest <= kLongestText)
+    for (const char* p : pointers) values.emplace_back(p ? p : "");
   Handle space(H5Dget_space(id()));
   H5Dvlen_reclaim(memory.get(), space.get(), H5P_DEFAULT, pointers.data());
+  require_short_text(longest, "an element");
   return values;
 }
 

@@ -20,6 +20,9 @@ using Shape = std::vector<hsize_t>;
 inline constexpr std::uint64_t kMostBytesRead = std::uint64_t(4) << 30;
 // The longest fixed-length string (a name, a label, a format) haptex reads.
 inline constexpr std::size_t kLongestFixedString = std::size_t(64) << 10;
+// The longest variable-length string: the longest text haptex writes is a `source` command line, which
+// Linux caps at 2 MiB of arguments (review 20, F1: a 60 MB name cost 2.5 GB as readers copied it).
+inline constexpr std::size_t kLongestText = std::size_t(4) << 20;
 // haptex writes chunks of about 64 KiB; h5py's own are at most 1 MiB.
 inline constexpr std::uint64_t kLargestChunkBytes = std::uint64_t(16) << 20;
 // Throws haptex::Error (bad_input) naming `where` in `file` when count values of `element_size` bytes exceed it.
@@ -70,6 +73,8 @@ class Node {
   // A fixed-length string type's size; refuses (bad_input) one over kLongestFixedString (`what`
   // names an attribute; empty for the dataset itself).
   std::size_t fixed_length_size(hid_t type, const std::string& what) const;
+  // Refuses (bad_input) text of more than kLongestText bytes (`what`: "attribute 'x'", "an element").
+  void require_short_text(std::size_t bytes, const std::string& what) const;
 
   Handle handle_;
   std::string file_;

@@ -12,6 +12,7 @@ import errno
 import hashlib
 import io
 import json
+import math
 import os
 import sys
 from dataclasses import dataclass
@@ -162,21 +163,101 @@ class Split:
     material_presses: dict   # id -> {"train": [...], "val": [...], "test": [...]}
 
 
+_LARGEST_JSON = 64 << 20  # README: JSON inputs over 64 MiB, deeper than 64 levels, ... are refused
+_DEEPEST_JSON = 64
+_SETS = ("train", "val", "test")
+
+
+def _no_key_twice(pairs):
+    keys = [k for k, _ in pairs]
+    for k in keys:
+        if keys.count(k) > 1:
+            raise HaptexFileError(f"the key '{k}' is given twice in one object (JSON readers differ in which they keep)")
+    return dict(pairs)
+
+
+def _no_constant(name):
+    raise HaptexFileError(f"holds {name}, which is not a JSON number")
+
+
+def _finite(text):
+    value = float(text)
+    if not math.isfinite(value):
+        raise HaptexFileError(f"holds {text}, a number beyond 64-bit floats")
+    return value
+
+
+def _depth(value, deepest=_DEEPEST_JSON):
+    """Nesting depth, refusing past `deepest` without recursing further."""
+    stack, most = [(value, 1)], 0
+    while stack:
+        v, d = stack.pop()
+        if isinstance(v, (dict, list)):
+            if d > deepest:
+                raise HaptexFileError(f"nests deeper than {deepest} levels")
+            most = max(most, d)
+            stack.extend((c, d + 1) for c in (v.values() if isinstance(v, dict) else v))
+    return most
+
+
+def _numbers(values, where, below):
+    """A list of distinct whole numbers in [0, below)."""
+    if not isinstance(values, list) or any(isinstance(v, bool) or not isinstance(v, int) or not 0 <= v < below for v in values):
+        raise HaptexFileError(f"{where} must list whole numbers from 0 to {below - 1}")
+    if len(set(values)) != len(values):
+        raise HaptexFileError(f"{where} lists a number twice")
+    return values
+
+
+def _sets(entry, key, where, below):
+    """{train, val, test} -> lists of numbers, no number in two sets: a number in two sets leaks."""
+    sets = entry.get(key) if isinstance(entry, dict) else None
+    if not isinstance(sets, dict) or sorted(sets) != sorted(_SETS):
+        raise HaptexFileError(f"{where}/{key} must hold train, val and test")
+    seen = {}
+    for name in _SETS:
+        for v in _numbers(sets[name], f"{where}/{key}/{name}", below):
+            if v in seen:
+                raise HaptexFileError(f"{where}/{key}: {v} is in {seen[v]} and {name}, so the split leaks between them")
+            seen[v] = name
+    return sets
+
+
 def read_split(path):
+    """A split manifest, held to what haptex's split reader holds it to (the JSON rules of README and the
+    sets' rules of schemas/split.schema.json: no section or press in two sets)."""
     with open(_regular_file(path), "rb") as f:
-        raw = f.read()
+        raw = f.read(_LARGEST_JSON + 1)
     try:
-        doc = json.loads(raw.decode("utf-8"))
-    except (UnicodeDecodeError, json.JSONDecodeError) as e:
-        raise HaptexFileError(f"{path}: not a JSON split manifest ({e}); give the file haptex split wrote") from None
-    if not isinstance(doc, dict) or doc.get("format") != "split/1":
-        found = doc.get("format") if isinstance(doc, dict) else type(doc).__name__
-        raise HaptexFileError(f"{path}: format is '{found}', not split/1 (haptex split writes it)")
-    try:
-        return Split(path, hashlib.sha256(raw).hexdigest(), doc["dataset"]["sha256"], int(doc["parameters"]["sections"]),
-                     {m["id"]: m["sections"] for m in doc["materials"]}, {m["id"]: m["presses"] for m in doc["materials"]})
-    except (KeyError, TypeError, ValueError) as e:
-        raise HaptexFileError(f"{path}: not a split manifest as haptex split writes it (at {e!r}); schemas/split.schema.json") from None
+        if len(raw) > _LARGEST_JSON:
+            raise HaptexFileError(f"is over {_LARGEST_JSON >> 20} MiB")
+        try:
+            doc = json.loads(raw.decode("utf-8"), object_pairs_hook=_no_key_twice, parse_constant=_no_constant,
+                             parse_float=_finite)
+        except RecursionError:
+            raise HaptexFileError(f"nests deeper than {_DEEPEST_JSON} levels") from None
+        except (UnicodeDecodeError, json.JSONDecodeError) as e:
+            raise HaptexFileError(f"not a JSON split manifest ({e}); give the file haptex split wrote") from None
+        _depth(doc)
+        if not isinstance(doc, dict) or doc.get("format") != "split/1":
+            found = doc.get("format") if isinstance(doc, dict) else type(doc).__name__
+            raise HaptexFileError(f"format is '{found}', not split/1 (haptex split writes it)")
+        try:
+            sections = doc["parameters"]["sections"]
+            if isinstance(sections, bool) or not isinstance(sections, int) or not 3 <= sections <= 10000:
+                raise HaptexFileError("/parameters/sections must be a whole number from 3 to 10000")
+            materials = doc["materials"]
+            ids = [m["id"] for m in materials]
+            if len(set(ids)) != len(ids):
+                raise HaptexFileError("/materials names one material twice")
+            material_sections = {m["id"]: _sets(m, "sections", f"/materials/{i}", sections) for i, m in enumerate(materials)}
+            material_presses = {m["id"]: _sets(m, "presses", f"/materials/{i}", 1 << 31) for i, m in enumerate(materials)}
+            return Split(path, hashlib.sha256(raw).hexdigest(), doc["dataset"]["sha256"], sections, material_sections, material_presses)
+        except (KeyError, TypeError) as e:
+            raise HaptexFileError(f"not a split manifest as haptex split writes it (at {e!r}); schemas/split.schema.json") from None
+    except HaptexFileError as e:
+        message = str(e)
+        raise HaptexFileError(message if message.startswith(str(path)) else f"{path}: {message}") from None
 
 
 def _section_begin(s, samples, sections):

@@ -310,7 +310,7 @@ std::vector<HostileCase> hdf5_cases() {
       dataset_edit("recording named 'x'", [](Edit& e) {
         const std::string id = read_json(small_pipeline().split)["materials"][0]["id"];
         e.copy("materials/" + id + "/recordings/0", "materials/" + id + "/recordings/x");
-      }, "recording number"),
+      }, "/recordings/x: is not numbered"),  // split's layout gate (review 20, F4)
       model_edit("weights as int64", [](Edit& e) {
         const auto v = e.dataset("nets/0/predictor/layers/0/weight").read<float>();
         const h5::Shape shape = e.dataset("nets/0/predictor/layers/0/weight").shape();
@@ -329,17 +329,25 @@ std::vector<HostileCase> hdf5_cases() {
       model_edit("no materials", [](Edit& e) { e.remove("materials"); }, "materials"),
       // Review 19, F2: the second material was unreachable, the empty id accepted.
       model_edit("an id given twice", [](Edit& e) {
-        std::vector<std::string> ids = e.dataset("materials/ids").read_strings();
-        ids.back() = ids.front();
-        e.remove("materials/ids");
-        e.group("materials").write_strings("ids", ids);
+        for (const char* list : {"materials/ids", "materials/names"}) {
+          std::vector<std::string> values = e.dataset(list).read_strings();
+          values.back() = values.front();
+          e.remove(list);
+          e.group("materials").write_strings(std::string(list).substr(10), values);
+        }
       }, "/materials/ids[1]: '" + small_material() + "' is given twice"),
+      model_edit("names swapped (review 20, F2)", [](Edit& e) {
+        std::vector<std::string> names = e.dataset("materials/names").read_strings();
+        std::swap(names.front(), names.back());
+        e.remove("materials/names");
+        e.group("materials").write_strings("names", names);
+      }, "is not the id of the material's name"),
       model_edit("an empty id", [](Edit& e) {
         std::vector<std::string> ids = e.dataset("materials/ids").read_strings();
         ids.back() = "";
         e.remove("materials/ids");
         e.group("materials").write_strings("ids", ids);
-      }, "is not a material id"),
+      }, "is not the id of the material's name"),
   };
 }
 

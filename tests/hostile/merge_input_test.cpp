@@ -250,6 +250,28 @@ std::vector<BrokenShard> broken_shards() {
          e.write_fixed_strings(m + "@name", {std::string("Sand\0paper", 10)});
        },
        {"/@name", "NUL byte", "layout.dtype"}},
+      // Review 20, F2 and F4: a name that gives another id, recordings and presses numbered otherwise
+      // than 0, 1, ... (align ended in "unexpected error: stoi"), and a name of megabytes (F1).
+      {"a name that is another material's", p.recordings, [](Edit& e, const std::string& m) {
+         e.remove(m + "@name");
+         e.group(m).set_attr("name", "Woven 9");
+       },
+       {"/@name", "is the name of the material 'woven_9'", "layout.required"}},
+      {"a recording named best", p.recordings, [](Edit& e, const std::string& m) {
+         e.copy(m + "/recordings/0", m + "/recordings/best");
+         e.remove(m + "/recordings/0");
+       },
+       {"/recordings/best", "is not numbered", "layout.required"}},
+      {"a press numbered 00", p.gelsight, [](Edit& e, const std::string& m) {
+         e.copy(m + "/presses/0", m + "/presses/00");
+         e.remove(m + "/presses/0");
+       },
+       {"/presses/00", "without gaps or leading zeros", "layout.required"}},
+      {"a name of 5 MiB", p.recordings, [](Edit& e, const std::string& m) {
+         e.remove(m + "@name");
+         e.group(m).set_attr("name", "Sandpaper 1" + std::string(std::size_t(5) << 20, 'x'));
+       },
+       {"/@name", "over the 4 MiB", "layout.dtype"}},
       {"an object reference", p.recordings, [](Edit& e, const std::string& m) { add_reference_attribute(e, m + "/recordings/0", m + "/recordings/0/speed"); },
        {"/recordings/0@odd", "object references"}},
       {"a reference PNG whose CRC does not hold", p.gelsight, [](Edit& e, const std::string& m) {

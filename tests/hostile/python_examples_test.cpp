@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
 
 #include "core/temporary_name.hpp"
 #include "tests/hostile/hostile_support.hpp"
@@ -100,6 +102,41 @@ TEST(PythonExamples, KnnRefusesABadKAndADamagedWindowsFile) {
   expect_refusal(run_python({kExamples + "knn_baseline.py", p.dataset, p.split, damaged, "-o", d.file("k.h5")}),
                  {damaged, "not an HDF5 file haptex windows wrote"});
   EXPECT_FALSE(fs::exists(d.file("k.h5")));
+}
+
+// Review 20, F5: the package's split reader held a hand-made split to none of haptex's rules (a section
+// in train and test was read as both, a key given twice, sections 0), and a split nested 100,000 deep
+// ended in a traceback.
+TEST(PythonExamples, AHandMadeSplitIsHeldToHaptexsRules) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const Knn knn;
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string text = file_bytes(p.split);
+  const nlohmann::json good = nlohmann::json::parse(text);
+  const auto edited = [&](const std::function<void(nlohmann::json&)>& change) {
+    nlohmann::json doc = good;
+    change(doc);
+    return doc.dump(2);
+  };
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {edited([](nlohmann::json& doc) { doc["materials"][0]["sections"]["test"].push_back(doc["materials"][0]["sections"]["train"][0]); }),
+       "is in train and test, so the split leaks between them"},
+      {edited([](nlohmann::json& doc) { doc["parameters"]["sections"] = 0; }), "/parameters/sections must be a whole number from 3"},
+      {edited([](nlohmann::json& doc) { doc["materials"][0]["presses"]["val"].push_back(-1); }), "/materials/0/presses/val must list whole numbers"},
+      {"{\"format\": \"split/1\", \"format\": \"split/1\"}", "the key 'format' is given twice"},
+      {"{\"format\": \"split/1\", \"x\": 1e400}", "holds 1e400"},
+      {std::string(100000, '[') + std::string(100000, ']'), "nests deeper than 64 levels"},
+  };
+  for (const auto& [bad, says] : cases) {
+    SCOPED_TRACE(says);
+    const std::string split = d.file("split.json");
+    std::ofstream(split, std::ios::trunc) << bad;
+    const CommandResult r = run_python({kExamples + "knn_baseline.py", p.dataset, split, knn.windows, "-o", d.file("k.h5")});
+    expect_refusal(r, {split, says});
+    EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(d.file("k.h5")));
+  }
 }
 
 TEST(PythonExamples, KnnForceReplacesOnlyAnEarlierPredictionsFile) {

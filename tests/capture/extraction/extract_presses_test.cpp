@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <cmath>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -321,6 +322,31 @@ TEST_F(Extract, OnlyRgbPngFramesAreKeptAsTheyAre) {
     std::ifstream in(file, std::ios::binary);
     const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     EXPECT_EQ(peak == bytes, p.material == "Cork") << p.material << ": the RGB file kept as it is, the RGBA one stored anew";
+  }
+}
+
+// Review 20, F3: frame k of a folder is its k-th file, so a missing number joined frames apart in time,
+// and two files of one number (frame_1, frame_0001) were two frames; each is refused, naming the file.
+TEST_F(Extract, AFolderOfFramesWhoseNumbersDoNotRunOnIsRefused) {
+  const std::vector<std::pair<std::function<void(const fs::path&)>, std::string>> cases = {
+      {[](const fs::path& d) { fs::remove(d / "frame_005.png"); }, "frame_006.png: is frame 6, after frame_004.png (frame 4): frames are missing"},
+      {[](const fs::path& d) { fs::copy_file(d / "frame_001.png", d / "frame_1.png"); }, "two files give one frame"},
+      {[](const fs::path& d) { fs::copy_file(d / "frame_001.png", d / "frame_99999999999999999999999.png"); }, "beyond any video's"},
+      {[](const fs::path& d) { fs::copy_file(d / "frame_001.png", d / "still.png"); }, "still.png: holds no frame number"},
+  };
+  int k = 0;
+  for (const auto& [change, says] : cases) {
+    SCOPED_TRACE(says);
+    const fs::path folder = dir_.path() / ("frames" + std::to_string(k++));
+    write_png_sequence(folder, 1, 12);
+    change(folder);
+    try {
+      open_image_sequence(folder.string());
+      ADD_FAILURE() << "accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
   }
 }
 
