@@ -199,6 +199,8 @@ void check_material_group(const h5::Group& materials, const std::string& id, Che
   for (const char* numbered : {dataset::layout::kRecordings, dataset::layout::kPresses}) {
     if (!material.has_group(numbered)) continue;
     const std::vector<std::string> children = material.open_group(numbered).children();
+    if (children.empty())  // review 21, F4: split then failed its own manifest check
+      tally.fail(path + "/" + numbered, std::string("holds no ") + numbered + " (remove the material, or give it some)");
     std::set<std::string> expected;
     for (std::size_t k = 0; k < children.size(); ++k) expected.insert(std::to_string(k));
     for (const std::string& child : children)

@@ -40,17 +40,46 @@ class ImageSequenceSource : public FrameSource {
     size_ = load(0).size();
   }
 
+  // The runs of digits in a file name's stem ("frame_0007_cam2" -> 0007, 2).
+  static std::vector<std::string> digit_runs(const std::string& stem) {
+    std::vector<std::string> runs;
+    for (std::size_t i = 0; i < stem.size();) {
+      if (!std::isdigit(static_cast<unsigned char>(stem[i]))) {
+        ++i;
+        continue;
+      }
+      const std::size_t from = i;
+      while (i < stem.size() && std::isdigit(static_cast<unsigned char>(stem[i]))) ++i;
+      runs.push_back(stem.substr(from, i - from));
+    }
+    return runs;
+  }
+
+  // Which run of digits is the frame number: the last one that differs between the files (a camera's
+  // number or a date in every name stays the same: review 21, F2), else the last.
+  static std::size_t frame_number_run(const std::vector<std::vector<std::string>>& runs) {
+    const std::size_t count = runs.front().size();
+    std::size_t chosen = count - 1;
+    for (std::size_t r = 0; r < count; ++r)
+      for (const auto& name : runs)
+        if (name.size() != count) return count - 1;
+        else if (name[r] != runs.front()[r]) chosen = r;
+    return chosen;
+  }
+
   // Frame k is the k-th file, so the numbers in the names must run on by one: a missing file would join
   // frames apart in time as neighbours, and two files of one number would be two frames (review 20, F3).
   void require_consecutive_numbers() const {
     const std::string fix = "Name the frames by their numbers, one file each, none missing (frame_0000.png, frame_0001.png, ...)";
+    std::vector<std::vector<std::string>> runs;
+    for (const std::string& file : files_) {
+      runs.push_back(digit_runs(fs::path(file).stem().string()));
+      if (runs.back().empty()) throw input_error(path_, fs::path(file).filename().string(), "holds no frame number", fix);
+    }
+    const std::size_t run = frame_number_run(runs);
     std::optional<unsigned long long> before;
     for (std::size_t k = 0; k < files_.size(); ++k) {
-      const std::string name = fs::path(files_[k]).stem().string();
-      const auto last_digit = std::find_if(name.rbegin(), name.rend(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
-      if (last_digit == name.rend()) throw input_error(path_, fs::path(files_[k]).filename().string(), "holds no frame number", fix);
-      const auto first_digit = std::find_if_not(last_digit, name.rend(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
-      const std::string digits(first_digit.base(), last_digit.base());
+      const std::string& digits = runs[k][std::min(run, runs[k].size() - 1)];
       unsigned long long number = 0;
       if (std::from_chars(digits.data(), digits.data() + digits.size(), number).ec != std::errc() || number > (1ULL << 62))
         throw input_error(path_, fs::path(files_[k]).filename().string(), "holds the frame number " + digits + ", beyond any video's", fix);

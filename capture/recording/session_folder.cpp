@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/format_version.hpp"
 #include "core/h5/atomic_file.hpp"
+#include "core/content_mark.hpp"
 #include "core/json/schema.hpp"
 #include "core/output_is_input.hpp"
 #include "core/temporary_name.hpp"
@@ -59,6 +60,12 @@ std::vector<fs::path> old_session_files(const std::string& dir) {
     refuse_replacing(dir, manifest, "is " + format + ", written by a newer haptex than this one (" + std::string(kVersion) + ")");
   if (format != kSessionManifestFormat || !doc.contains("presses") || !doc["presses"].is_array())
     refuse_replacing(dir, manifest, "is not a capture session's manifest (format " + std::string(kSessionManifestFormat) + ")");
+  // Review 21, F6: an edited manifest is the user's now.
+  try {
+    require_content_mark(manifest.string());
+  } catch (const Error&) {
+    refuse_replacing(dir, manifest, "is not as haptex wrote it (edited, copied, or written by a haptex before the mark: docs/architecture.md, \"Outputs are atomic\")");
+  }
   std::vector<fs::path> owned{manifest};
   for (const nlohmann::json& press : doc["presses"])
     if (press.is_object() && press.contains("file") && press["file"].is_string() &&

@@ -6,6 +6,7 @@
 #include "capture/device/fourcc.hpp"
 #include "capture/device/usb_bandwidth.hpp"
 #include "capture/recording/delivered_rate.hpp"
+#include "core/content_mark.hpp"
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
@@ -108,7 +109,9 @@ nlohmann::json session_manifest(const SessionDescription& s, const ReferenceSumm
 }
 
 void write_session_manifest(const std::string& path, const nlohmann::json& manifest) {
-  PartialFile out(path, true);  // rewritten after every press: the take's own file in its own folder
+  // Rewritten after every press: the take's own file in its own folder. Marked, so that a later --force
+  // replaces it only while it holds what haptex wrote (core/content_mark.hpp; review 21, F6).
+  PartialFile out(path, true, [](const std::string& earlier) { require_content_mark(earlier); });
   json::write_file(manifest, "capture-session.schema.json", out);
   out.commit();
 }

@@ -23,6 +23,9 @@ inline constexpr std::size_t kLongestFixedString = std::size_t(64) << 10;
 // The longest variable-length string: the longest text haptex writes is a `source` command line, which
 // Linux caps at 2 MiB of arguments (review 20, F1: a 60 MB name cost 2.5 GB as readers copied it).
 inline constexpr std::size_t kLongestText = std::size_t(4) << 20;
+// The longest list of names (material ids, names) haptex reads, in strings and in bytes.
+inline constexpr std::size_t kMostTexts = 1000000;
+inline constexpr std::size_t kLongestTexts = std::size_t(64) << 20;
 // haptex writes chunks of about 64 KiB; h5py's own are at most 1 MiB.
 inline constexpr std::uint64_t kLargestChunkBytes = std::uint64_t(16) << 20;
 // Throws haptex::Error (bad_input) naming `where` in `file` when count values of `element_size` bytes exceed it.
@@ -117,6 +120,9 @@ class Dataset : public Node {
  private:
   // elements(), after a refusal (bad_input) of a dataset too large to read at once (kMostBytesRead).
   std::size_t elements_to_read(std::size_t element_size) const;
+  // elements_to_read for a list of strings (fixed_size 0: variable-length), refused over kMostTexts
+  // strings or kLongestTexts bytes.
+  std::size_t text_elements(std::size_t fixed_size) const;
   void read_raw(hid_t memory_type, void* out) const;
   std::vector<std::string> read_variable_strings(hid_t stored) const;
   std::vector<std::string> read_fixed_strings(hid_t stored) const;

@@ -30,13 +30,16 @@ recordings=() presses=()
 i=0
 while IFS= read -r -d '' folder; do
   material=${folder##*/}  # not $(basename): command substitution drops a name's trailing newlines
+  # A link is read through, as extract reads one (review 21, F5: find -type d passed links over); a
+  # dangling one is refused, as every haptex input folder refuses it.
+  [[ -d $folder ]] || fail "$folder is a link to no folder"
   if (( i % shards == shard )); then
     [[ -d $collection/recordings/$material ]] || fail "$collection/presses/$material has no recordings/$material beside it"
     recordings+=("$collection/recordings/$material")
     presses+=("$folder")
   fi
   i=$((i + 1))
-done < <(find "$collection/presses" -mindepth 1 -maxdepth 1 -type d -print0 | sort -z)
+done < <(find "$collection/presses" -mindepth 1 -maxdepth 1 \( -type d -o -type l \) -print0 | sort -z)
 (( ${#presses[@]} )) || fail "shard $shard of $shards has no materials: $collection/presses holds $i; use at most $i shards"
 
 mkdir -p -- "$out"

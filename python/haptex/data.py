@@ -169,11 +169,20 @@ _SETS = ("train", "val", "test")
 
 
 def _no_key_twice(pairs):
-    keys = [k for k, _ in pairs]
-    for k in keys:
-        if keys.count(k) > 1:
+    out = {}
+    for k, v in pairs:
+        if k in out:
             raise HaptexFileError(f"the key '{k}' is given twice in one object (JSON readers differ in which they keep)")
-    return dict(pairs)
+        if "\0" in k or (isinstance(v, str) and "\0" in v):
+            raise HaptexFileError(f"holds a NUL character at '{k}', which no name may hold")
+        out[k] = v
+    return out
+
+
+def _whole(text):
+    if len(text.lstrip("-")) > 300:  # beyond 64-bit floats, as haptex's reader says (and Python's 4300-digit limit)
+        raise HaptexFileError(f"holds a number of {len(text)} digits, beyond 64-bit floats")
+    return int(text)
 
 
 def _no_constant(name):
@@ -233,7 +242,7 @@ def read_split(path):
             raise HaptexFileError(f"is over {_LARGEST_JSON >> 20} MiB")
         try:
             doc = json.loads(raw.decode("utf-8"), object_pairs_hook=_no_key_twice, parse_constant=_no_constant,
-                             parse_float=_finite)
+                             parse_float=_finite, parse_int=_whole)
         except RecursionError:
             raise HaptexFileError(f"nests deeper than {_DEEPEST_JSON} levels") from None
         except (UnicodeDecodeError, json.JSONDecodeError) as e:

@@ -88,6 +88,44 @@ TEST(H5, FixedLengthStringDatasetsRead) {
       << refusal("long");
 }
 
+// Review 21, F3: 3.5 million names of 1 KiB declared in a few hundred KB of unwritten chunks ran out of
+// memory; review 20, F1: a name of 60 MB was read and copied whole. Both are refused, naming the object.
+TEST(H5, AbsurdTextIsRefusedBeforeItIsCopied) {
+  TempDir dir;
+  const std::string path = dir.file("big.h5");
+  {
+    AtomicFile out(path, false);
+    out.root().set_attr("long", std::string(kLongestText + 1, 'x'));
+    out.root().write_strings("fine", std::vector<std::string>{"Book", "Brick 2"});
+    out.commit();
+  }
+  {
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    const hsize_t dims[1] = {3500000}, chunk[1] = {16000};
+    const hid_t type = H5Tcopy(H5T_C_S1), space = H5Screate_simple(1, dims, nullptr), plist = H5Pcreate(H5P_DATASET_CREATE);
+    H5Tset_size(type, 1024);
+    H5Pset_chunk(plist, 1, chunk);
+    H5Pset_deflate(plist, 1);
+    H5Dclose(H5Dcreate2(file, "names", type, space, H5P_DEFAULT, plist, H5P_DEFAULT));
+    H5Pclose(plist), H5Sclose(space), H5Tclose(type), H5Fclose(file);
+  }
+  EXPECT_LT(std::filesystem::file_size(path), kLongestText + (std::uintmax_t(1) << 20));  // the names: unwritten chunks
+  const Group root = File::open(path).root();
+  EXPECT_EQ(root.open_dataset("fine").read_strings(), (std::vector<std::string>{"Book", "Brick 2"}));
+  try {
+    root.open_dataset("names").read_strings();
+    ADD_FAILURE() << "3.5 million names read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/names: holds 3500000 strings of 1024 bytes, more than a list of names"), std::string::npos) << e.what();
+  }
+  try {
+    root.attr_string("long");
+    ADD_FAILURE() << "5 MB of text read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("attribute 'long' holds 4194305 bytes of text, over the 4 MiB"), std::string::npos) << e.what();
+  }
+}
+
 TEST(H5, CompressedDatasetsUseGzipAndShuffle) {
   TempDir dir;
   const std::string path = dir.file("c.h5");

@@ -99,13 +99,21 @@ TEST(ScaleOut, TheShardScriptUnderXargsGivesTheWindowsOfOneRun) {
   // collection/{recordings,presses}/<Material>/ ("Brushed 1": names with spaces), in a folder whose name has one too.
   const std::string collection = dir.file("my collection");
   fs::create_directories(collection + "/presses");
+  fs::create_directories(dir.file("elsewhere"));
+  bool linked = false;  // one material's presses gathered by a link (review 21, F5: the script passed it over)
   for (const auto& folder : fs::directory_iterator(synth + "/gelsight")) {
     const std::string material = folder.path().filename().string();
     std::string xml = material;
     for (char& c : xml) c = c == ' ' ? '_' : char(std::tolower(static_cast<unsigned char>(c)));
     fs::create_directories(collection + "/recordings/" + material);
     fs::copy_file(synth + "/recordings/" + xml + "_0.xml.gz", collection + "/recordings/" + material + "/" + xml + "_0.xml.gz");
-    fs::copy(folder.path(), collection + "/presses/" + material, fs::copy_options::recursive);
+    if (!linked) {
+      fs::copy(folder.path(), dir.file("elsewhere/" + material), fs::copy_options::recursive);
+      fs::create_directory_symlink(dir.file("elsewhere/" + material), collection + "/presses/" + material);
+      linked = true;
+    } else {
+      fs::copy(folder.path(), collection + "/presses/" + material, fs::copy_options::recursive);
+    }
   }
   // One run over the whole collection.
   ASSERT_EQ(run_shard({{"convert", "hatt", collection + "/recordings", "-o", dir.file("r.h5")},

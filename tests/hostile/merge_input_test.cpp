@@ -267,6 +267,11 @@ std::vector<BrokenShard> broken_shards() {
          e.remove(m + "/presses/0");
        },
        {"/presses/00", "without gaps or leading zeros", "layout.required"}},
+      {"a material without recordings (review 21, F4)", p.recordings, [](Edit& e, const std::string& m) {
+         e.remove(m + "/recordings");
+         e.group(m).create_group("recordings");
+       },
+       {"/recordings: holds no recordings", "layout.required"}},
       {"a name of 5 MiB", p.recordings, [](Edit& e, const std::string& m) {
          e.remove(m + "@name");
          e.group(m).set_attr("name", "Sandpaper 1" + std::string(std::size_t(5) << 20, 'x'));

@@ -57,6 +57,22 @@ TEST(SessionFolder, ForceRefusesASessionJsonHaptexDidNotWrite) {
   EXPECT_EQ(file_bytes(o + "/press_0.h5"), "my own");
 }
 
+// Review 21, F6: session.json carried no content mark, so --force replaced one the user had edited.
+TEST(SessionFolder, ForceKeepsASessionJsonTheUserEdited) {
+  const TempDir d;
+  const std::string o = d.file("o");
+  ASSERT_EQ(record(kFake, o, false).exit_code, 0);
+  nlohmann::json manifest = nlohmann::json::parse(file_bytes(o + "/session.json"));
+  manifest["warnings"].push_back("MY NOTES: the gel was scratched");
+  const std::string edited = manifest.dump(2);
+  {
+    std::fstream f(o + "/session.json", std::ios::in | std::ios::out | std::ios::trunc);  // in place: the mark stays, stale
+    f << edited;
+  }
+  expect_refusal(record(kFake, o, true), {"session.json", "is not as haptex wrote it"});
+  EXPECT_EQ(file_bytes(o + "/session.json"), edited);
+}
+
 // Review 2, #13: a session of a newer haptex is called that, not "not a capture session's manifest".
 TEST(SessionFolder, ForceRefusesASessionOfANewerHaptex) {
   const TempDir d;

@@ -348,6 +348,14 @@ TEST_F(Extract, AFolderOfFramesWhoseNumbersDoNotRunOnIsRefused) {
       EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
     }
   }
+  // Review 21, F2: a number every name shares (a camera's) is not the frame number.
+  const fs::path cam = dir_.path() / "cam";
+  write_png_sequence(cam, 1, 12);
+  for (int i = 0; i < 12; ++i) {
+    const std::string number = std::to_string(1000 + i).substr(1);
+    fs::rename(cam / ("frame_" + number + ".png"), cam / ("frame_" + number + "_cam2.png"));
+  }
+  EXPECT_NO_THROW(open_image_sequence(cam.string()));
 }
 
 TEST_F(Extract, LosslessSourcesGetLowerFloorsThanLossyOnes) {
