@@ -127,6 +127,9 @@ TEST(PythonExamples, AHandMadeSplitIsHeldToHaptexsRules) {
       {"{\"format\": \"split/1\", \"format\": \"split/1\"}", "the key 'format' is given twice"},
       {"{\"format\": \"split/1\", \"x\": 1e400}", "holds 1e400"},
       {std::string(100000, '[') + std::string(100000, ']'), "nests deeper than 64 levels"},
+      // Review 21, F1: a 5000-digit number ended the example in a ValueError traceback, a NUL was accepted.
+      {"{\"format\": \"split/1\", \"x\": " + std::string(5000, '9') + "}", "digits, beyond 64-bit floats"},
+      {"{\"format\": \"split/1\", \"name\": \"Sand\\u0000paper\"}", "holds a NUL character"},
   };
   for (const auto& [bad, says] : cases) {
     SCOPED_TRACE(says);
