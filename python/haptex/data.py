@@ -146,6 +146,7 @@ def read_windows(path):
         raise HaptexFileError(f"{path}: not an HDF5 file haptex windows wrote ({e}); make it again with haptex windows") from None
     with f:
         _check_format(f, path, "windows/2")
+        require_plain_objects(f, path)
         w = _read_table(f["windows"], path)
         w.dataset_sha256 = _text(f.attrs["dataset_sha256"], f"{path}: /@dataset_sha256")
         w.split_sha256 = _text(f.attrs["split_sha256"], f"{path}: /@split_sha256")
@@ -165,7 +166,6 @@ class Split:
 
 _LARGEST_JSON = 64 << 20  # README: JSON inputs over 64 MiB, deeper than 64 levels, ... are refused
 _DEEPEST_JSON = 64
-_SETS = ("train", "val", "test")
 
 
 def _no_key_twice(pairs):
@@ -221,15 +221,52 @@ def _numbers(values, where, below):
 def _sets(entry, key, where, below):
     """{train, val, test} -> lists of numbers, no number in two sets: a number in two sets leaks."""
     sets = entry.get(key) if isinstance(entry, dict) else None
-    if not isinstance(sets, dict) or sorted(sets) != sorted(_SETS):
+    if not isinstance(sets, dict) or sorted(sets) != sorted(SETS):
         raise HaptexFileError(f"{where}/{key} must hold train, val and test")
     seen = {}
-    for name in _SETS:
+    for name in SETS:
         for v in _numbers(sets[name], f"{where}/{key}/{name}", below):
             if v in seen:
                 raise HaptexFileError(f"{where}/{key}: {v} is in {seen[v]} and {name}, so the split leaks between them")
             seen[v] = name
     return sets
+
+
+def strict_json(text, where):
+    """JSON as haptex's reader takes it (README): no key twice, no NaN, no number beyond 64-bit floats
+    or of 300 digits, no NUL in a key or a value, at most 64 levels deep. Raises HaptexFileError
+    ("WHERE: what")."""
+    try:
+        try:
+            doc = json.loads(text, object_pairs_hook=_no_key_twice, parse_constant=_no_constant,
+                             parse_float=_finite, parse_int=_whole)
+        except RecursionError:
+            raise HaptexFileError(f"nests deeper than {_DEEPEST_JSON} levels") from None
+        except json.JSONDecodeError as e:
+            raise HaptexFileError(f"is not JSON ({e})") from None
+        _depth(doc)
+        return doc
+    except HaptexFileError as e:
+        raise HaptexFileError(f"{where}: {e}") from None
+
+
+def require_plain_objects(f, path):
+    """README's rule for HDF5 inputs: no soft or external link, no dataset whose values are kept outside
+    the file (external storage, virtual datasets). Raises HaptexFileError naming the object."""
+    groups = [f]
+    while groups:
+        g = groups.pop()
+        for name in g:
+            link = g.get(name, getlink=True)
+            where = f"{g.name.rstrip('/')}/{name}"
+            if isinstance(link, (h5py.SoftLink, h5py.ExternalLink)):
+                kind = "a soft" if isinstance(link, h5py.SoftLink) else "an external"
+                raise HaptexFileError(f"{path}: {where}: is {kind} link; haptex reads only objects stored in the file itself")
+            obj = g[name]
+            if isinstance(obj, h5py.Group):
+                groups.append(obj)
+            elif isinstance(obj, h5py.Dataset) and (obj.external or obj.is_virtual):
+                raise HaptexFileError(f"{path}: {where}: keeps its values outside the file")
 
 
 def read_split(path):
@@ -241,13 +278,10 @@ def read_split(path):
         if len(raw) > _LARGEST_JSON:
             raise HaptexFileError(f"is over {_LARGEST_JSON >> 20} MiB")
         try:
-            doc = json.loads(raw.decode("utf-8"), object_pairs_hook=_no_key_twice, parse_constant=_no_constant,
-                             parse_float=_finite, parse_int=_whole)
-        except RecursionError:
-            raise HaptexFileError(f"nests deeper than {_DEEPEST_JSON} levels") from None
-        except (UnicodeDecodeError, json.JSONDecodeError) as e:
+            text = raw.decode("utf-8")
+        except UnicodeDecodeError as e:
             raise HaptexFileError(f"not a JSON split manifest ({e}); give the file haptex split wrote") from None
-        _depth(doc)
+        doc = strict_json(text, "the manifest")
         if not isinstance(doc, dict) or doc.get("format") != "split/1":
             found = doc.get("format") if isinstance(doc, dict) else type(doc).__name__
             raise HaptexFileError(f"format is '{found}', not split/1 (haptex split writes it)")
@@ -291,6 +325,7 @@ def read_set_windows(dataset_path, split, sets=("train",)):
         raise HaptexFileError(f"{split.path}: was made from another dataset than {dataset_path} (dataset.sha256)")
     with h5py.File(_regular_file(dataset_path), "r") as f:
         _check_format(f, dataset_path, "dataset/4")
+        require_plain_objects(f, dataset_path)
         w = _read_table(f["windows"], dataset_path)
         keep = np.zeros(len(w), dtype=bool)
         for m, material_id in enumerate(w.materials):
@@ -331,6 +366,7 @@ def read_presses(dataset_path, split, material_id, sets=("train",)):
     out = []
     with h5py.File(_regular_file(dataset_path), "r") as f:
         _check_format(f, dataset_path, "dataset/4")
+        require_plain_objects(f, dataset_path)
         for j in numbers:
             g = f[f"materials/{material_id}/presses/{j}"]
             order = _text(g.attrs.get("channel_order", ""))

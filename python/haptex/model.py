@@ -10,13 +10,12 @@ runs it: schemas/hdf5-layout.md ("Model file") spells out the layout and the for
 The descriptor of an image is computed by haptex itself (predict/texture_descriptor.cpp):
 haptex.press_latent(model_path, image) runs `haptex predict --json` and returns it.
 """
-import json
 from dataclasses import dataclass, field
 
 import h5py
 import numpy as np
 
-from .data import ACTION_SAMPLES, TARGET_BINS, HaptexFileError, _regular_file, _text
+from .data import ACTION_SAMPLES, TARGET_BINS, HaptexFileError, _regular_file, _text, require_plain_objects, strict_json
 
 FORMAT = "model/3"
 ACTIVATIONS = ("linear", "relu", "softplus")
@@ -190,6 +189,33 @@ class _Reader:
         return out
 
 
+def _ascii_id(name):
+    """A name's material id (core/naming.hpp) for an ASCII name: lower-case letters and digits, one '_'
+    between words. None for a name beyond ASCII, whose id haptex's own reader checks."""
+    if not name.isascii():
+        return None
+    words, word = [], ""
+    for c in name:
+        if c.isalnum():
+            word += c.lower()
+        elif word:
+            words.append(word)
+            word = ""
+    return "_".join(words + ([word] if word else []))
+
+
+def _check_ids(r, ids, names):
+    """As haptex's model reader: as many names as ids, each id its name's, none twice or empty
+    (review 19 F2, review 20 F2)."""
+    if not ids or len(names) != len(ids):
+        r.fail("/materials", f"{len(ids)} ids and {len(names)} names")
+    for i, (id_, name) in enumerate(zip(ids, names)):
+        if not id_ or "\0" in name or _ascii_id(name) not in (None, id_):
+            r.fail(f"/materials/ids[{i}]", f"'{id_}' is not the id of the material's name '{name}' (names[{i}])")
+    if len(set(ids)) != len(ids):
+        r.fail("/materials/ids", "names one material twice")
+
+
 def read_model(path):
     """A model file, every array checked as haptex's reader checks it (float32, shapes, finite,
     positive scales); raises HaptexFileError naming the file and the object otherwise."""
@@ -201,10 +227,15 @@ def read_model(path):
         variant = _text(r.attr(f, "variant"))
         if variant not in ("unified", "per-material"):
             r.fail("/@variant", f"is '{variant}', not unified or per-material")
+        require_plain_objects(f, path)
         ids = [_text(s) for s in f["materials/ids"][()]] if "materials/ids" in f else r.fail("/materials/ids", "is missing")
-        names = [_text(s) for s in f["materials/names"][()]] if "materials/names" in f else list(ids)
+        names = [_text(s) for s in f["materials/names"][()]] if "materials/names" in f else r.fail("/materials/names", "is missing")
+        _check_ids(r, ids, names)
         n = f["normalisation"] if "normalisation" in f else r.fail("/normalisation", "is missing")
-        bounds = [np.float32(r.attr(n, k)) for k in ("force_min", "force_max", "speed_min", "speed_max")]
+        try:
+            bounds = [np.float32(float(r.attr(n, k))) for k in ("force_min", "force_max", "speed_min", "speed_max")]
+        except (TypeError, ValueError):
+            r.fail("/normalisation", "force_min, force_max, speed_min and speed_max must be one number each")
         if not all(np.isfinite(bounds)) or bounds[0] > bounds[1] or bounds[2] > bounds[3]:
             r.fail("/normalisation", f"force and speed ranges {bounds} are not finite and ordered")
         half = ACTION_SAMPLES
@@ -215,10 +246,7 @@ def read_model(path):
                   low=np.repeat(np.float32([bounds[0], bounds[2]]), half), high=np.repeat(np.float32([bounds[1], bounds[3]]), half),
                   nets=[], dataset_sha256=_text(f.attrs.get("dataset_sha256", "")), split_sha256=_text(f.attrs.get("split_sha256", "")))
         for name in ("config", "metrics"):
-            try:
-                setattr(m, name, json.loads(_text(f.attrs.get(name, "{}"))))
-            except ValueError:
-                r.fail(f"/@{name}", "is not JSON")
+            setattr(m, name, strict_json(_text(f.attrs.get(name, "{}")), f"{path}: /@{name}"))
         latent = 0
         if variant == "unified":
             length = int(r.attr(f["feature_spec"], "length")) if "feature_spec" in f else r.fail("/feature_spec", "is missing")

@@ -10,6 +10,7 @@
 
 #include "core/temporary_name.hpp"
 #include "tests/hostile/hostile_support.hpp"
+#include "tests/support/quick_models.hpp"
 #include "tests/support/small_pipeline.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -140,6 +141,45 @@ TEST(PythonExamples, AHandMadeSplitIsHeldToHaptexsRules) {
     EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(d.file("k.h5")));
   }
+}
+
+// Review 21, F7: the package's model and windows readers took what haptex's refuse: ids given twice or
+// swapped against their names, soft and external links, values kept outside the file, a config nested
+// 100,000 deep (a RecursionError traceback), a bound that is text (a ValueError).
+TEST(PythonExamples, ThePackageReadsModelsAndWindowsAsHaptexDoes) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const Knn knn;
+  const TempDir d;
+  const std::vector<std::pair<std::string, std::string>> edits = {
+      {"n = f['materials/names'][()]; del f['materials/names']; f['materials/names'] = n[::-1]", "is not the id of the material's name"},
+      {"f['spare'] = f['normalisation/target_scale'][()]; del f['normalisation/target_scale']; "
+       "f['normalisation/target_scale'] = h5py.SoftLink('/spare')", "/normalisation/target_scale: is a soft link"},
+      {"f['normalisation/target_scale2'] = h5py.ExternalLink('other.h5', '/x')", "is an external link"},
+      {"f.attrs['config'] = '[' * 100000 + ']' * 100000", "/@config: nests deeper than 64 levels"},
+      {"f['normalisation'].attrs['force_max'] = 'abc'", "must be one number each"},
+  };
+  for (const auto& [edit, says] : edits) {
+    SCOPED_TRACE(says);
+    const std::string model = d.file("m.h5");
+    fs::copy_file(quick_model(), model, fs::copy_options::overwrite_existing);
+    ASSERT_EQ(run_python({"-c", "import h5py, sys\nwith h5py.File(sys.argv[1], 'r+') as f: " + edit, model}).exit_code, 0);
+    const CommandResult r = run_python({"-c", "import sys; sys.path.insert(0, sys.argv[1]); import haptex\n"
+                                              "try:\n    haptex.read_model(sys.argv[2]); print('ACCEPTED')\n"
+                                              "except haptex.HaptexFileError as e:\n    print(e)",
+                                        std::string(HAPTEX_SCHEMA_DIR) + "/../python", model});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find(model), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(says), std::string::npos) << r.out << r.err;
+  }
+  const std::string windows = d.file("w.h5");
+  fs::copy_file(knn.windows, windows);
+  ASSERT_EQ(run_python({"-c", "import h5py, sys\nwith h5py.File(sys.argv[1], 'r+') as f:\n"
+                              "    f['windows/spare'] = f['windows/action'][()] * 1000; del f['windows/action']; "
+                              "f['windows/action'] = h5py.SoftLink('/windows/spare')", windows}).exit_code, 0);
+  const SmallPipeline& p = small_pipeline();
+  expect_refusal(run_python({kExamples + "knn_baseline.py", p.dataset, p.split, windows, "-o", d.file("k.h5")}),
+                 {windows, "/windows/action: is a soft link"});
+  EXPECT_FALSE(fs::exists(d.file("k.h5")));
 }
 
 TEST(PythonExamples, KnnForceReplacesOnlyAnEarlierPredictionsFile) {
