@@ -252,21 +252,22 @@ def strict_json(text, where):
 
 def require_plain_objects(f, path):
     """README's rule for HDF5 inputs: no soft or external link, no dataset whose values are kept outside
-    the file (external storage, virtual datasets). Raises HaptexFileError naming the object."""
-    groups = [f]
-    while groups:
-        g = groups.pop()
-        for name in g:
-            link = g.get(name, getlink=True)
-            where = f"{g.name.rstrip('/')}/{name}"
+    the file (external storage, virtual datasets). Raises HaptexFileError naming the object. HDF5's own
+    walk visits each object once (hard links that loop included) and follows no soft or external link;
+    each group's links are then looked at without following them."""
+    objects = [f]
+    f.visititems(lambda name, obj: objects.append(obj))
+    for obj in objects:
+        if isinstance(obj, h5py.Dataset):
+            if obj.external or obj.is_virtual:
+                raise HaptexFileError(f"{path}: {obj.name}: keeps its values outside the file")
+            continue
+        for name in obj:
+            link = obj.get(name, getlink=True)
             if isinstance(link, (h5py.SoftLink, h5py.ExternalLink)):
                 kind = "a soft" if isinstance(link, h5py.SoftLink) else "an external"
-                raise HaptexFileError(f"{path}: {where}: is {kind} link; haptex reads only objects stored in the file itself")
-            obj = g[name]
-            if isinstance(obj, h5py.Group):
-                groups.append(obj)
-            elif isinstance(obj, h5py.Dataset) and (obj.external or obj.is_virtual):
-                raise HaptexFileError(f"{path}: {where}: keeps its values outside the file")
+                raise HaptexFileError(f"{path}: {obj.name.rstrip('/')}/{name}: is {kind} link; "
+                                      "haptex reads only objects stored in the file itself")
 
 
 def read_split(path):
