@@ -38,9 +38,12 @@ void check_channels(const Recording& recording, const std::function<std::string(
   // After the units are applied, every sample must still fit the float32 the recordings file stores.
   for (const auto& [channel, samples] : recording.channels)
     for (std::size_t i = 0; i < samples.size(); ++i)
-      if (!text::within_float_range(samples[i]))
+      if (!text::fits_stored_float(samples[i]))  // review 22, F3: 5e-36 mN became the subnormal 5e-39 N
         throw input_error(file, where(channel) + ", sample " + std::to_string(i + 1),
-                          text::format("%g is beyond 3.4e38, the largest magnitude of the 32-bit floats the recordings file stores",
+                          text::format(text::within_float_range(samples[i])
+                                           ? "%g is under 1.2e-38 but not 0, which the 32-bit floats the recordings file stores keep "
+                                             "only with their digits lost"
+                                           : "%g is beyond 3.4e38, the largest magnitude of the 32-bit floats the recordings file stores",
                                        samples[i]),
                           "Check the column's unit, or remove the bad samples");
   const int positions = int(recording.has("position_x")) + recording.has("position_y") + recording.has("position_z");

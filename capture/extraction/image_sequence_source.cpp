@@ -23,6 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+const std::string kFrameNamesFix = "Name the frames by their numbers, one file each, none missing (frame_0000.png, frame_0001.png, ...)";
+
 class ImageSequenceSource : public FrameSource {
  public:
   explicit ImageSequenceSource(std::string folder) : path_(std::move(folder)) {
@@ -55,22 +57,36 @@ class ImageSequenceSource : public FrameSource {
     return runs;
   }
 
-  // Which run of digits is the frame number: the last one that differs between the files (a camera's
-  // number or a date in every name stays the same: review 21, F2), else the last.
-  static std::size_t frame_number_run(const std::vector<std::vector<std::string>>& runs) {
+  // Which run of digits is the frame number: the one that differs between the files (a camera's number
+  // or a date the same in every name is not: review 21, F2); the last when none does (one file). Names
+  // holding two numbers that change (a frame number and a time stamp or save counter) are refused: which
+  // one counts the frames cannot be told (review 22, F1).
+  std::size_t frame_number_run(const std::vector<std::vector<std::string>>& runs) const {
     const std::size_t count = runs.front().size();
-    std::size_t chosen = count - 1;
+    std::vector<std::size_t> varying;
     for (std::size_t r = 0; r < count; ++r)
-      for (const auto& name : runs)
-        if (name.size() != count) return count - 1;
-        else if (name[r] != runs.front()[r]) chosen = r;
-    return chosen;
+      for (std::size_t k = 0; k < runs.size(); ++k)
+        if (runs[k].size() != count)
+          throw input_error(path_, fs::path(files_[k]).filename().string(),
+                            "holds " + std::to_string(runs[k].size()) + " numbers where " + fs::path(files_[0]).filename().string() +
+                                " holds " + std::to_string(count),
+                            kFrameNamesFix);
+        else if (runs[k][r] != runs[0][r]) {
+          varying.push_back(r);
+          break;
+        }
+    if (varying.size() > 1)
+      throw input_error(path_, fs::path(files_[0]).filename().string(),
+                        "and the other frames' names hold " + std::to_string(varying.size()) +
+                            " numbers that change from frame to frame, so which one counts the frames cannot be told",
+                        kFrameNamesFix);
+    return varying.empty() ? count - 1 : varying.front();
   }
 
   // Frame k is the k-th file, so the numbers in the names must run on by one: a missing file would join
   // frames apart in time as neighbours, and two files of one number would be two frames (review 20, F3).
   void require_consecutive_numbers() const {
-    const std::string fix = "Name the frames by their numbers, one file each, none missing (frame_0000.png, frame_0001.png, ...)";
+    const std::string& fix = kFrameNamesFix;
     std::vector<std::vector<std::string>> runs;
     for (const std::string& file : files_) {
       runs.push_back(digit_runs(fs::path(file).stem().string()));

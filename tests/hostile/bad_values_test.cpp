@@ -823,6 +823,22 @@ void rename_material(const std::string& dataset, const std::string& from, const 
   e.group("windows").write_strings("materials", ids);
 }
 
+// Review 22, F3: the lower bound was checked on the text's number, before the unit: 5e-36 mN was stored
+// as the subnormal 5e-39 N. It is refused after the unit, as the upper bound is.
+TEST(BadValues, AValueThatItsUnitMakesSubnormalIsRefused) {
+  const TempDir d;
+  ASSERT_EQ(run_haptex({"synth", "materials", "-n", "1", "--presses", "1", "--recordings", "1", "--seconds", "0.5", "--size", "64x48",
+                        "-o", d.file("s")}).exit_code, 0);
+  const fs::path xml = *fs::directory_iterator(d.file("s/recordings"));
+  std::string text = read_recording_text(xml.string());
+  text.replace(text.find("<ForceUnits>N</ForceUnits>"), 26, "<ForceUnits>mN</ForceUnits>");
+  const std::size_t force = text.find("<value>", text.find("<forceNormal")) + 7;
+  text.replace(force, text.find("</value>", force) - force, "5e-36");
+  write_recording_text(xml.string(), text);
+  expect_refusal(run_haptex({"convert", "hatt", xml.string(), "-o", d.file("r.h5")}), {xml.string(), "force", "sample 1", "under 1.2e-38"});
+  EXPECT_FALSE(fs::exists(d.file("r.h5")));
+}
+
 // Review 4, #7: evaluate wrote a material name's ESC and BEL into report.md and every CSV, so `cat
 // report.md` retitled and cleared the terminal.
 TEST(BadValues, AReportHoldsNoTerminalEscapeFromAName) {

@@ -1,6 +1,7 @@
 // Issue 32, classes 2 and 17: `capture record --force` replaces only what the old session wrote
 // (capture/recording/session_folder.hpp), and session.json's `command` pastes as the same command.
 #include <gtest/gtest.h>
+#include <sys/mount.h>
 
 #include <filesystem>
 #include <fstream>
@@ -71,6 +72,23 @@ TEST(SessionFolder, ForceKeepsASessionJsonTheUserEdited) {
   }
   expect_refusal(record(kFake, o, true), {"session.json", "is not as haptex wrote it"});
   EXPECT_EQ(file_bytes(o + "/session.json"), edited);
+}
+
+// Review 22, F5: on a file system that keeps no extended attributes (ramfs here; NFSv3, vfat and many
+// cluster mounts alike) the take refused its own session.json after the first press, for want of the
+// mark. The take records every press; --force afterwards keeps the unmarked manifest, as any file haptex
+// cannot tell from a user's.
+TEST(SessionFolder, ATakeOnAFileSystemWithoutExtendedAttributesRecordsEveryPress) {
+  const TempDir d;
+  if (::mount("ramfs", d.path().c_str(), "ramfs", MS_NOSUID | MS_NODEV, nullptr) != 0)
+    GTEST_SKIP() << "cannot mount a ramfs here (needs root with CAP_SYS_ADMIN)";
+  const std::string o = d.file("o");
+  const CommandResult r = run_haptex({"capture", "record", "--device", kFake, "--material", "Cork", "--presses", "3", "-o", o, "-q"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json manifest = nlohmann::json::parse(file_bytes(o + "/session.json"));
+  EXPECT_EQ(manifest["presses"].size(), 3u) << manifest.dump();
+  expect_refusal(record(kFake, o, true), {"session.json", "is not as haptex wrote it"});
+  ::umount2(d.path().c_str(), MNT_DETACH);
 }
 
 // Review 2, #13: a session of a newer haptex is called that, not "not a capture session's manifest".

@@ -356,6 +356,19 @@ TEST_F(Extract, AFolderOfFramesWhoseNumbersDoNotRunOnIsRefused) {
     fs::rename(cam / ("frame_" + number + ".png"), cam / ("frame_" + number + "_cam2.png"));
   }
   EXPECT_NO_THROW(open_image_sequence(cam.string()));
+  // Review 22, F1: a second number that changes (a time stamp, a save counter) leaves the frame number unknown.
+  const fs::path stamped = dir_.path() / "stamped";
+  write_png_sequence(stamped, 1, 12);
+  for (int i = 0; i < 12; ++i) {
+    const std::string number = std::to_string(1000 + i).substr(1);
+    fs::rename(stamped / ("frame_" + number + ".png"), stamped / ("frame_" + number + "_t" + std::to_string(33 * i) + ".png"));
+  }
+  try {
+    open_image_sequence(stamped.string());
+    ADD_FAILURE() << "two changing numbers accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("which one counts the frames cannot be told"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(Extract, LosslessSourcesGetLowerFloorsThanLossyOnes) {
