@@ -187,7 +187,10 @@ class Extraction {
 
   ExtractResult finish() {
     if (result_.presses.empty()) {
-      commit_explain();  // the charts say why no press was found
+      // The charts say why no press was found, but not in place of the charts of an earlier file at -o,
+      // which stays, and which they describe (review 22, F2).
+      std::error_code ec;
+      if (explain_ && !fs::exists(fs::symlink_status(output_, ec))) commit_explain();
       throw NoPressFound(no_press_message(), result_);
     }
     // The file and its folders appear together or not at all (a full disk while writing any of them, a
@@ -240,12 +243,15 @@ class Extraction {
   }
 
   std::string no_press_message() const {
-    std::string m = "no press found in " + std::to_string(result_.sources) + " input(s); nothing was written.";
+    std::string m = "no press found in " + std::to_string(result_.sources) + " input(s); no gelsight file was written.";
     constexpr std::size_t kShown = 5;
     for (std::size_t i = 0; i < std::min(kShown, result_.detections.size()); ++i)
       m += "\n  " + text::printable(result_.detections[i].source) + ": " + describe(result_.detections[i]);  // a newline in a name is its own
     if (result_.detections.size() > kShown) m += "\n  ... and " + std::to_string(result_.detections.size() - kShown) + " more";
     if (!result_.explain_dir.empty()) m += "\nEach source's score over time: " + text::printable(result_.explain_dir);
+    else if (explain_)
+      m += "\nThe score charts were not written: " + text::printable(explain_->final_path()) +
+           " belongs to " + text::printable(output_) + ", which stays (give another -o to see them)";
     return m + "\nIf the sensor was pressed, give a lower --trigger (above the no-contact level), or a no-contact "
                "image with --reference";
   }

@@ -250,6 +250,21 @@ def strict_json(text, where):
         raise HaptexFileError(f"{where}: {e}") from None
 
 
+_MOST_BYTES_READ = 4 << 30   # core/h5/node.hpp kMostBytesRead: no dataset haptex writes comes near it
+_MOST_TEXTS = 1000000        # kMostTexts: the longest list of names
+
+
+def _require_sensible_size(d, path):
+    """Refuses, from the shape alone, a dataset declaring more than haptex reads (review 22, F4: a 340 KB
+    file declaring 64 GiB or 3.5 million names in chunks never written)."""
+    count = int(np.prod(d.shape, dtype=np.float64)) if d.shape else 1
+    if count * d.dtype.itemsize > _MOST_BYTES_READ:
+        raise HaptexFileError(f"{path}: {d.name}: declares {count} values ({count * d.dtype.itemsize / 2**30:.1f} GiB), "
+                              f"more than haptex reads at once")
+    if d.dtype.kind in "SOU" and count > _MOST_TEXTS:
+        raise HaptexFileError(f"{path}: {d.name}: holds {count} strings, more than a list of names haptex writes ({_MOST_TEXTS} at most)")
+
+
 def require_plain_objects(f, path):
     """README's rule for HDF5 inputs: no soft or external link, no dataset whose values are kept outside
     the file (external storage, virtual datasets). Raises HaptexFileError naming the object. HDF5's own
@@ -261,7 +276,10 @@ def require_plain_objects(f, path):
         if isinstance(obj, h5py.Dataset):
             if obj.external or obj.is_virtual:
                 raise HaptexFileError(f"{path}: {obj.name}: keeps its values outside the file")
+            _require_sensible_size(obj, path)
             continue
+        if not isinstance(obj, h5py.Group):
+            raise HaptexFileError(f"{path}: {obj.name}: is neither a group nor a dataset (a named datatype?)")
         for name in obj:
             link = obj.get(name, getlink=True)
             if isinstance(link, (h5py.SoftLink, h5py.ExternalLink)):

@@ -249,7 +249,12 @@ def read_model(path):
             setattr(m, name, strict_json(_text(f.attrs.get(name, "{}")), f"{path}: /@{name}"))
         latent = 0
         if variant == "unified":
-            length = int(r.attr(f["feature_spec"], "length")) if "feature_spec" in f else r.fail("/feature_spec", "is missing")
+            if "feature_spec" not in f:
+                r.fail("/feature_spec", "is missing")
+            try:
+                length = int(r.attr(f["feature_spec"], "length"))
+            except (TypeError, ValueError, OverflowError):
+                r.fail("/feature_spec@length", "must be one whole number")
             m.descriptor_mean = r.array("normalisation/descriptor_mean", (length,))
             m.descriptor_scale = r.array("normalisation/descriptor_scale", (length,), positive=True)
             m.texture_encoder = r.layers("texture_encoder", length)

@@ -12,6 +12,7 @@
 #include "core/temporary_name.hpp"
 #include "tests/capture/fake_setup.hpp"
 #include "tests/capture/press_videos.hpp"
+#include "tests/support/file_text.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -196,6 +197,15 @@ TEST_F(ExtractCli, ExplainChartsEverySourceEvenWithoutAPress) {
   EXPECT_EQ(t["detection"][0]["chart"], dir_.file("gelsight_explain/press_0_mkv.png"));
   EXPECT_EQ(t["detection"][1]["chart"], dir_.file("gelsight_explain/press_0_mkv_2.png"));
   EXPECT_TRUE(fs::is_regular_file(dir_.file("gelsight_explain/press_0_mkv_2.png")));
+  // Review 22, F2: a run that finds no press keeps the file at -o, and so the charts that describe it.
+  const std::string before = file_text(out());
+  const CommandResult still = run_haptex({"capture", "extract", dir_.file("still"), "-o", out(), "--explain", "--force"});
+  EXPECT_EQ(still.exit_code, 1);
+  EXPECT_NE(still.err.find("The score charts were not written: " + dir_.file("gelsight_explain") + " belongs to " + out()), std::string::npos)
+      << still.err;
+  EXPECT_EQ(file_text(out()), before);
+  EXPECT_TRUE(fs::is_regular_file(dir_.file("gelsight_explain/press_0_mkv_2.png")));
+  EXPECT_FALSE(fs::exists(dir_.file("gelsight_explain/still_mkv.png")));
 }
 
 TEST_F(ExtractCli, BadInputIsRefusedWithOneMessageAndNothingWritten) {

@@ -157,6 +157,11 @@ TEST(PythonExamples, ThePackageReadsModelsAndWindowsAsHaptexDoes) {
       {"f['normalisation/target_scale2'] = h5py.ExternalLink('other.h5', '/x')", "is an external link"},
       {"f.attrs['config'] = '[' * 100000 + ']' * 100000", "/@config: nests deeper than 64 levels"},
       {"f['normalisation'].attrs['force_max'] = 'abc'", "must be one number each"},
+      // Review 22, F4: a named datatype was a TypeError, 3.5 million declared names cost 3.5 GB, a NaN length a ValueError.
+      {"import numpy; f['notes_type'] = numpy.dtype('f4')", "/notes_type: is neither a group nor a dataset"},
+      {"f.create_dataset('many', shape=(3500000,), dtype='S1024', chunks=(16000,), compression='gzip')",
+       "/many: holds 3500000 strings, more than a list of names"},
+      {"f['feature_spec'].attrs['length'] = float('nan')", "/feature_spec@length: must be one whole number"},
   };
   for (const auto& [edit, says] : edits) {
     SCOPED_TRACE(says);
