@@ -827,9 +827,7 @@ void rename_material(const std::string& dataset, const std::string& from, const 
 // as the subnormal 5e-39 N. It is refused after the unit, as the upper bound is.
 TEST(BadValues, AValueThatItsUnitMakesSubnormalIsRefused) {
   const TempDir d;
-  ASSERT_EQ(run_haptex({"synth", "materials", "-n", "1", "--presses", "1", "--recordings", "1", "--seconds", "0.5", "--size", "64x48",
-                        "-o", d.file("s")}).exit_code, 0);
-  const fs::path xml = *fs::directory_iterator(d.file("s/recordings"));
+  const fs::path xml = one_synth_recording(d.file("s"));
   std::string text = read_recording_text(xml.string());
   text.replace(text.find("<ForceUnits>N</ForceUnits>"), 26, "<ForceUnits>mN</ForceUnits>");
   const std::size_t force = text.find("<value>", text.find("<forceNormal")) + 7;

@@ -117,9 +117,7 @@ TEST(Messages, AMalformedPressAttributeStopsEveryCommandThatReadsTheDataset) {
 // Names must be UTF-8; the first byte that is not is named, with the file, and nothing is written.
 TEST(Messages, ANameThatIsNotUtf8IsRefusedAtTheDoor) {
   const TempDir dir;
-  ASSERT_EQ(run_haptex({"synth", "materials", "-n", "1", "--presses", "1", "--recordings", "1", "--seconds", "0.5", "--size", "64x48",
-                        "-o", dir.file("s")}).exit_code, 0);
-  const fs::path xml = *fs::directory_iterator(dir.file("s/recordings"));
+  const fs::path xml = one_synth_recording(dir.file("s"));
   std::string text = read_recording_text(xml.string());
   const auto open = text.find("<material>") + 10;
   text.replace(open, text.find("</material>") - open, "Caf\xe9");

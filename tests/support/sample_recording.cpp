@@ -1,9 +1,11 @@
 #include "tests/support/sample_recording.hpp"
 
 #include "core/gzip.hpp"
+#include "tests/support/run_haptex.hpp"
 #include "synth/recorded_data_xml.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <numbers>
@@ -100,6 +102,13 @@ std::string read_recording_text(const std::string& path) {
 void write_recording_text(const std::string& path, const std::string& text) {
   const bool gz = path.size() > 3 && path.compare(path.size() - 3, 3, ".gz") == 0;
   write_text_file(path, gz ? gzip::compress(text, 1) : text);
+}
+
+std::string one_synth_recording(const std::string& folder) {
+  const CommandResult r = run_haptex({"synth", "materials", "-n", "1", "--presses", "1", "--recordings", "1", "--seconds", "0.5", "--size",
+                                      "64x48", "-o", folder});
+  if (r.exit_code != 0) throw std::runtime_error("haptex synth materials failed: " + r.err);
+  return std::filesystem::directory_iterator(folder + "/recordings")->path().string();
 }
 
 }  // namespace haptex::test

@@ -32,5 +32,8 @@ void write_text_file(const std::string& path, const std::string& text);
 // again when PATH ends in .gz.
 std::string read_recording_text(const std::string& path);
 void write_recording_text(const std::string& path, const std::string& text);
+// `haptex synth materials` of one material (one press, one 0.5 s recording) into `folder`; the path of
+// its recording's XML, for a test to edit.
+std::string one_synth_recording(const std::string& folder);
 
 }  // namespace haptex::test
