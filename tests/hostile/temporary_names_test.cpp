@@ -323,6 +323,13 @@ TEST(TemporaryNames, AFolderTemporarySwappedForALinkIsNotPutInPlace) {
     }
     if (!swapped) continue;
     EXPECT_EQ(file_bytes(victim + "/chapter1.tex"), "years of work");
+    // A swap that lands while split is still making its temporary folder is refused there (exit 2): safe, but
+    // not the case under test, so the run is tried again.
+    if (r.exit_code == 2 && r.err.find("cannot create a temporary folder beside it") != std::string::npos) {
+      EXPECT_FALSE(fs::exists(out));
+      swapped = false;
+      continue;
+    }
     EXPECT_FALSE(fs::exists(fs::symlink_status(plots))) << "the link was put in place as the plots: " << r.err;
     EXPECT_FALSE(fs::exists(out)) << "the manifest appeared without its plots";
     EXPECT_EQ(r.exit_code, 1) << r.err;
