@@ -234,7 +234,7 @@ def _sets(entry, key, where, below):
 
 def strict_json(text, where):
     """JSON as haptex's reader takes it (README): no key twice, no NaN, no number beyond 64-bit floats
-    or of 300 digits, no NUL in a key or a value, at most 64 levels deep. Raises HaptexFileError
+    or of 300 digits, no NUL in a key or in an object's text value, at most 64 levels deep. Raises HaptexFileError
     ("WHERE: what")."""
     try:
         try:
