@@ -86,24 +86,23 @@ class ImageSequenceSource : public FrameSource {
   // Frame k is the k-th file, so the numbers in the names must run on by one: a missing file would join
   // frames apart in time as neighbours, and two files of one number would be two frames (review 20, F3).
   void require_consecutive_numbers() const {
-    const std::string& fix = kFrameNamesFix;
     std::vector<std::vector<std::string>> runs;
     for (const std::string& file : files_) {
       runs.push_back(digit_runs(fs::path(file).stem().string()));
-      if (runs.back().empty()) throw input_error(path_, fs::path(file).filename().string(), "holds no frame number", fix);
+      if (runs.back().empty()) throw input_error(path_, fs::path(file).filename().string(), "holds no frame number", kFrameNamesFix);
     }
     const std::size_t run = frame_number_run(runs);
     std::optional<unsigned long long> before;
     for (std::size_t k = 0; k < files_.size(); ++k) {
-      const std::string& digits = runs[k][std::min(run, runs[k].size() - 1)];
+      const std::string& digits = runs[k][run];  // frame_number_run: every name holds as many numbers
       unsigned long long number = 0;
       if (std::from_chars(digits.data(), digits.data() + digits.size(), number).ec != std::errc() || number > (1ULL << 62))
-        throw input_error(path_, fs::path(files_[k]).filename().string(), "holds the frame number " + digits + ", beyond any video's", fix);
+        throw input_error(path_, fs::path(files_[k]).filename().string(), "holds the frame number " + digits + ", beyond any video's", kFrameNamesFix);
       if (before && number != *before + 1)
         throw input_error(path_, fs::path(files_[k]).filename().string(),
                           "is frame " + std::to_string(number) + ", after " + fs::path(files_[k - 1]).filename().string() + " (frame " +
                               std::to_string(*before) + ")" + (number == *before ? ": two files give one frame" : ": frames are missing between them"),
-                          fix);
+                          kFrameNamesFix);
       before = number;
     }
   }
