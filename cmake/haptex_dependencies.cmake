@@ -8,6 +8,10 @@ pkg_check_modules(HDF5 REQUIRED IMPORTED_TARGET hdf5)
 pkg_check_modules(LIBUSB REQUIRED IMPORTED_TARGET libusb-1.0)
 pkg_check_modules(SNDFILE REQUIRED IMPORTED_TARGET sndfile)
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+# Eigen's fast math takes float square roots from rsqrtps plus a Newton step; rsqrtps's last bits are
+# the CPU maker's own. Adam divides by such a root every step, so training took another path on another
+# CPU and `make demo`'s figures (docs/benchmark.md) were the machine's. sqrtps is exact on every x86-64.
+set_property(TARGET Eigen3::Eigen APPEND PROPERTY INTERFACE_COMPILE_DEFINITIONS EIGEN_FAST_MATH=0)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(Threads REQUIRED)
 find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs videoio)
