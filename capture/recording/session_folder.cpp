@@ -8,9 +8,9 @@
 #include <cstring>
 
 #include <algorithm>
+#include <string_view>
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <regex>
 
 #include "capture/recording/session_manifest.hpp"
 #include "core/error.hpp"
@@ -27,7 +27,13 @@ namespace haptex::capture {
 namespace fs = std::filesystem;
 namespace {
 
-const std::regex kPressFile("press_[0-9]+\\.h5");
+// "press_<digits>.h5", checked by hand: std::regex matches by recursion, once per character, and a
+// session.json naming a 300 000-digit press file overflowed the stack (review 23, F7).
+bool is_press_file_name(std::string_view name) {
+  if (!name.starts_with("press_") || !name.ends_with(".h5")) return false;
+  const std::string_view digits = name.substr(6, name.size() - 9);
+  return !digits.empty() && std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
 
 bool is_session_file(const fs::path& p) {
   const std::string name = p.filename().string();
@@ -69,7 +75,7 @@ std::vector<fs::path> old_session_files(const std::string& dir) {
   std::vector<fs::path> owned{manifest};
   for (const nlohmann::json& press : doc["presses"])
     if (press.is_object() && press.contains("file") && press["file"].is_string() &&
-        std::regex_match(press["file"].get<std::string>(), kPressFile))
+        is_press_file_name(press["file"].get<std::string>()))
       owned.push_back(fs::path(dir) / press["file"].get<std::string>());
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (std::find(owned.begin(), owned.end(), entry.path()) == owned.end())
@@ -141,7 +147,7 @@ void EarlierSession::settle() noexcept {
   std::error_code ec;
   bool pressed = false;  // a press file in the folder now is the new take's
   for (const auto& entry : fs::directory_iterator(dir_, ec))
-    pressed = pressed || std::regex_match(entry.path().filename().string(), kPressFile);
+    pressed = pressed || is_press_file_name(entry.path().filename().string());
   if (pressed) {
     fs::remove_all(aside_, ec);
   } else {

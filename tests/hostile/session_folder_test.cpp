@@ -1,6 +1,7 @@
 // Issue 32, classes 2 and 17: `capture record --force` replaces only what the old session wrote
 // (capture/recording/session_folder.hpp), and session.json's `command` pastes as the same command.
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <sys/mount.h>
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include "core/content_mark.hpp"
 #include "tests/hostile/hostile_support.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -92,6 +94,26 @@ TEST(SessionFolder, ATakeOnAFileSystemWithoutExtendedAttributesRecordsEveryPress
 }
 
 // Review 2, #13: a session of a newer haptex is called that, not "not a capture session's manifest".
+// Review 23, F7: the press files a marked session.json lists were matched with std::regex, which
+// recurses once per character: a 300 000-digit press file name overflowed the stack (SIGSEGV).
+TEST(SessionFolder, ForceReadsAPressFileNameOfAnyLengthWithoutCrashing) {
+  const TempDir d;
+  const std::string o = d.file("o");
+  ASSERT_EQ(record(kFake, o, false).exit_code, 0);
+  nlohmann::json doc = nlohmann::json::parse(file_bytes(o + "/session.json"));
+  doc["presses"][0]["file"] = "press_" + std::string(300000, '0') + ".h5";
+  {
+    std::ofstream(o + "/session.json", std::ios::trunc) << doc.dump();
+    const int fd = ::open((o + "/session.json").c_str(), O_RDONLY);
+    ASSERT_GE(fd, 0);
+    mark_content(fd);  // as haptex marks what it writes: the edit is the test's, not a user's
+    ::close(fd);
+  }
+  const std::string press = file_bytes(o + "/press_0.h5");
+  expect_refusal(record(kFake, o, true), {o, "press_0.h5", "does not list it"});
+  EXPECT_EQ(file_bytes(o + "/press_0.h5"), press);
+}
+
 TEST(SessionFolder, ForceRefusesASessionOfANewerHaptex) {
   const TempDir d;
   const std::string o = d.file("o");

@@ -129,6 +129,24 @@ TEST_F(Discovery, RefusesABadSensorList) {
   }
 }
 
+// Review 23, F6: libstdc++ compiles a regular expression by recursion, so a pattern nested 30 000 deep
+// (60 KB of valid JSON) overflowed the stack: SIGSEGV in `capture devices`. Patterns are bounded by the
+// schema, before std::regex sees them.
+TEST_F(Discovery, ARegularExpressionTooLongToCompileIsRefusedByItsPlace) {
+  for (const char* field : {"product_pattern", "serial_pattern"}) {
+    const std::string deep = std::string(30000, '(') + "a" + std::string(30000, ')');
+    std::ofstream(dir_.file("deep.json")) << R"({"format": "tactile-sensors/1", "sensors": [{"model": "X", "vendor_id": "0c45", "product_id": "636d", ")"
+                                          << field << R"(": ")" << deep << R"("}]})";
+    try {
+      SensorCatalog::from_file(dir_.file("deep.json"));
+      FAIL() << field;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), Error::Kind::bad_input);
+      EXPECT_NE(std::string(e.what()).find(std::string("/sensors/0/") + field), std::string::npos) << e.what();
+    }
+  }
+}
+
 // Review 8, #9: a mode of 1e39 frames a second was taken. The schema's bounds are the press file's
 // (dataset/press_file.hpp), so a rate the list allows is one a press file can state.
 TEST_F(Discovery, ASensorModeHasARateAPressFileCanState) {
