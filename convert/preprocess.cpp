@@ -1,8 +1,14 @@
 #include "convert/preprocess.hpp"
 
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.hpp"
 #include "core/signal/butterworth.hpp"
 #include "core/signal/dft321.hpp"
 #include "core/signal/sosfilt.hpp"
+#include "core/text/format.hpp"
 
 namespace haptex::convert {
 namespace {
@@ -21,9 +27,21 @@ std::vector<float> interleave(const std::vector<double>& a, const std::vector<do
   return rows;
 }
 
-std::vector<float> lowpassed(const std::vector<double>& raw) {
+// Every input value is within float32 (recording_checks.hpp), but what is derived from them can leave it:
+// DFT321 of three axes near 3e38, a low-pass overshooting such a force. Stored, that was inf, and the
+// file failed haptex's own qa (review 23, F3).
+std::vector<float> narrow_derived(const std::vector<double>& x, const Recording& r, const std::string& what) {
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!(std::abs(x[i]) <= std::numeric_limits<float>::max()))
+      throw input_error(r.source_path, what, "reaches " + text::format("%.3g", x[i]) + " at sample " + std::to_string(i) +
+                                                 ", beyond the 32-bit floats haptex stores",
+                        "No sensor gives such values: check the recording's units and scale");
+  return narrow(x);
+}
+
+std::vector<float> lowpassed(const std::vector<double>& raw, const Recording& r, const std::string& what) {
   static const signal::Sos sos = signal::butter_lowpass_hz(dataset::kLowpassOrder, dataset::kLowpassCutoffHz, kSampleRateHz);
-  return narrow(signal::sosfiltfilt(sos, raw));
+  return narrow_derived(signal::sosfiltfilt(sos, raw), r, what + " low-passed at 20 Hz");
 }
 
 }  // namespace
@@ -46,12 +64,12 @@ dataset::RecordingToWrite preprocess(const Recording& r) {
   static_assert(dataset::kLowpassOrder == 4 && dataset::kLowpassCutoffHz == 20.0, "the description above states them");
   w.accel_reduction = {"DFT321 frame by frame, phase along the axes' principal direction (Landin et al. 2010; schemas/hdf5-layout.md)",
                        std::int64_t(signal::kDft321Frames.window), std::int64_t(signal::kDft321Frames.hop)};
-  w.accel = narrow(signal::dft321(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z")));
+  w.accel = narrow_derived(signal::dft321(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z")), r, "the DFT321 of the three acceleration axes");
   w.accel_xyz = interleave(ch.at("accel_x"), ch.at("accel_y"), ch.at("accel_z"));
   w.force_normal = narrow(ch.at(layout::kForceNormal));
   w.speed = narrow(ch.at(layout::kSpeed));
-  w.force_normal_lp = lowpassed(ch.at(layout::kForceNormal));
-  w.speed_lp = lowpassed(ch.at(layout::kSpeed));
+  w.force_normal_lp = lowpassed(ch.at(layout::kForceNormal), r, "the normal force");
+  w.speed_lp = lowpassed(ch.at(layout::kSpeed), r, "the speed");
   if (r.has(layout::kForceTangential)) w.force_tangential = narrow(ch.at(layout::kForceTangential));
   if (r.has("position_x")) {
     w.position = interleave(ch.at("position_x"), ch.at("position_y"), ch.at("position_z"));

@@ -7,10 +7,10 @@
 #include <random>
 
 #include "core/error.hpp"
+#include "dataset/decode_image.hpp"
 #include "synth/gelsight_camera.hpp"
 #include "synth/gelsight_renderer.hpp"
 #include "core/random_seeds.hpp"
-#include "media/codecs.hpp"
 
 namespace haptex::synth {
 namespace {
@@ -80,9 +80,12 @@ std::vector<cv::Rect> photo_crops(cv::Size image, std::uint64_t seed, const Phot
 std::vector<PressSidecar> write_photo_presses(const std::string& image_path, const std::string& out_directory,
                                               const std::string& material, std::uint64_t seed,
                                               const std::string& source, const PhotoPressOptions& options) {
-  const cv::Mat photo = media::read_image(image_path, cv::IMREAD_COLOR);
+  // The press-image reader predict --image uses: a header over 64 megapixels and a photograph that does
+  // not decode whole are refused, not handed to OpenCV (review 23, F2).
+  const cv::Mat photo = dataset::read_image_file(image_path);
   if (photo.empty())
-    throw input_error(image_path, "", "cannot read the texture photograph", "Give a readable JPEG or PNG image");
+    throw input_error(image_path, "", "cannot read the texture photograph: it does not decode whole (cut short, damaged or CMYK?)",
+                      "Give a readable RGB JPEG or PNG image");
   if (photo.cols < options.width || photo.rows < options.height)
     throw input_error(image_path, "", "the photograph is " + std::to_string(photo.cols) + " x " +
                       std::to_string(photo.rows) + ", smaller than one " + std::to_string(options.width) + " x " +

@@ -62,12 +62,13 @@ ModelFile load_model(const fs::path& file) {
   return {std::move(xml), std::move(model)};
 }
 
-// Refuses, before anything is written, two model files of one material (they would write the same files).
+// Refuses, before anything is written, a <material> that gives no id or one too long for a file name
+// (convert hatt would refuse the set), and two model files of one material (they would write the same files).
 void check_unique_materials(const std::vector<ModelFile>& models, const std::vector<fs::path>& files) {
   std::map<std::string, std::string> seen;
   for (std::size_t i = 0; i < models.size(); ++i) {
     const std::string& material = models[i].model.set().material;
-    const auto [it, fresh] = seen.emplace(material_id(material), files[i].string());
+    const auto [it, fresh] = seen.emplace(checked_material_id(material, files[i].string(), "<material>"), files[i].string());
     if (!fresh)
       throw input_error(files[i].string(), "<material>", "'" + material + "' is also the material of " + it->second,
                         "Keep one model file per material");

@@ -1,7 +1,13 @@
 #include "core/h5/file.hpp"
 
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 
@@ -11,10 +17,35 @@
 
 namespace haptex::h5 {
 
+namespace {
+
+// H5Fis_hdf5 answers 0 for a file that is not HDF5 and fails (< 0) for one it cannot open. A process
+// out of file descriptors (merge of 1100 shards under `ulimit -n 1024`, review 23 F4) is the machine's
+// limit, not the file's fault: exit 1 with the limit, not "not an HDF5 file".
+void require_openable(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd >= 0) {
+    ::close(fd);
+    return;
+  }
+  const int error = errno;
+  if (error == EMFILE || error == ENFILE) {
+    rlimit limit{};
+    getrlimit(RLIMIT_NOFILE, &limit);
+    throw failure(path + ": cannot open it: haptex has as many files open as the system lets it (ulimit -n " +
+                  std::to_string(limit.rlim_cur) + "). Raise the limit (ulimit -n 65536) or give fewer files at once");
+  }
+  throw input_error(path, "", std::string("cannot open it (") + std::strerror(error) + ")", "Check the file's permissions");
+}
+
+}  // namespace
+
 File File::open(const std::string& path, bool writable) {
   silence_library_errors();
   require_regular_file(path);
-  if (H5Fis_hdf5(path.c_str()) <= 0)
+  const htri_t hdf5 = H5Fis_hdf5(path.c_str());
+  if (hdf5 < 0) require_openable(path);
+  if (hdf5 <= 0)
     throw input_error(path, "", "not an HDF5 file", "Give a file written by haptex (recordings, gelsight, dataset or model)");
   const hid_t id = H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT);
   // HDF5 locks a file another program writes (an h5py session, a running haptex): the file is whole,

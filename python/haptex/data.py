@@ -265,27 +265,41 @@ def _require_sensible_size(d, path):
         raise HaptexFileError(f"{path}: {d.name}: holds {count} strings, more than a list of names haptex writes ({_MOST_TEXTS} at most)")
 
 
+_DEEPEST_GROUPS = 32  # core/h5/link_rule.cpp's kDeepestGroups: no haptex file nests groups beyond 5
+
+
 def require_plain_objects(f, path):
     """README's rule for HDF5 inputs: no soft or external link, no dataset whose values are kept outside
-    the file (external storage, virtual datasets). Raises HaptexFileError naming the object. HDF5's own
-    walk visits each object once (hard links that loop included) and follows no soft or external link;
-    each group's links are then looked at without following them."""
-    objects = [f]
-    f.visititems(lambda name, obj: objects.append(obj))
-    for obj in objects:
-        if isinstance(obj, h5py.Dataset):
-            if obj.external or obj.is_virtual:
-                raise HaptexFileError(f"{path}: {obj.name}: keeps its values outside the file")
-            _require_sensible_size(obj, path)
-            continue
-        if not isinstance(obj, h5py.Group):
-            raise HaptexFileError(f"{path}: {obj.name}: is neither a group nor a dataset (a named datatype?)")
-        for name in obj:
-            link = obj.get(name, getlink=True)
+    the file (external storage, virtual datasets), no group nested deeper than haptex's readers walk.
+    Raises HaptexFileError naming the object. Each object is looked at once (hard links that loop
+    included), soft and external links are refused without being followed, and the walk is a loop with
+    its depth bounded: h5py's visititems builds each object's whole path, so a chain of 30 000 groups
+    did not end in 100 s (review 23, F8)."""
+    seen = {f.id}
+    groups = [(f["/"], 1)]
+    while groups:
+        group, depth = groups.pop()
+        for name in group:
+            member = f"{group.name.rstrip('/')}/{name}"
+            link = group.get(name, getlink=True)
             if isinstance(link, (h5py.SoftLink, h5py.ExternalLink)):
                 kind = "a soft" if isinstance(link, h5py.SoftLink) else "an external"
-                raise HaptexFileError(f"{path}: {obj.name.rstrip('/')}/{name}: is {kind} link; "
-                                      "haptex reads only objects stored in the file itself")
+                raise HaptexFileError(f"{path}: {member}: is {kind} link; haptex reads only objects stored in the file itself")
+            obj = group[name]
+            if obj.id in seen:
+                continue
+            seen.add(obj.id)
+            if isinstance(obj, h5py.Dataset):
+                if obj.external or obj.is_virtual:
+                    raise HaptexFileError(f"{path}: {member}: keeps its values outside the file")
+                _require_sensible_size(obj, path)
+            elif isinstance(obj, h5py.Group):
+                if depth == _DEEPEST_GROUPS:
+                    raise HaptexFileError(f"{path}: {member}: is a group {depth + 1} levels deep; no haptex file nests groups "
+                                          f"beyond {_DEEPEST_GROUPS}")
+                groups.append((obj, depth + 1))
+            else:
+                raise HaptexFileError(f"{path}: {member}: is neither a group nor a dataset (a named datatype?)")
 
 
 def read_split(path):
@@ -412,6 +426,31 @@ def leave(code):
     sys.stdout.flush()
     sys.stderr.flush()
     os._exit(code)
+
+
+def _acts_on_text(u):
+    """core/text/utf8.hpp's acts_on_text: a control character (C0, DEL, C1) or an invisible format
+    character that reorders or breaks the text around it (bidirectional overrides such as U+202E,
+    zero-width characters, line separators, tag characters). tests/hostile/python_examples_test.cpp
+    checks the two agree on every code point."""
+    return (u < 0x20 or u == 0x7f or 0x80 <= u <= 0x9f or u in (0xad, 0x061c, 0x180e, 0xfeff) or 0x200b <= u <= 0x200f
+            or 0x2028 <= u <= 0x202e or 0x2060 <= u <= 0x206f or 0xfff9 <= u <= 0xfffb or 0xe0000 <= u <= 0xe007f)
+
+
+def printable(text):
+    """text as a terminal may show it, as haptex prints names: each character _acts_on_text names as
+    \\xHH (below U+0080), \\uHHHH or \\UHHHHHHHH; a byte that is not UTF-8 (a file name's surrogate
+    escape) as \\xHH. An attribute holding ESC[2J would clear the screen if printed as it is."""
+    out = []
+    for c in str(text):
+        u = ord(c)
+        if 0xdc80 <= u <= 0xdcff:
+            out.append(f"\\x{u - 0xdc00:02x}")
+        elif 0xd800 <= u <= 0xdfff or _acts_on_text(u):
+            out.append(f"\\x{u:02x}" if u < 0x80 else f"\\u{u:04x}" if u <= 0xffff else f"\\U{u:08x}")
+        else:
+            out.append(c)
+    return "".join(out)
 
 
 def exit_code_for(error):

@@ -17,6 +17,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "tests/hostile/hostile_support.hpp"
+#include "tests/support/ar_fixture.hpp"
 #include "tests/support/mutations.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/sample_recording.hpp"
@@ -68,6 +69,21 @@ TEST(BadValues, AFiniteValueBeyondFloat32IsRefused) {
                  {d.file("traj.csv"), "line 3", "32-bit floats"});
   EXPECT_FALSE(fs::exists(d.file("r.h5")));
   EXPECT_FALSE(fs::exists(d.file("v.wav")));
+}
+
+// Review 23, F3: each value under float32's largest, what convert derives from them beyond it: three
+// axes of +-3e38 make a DFT321 magnitude up to sqrt(3) times that, a force of +-3.3e38 a low-pass
+// that overshoots. Stored as inf, exit 0, and the file failed haptex's own qa.
+TEST(BadValues, ADerivedChannelBeyondFloat32IsRefused) {
+  const TempDir d;
+  const std::string axes = csv_recording(d, "axes_0.csv", 2000, [](int i) {
+    const std::string a = i % 2 ? "-3e38" : "3e38";
+    return t(i) + "," + a + "," + a + "," + a + ",1,40";
+  });
+  expect_refusal(convert(d, axes), {axes, "DFT321", "beyond the 32-bit floats"});
+  const std::string force = csv_recording(d, "force_0.csv", 2000, [](int i) { return t(i) + ",0.1,0.2,0.3," + (i % 2 ? "-3.3e38" : "3.3e38") + ",40"; });
+  expect_refusal(convert(d, force), {force, "normal force low-passed", "beyond the 32-bit floats"});
+  EXPECT_FALSE(fs::exists(d.file("r.h5")));
 }
 
 TEST(BadValues, AValueAndATimeInDifferentRowsAreRefused) {
@@ -370,6 +386,24 @@ TEST(BadValues, AMaterialNameTooLongForAFileNameIsRefusedWhereItComesIn) {
   EXPECT_FALSE(fs::exists(d.file("split.json")));
 }
 
+// Review 23, F1: synth hatt took a model file's <material> as it was: an empty name reached HDF5 (exit 1
+// naming truth.h5), a 150-byte id made a set convert hatt refuses.
+TEST(BadValues, SynthHattHoldsAModelsMaterialNameToTheIdRules) {
+  const TempDir d;
+  std::string accents;  // 20 letters, a 119-byte id: "u00e9_u00e9_..."
+  for (int i = 0; i < 20; ++i) accents += "\u00e9";
+  for (const std::string& name : {std::string(), std::string("!!!"), std::string(150, 'T'), accents}) {
+    const std::string folder = d.file("m" + std::to_string(name.size()));
+    fs::create_directories(folder);
+    std::string xml = kArFixtureXml;
+    xml.replace(xml.find("Fixture"), 7, name);
+    std::ofstream(folder + "/Models_Fixture.xml") << xml;
+    expect_refusal(run_haptex({"synth", "hatt", "--models", folder, "-o", d.file("out"), "--recordings", "1", "--seconds", "0.5"}),
+                   {folder + "/Models_Fixture.xml", "<material>"});
+    EXPECT_FALSE(fs::exists(d.file("out"))) << name;
+  }
+}
+
 // Review 11, F3: haptex view showed a dataset whose recording holds 7 samples where 30 000 are
 // stated, which qa fails. It reads as strictly as merge and align.
 TEST(BadValues, ViewRefusesADatasetQaFails) {
@@ -502,6 +536,10 @@ TEST(BadValues, AManifestsSizesAndRepeatsAreBoundedBeforeAnyWork) {
   for (int i = 0; i < 300000; ++i) presses[std::size_t(i)] = i;
   distinct["materials"][0]["presses"]["train"] = presses;
   refused("distinct.json", distinct, {});
+  // Review 23, F7: a 200 000-letter id crashed every reader (std::regex recursing once per character).
+  nlohmann::json long_id = read_json(small_pipeline().split);
+  long_id["materials"][0]["id"] = std::string(200000, 'a');
+  refused("long_id.json", long_id, {"/materials/0/id", "is a text of 200000 bytes where an id"});
 }
 
 // A key given twice was kept as the last one without a word, in every JSON reader (issue 32, reviews 5

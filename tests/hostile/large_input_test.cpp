@@ -1,6 +1,7 @@
 // Issue 11 point 7: a press image too large to be a sensor frame is refused from its header, before
 // OpenCV decodes (and allocates) it; a real sensor-sized frame still works.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <chrono>
 #include <cstdint>
@@ -10,6 +11,7 @@
 
 #include "core/image_header.hpp"
 #include "tests/hostile/hostile_support.hpp"
+#include "tests/support/mutations.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/small_pipeline.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -94,6 +96,41 @@ TEST(LargeInput, ASparseFileOfZerosIsRefusedFromItsFirstBytes) {
   expect_refusal(run_haptex({"predict", model, "--image", image, "--normal-force", "1", "--speed", "100"}), {image, "not a PNG or JPEG"});
   EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(20)) << "8 GiB were read";
   EXPECT_FALSE(fs::exists(d.file("x.wav")));
+}
+
+// Review 23, F8: 30 000 nested groups (a 4.8 MB file) overflowed the stack of the walk every reader
+// makes for links (SIGSEGV in info, qa, split, ...), and the Python package's walk did not end in 100 s.
+TEST(LargeInput, GroupsNestedBeyondAnyHaptexFileAreRefusedNamingThePlace) {
+  const TempDir d;
+  const std::string dataset = copy_into(d, small_pipeline().dataset, "deep.h5");
+  {
+    Edit e(dataset);
+    hid_t parent = H5Gopen2(e.root().id(), ("materials/" + small_material()).c_str(), H5P_DEFAULT);
+    for (int i = 0; i < 30000; ++i) {
+      const hid_t child = H5Gcreate2(parent, "a", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      ASSERT_GE(child, 0);
+      H5Gclose(parent);
+      parent = child;
+    }
+    H5Gclose(parent);
+  }
+  std::string place = "/materials/" + small_material();  // the first group beyond 32 levels
+  for (int i = 0; i < 30; ++i) place += "/a";
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"info", dataset}, {"qa", dataset}, {"split", dataset, "-o", d.file("s.json")}}) {
+    const CommandResult r = run_haptex(args);
+    EXPECT_NE(r.exit_code, 139) << args[0] << " crashed";
+    EXPECT_NE((r.out + r.err).find("levels deep"), std::string::npos) << args[0] << r.out << r.err;
+    EXPECT_NE((r.out + r.err).find(place), std::string::npos) << args[0] << r.out << r.err;
+  }
+  EXPECT_FALSE(fs::exists(d.file("s.json")));
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const auto started = std::chrono::steady_clock::now();
+  const CommandResult py = run_python({"-c", "import sys; sys.path.insert(0, sys.argv[1]); import h5py, haptex.data as h\n"
+                                             "h.require_plain_objects(h5py.File(sys.argv[2], 'r'), sys.argv[2])",
+                                       std::string(HAPTEX_SCHEMA_DIR) + "/../python", dataset});
+  EXPECT_NE(py.exit_code, 0);
+  EXPECT_NE(py.err.find("levels deep"), std::string::npos) << py.err;
+  EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(30));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // back-quotes are ordinary names: they merge, and a bad shard so named is named intact.
 #include <gtest/gtest.h>
 #include <hdf5.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -120,6 +121,29 @@ TEST(MergeInput, EveryBadShardIsNamedAndNothingIsWritten) {
     EXPECT_FALSE(fs::exists(dir.file("out.h5")));
     EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
   }
+}
+
+// Review 23, F4: with more shards than `ulimit -n` lets a process open, a good shard was called "not an
+// HDF5 file" (exit 2, the wrong fix). The limit is the machine's: exit 1 naming it and the way out.
+TEST(MergeInput, MoreShardsThanTheOpenFileLimitIsTheLimitsFaultNotTheShards) {
+  const TempDir dir;
+  std::vector<std::string> args{"merge", "--keep-first", "-o", dir.file("out.h5")};
+  for (int i = 0; i < 60; ++i) {
+    args.push_back(dir.file("s" + std::to_string(i) + ".h5"));
+    fs::copy_file(small_pipeline().recordings, args.back());
+  }
+  rlimit before{};
+  ASSERT_EQ(getrlimit(RLIMIT_NOFILE, &before), 0);
+  rlimit lowered = before;
+  lowered.rlim_cur = 40;  // the child inherits it
+  ASSERT_EQ(setrlimit(RLIMIT_NOFILE, &lowered), 0);
+  const CommandResult r = run_haptex(args);
+  ASSERT_EQ(setrlimit(RLIMIT_NOFILE, &before), 0);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("ulimit -n 40"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("not an HDF5 file"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.file("out.h5")));
+  EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
 }
 
 TEST(MergeInput, ANameThatIsNotUtf8IsRefusedAtTheDoor) {

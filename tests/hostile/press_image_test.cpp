@@ -9,15 +9,18 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <opencv2/imgproc.hpp>
 
 #include "tests/hostile/hostile_support.hpp"
+#include "tests/support/ar_fixture.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace haptex::test {
 namespace {
+namespace fs = std::filesystem;
 
 cv::Mat frame(int rows, int cols) {
   cv::Mat image(rows, cols, CV_8UC3);
@@ -60,6 +63,36 @@ TEST(PressImage, AFrameThatIsDamagedTinyStretchedOrNeitherPngNorJpegIsRefused) {
                                       "--normal-force", "1", "--speed", "100"});
   expect_refusal(r, {dir.file("damaged.jpg"), "does not decode whole"});
   EXPECT_EQ(r.err.find("Corrupt JPEG data: premature"), r.err.rfind("Corrupt JPEG data: premature")) << "libjpeg printed nothing itself: " << r.err;
+}
+
+// Review 23, F2: synth hatt read its texture photographs through OpenCV: a JPEG whose header states
+// 60000 x 60000 ended in OpenCV's assertion text (exit 1), one cut short was taken (exit 0, libjpeg's
+// warning printed raw, presses cut from a half-grey photograph). It reads them as predict --image does.
+TEST(PressImage, SynthHattRefusesAPhotographThatIsHugeOrCutShort) {
+  const TempDir dir;
+  std::vector<std::uint8_t> jpeg;
+  ASSERT_TRUE(cv::imencode(".jpg", frame(1000, 1000), jpeg));
+  std::vector<std::uint8_t> huge = jpeg, cut(jpeg.begin(), jpeg.begin() + std::ptrdiff_t(jpeg.size() / 3));
+  const std::uint8_t start_of_frame[] = {0xFF, 0xC0};
+  const auto sof = std::search(huge.begin(), huge.end(), std::begin(start_of_frame), std::end(start_of_frame));
+  ASSERT_NE(sof, huge.end());
+  sof[5] = sof[7] = 0xEA, sof[6] = sof[8] = 0x60;  // height and width, big-endian: 60000 each
+  fs::create_directories(dir.file("models"));
+  std::ofstream(dir.file("models/Models_Fixture.xml")) << kArFixtureXml;
+  for (const auto& [name, bytes] : {std::pair{"huge", huge}, std::pair{"cut", cut}, std::pair{"ok", jpeg}}) {
+    fs::create_directories(dir.file(name));
+    write_bytes(dir.file(std::string(name) + "/Fixture_square.jpg"), bytes);
+    const CommandResult r = run_haptex({"synth", "hatt", "--models", dir.file("models"), "--images", dir.file(name), "-o",
+                                        dir.file(std::string(name) + ".out"), "--recordings", "1", "--seconds", "0.5"});
+    if (std::string(name) == "ok") {
+      EXPECT_EQ(r.exit_code, 0) << r.err;
+      continue;
+    }
+    expect_refusal(r, {dir.file(std::string(name) + "/Fixture_square.jpg"), name == std::string("huge") ? "over 64 megapixels" : "does not decode whole"});
+    EXPECT_EQ(r.err.find("OpenCV"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("Premature end"), std::string::npos) << "libjpeg printed nothing itself: " << r.err;
+    EXPECT_FALSE(fs::exists(dir.file(std::string(name) + ".out")));
+  }
 }
 
 }  // namespace

@@ -89,9 +89,9 @@ def main():
                                       query_seconds, inputs=(args.dataset, args.split, args.windows),
                                       overwrite=args.force)
     except (haptex_data.HaptexFileError, OSError, KeyError) as e:
-        print(f"knn_baseline: {e}", file=sys.stderr)
+        print(f"knn_baseline: {haptex_data.printable(e)}", file=sys.stderr)
         return haptex_data.exit_code_for(e)
-    print(f"wrote {args.output} ({len(grid)} windows, k = {args.k})")
+    print(f"wrote {haptex_data.printable(args.output)} ({len(grid)} windows, k = {args.k})")
     return 0
 
 

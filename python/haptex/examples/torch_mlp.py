@@ -150,12 +150,12 @@ def main():
                                       query_seconds, inputs=(args.dataset, args.split, args.windows),
                                       overwrite=args.force)
     except (haptex_data.HaptexFileError, OSError, KeyError) as e:
-        print(f"torch_mlp: {e}", file=sys.stderr)
+        print(f"torch_mlp: {haptex_data.printable(e)}", file=sys.stderr)
         return haptex_data.exit_code_for(e)
     best = int(np.argmin([v for _, v in history]))
     print(f"losses (training, validation): epoch 1 {history[0][0]:.6g} {history[0][1]:.6g}; "
           f"best epoch {best + 1} {history[best][0]:.6g} {history[best][1]:.6g}")
-    print(f"wrote {args.output} ({len(grid)} windows, {query_seconds * 1e6:.1f} us per query)")
+    print(f"wrote {haptex_data.printable(args.output)} ({len(grid)} windows, {query_seconds * 1e6:.1f} us per query)")
     return 0
 
 
