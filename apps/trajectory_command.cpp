@@ -13,6 +13,7 @@
 #include "core/text/utf8.hpp"
 #include "dataset/window.hpp"
 #include "predict/recorded_trajectory.hpp"
+#include "qa/integrity.hpp"
 
 namespace haptex::apps {
 namespace {
@@ -34,7 +35,9 @@ class TrajectoryCommand : public Command {
   int run(const GlobalOptions& global) override {
     refuse_output_among_inputs(output_, {input_});
     predict::check_trajectory_csv_output(output_, force_);
-    const predict::Trajectory t = predict::recorded_trajectory(input_, stretch_);
+    const dataset::OpenedFile source = predict::open_trajectory_source(input_);
+    qa::require_sound_layout(source.file.root(), source.kind);
+    const predict::Trajectory t = predict::recorded_trajectory(source, stretch_);
     PartialFile out(output_, force_, [](const std::string& p) { predict::check_trajectory_csv_output(p, true); });
     write_text(out, predict::trajectory_csv_text(t));
     out.commit();

@@ -14,10 +14,14 @@
 
 namespace haptex::predict {
 
-Trajectory recorded_trajectory(const std::string& path, const RecordedStretch& stretch) {
+dataset::OpenedFile open_trajectory_source(const std::string& path) {
   constexpr std::array kinds{dataset::Kind::recordings, dataset::Kind::dataset};
-  const dataset::OpenedFile opened = dataset::open_any(path, kinds, "trajectory reads", "Give a recordings file (haptex convert) or a dataset (haptex align)");
-  const h5::Group materials = opened.file.root().open_group(dataset::layout::kMaterials);
+  return dataset::open_any(path, kinds, "trajectory reads", "Give a recordings file (haptex convert) or a dataset (haptex align)");
+}
+
+Trajectory recorded_trajectory(const dataset::OpenedFile& source, const RecordedStretch& stretch) {
+  const std::string& path = source.file.path();
+  const h5::Group materials = source.file.root().open_group(dataset::layout::kMaterials);
   // An id, not a path into the file (review 13, F2: "/materials/x" and "x/" were followed).
   const bool an_id = !stretch.material.empty() && stretch.material.find('/') == std::string::npos && stretch.material != "." &&
                      stretch.material != "..";

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <string>
 
+#include "dataset/format.hpp"
 #include "predict/trajectory.hpp"
 
 namespace haptex::predict {
@@ -16,9 +17,14 @@ struct RecordedStretch {
   double seconds = 0;       // this long; 0: to the recording's end
 };
 
-// Reads the stretch from a recordings or dataset file. Throws haptex::Error (bad_input) naming the file
-// and the material (listing the file's ids) or the recording (saying how many it has), or a start at
-// or past the recording's end.
-Trajectory recorded_trajectory(const std::string& path, const RecordedStretch& stretch);
+// A recordings or dataset file opened for recorded_trajectory (dataset::open_any: another kind or
+// version is refused naming the file).
+dataset::OpenedFile open_trajectory_source(const std::string& path);
+
+// Reads the stretch from the file. Throws haptex::Error (bad_input) naming the file and the material
+// (listing the file's ids) or the recording (saying how many it has), or a start at or past the
+// recording's end. The caller runs qa's layout checks first (apps/trajectory_command.cpp), so the
+// recordings are numbered 0..n-1 as the message says.
+Trajectory recorded_trajectory(const dataset::OpenedFile& source, const RecordedStretch& stretch);
 
 }  // namespace haptex::predict

@@ -55,9 +55,11 @@ void require_passed(const h5::Group& root, const std::vector<CheckResult>& resul
 
 void require_integrity(const h5::Group& root, dataset::Kind kind) { require_passed(root, check_integrity(root, kind)); }
 
+void require_sound_layout(const h5::Group& root, dataset::Kind kind) { require_passed(root, check_layout(root, kind)); }
+
 void require_sound_dataset(const std::string& dataset_path) {
   const h5::File file = dataset::open_checked(dataset_path, dataset::Kind::dataset);
-  require_passed(file.root(), check_layout(file.root(), dataset::Kind::dataset));
+  require_sound_layout(file.root(), dataset::Kind::dataset);
   require_passed(file.root(), check_dataset(file.root()));
 }
 

@@ -31,4 +31,8 @@ void require_integrity(const h5::Group& root, dataset::Kind kind);
 // and signal checks stay qa's and align's: they decode every image. Throws as require_integrity.
 void require_sound_dataset(const std::string& dataset_path);
 
+// The layout checks (layout.*) alone, for a reader of recordings that reads no window (trajectory):
+// its messages count on what the layout holds, e.g. recordings numbered 0..n-1. Throws as require_integrity.
+void require_sound_layout(const h5::Group& root, dataset::Kind kind);
+
 }  // namespace haptex::qa

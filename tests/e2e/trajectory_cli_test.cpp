@@ -11,6 +11,7 @@
 #include "dataset/format.hpp"
 #include "dataset/object_paths.hpp"
 #include "dataset/recordings_file.hpp"
+#include "tests/support/mutations.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
@@ -43,6 +44,25 @@ TEST(TrajectoryCli, ARecordedStrokeIsWhatRenderPlays) {
                                       "-o", dir.file("v.wav")});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["samples"], 12000) << r.out;
+}
+
+// A file qa calls malformed is refused before trajectory reads it: with recordings numbered 0 and 2,
+// "Give --recording 0 to 1" would name a recording that is not there.
+TEST(TrajectoryCli, AFileWhoseRecordingsAreNotNumberedOnIsRefused) {
+  const TempDir dir;
+  const std::string recordings = copy_into(dir, small_pipeline().recordings, "gap.h5");
+  const std::string group = "materials/" + small_material() + "/recordings";
+  {
+    Edit e(recordings);
+    const std::size_t last = e.group(group).children().size() - 1;
+    e.copy(group + "/" + std::to_string(last), group + "/" + std::to_string(last + 1));
+    e.remove(group + "/" + std::to_string(last));
+  }
+  const CommandResult r = run_haptex({"trajectory", recordings, "--material", small_material(), "-o", dir.file("t.csv")});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("qa check layout."), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(recordings), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.file("t.csv")));
 }
 
 TEST(TrajectoryCli, ABadChoiceIsRefusedNamingWhatThereIs) {
