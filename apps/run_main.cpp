@@ -20,6 +20,7 @@
 #include "core/error.hpp"
 #include "core/freed_memory.hpp"
 #include "core/input_file.hpp"
+#include "core/open_files.hpp"
 #include "core/temporary_name.hpp"
 #include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
@@ -206,6 +207,7 @@ int help_json(const CLI::App& app) {
 
 int run_main(int argc, char** argv) {
   keep_freed_memory();
+  use_every_open_file_allowed();
   const PrintableStream out(std::cout), err(std::cerr);
   CLI::App app{"haptex: build, check and model haptic texture data (GelSight images + vibrations)", "haptex"};
   app.set_version_flag("--version", std::string("haptex ") + kVersion);

@@ -5,12 +5,14 @@
 #define HAPTEX_SHA_EXTENSIONS 1
 #endif
 
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/open_files.hpp"
 
 namespace haptex {
 namespace {
@@ -160,7 +162,10 @@ std::string sha256_hex(std::span<const char> bytes) {
 
 std::string sha256_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw input_error(path, "", "cannot open the file to hash it", "Check that it exists and is readable");
+  if (!in) {
+    refuse_if_out_of_descriptors(errno, path);
+    throw input_error(path, "", "cannot open the file to hash it", "Check that it exists and is readable");
+  }
   Sha256 hash;
   std::vector<char> chunk(1 << 20);
   while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)

@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "core/open_files.hpp"
 #include "core/sha256.hpp"
 
 namespace haptex {
@@ -147,6 +148,7 @@ Temporary create_temporary(const std::string& final_path, const char* what, Make
     if (errno == ENAMETOOLONG)
       throw input_error(final_path, "", "is longer than the file system allows (255 bytes a name, 4096 a path)",
                         "Choose a shorter output name");
+    refuse_if_out_of_descriptors(errno, final_path);
     if (errno != EEXIST || attempt == 100)
       throw input_error(final_path, "", std::string("cannot create a ") + what + " beside it to write it in: " + std::strerror(errno),
                         "Choose a folder you can write to");

@@ -1,7 +1,6 @@
 #include "core/h5/file.hpp"
 
 #include <fcntl.h>
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -13,15 +12,15 @@
 
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "core/open_files.hpp"
 #include "core/version.hpp"
 
 namespace haptex::h5 {
 
 namespace {
 
-// H5Fis_hdf5 answers 0 for a file that is not HDF5 and fails (< 0) for one it cannot open. A process
-// out of file descriptors (merge of 1100 shards under `ulimit -n 1024`, review 23 F4) is the machine's
-// limit, not the file's fault: exit 1 with the limit, not "not an HDF5 file".
+// H5Fis_hdf5 answers 0 for a file that is not HDF5 and fails (< 0) for one it cannot open: out of file
+// descriptors is the machine's limit (core/open_files.hpp), anything else is said as what it is.
 void require_openable(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd >= 0) {
@@ -29,12 +28,7 @@ void require_openable(const std::string& path) {
     return;
   }
   const int error = errno;
-  if (error == EMFILE || error == ENFILE) {
-    rlimit limit{};
-    getrlimit(RLIMIT_NOFILE, &limit);
-    throw failure(path + ": cannot open it: haptex has as many files open as the system lets it (ulimit -n " +
-                  std::to_string(limit.rlim_cur) + "). Raise the limit (ulimit -n 65536) or give fewer files at once");
-  }
+  refuse_if_out_of_descriptors(error, path);
   throw input_error(path, "", std::string("cannot open it (") + std::strerror(error) + ")", "Check the file's permissions");
 }
 

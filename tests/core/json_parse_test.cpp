@@ -34,5 +34,25 @@ TEST(JsonValidate, ARefusalEndsOnceAndSaysWhatTheFileIs) {
   EXPECT_NE(message.find("See schemas/name-map.schema.json: Each key is a material's name in the gelsight file"), std::string::npos) << message;
 }
 
+// Review 23, F7: std::regex recurses once per character, so a 200 000-letter string a schema "pattern"
+// checks overflowed the stack; such strings are refused first. Review 24, F1: only those: results.json's
+// `name` is pattern-checked for an external model's name, not a material's, which is as long as a user
+// makes it.
+TEST(JsonValidate, OnlyStringsAPatternChecksAreBoundedBeforeTheRegex) {
+  const std::string long_text(200000, 'a');
+  nlohmann::json external;
+  external["inputs"]["predictions"] = nlohmann::json::array({{{"name", long_text}}});
+  const std::string message = bad_input_message([&] { json::validate(external, "results.schema.json", "results.json"); });
+  EXPECT_NE(message.find("results.json: /inputs/predictions/0/name: is a text of 200000 bytes where an id"), std::string::npos) << message;
+  nlohmann::json material;
+  material["examples"] = nlohmann::json::array({{{"name", long_text}}});
+  const std::string other = bad_input_message([&] { json::validate(material, "results.schema.json", "results.json"); });
+  EXPECT_EQ(other.find("where an id"), std::string::npos) << other;  // the schema's own complaint (fields missing)
+  nlohmann::json hashed;
+  hashed["inputs"]["dataset"]["sha256"] = long_text;  // through "$ref": "#/definitions/input"
+  const std::string hash = bad_input_message([&] { json::validate(hashed, "results.schema.json", "results.json"); });
+  EXPECT_NE(hash.find("/inputs/dataset/sha256: is a text of 200000 bytes"), std::string::npos) << hash;
+}
+
 }  // namespace
 }  // namespace haptex
