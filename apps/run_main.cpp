@@ -143,6 +143,11 @@ int reported_error(const std::string& command, int argc, char** argv, bool json)
     return report(command, {"error: " + shown_message(e.what(), argc, argv), e.kind() == Error::Kind::bad_input ? 2 : 1, e.file(), e.where(), e.fix()},
                   json);
   } catch (const std::filesystem::filesystem_error& e) {
+    try {
+      refuse_if_out_of_descriptors(e.code().value(), e.path1().string());  // the machine's limit, not the path's
+    } catch (const Error& limit) {
+      return report(command, {"error: " + std::string(limit.what()), 1, "", "", ""}, json);
+    }
     return report(command, {"error: " + text::printable(e.path1().string()) + ": " + e.code().message() + ". Check the path and its permissions", 2,
                             e.path1().string(), "", "Check the path and its permissions"},
                   json);

@@ -1,10 +1,12 @@
 #include "convert/input_limits.hpp"
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "core/open_files.hpp"
 #include "core/gzip.hpp"
 #include "core/sha256.hpp"
 
@@ -21,6 +23,7 @@ std::vector<char> read_whole_file(const std::string& path, std::uintmax_t max_by
                       "If the file is genuine, raise the limit with --max-bytes");
   std::vector<char> buffer(size);
   std::ifstream in(path, std::ios::binary);
+  if (!in) refuse_if_out_of_descriptors(errno, path);
   if (!in.read(buffer.data(), static_cast<std::streamsize>(size)))
     throw input_error(path, "", "the file could not be read completely", "Check the disk and permissions");
   return buffer;

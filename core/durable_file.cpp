@@ -10,6 +10,7 @@
 
 #include "core/content_mark.hpp"
 #include "core/error.hpp"
+#include "core/open_files.hpp"
 #include "core/temporary_name.hpp"
 
 namespace haptex {
@@ -30,11 +31,26 @@ std::string why_not_written(int error) {
 
 void fsync_path(const std::string& path, int flags) {
   int fd = ::open(path.c_str(), flags | O_CLOEXEC);
-  if (fd < 0) throw failure(path + ": cannot open to sync it to disk: " + std::strerror(errno));
+  if (fd < 0) {
+    refuse_if_out_of_descriptors(errno, path);
+    throw failure(path + ": cannot open to sync it to disk: " + std::strerror(errno));
+  }
   const int status = ::fsync(fd);
   const int saved = errno;
   ::close(fd);
   if (status != 0) throw failure(path + ": cannot write it: " + why_not_written(saved));
+}
+
+DirectoryToSync::DirectoryToSync(const std::string& path) : path_(path), fd_(::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+  if (fd_ >= 0) return;
+  refuse_if_out_of_descriptors(errno, path);
+  throw failure(path + ": cannot open to sync it to disk: " + std::strerror(errno));
+}
+
+DirectoryToSync::~DirectoryToSync() { ::close(fd_); }
+
+void DirectoryToSync::sync() const {
+  if (::fsync(fd_) != 0) throw failure(path_ + ": cannot write it: " + why_not_written(errno));
 }
 
 void check_output_path(const std::string& path, bool overwrite) {
@@ -77,6 +93,7 @@ void check_replaceable_output(const std::string& path, bool overwrite, const std
 }
 
 void durable_rename(const std::string& from, const std::string& to, bool replace) {
+  const DirectoryToSync folder(directory_of(to));
   int status = replace ? std::rename(from.c_str(), to.c_str()) : ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE);
   if (status != 0 && !replace && errno == EINVAL) {  // a file system without RENAME_NOREPLACE: a hard link never replaces either
     status = ::link(from.c_str(), to.c_str());
@@ -86,7 +103,7 @@ void durable_rename(const std::string& from, const std::string& to, bool replace
     throw input_error(to, "", "appeared while this run was writing it, and is kept: nothing of yours is replaced without --force",
                       "Move it away and run again, or choose another output name");
   if (status != 0) throw failure(from + ": cannot rename to " + to + ": " + std::strerror(errno));
-  fsync_path(directory_of(to), O_RDONLY | O_DIRECTORY);
+  folder.sync();
 }
 
 PartialFile::PartialFile(const std::string& final_path, bool replace, ReplaceableCheck still_replaceable)
@@ -140,9 +157,10 @@ void PartialFile::rename_into_place() {
   std::error_code ec;
   if (!replace_ || !fs::exists(fs::symlink_status(final_path_, ec))) {
     durable_rename(path_, final_path_, false);  // nothing to replace: whatever appears there meanwhile is kept
-  } else if (::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, final_path_.c_str(), RENAME_EXCHANGE) == 0) {
+  } else if (const DirectoryToSync folder(directory_of(final_path_));
+             ::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, final_path_.c_str(), RENAME_EXCHANGE) == 0) {
     exchanged_ = true;
-    fsync_path(directory_of(final_path_), O_RDONLY | O_DIRECTORY);
+    folder.sync();
   } else if (errno == EINVAL) {
     durable_rename(path_, final_path_, true);
     replaced_ = true;

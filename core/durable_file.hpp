@@ -25,6 +25,22 @@ void check_replaceable_output(const std::string& path, bool overwrite, const std
 std::string why_not_written(int error);
 // fsync one file or (with O_DIRECTORY in flags) directory; throws haptex::Error (failed) naming it.
 void fsync_path(const std::string& path, int flags);
+
+// A folder opened to be synced after a rename into it. Opened before the rename, so that a run out of
+// file descriptors fails before its output is in place, not after it (review 25, F2: exit 1 with the
+// output whole under its final name).
+class DirectoryToSync {
+ public:
+  explicit DirectoryToSync(const std::string& path);  // throws haptex::Error (failed)
+  ~DirectoryToSync();
+  DirectoryToSync(const DirectoryToSync&) = delete;
+  DirectoryToSync& operator=(const DirectoryToSync&) = delete;
+  void sync() const;  // throws haptex::Error (failed): the disk is full or failing
+
+ private:
+  std::string path_;
+  int fd_;
+};
 // Rename `from` (already synced by the caller) to `to`, then fsync the directory. Without `replace`, a `to` that exists by then
 // (it appeared while the run wrote: a user's file, another run's output) is kept and refused
 // (bad_input), atomically (RENAME_NOREPLACE).

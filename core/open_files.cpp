@@ -1,6 +1,8 @@
 #include "core/open_files.hpp"
 
+#include <fcntl.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <cerrno>
 
@@ -17,6 +19,12 @@ unsigned long use_every_open_file_allowed() {
     if (setrlimit(RLIMIT_NOFILE, &raised) == 0) limit = raised;
   }
   return static_cast<unsigned long>(limit.rlim_cur);
+}
+
+void require_a_descriptor_for(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) refuse_if_out_of_descriptors(errno, path);
+  if (fd >= 0) ::close(fd);
 }
 
 void refuse_if_out_of_descriptors(int error, const std::string& path) {

@@ -18,4 +18,8 @@ unsigned long use_every_open_file_allowed();
 // returns otherwise, for the caller to say what else went wrong.
 void refuse_if_out_of_descriptors(int error, const std::string& path);
 
+// For a library that failed to open path without saying why (FFmpeg through OpenCV): opens and closes
+// it, throwing as above when there is no descriptor to open it with.
+void require_a_descriptor_for(const std::string& path);
+
 }  // namespace haptex

@@ -118,6 +118,7 @@ void PartialDirectory::put_in_place() {
   require_still_named(path_, fd_, final_);  // a link or a folder of someone else's swapped in (review 14, F1)
   std::error_code ec;
   const bool replace = fs::exists(fs::symlink_status(final_, ec));
+  const DirectoryToSync parent(parent_of(final_));  // before the rename: core/durable_file.hpp
   int status = ::renameat2(AT_FDCWD, path_.c_str(), AT_FDCWD, final_.c_str(), replace ? RENAME_EXCHANGE : RENAME_NOREPLACE);
   if (status != 0 && !replace && errno == EINVAL) status = std::rename(path_.c_str(), final_.c_str());  // no RENAME_NOREPLACE here
   if (status != 0 && !replace && errno == EEXIST)
@@ -132,7 +133,7 @@ void PartialDirectory::put_in_place() {
     take_back();
     require_still_named(final_, fd_, final_);
   }
-  fsync_path(parent_of(final_), O_RDONLY | O_DIRECTORY);
+  parent.sync();
 }
 
 void PartialDirectory::take_back() noexcept {

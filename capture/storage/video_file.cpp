@@ -5,6 +5,7 @@
 
 #include "capture/storage/avi_frame_rate.hpp"
 #include "core/error.hpp"
+#include "core/open_files.hpp"
 #include "media/codecs.hpp"
 
 namespace haptex::capture {
@@ -28,9 +29,11 @@ std::unique_ptr<media::VideoReader> open_video_file(const std::string& path) {
   // FFmpeg only: other backends (GStreamer) print their own warnings on failure, and libraries
   // here never print.
   std::unique_ptr<media::VideoReader> video = media::open_video(path, cv::CAP_FFMPEG);
-  if (!video)
+  if (!video) {
+    require_a_descriptor_for(path);  // out of them, FFmpeg fails for the machine's limit, not the file's
     throw input_error(path, "", "OpenCV cannot open this as a video",
                       "Give a video file (.avi, .mkv, .mp4 ...) or a press file (.h5) from 'haptex capture record'");
+  }
   return video;
 }
 

@@ -38,10 +38,12 @@ void reference_faults(hid_t object, bool dataset, const std::string& path, const
   }
 }
 
-// No haptex file nests groups more than 5 deep (/nets/0/action_encoder/layers/0 is the deepest); a chain
-// of 30 000 (a 4.8 MB file) overflowed the stack of this walk (review 23, F8). Below this depth the
-// walk stops, with a fault naming the place.
-constexpr int kDeepestGroups = 32;
+// haptex's files nest groups 5 deep (/nets/0/action_encoder/layers/0), plus 2 for each round of
+// merging merged files (/shards/<s>/shards/<s>/...; review 25, F4: a bound of 32 refused the 16th
+// round). A chain of 30 000 (a 4.8 MB file) overflowed the stack of this walk (review 23, F8); 1024
+// levels, 500 rounds of merging, take under 1 MB of it. Below that depth the walk stops, with a fault
+// naming the place.
+constexpr int kDeepestGroups = 1024;
 
 void collect(hid_t group, const std::string& path, const std::string& file, CopiedObjects& seen, LinkReport& report, int depth = 1) {
   for (const std::string& name : link_names(group, path, file)) {

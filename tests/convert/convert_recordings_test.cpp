@@ -4,12 +4,15 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "convert/preprocess.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/signal/fft.hpp"
 #include "core/temporary_name.hpp"
+#include "convert/input_limits.hpp"
+#include "tests/support/no_free_descriptor.hpp"
 #include "tests/support/sample_recording.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -156,6 +159,22 @@ TEST(ConvertRecordings, DirectoryWithoutRecordingsIsRefused) {
   TempDir in, out;
   EXPECT_THROW(expand_inputs({in.path().string()}), Error);
   EXPECT_THROW(expand_inputs({in.file("missing.xml")}), Error);
+}
+
+// Review 25, F3: out of file descriptors, a good recording "could not be read completely. Check the disk
+// and permissions" (exit 2); the limit is the machine's: exit 1 naming it.
+TEST(ConvertRecordings, OutOfDescriptorsIsTheLimitNotTheFile) {
+  const TempDir dir;
+  { std::ofstream(dir.file("rig_0.csv")) << "time_s,accelX\n0,1\n"; }
+  try {
+    const test::NoFreeDescriptor none;
+    read_whole_file(dir.file("rig_0.csv"), 1 << 20);
+    FAIL() << "read without a descriptor";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::failed) << e.what();
+    EXPECT_NE(std::string(e.what()).find("ulimit -n"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read_whole_file(dir.file("rig_0.csv"), 1 << 20).size(), std::filesystem::file_size(dir.file("rig_0.csv")));
 }
 
 }  // namespace

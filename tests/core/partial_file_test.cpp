@@ -9,6 +9,7 @@
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
 #include "core/temporary_name.hpp"
+#include "tests/support/no_free_descriptor.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "tests/support/file_text.hpp"
 
@@ -82,6 +83,24 @@ TEST(PartialFile, WithForceAFileThatIsNoLongerHaptexsIsKept) {
     partial.commit();
   }
   EXPECT_EQ(test::file_text(out), "new");
+}
+
+// Review 25, F2: the folder was opened to be synced after the rename, so a run out of descriptors
+// failed (exit 1) with its output already whole under the final name. It fails before the rename, and
+// says the limit, not "cannot open .".
+TEST(PartialFile, OutOfDescriptorsFailsBeforeTheOutputIsInPlace) {
+  const test::TempDir dir;
+  { std::ofstream(dir.file("a.tmp")) << "done"; }
+  try {
+    const test::NoFreeDescriptor none;
+    durable_rename(dir.file("a.tmp"), dir.file("a.csv"), false);
+    FAIL() << "renamed without a descriptor to sync its folder";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::failed);
+    EXPECT_NE(std::string(e.what()).find("ulimit -n"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir.file("a.csv")));
+  EXPECT_TRUE(fs::exists(dir.file("a.tmp")));
 }
 
 }  // namespace
