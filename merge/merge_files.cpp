@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "core/h5/atomic_file.hpp"
+#include "core/h5/link_rule.hpp"
 #include "core/text/utf8.hpp"
 #include "dataset/layout.hpp"
 #include "merge/shard.hpp"
@@ -72,6 +73,11 @@ MergeResult merge_files(const MergeOptions& o, const Progress& progress) {
     result.windows = windows->size();
   }
   write_shard_provenance(root, shards, result.plan);
+  // /shards keeps each shard's own /shards, two levels deeper a round: a merge of merged files can nest
+  // past the depth every reader refuses (core/h5/link_rule.cpp). Refused here, not written (review 26, F1).
+  if (const h5::LinkReport links = h5::check_links(root); !links.faults.empty())
+    throw input_error(o.output, links.faults.front().first, links.faults.front().second.what + ", once merged",
+                      "Merge the original shards, not merged files of merged files");
   out.commit();
   if (progress) progress(result.plan.materials.size(), result.plan.materials.size(), "");
   return result;

@@ -8,6 +8,7 @@
 
 #include "capture/device/fourcc.hpp"
 #include "core/error.hpp"
+#include "core/text/format.hpp"
 #include "core/text/parse_number.hpp"
 #include "dataset/press_file.hpp"
 
@@ -127,6 +128,12 @@ bool DeviceKeys::apply_stream_key(FakeCameraConfig& c, const std::string& key, c
   return true;
 }
 
+void DeviceKeys::require_recordable_rate(const FakeCameraConfig& config, double fps) const {
+  if (config.realtime && fps * config.speed < dataset::kLowestFps)
+    refuse("speed", text::format("fps %g at speed %g sends %g frames a second, fewer than the %g a recording takes at the least", fps,
+                                 config.speed, fps * config.speed, dataset::kLowestFps));
+}
+
 bool is_fake_device(const std::string& device) { return device == "fake" || device.rfind("fake:", 0) == 0; }
 
 FakeDevice parse_fake_device(const std::string& device) {
@@ -142,6 +149,7 @@ FakeDevice parse_fake_device(const std::string& device) {
   if (!fps_given && (mode.width != 3280 || mode.height != 2464)) mode.fps = {30.0};
   if (!(mode.fps.front() >= dataset::kLowestFps && mode.fps.front() <= dataset::kHighestFps))
     keys.refuse("fps", "must be from 1 to 1000 frames per second, as a press file's own fps must be");
+  keys.require_recordable_rate(fake.config, mode.fps.front());
   fake.config.modes = {mode};
   // Messages and session.json name the device as the user gave it, not the node the fake emulates:
   // a real camera may well be /dev/video0 (review 8, #11).

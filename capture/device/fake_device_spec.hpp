@@ -46,6 +46,10 @@ class DeviceKeys {
   // The stream's timing and faults: drop, error, corrupt, disconnect, stall, speed, lockstep, seed.
   // Returns false when `key` is none of them.
   bool apply_stream_key(FakeCameraConfig& config, const std::string& key, const std::string& value) const;
+  // Refuses (naming fps and speed) a real-time stream whose frames come slower than a press file's
+  // lowest rate, dataset::kLowestFps: fps 1 at speed 0.3 ended every take as a stalled sensor, exit 1
+  // and no press (review 26, F2).
+  void require_recordable_rate(const FakeCameraConfig& config, double fps) const;
 
  private:
   std::string device_, usage_;

@@ -89,6 +89,7 @@ FakeDevice parse_replay_device(const std::string& device) {
   if (!(mode.fps.front() >= dataset::kLowestFps && mode.fps.front() <= dataset::kHighestFps))
     throw input_error(file, "frame rate", text::format("the file does not say its frame rate (or says one outside %g to %g frames per second)", dataset::kLowestFps, dataset::kHighestFps),
                       "Give it: replay:" + file + ",fps=N");
+  keys.require_recordable_rate(c, mode.fps.front());
   if (mode.width > kMaxSide || mode.height > kMaxSide)
     throw input_error(file, "frame size", std::to_string(mode.width) + "x" + std::to_string(mode.height) +
                       " is larger than the replay plays (" + std::to_string(kMaxSide) + "x" + std::to_string(kMaxSide) + ")",

@@ -53,8 +53,8 @@ void collect(hid_t group, const std::string& path, const std::string& file, Copi
     if (const std::optional<LinkFault> fault = follow_link(group, name, member, file, seen, info)) {
       report.faults.emplace_back(member, *fault);
     } else if (info.type == H5O_TYPE_GROUP) {
-      if (depth == kDeepestGroups) {
-        report.faults.emplace_back(member, LinkFault{"is a group " + std::to_string(depth + 1) + " levels deep; no haptex file nests groups beyond " +
+      if (depth > kDeepestGroups) {  // the members of collect's group at `depth` are `depth` levels deep
+        report.faults.emplace_back(member, LinkFault{"is a group " + std::to_string(depth) + " levels deep; no haptex file nests groups beyond " +
                                                          std::to_string(kDeepestGroups),
                                                      "Remove the groups haptex does not write, or make the file again with the haptex command that wrote it"});
         continue;

@@ -294,8 +294,8 @@ def require_plain_objects(f, path):
                     raise HaptexFileError(f"{path}: {member}: keeps its values outside the file")
                 _require_sensible_size(obj, path)
             elif isinstance(obj, h5py.Group):
-                if depth == _DEEPEST_GROUPS:
-                    raise HaptexFileError(f"{path}: {member}: is a group {depth + 1} levels deep; no haptex file nests groups "
+                if depth > _DEEPEST_GROUPS:  # the members of a group taken at `depth` are `depth` levels deep
+                    raise HaptexFileError(f"{path}: {member}: is a group {depth} levels deep; no haptex file nests groups "
                                           f"beyond {_DEEPEST_GROUPS}")
                 groups.append((obj, depth + 1))
             else:

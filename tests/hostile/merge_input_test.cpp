@@ -147,6 +147,29 @@ TEST(MergeInput, MoreShardsThanTheOpenFileLimitIsTheLimitsFaultNotTheShards) {
   EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
 }
 
+// Review 26, F1: /shards keeps each shard's own /shards two levels deeper, so a merge could write a file
+// deeper than every reader takes (exit 0, then "damaged" everywhere). It is refused before it is written.
+TEST(MergeInput, AMergeThatWouldNestBeyondWhatReadersTakeIsRefused) {
+  const TempDir dir;
+  const std::string shard = copy_into(dir, small_pipeline().recordings, "deep.h5");
+  {
+    Edit e(shard);
+    hid_t parent = H5Gcreate2(e.root().id(), "shards", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    for (int i = 0; i < 1023; ++i) {  // /shards and 1023 more: 1024 levels, the most a reader takes
+      const hid_t child = H5Gcreate2(parent, "0", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      ASSERT_GE(child, 0);
+      H5Gclose(parent);
+      parent = child;
+    }
+    H5Gclose(parent);
+  }
+  ASSERT_EQ(run_haptex({"info", shard}).exit_code, 0) << "the shard itself is readable";
+  const CommandResult r = run_haptex({"merge", shard, "-o", dir.file("out.h5")});
+  expect_refusal(r, {dir.file("out.h5"), "levels deep", "once merged", "Merge the original shards"});
+  EXPECT_FALSE(fs::exists(dir.file("out.h5")));
+  EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+}
+
 TEST(MergeInput, ANameThatIsNotUtf8IsRefusedAtTheDoor) {
   const TempDir dir;
   const std::string bad = second_material_of(dir, small_pipeline().recordings, "Caf\xe9.h5");

@@ -311,8 +311,10 @@ TEST(Messages, AFakeCameraRateOrSpeedOutOfRangeIsRefusedAndLeavesNoFolder) {
 
 // Review 5: the default fake (3280 x 2464) rendered all its frames at STREAMON, 20 s before the
 // recorder's loop, which reads --seconds and Ctrl-C, first ran; it renders each when first needed now.
+// The slowest is 1 frame a second: slower, every take ended as a stalled sensor (review 26, F2), and it is
+// refused, naming fps and speed.
 TEST(Messages, TheSlowestAndTheLargestFakeCamerasStillEndTheTakeOnTime) {
-  for (const std::string device : {"fake:size=160x120,speed=0.01", "fake"}) {
+  for (const std::string device : {"fake:size=160x120,fps=1", "fake"}) {
     SCOPED_TRACE(device);
     const TempDir dir;
     const auto start = std::chrono::steady_clock::now();
@@ -322,6 +324,25 @@ TEST(Messages, TheSlowestAndTheLargestFakeCamerasStillEndTheTakeOnTime) {
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
     EXPECT_TRUE(fs::exists(dir.file("s/session.json")) || fs::exists(dir.file("s")) == false) << "a take of no press leaves no folder";
   }
+}
+
+// Review 26, F2: each key in range, fps 1 at speed 0.3 sent a frame every 3.3 s, so every take ended
+// "the sensor stopped sending frames" (exit 1, no press) whatever --seconds said.
+TEST(Messages, AFakeOrReplayTooSlowToRecordIsRefusedNamingFpsAndSpeed) {
+  const TempDir dir;
+  for (const std::string device : {"fake:size=160x120,fps=1,speed=0.3", "fake:size=160x120,speed=0.02"}) {
+    SCOPED_TRACE(device);
+    expect_refusal(run_haptex({"capture", "record", "--device", device, "--material", "Cork", "-o", dir.file("s")}),
+                   {"--device", "speed", "frames a second, fewer than the 1 a recording takes"});
+    EXPECT_FALSE(fs::exists(dir.file("s")));
+  }
+  ASSERT_EQ(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "--presses", "1", "-o",
+                        dir.file("take"), "-q"}).exit_code, 0);
+  const std::string press = dir.file("take/press_0.h5");
+  expect_refusal(run_haptex({"capture", "record", "--device", "replay:" + press + ",fps=1,speed=0.3", "--material", "Cork", "-o",
+                             dir.file("r")}),
+                 {"--device", "speed", "fewer than the 1"});
+  EXPECT_FALSE(fs::exists(dir.file("r")));
 }
 
 // Review 6: --trigger under the no-contact level wrote presses whose peak lay outside their contact
