@@ -21,10 +21,15 @@ unsigned long use_every_open_file_allowed() {
   return static_cast<unsigned long>(limit.rlim_cur);
 }
 
-void require_a_descriptor_for(const std::string& path) {
+int error_opening(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) refuse_if_out_of_descriptors(errno, path);
-  if (fd >= 0) ::close(fd);
+  if (fd >= 0) {
+    ::close(fd);
+    return 0;
+  }
+  const int error = errno;
+  refuse_if_out_of_descriptors(error, path);
+  return error;
 }
 
 void refuse_if_out_of_descriptors(int error, const std::string& path) {

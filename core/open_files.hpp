@@ -18,8 +18,9 @@ unsigned long use_every_open_file_allowed();
 // returns otherwise, for the caller to say what else went wrong.
 void refuse_if_out_of_descriptors(int error, const std::string& path);
 
-// For a library that failed to open path without saying why (FFmpeg through OpenCV): opens and closes
-// it, throwing as above when there is no descriptor to open it with.
-void require_a_descriptor_for(const std::string& path);
+// Why path does not open, for a library that failed without saying (HDF5's H5Fis_hdf5, FFmpeg through
+// OpenCV): opens and closes it; 0 when it opens, else the errno. Throws as above when there is no
+// descriptor to open it with.
+int error_opening(const std::string& path);
 
 }  // namespace haptex

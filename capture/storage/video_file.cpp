@@ -30,7 +30,7 @@ std::unique_ptr<media::VideoReader> open_video_file(const std::string& path) {
   // here never print.
   std::unique_ptr<media::VideoReader> video = media::open_video(path, cv::CAP_FFMPEG);
   if (!video) {
-    require_a_descriptor_for(path);  // out of them, FFmpeg fails for the machine's limit, not the file's
+    error_opening(path);  // out of descriptors, FFmpeg fails for the machine's limit, not the file's
     throw input_error(path, "", "OpenCV cannot open this as a video",
                       "Give a video file (.avi, .mkv, .mp4 ...) or a press file (.h5) from 'haptex capture record'");
   }

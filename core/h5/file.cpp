@@ -1,9 +1,5 @@
 #include "core/h5/file.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -17,28 +13,14 @@
 
 namespace haptex::h5 {
 
-namespace {
-
-// H5Fis_hdf5 answers 0 for a file that is not HDF5 and fails (< 0) for one it cannot open: out of file
-// descriptors is the machine's limit (core/open_files.hpp), anything else is said as what it is.
-void require_openable(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd >= 0) {
-    ::close(fd);
-    return;
-  }
-  const int error = errno;
-  refuse_if_out_of_descriptors(error, path);
-  throw input_error(path, "", std::string("cannot open it (") + std::strerror(error) + ")", "Check the file's permissions");
-}
-
-}  // namespace
-
 File File::open(const std::string& path, bool writable) {
   silence_library_errors();
   require_regular_file(path);
   const htri_t hdf5 = H5Fis_hdf5(path.c_str());
-  if (hdf5 < 0) require_openable(path);
+  // H5Fis_hdf5 answers 0 for a file that is not HDF5 and fails (< 0) for one it cannot open: out of
+  // descriptors is the machine's limit (core/open_files.hpp), anything else is said as what it is.
+  if (const int error = hdf5 < 0 ? error_opening(path) : 0; error != 0)
+    throw input_error(path, "", std::string("cannot open it (") + std::strerror(error) + ")", "Check the file's permissions");
   if (hdf5 <= 0)
     throw input_error(path, "", "not an HDF5 file", "Give a file written by haptex (recordings, gelsight, dataset or model)");
   const hid_t id = H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT);

@@ -37,13 +37,24 @@ void drop_unique_items(nlohmann::json& schema) {
     for (nlohmann::json& part : schema) drop_unique_items(part);
 }
 
+// The schema file `name` as JSON, parsed once: validate reads it for the format, the patterns, the
+// description and valijson's compiled form.
+const nlohmann::json& schema_document(std::string_view name) {
+  static std::mutex mutex;
+  static std::map<std::string, nlohmann::json, std::less<>> cache;
+  std::lock_guard lock(mutex);
+  auto it = cache.find(name);
+  if (it == cache.end()) it = cache.emplace(std::string(name), nlohmann::json::parse(embedded::schema(name))).first;
+  return it->second;  // std::map never moves its elements
+}
+
 const valijson::Schema& compiled_schema(std::string_view name) {
   static std::mutex mutex;
   static std::map<std::string, std::unique_ptr<valijson::Schema>, std::less<>> cache;
   std::lock_guard lock(mutex);
   auto it = cache.find(name);
   if (it != cache.end()) return *it->second;
-  nlohmann::json schema_doc = nlohmann::json::parse(embedded::schema(name));
+  nlohmann::json schema_doc = schema_document(name);
   drop_unique_items(schema_doc);
   auto schema = std::make_unique<valijson::Schema>();
   valijson::SchemaParser parser;
@@ -56,7 +67,7 @@ const valijson::Schema& compiled_schema(std::string_view name) {
 // "split/1") came from a newer haptex: said so, not as a schema failure.
 void refuse_newer_format(const nlohmann::json& doc, std::string_view schema_name, const std::string& file) {
   if (!doc.is_object() || !doc.contains("format") || !doc["format"].is_string()) return;
-  const nlohmann::json schema_doc = nlohmann::json::parse(embedded::schema(schema_name));
+  const nlohmann::json& schema_doc = schema_document(schema_name);
   const nlohmann::json::json_pointer wanted_at("/properties/format/const");
   if (!schema_doc.contains(wanted_at) || !schema_doc[wanted_at].is_string()) return;
   const std::string found = doc["format"].get<std::string>(), wanted = schema_doc[wanted_at].get<std::string>();
@@ -234,7 +245,7 @@ void check_replaceable_json(const std::string& path, bool overwrite, const std::
 
 void validate(const nlohmann::json& doc, std::string_view schema_name, const std::string& file) {
   refuse_newer_format(doc, schema_name, file);
-  const nlohmann::json schema = nlohmann::json::parse(embedded::schema(schema_name));
+  const nlohmann::json& schema = schema_document(schema_name);
   refuse_long_pattern_texts(doc, schema, schema, "", file);
   valijson::Validator validator;
   valijson::ValidationResults results;
@@ -254,7 +265,7 @@ void validate(const nlohmann::json& doc, std::string_view schema_name, const std
   std::string reason = error.description;
   while (!reason.empty() && reason.back() == '.') reason.pop_back();  // valijson ends its sentences; input_error adds one
   // The schema says what the file is (review 10, C4: a pointer to the schema alone was no fix).
-  const nlohmann::json schema_doc = nlohmann::json::parse(embedded::schema(schema_name));
+  const nlohmann::json& schema_doc = schema_document(schema_name);
   const auto description = schema_doc.find("description");
   throw input_error(file, where, reason,
                     "See schemas/" + std::string(schema_name) +
