@@ -6,6 +6,8 @@ include(CMakePackageConfigHelpers)
 install(TARGETS haptex RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # media/codecs.hpp: the codecs plugin, where the binary's RUNPATH ($ORIGIN/../lib/haptex) finds it.
 install(TARGETS haptex_opencv_codecs LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/haptex)
+# core/h5/structure_probe.hpp: found there from bin/ (HAPTEX_PROBE_FROM_BINARY).
+install(TARGETS haptex-h5-probe RUNTIME DESTINATION ${CMAKE_INSTALL_LIBDIR}/haptex)
 foreach(target IN LISTS haptex_modules)
   string(REGEX REPLACE "^haptex_" "" module ${target})
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${module})

@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "core/format_version.hpp"
 #include "core/h5/link_rule.hpp"
+#include "core/h5/structure_probe.hpp"
 #include "core/text/parse_number.hpp"
 #include "core/text/utf8.hpp"
 
@@ -123,10 +124,22 @@ void require_kind(const h5::File& file, Kind kind) {
 
 }  // namespace
 
+namespace {
+
+// The kinds whose encoded images (or frames) a reader of the kind reads: their variable-length values
+// are probed when the file is opened (core/h5/structure_probe.hpp), so damage there is the file's
+// refusal, not a finding on whichever press is read first.
+void probe_images(const std::string& path, Kind kind) {
+  if (kind == Kind::press || kind == Kind::gelsight || kind == Kind::dataset) h5::probe_values(path);
+}
+
+}  // namespace
+
 h5::File open_checked(const std::string& path, Kind kind) {
   h5::File file = h5::File::open(path);
   require_kind(file, kind);
   h5::require_link_rule(file.root());
+  probe_images(path, kind);
   return file;
 }
 
@@ -138,6 +151,7 @@ OpenedFile open_any(const std::string& path, std::span<const Kind> kinds, const 
     if (family_of(found) == format_of(kind).family) {
       require_kind(file, kind);
       if (links == Links::refuse) h5::require_link_rule(file.root());
+      probe_images(path, kind);
       return {std::move(file), kind};
     }
   throw input_error(path, "/@" + std::string(h5::kFormatAttribute), "is '" + text::shortened(found) + "': " + who + " " + format_list(kinds) + " files", fix);

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/h5/structure_probe.hpp"
 #include "core/input_file.hpp"
 #include "core/open_files.hpp"
 #include "core/version.hpp"
@@ -23,6 +24,7 @@ File File::open(const std::string& path, bool writable) {
     throw input_error(path, "", std::string("cannot open it (") + std::strerror(error) + ")", "Check the file's permissions");
   if (hdf5 <= 0)
     throw input_error(path, "", "not an HDF5 file", "Give a file written by haptex (recordings, gelsight, dataset or model)");
+  if (!writable) probe_structure(path);
   const hid_t id = H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT);
   // HDF5 locks a file another program writes (an h5py session, a running haptex): the file is whole,
   // and "copy it again" would mislead (review 15, R8).

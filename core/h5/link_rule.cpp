@@ -6,10 +6,6 @@
 namespace haptex::h5 {
 namespace {
 
-// Far more than any object haptex writes holds (about 30): HDF5 finds an attribute stored in the
-// object's header by reading every one before it, so 40 000 of them took info minutes (review 5).
-constexpr hsize_t kMostAttributes = 1000;
-
 // A callback of H5Literate (links) or H5Aiterate2 (attributes) that collects the names it is given.
 template <typename Info>
 herr_t add_name(hid_t, const char* name, const Info*, void* names) {
@@ -37,13 +33,6 @@ void reference_faults(hid_t object, bool dataset, const std::string& path, const
     if (std::optional<LinkFault> fault = holds_references(type.get())) report.faults.emplace_back(path + "@" + name, *fault);
   }
 }
-
-// haptex's files nest groups 5 deep (/nets/0/action_encoder/layers/0), plus 2 for each round of
-// merging merged files (/shards/<s>/shards/<s>/...; review 25, F4: a bound of 32 refused the 16th
-// round). A chain of 30 000 (a 4.8 MB file) overflowed the stack of this walk (review 23, F8); 1024
-// levels, 500 rounds of merging, take under 1 MB of it. Below that depth the walk stops, with a fault
-// naming the place.
-constexpr int kDeepestGroups = 1024;
 
 void collect(hid_t group, const std::string& path, const std::string& file, CopiedObjects& seen, LinkReport& report, int depth = 1) {
   for (const std::string& name : link_names(group, path, file)) {

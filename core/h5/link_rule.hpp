@@ -17,6 +17,17 @@
 
 namespace haptex::h5 {
 
+// Far more than any object haptex writes holds (about 30): HDF5 finds an attribute stored in the
+// object's header by reading every one before it, so 40 000 of them took info minutes (review 5).
+inline constexpr hsize_t kMostAttributes = 1000;
+
+// haptex's files nest groups 5 deep (/nets/0/action_encoder/layers/0), plus 2 for each round of
+// merging merged files (/shards/<s>/shards/<s>/...; review 25, F4: a bound of 32 refused the 16th
+// round). A chain of 30 000 (a 4.8 MB file) overflowed the stack of check_links (review 23, F8); 1024
+// levels, 500 rounds of merging, take under 1 MB of it. Below that depth the walk stops, with a fault
+// naming the place.
+inline constexpr int kDeepestGroups = 1024;
+
 // What is wrong with a link, and how to fix it.
 struct LinkFault {
   std::string what, fix;

@@ -13,6 +13,7 @@
 #include "core/bounded_call.hpp"
 #include "core/error.hpp"
 #include "core/h5/link_rule.hpp"
+#include "core/h5/structure_probe.hpp"
 #include "core/h5/node.hpp"
 
 namespace haptex::h5 {
@@ -21,6 +22,14 @@ namespace {
 // Whether values of the type hold pointers to memory HDF5 allocates (variable-length sequences or strings).
 bool variable_length(hid_t type) {
   return H5Tdetect_class(type, H5T_VLEN) > 0 || (H5Tget_class(type) == H5T_STRING && H5Tis_variable_str(type) > 0);
+}
+
+// The type values of the stored `type` are read into and written from. Variable-length values are
+// read as the native type, as haptex-h5-probe reads them (core/h5/structure_probe.hpp): read as the
+// stored type, a damaged datatype message made HDF5 1.10 convert them into the file's own heap (a
+// crash in H5HG_insert; found by a fuzz of review 27's kind).
+Handle memory_type(hid_t type, const std::string& where, const std::string& file) {
+  return Handle(check_input(variable_length(type) ? H5Tget_native_type(type, H5T_DIR_DEFAULT) : H5Tcopy(type), "read the type of " + where, file));
 }
 
 // Holds a buffer read with `type` over `space` and frees what variable-length values allocated in it.
@@ -66,16 +75,17 @@ struct Copy {
       Handle type(check_input(H5Aget_type(attr.get()), "read the type of " + where, source_file));
       Handle space(check_input(H5Aget_space(attr.get()), "read the shape of " + where, source_file));
       require_readable(type.get(), space.get(), where);
-      Values values(type.get(), space.get());
+      const Handle memory = memory_type(type.get(), where, source_file);
+      Values values(memory.get(), space.get());
       if (!values.empty()) {
         const BoundedCall bounded(source_file, where);
-        check_input_status(H5Aread(attr.get(), type.get(), values.data()), "read " + where, source_file);
+        check_input_status(H5Aread(attr.get(), memory.get(), values.data()), "read " + where, source_file);
         values.mark_read();
       }
       Handle copy(check(H5Acreate2(to, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
                         "create attribute " + name, target_file + ":" + target_path));
       if (!values.empty())
-        check_status(H5Awrite(copy.get(), type.get(), values.data()), "write attribute " + name, target_file + ":" + target_path);
+        check_status(H5Awrite(copy.get(), memory.get(), values.data()), "write attribute " + name, target_file + ":" + target_path);
     }
   }
 
@@ -88,10 +98,12 @@ struct Copy {
       throw input_error(source_file, source_path, fault->what, fault->fix);
     Handle creation(check_input(H5Dget_create_plist(from.get()), "read the layout of " + source_path, source_file));
     require_readable(type.get(), space.get(), source_path);
-    Values values(type.get(), space.get());
+    if (variable_length(type.get())) probe_values(source_file);
+    const Handle memory = memory_type(type.get(), source_path, source_file);
+    Values values(memory.get(), space.get());
     if (!values.empty()) {
       const BoundedCall bounded(source_file, source_path);
-      check_input_status(H5Dread(from.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + source_path,
+      check_input_status(H5Dread(from.get(), memory.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "read " + source_path,
                          source_file);
       values.mark_read();
     }
@@ -101,7 +113,7 @@ struct Copy {
     } else if (H5Pget_layout(creation.get()) == H5D_CHUNKED && !variable_length(type.get())) {
       chunks(from.get(), to.get(), source_path, target_path);  // read above, so each one inflates
     } else {
-      check_status(H5Dwrite(to.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write dataset",
+      check_status(H5Dwrite(to.get(), memory.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), "write dataset",
                    target_file + ":" + target_path);
     }
     attributes(from.get(), to.get(), source_path, target_path);

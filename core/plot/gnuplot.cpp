@@ -50,12 +50,12 @@ std::string file(std::string_view name) { return text(name, name.size()); }
 
 std::string png_terminal() {
   if (!process::program_on_path("gnuplot")) return "";
-  return process::run_program({{"gnuplot", "-e", "set terminal pngcairo"}, "", "", "", ""}) == 0 ? "pngcairo" : "png";
+  return process::run_program({{"gnuplot", "-e", "set terminal pngcairo"}, "", "", "", "", {}}) == 0 ? "pngcairo" : "png";
 }
 
 bool draw(const std::string& directory, const std::string& script, const std::string& png) {
   const fs::path image = fs::path(directory) / png;
-  if (process::run_program({{"gnuplot", script}, directory, "", "", ""}) == 0 && is_png(image)) return true;
+  if (process::run_program({{"gnuplot", script}, directory, "", "", "", {}}) == 0 && is_png(image)) return true;
   std::error_code ignored;
   fs::remove(image, ignored);
   return false;

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <string_view>
@@ -28,6 +29,8 @@ class FileActions {
   bool open(int fd, const std::string& path, int flags) {
     return posix_spawn_file_actions_addopen(&actions_, fd, path.empty() ? "/dev/null" : path.c_str(), flags, 0644) == 0;
   }
+  bool dup(int from, int to) { return posix_spawn_file_actions_adddup2(&actions_, from, to) == 0; }
+  bool close_from(int first) { return posix_spawn_file_actions_addclosefrom_np(&actions_, first) == 0; }
   bool chdir(const std::string& directory) {
     return directory.empty() || posix_spawn_file_actions_addchdir_np(&actions_, directory.c_str()) == 0;
   }
@@ -37,18 +40,36 @@ class FileActions {
   posix_spawn_file_actions_t actions_;
 };
 
-}  // namespace
+// This process's environment with run.environment's variables set over it.
+std::vector<char*> environment_of(const ProgramRun& run) {
+  std::vector<char*> envp;
+  for (char** variable = environ; *variable; ++variable) {
+    const std::string_view entry(*variable), name = entry.substr(0, entry.find('='));
+    const bool replaced = std::any_of(run.environment.begin(), run.environment.end(), [&](const std::string& set) {
+      return set.size() > name.size() && set.compare(0, name.size(), name) == 0 && set[name.size()] == '=';
+    });
+    if (!replaced) envp.push_back(*variable);
+  }
+  for (const std::string& set : run.environment) envp.push_back(const_cast<char*>(set.c_str()));
+  envp.push_back(nullptr);
+  return envp;
+}
 
-int run_program(const ProgramRun& run) {
-  if (run.argv.empty()) return kNotStarted;
+// Starts the program; its standard output goes to `stdout_pipe` when that is a descriptor (>= 0), else
+// to run.stdout_path. Returns its pid, or -1 when it could not be started.
+pid_t start_program(const ProgramRun& run, int stdout_pipe) {
+  if (run.argv.empty()) return -1;
   FileActions actions;
   const int out_flags = O_WRONLY | O_CREAT | O_TRUNC;  // no O_CLOEXEC: these are the child's own descriptors
-  if (!actions.open(STDIN_FILENO, run.stdin_path, O_RDONLY) || !actions.open(STDOUT_FILENO, run.stdout_path, out_flags) ||
-      !actions.open(STDERR_FILENO, run.stderr_path, out_flags) || !actions.chdir(run.directory))
-    return kNotStarted;
+  const bool out = stdout_pipe >= 0 ? actions.dup(stdout_pipe, STDOUT_FILENO) : actions.open(STDOUT_FILENO, run.stdout_path, out_flags);
+  // Nothing else of haptex's reaches the child: not an output's lock, not a temporary being written.
+  if (!actions.open(STDIN_FILENO, run.stdin_path, O_RDONLY) || !out || !actions.open(STDERR_FILENO, run.stderr_path, out_flags) ||
+      !actions.chdir(run.directory) || !actions.close_from(STDERR_FILENO + 1))
+    return -1;
   std::vector<char*> argv;
   for (const std::string& arg : run.argv) argv.push_back(const_cast<char*>(arg.c_str()));
   argv.push_back(nullptr);
+  const std::vector<char*> envp = environment_of(run);
   // The child starts with no signal blocked and default actions, whatever haptex blocks for itself
   // (core/temporary_name.hpp): Ctrl-C stops it too.
   posix_spawnattr_t attributes;
@@ -60,14 +81,42 @@ int run_program(const ProgramRun& run) {
   posix_spawnattr_setsigdefault(&attributes, &all);
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
   pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, argv[0], actions.get(), &attributes, argv.data(), environ);
+  const int spawned = posix_spawnp(&pid, argv[0], actions.get(), &attributes, argv.data(), envp.data());
   posix_spawnattr_destroy(&attributes);
-  if (spawned != 0) return kNotStarted;
+  return spawned == 0 ? pid : -1;
+}
+
+int wait_for_program(pid_t pid) {
   int status = 0;
   while (waitpid(pid, &status, 0) < 0)
     if (errno != EINTR) return kNotStarted;
   if (WIFEXITED(status)) return WEXITSTATUS(status);
   return WIFSIGNALED(status) ? 128 + WTERMSIG(status) : kNotStarted;
+}
+
+}  // namespace
+
+int run_program(const ProgramRun& run) {
+  const pid_t pid = start_program(run, -1);
+  return pid < 0 ? kNotStarted : wait_for_program(pid);
+}
+
+int run_program_reading(const ProgramRun& run, std::string& tail, std::size_t most) {
+  tail.clear();
+  int ends[2];
+  if (pipe2(ends, O_CLOEXEC) != 0) return kNotStarted;
+  const pid_t pid = start_program(run, ends[1]);
+  ::close(ends[1]);
+  char buffer[4096];
+  for (;;) {
+    const ssize_t got = ::read(ends[0], buffer, sizeof buffer);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) break;
+    tail.append(buffer, std::size_t(got));
+    if (tail.size() > most) tail.erase(0, tail.size() - most);
+  }
+  ::close(ends[0]);
+  return pid < 0 ? kNotStarted : wait_for_program(pid);
 }
 
 bool program_on_path(const std::string& name) {

@@ -12,11 +12,16 @@ struct ProgramRun {
   std::string stdout_path;        // where its standard output goes; empty: /dev/null
   std::string stderr_path;        // where its standard error goes; empty: /dev/null
   std::string stdin_path;         // what its standard input reads; empty: /dev/null
+  std::vector<std::string> environment;  // NAME=value set for it, beside (or over) this process's own
 };
 
 // Runs the program to its end and returns its exit code:
 // 127 when it could not be started (not installed, not executable), 128 + N when signal N ended it.
 int run_program(const ProgramRun& run);
+
+// run_program, its standard output read through a pipe instead (stdout_path is not used): the last
+// `most` bytes of it in `tail`, the rest read and dropped so the program never waits on a full pipe.
+int run_program_reading(const ProgramRun& run, std::string& tail, std::size_t most);
 
 // Whether name is an executable file in one of PATH's folders (or, with a '/', at that path).
 bool program_on_path(const std::string& name);

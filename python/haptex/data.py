@@ -265,7 +265,7 @@ def _require_sensible_size(d, path):
         raise HaptexFileError(f"{path}: {d.name}: holds {count} strings, more than a list of names haptex writes ({_MOST_TEXTS} at most)")
 
 
-_DEEPEST_GROUPS = 1024  # core/h5/link_rule.cpp's kDeepestGroups: 5 levels, plus 2 a round of merging merged files
+_DEEPEST_GROUPS = 1024  # core/h5/link_rule.hpp's kDeepestGroups: 5 levels, plus 2 a round of merging merged files
 
 
 def require_plain_objects(f, path):

@@ -36,7 +36,7 @@ TEST(GnuplotText, GnuplotPrintsTheLabelAndRunsNothing) {
   for (const std::string& label : labels) script << "print " << gnuplot::text(label) << "\n";
   script.close();
   const std::string out = dir.file("out.txt");
-  ASSERT_EQ(process::run_program({{"gnuplot", "print.gnuplot"}, dir.path().string(), out, "", ""}), 0);
+  ASSERT_EQ(process::run_program({{"gnuplot", "print.gnuplot"}, dir.path().string(), out, "", "", {}}), 0);
   std::ifstream printed(out);
   for (const std::string& label : labels) {
     std::string line;

@@ -17,6 +17,7 @@
 #include "dataset/window_table.hpp"
 #include "predict/model_file.hpp"
 #include "predict/predictor.hpp"
+#include "tests/support/mutations.hpp"
 #include "tests/support/quick_models.hpp"
 #include "tests/support/run_haptex.hpp"
 #include "tests/support/small_pipeline.hpp"
@@ -67,6 +68,7 @@ TEST(Install, PutsTheBinaryHeadersLibrariesAndBothPackageFilesUnderThePrefix) {
   const std::string prefix = installed();
   EXPECT_EQ(run_program({prefix + "/bin/haptex", "--version"}).exit_code, 0);
   EXPECT_TRUE(fs::is_regular_file(prefix + "/lib/haptex/libhaptex_opencv_codecs.so"));
+  EXPECT_TRUE(fs::is_regular_file(prefix + "/lib/haptex/haptex-h5-probe"));
   for (const char* file : {"include/haptex/predict/predictor.hpp", "include/haptex/core/version.hpp", "include/haptex/evaluate/report/report_html.hpp",
                            "lib/libhaptex_core.a", "lib/libhaptex_predict.a", "lib/cmake/haptex/haptexConfig.cmake",
                            "lib/cmake/haptex/haptexConfigVersion.cmake", "lib/pkgconfig/haptex.pc"})
@@ -96,6 +98,12 @@ TEST(Install, TheInstalledBinaryFindsItsCodecsPluginAndSaysSoWhenItIsGone) {
   EXPECT_NE(without.err.find("libhaptex_opencv_codecs.so"), std::string::npos) << without.err;
   EXPECT_NE(without.err.find("Reinstall haptex"), std::string::npos) << without.err;
   EXPECT_EQ(run_program({prefix + "/bin/haptex", "info", dir.file("g.h5")}).exit_code, 0) << "commands without images run as before";
+  // lib/haptex/haptex-h5-probe reads a file's structure first (core/h5/structure_probe.hpp): a damaged
+  // attribute header that crashes HDF5 is refused, not a crash.
+  copy_with_damaged_attribute(dir.file("g.h5"), "fps", dir.file("damaged.h5"));
+  const CommandResult damaged = run_program({prefix + "/bin/haptex", "info", dir.file("damaged.h5")});
+  EXPECT_EQ(damaged.exit_code, 2) << damaged.err;
+  EXPECT_NE(damaged.err.find("in haptex-h5-probe"), std::string::npos) << damaged.err;
 }
 
 TEST(Install, AProjectOfItsOwnBuildsWithFindPackageAndPredictsAsHaptexDoes) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include "dataset/vlen_bytes.hpp"
@@ -104,5 +105,19 @@ nlohmann::json read_json(const std::string& path) {
 }
 
 void write_json(const std::string& path, const nlohmann::json& doc) { std::ofstream(path) << doc.dump(2); }
+
+void copy_with_damaged_attribute(const std::string& file, const std::string& name, const std::string& copy) {
+  std::ifstream in(file, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string stored = name + '\0';
+  for (std::size_t at = bytes.find(stored); at != std::string::npos; at = bytes.find(stored, at + 1)) {
+    if (at < 8 || bytes[at - 8] != 1 || bytes[at - 7] != 0 || std::size_t(std::uint8_t(bytes[at - 6])) != stored.size() || bytes[at - 5] != 0)
+      continue;
+    bytes[at - 5] = char(175);
+    std::ofstream(copy, std::ios::binary) << bytes;
+    return;
+  }
+  throw std::runtime_error("no attribute message for " + name + " in " + file);
+}
 
 }  // namespace haptex::test

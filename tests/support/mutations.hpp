@@ -52,6 +52,12 @@ void Edit::replace(const std::string& path, const std::vector<T>& values, const 
   restore(parent.write_array<T>(slash == std::string::npos ? path : path.substr(slash + 1), values, shape), attrs);
 }
 
+// A copy of `file` as `copy` in which the stored name length of the first attribute `name` (a version 1
+// attribute message: version 1, a reserved 0, the name's length with its NUL, as haptex's files hold
+// them) reads 44 800 bytes longer, as one flipped byte on a disk makes it: libhdf5 1.10 crashes reading
+// some such files (review 27, F1). Throws std::runtime_error when no such message is found.
+void copy_with_damaged_attribute(const std::string& file, const std::string& name, const std::string& copy);
+
 nlohmann::json read_json(const std::string& path);
 void write_json(const std::string& path, const nlohmann::json& doc);
 

@@ -20,7 +20,7 @@ static CommandResult run(const std::vector<std::string>& argv, const std::string
   TempDir dir;
   const std::string out = dir.file("out"), err = dir.file("err");
   CommandResult result;
-  result.exit_code = process::run_program({argv, directory, out, err, input});
+  result.exit_code = process::run_program({argv, directory, out, err, input, {}});
   result.out = slurp(out);
   result.err = slurp(err);
   return result;

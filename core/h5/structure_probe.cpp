@@ -1,0 +1,160 @@
+#include "core/h5/structure_probe.hpp"
+
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <tuple>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/process/run_program.hpp"
+
+namespace haptex::h5 {
+namespace {
+
+// The probe's output kept: the last place read, or the refused read's place, finding and fix.
+constexpr std::size_t kMostProgressKept = std::size_t(64) << 10;
+
+// haptex-h5-probe beside this program (the build folder), or where cmake/install.cmake puts it
+// (HAPTEX_PROBE_FROM_BINARY, relative to bin/); empty when neither is there.
+const std::string& probe_program() {
+  static const std::string found = [] {
+    std::error_code error;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (error) return std::string();
+    for (const std::filesystem::path& candidate :
+         {self.parent_path() / "haptex-h5-probe", self.parent_path() / HAPTEX_PROBE_FROM_BINARY / "haptex-h5-probe"})
+      if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
+    return std::string();
+  }();
+  return found;
+}
+
+// AddressSanitizer's runtime (HAPTEX_PROBE_SANITIZER: the compiler's libasan, found at configure time),
+// preloaded into the probe: a read or copy past a heap block then stops it every time. Its errors
+// abort (SIGABRT); a segmentation fault stays one; nothing else of it is kept. Empty when absent.
+std::vector<std::string> sanitizer_environment() {
+  const std::string runtime = HAPTEX_PROBE_SANITIZER;
+  if (runtime.empty() || ::access(runtime.c_str(), R_OK) != 0) return {};
+  return {"LD_PRELOAD=" + runtime,
+          "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:handle_segv=0:handle_sigbus=0:handle_abort=0:allocator_may_return_null=1:"
+          "malloc_context_size=0:quarantine_size_mb=0"};
+}
+
+// A file as it was probed, and how deep.
+using FileVersion = std::tuple<dev_t, ino_t, off_t, long, long, ProbeDepth>;
+
+std::optional<FileVersion> version_of(const std::string& path, ProbeDepth depth) {
+  struct stat s {};
+  if (::stat(path.c_str(), &s) != 0) return std::nullopt;
+  return FileVersion{s.st_dev, s.st_ino, s.st_size, s.st_mtim.tv_sec, s.st_mtim.tv_nsec, depth};
+}
+
+// What the probe said of each file: nothing when it read it all (or could not run), else the place,
+// finding and fix of the read that failed.
+class Verdicts {
+ public:
+  std::optional<std::vector<std::string>> find(const FileVersion& file) {
+    const std::lock_guard<std::mutex> held(lock_);
+    const auto found = said_.find(file);
+    return found == said_.end() ? std::nullopt : std::optional(found->second);
+  }
+  void keep(const FileVersion& file, std::vector<std::string> said) {
+    const std::lock_guard<std::mutex> held(lock_);
+    said_[file] = std::move(said);
+  }
+
+ private:
+  std::mutex lock_;
+  std::map<FileVersion, std::vector<std::string>> said_;
+};
+
+Verdicts& verdicts() {
+  static Verdicts* kept = new Verdicts;  // never destroyed: a thread may probe while the process exits
+  return *kept;
+}
+
+// The last `count` NUL-ended records of the probe's output, oldest first (empty ones for those missing).
+std::vector<std::string> last_records(std::string text, std::size_t count) {
+  std::vector<std::string> records(count);
+  if (!text.empty() && text.back() == '\0') text.pop_back();
+  for (std::size_t k = count; k-- > 0;) {
+    const std::size_t at = text.rfind('\0');
+    records[k] = at == std::string::npos ? text : text.substr(at + 1);
+    if (at == std::string::npos) break;
+    text.erase(at);
+  }
+  return records;
+}
+
+// The signals that say HDF5 failed in the probe (its processor time limit included); others (Ctrl-C,
+// a kill) say nothing about the file.
+bool crash_signal(int signal) {
+  return signal == SIGSEGV || signal == SIGBUS || signal == SIGABRT || signal == SIGFPE || signal == SIGILL || signal == SIGXCPU;
+}
+
+// Runs the probe, under the sanitizer when it starts there (it does not under `ulimit -v`, which its
+// shadow memory exceeds), else without. Returns the exit code (128 + N for signal N) and its output.
+int run_probe(const std::string& path, ProbeDepth depth, std::string& output) {
+  process::ProgramRun run;
+  run.argv = {probe_program()};
+  if (depth == ProbeDepth::values) run.argv.push_back("--values");
+  run.argv.push_back(path);
+  run.environment = sanitizer_environment();
+  int code = process::run_program_reading(run, output, kMostProgressKept);
+  if (!run.environment.empty() && output.empty() && code != kProbeRead) {
+    run.environment.clear();
+    code = process::run_program_reading(run, output, kMostProgressKept);
+  }
+  return code;
+}
+
+Error damaged(const std::string& path, const std::vector<std::string>& said) { return input_error(path, said[0], said[1], said[2]); }
+
+void probe(const std::string& path, ProbeDepth depth) {
+  const std::optional<FileVersion> version = version_of(path, depth);
+  if (probe_program().empty() || !version) return;
+  if (const std::optional<std::vector<std::string>> said = verdicts().find(*version)) {
+    if (said->empty()) return;
+    throw damaged(path, *said);
+  }
+  std::string output;
+  const int code = run_probe(path, depth, output);
+  if (code == kProbeRefused) {
+    const std::vector<std::string> said = last_records(output, 3);
+    verdicts().keep(*version, said);
+    throw damaged(path, said);
+  }
+  if (code <= 128 || !crash_signal(code - 128)) {
+    verdicts().keep(*version, {});
+    return;
+  }
+  const int signal = code - 128;
+  const std::string what =
+      signal == SIGXCPU
+          ? std::string("reading it does not end (haptex-h5-probe, the separate program that reads each file first, used up its "
+                        "processor time: HDF5 loops so on a damaged global heap or header)")
+          : "HDF5 crashes reading it (SIG" + std::string(sigabbrev_np(signal)) +
+                " in haptex-h5-probe, the separate program that reads each file first, so haptex does not)";
+  const std::vector<std::string> said = {last_records(output, 1)[0], what,
+                                         "The file is damaged: copy it again, or make it again with the haptex command that wrote it"};
+  verdicts().keep(*version, said);
+  throw damaged(path, said);
+}
+
+}  // namespace
+
+void probe_structure(const std::string& path) { probe(path, ProbeDepth::structure); }
+
+void probe_values(const std::string& path) {
+  const std::optional<FileVersion> structure = version_of(path, ProbeDepth::structure);
+  if (structure && verdicts().find(*structure)) probe(path, ProbeDepth::values);
+}
+
+}  // namespace haptex::h5

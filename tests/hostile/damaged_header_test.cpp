@@ -1,0 +1,69 @@
+// Review 27, F1: one damaged byte in an attribute's message header (the high byte of its name length)
+// made libhdf5 1.10 crash (SIGSEGV, exit 139) in info, qa, split, view, trajectory, merge, align,
+// capture extract and capture record's replay, and split, view and extract left their temporaries.
+// haptex-h5-probe reads the file's structure first, in a process of its own (core/h5/structure_probe.hpp):
+// the file is refused as damaged, exit 2, naming it, with nothing left behind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "tests/hostile/hostile_support.hpp"
+#include "tests/support/mutations.hpp"
+#include "tests/support/small_pipeline.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace haptex::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every command refuses `damaged`, naming it, and leaves nothing in `d`'s folder but what was there.
+void expect_refused_everywhere(const TempDir& d, const std::string& damaged, const std::vector<std::vector<std::string>>& commands) {
+  for (const std::vector<std::string>& command : commands) {
+    SCOPED_TRACE(command.front());
+    expect_refusal(run_haptex(command), {damaged, "damaged"});
+    EXPECT_EQ(partial_files(d.path()), std::vector<std::string>{});
+  }
+}
+
+TEST(DamagedHeader, ADatasetWithADamagedAttributeHeaderIsRefusedByEveryReader) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string dataset = d.file("d.h5");
+  copy_with_damaged_attribute(p.dataset, "lowpass_filter", dataset);
+  const std::string material = small_material();
+  expect_refused_everywhere(d, dataset,
+                            {{"info", dataset},
+                             {"qa", dataset},
+                             {"split", dataset, "-o", d.file("s.json")},
+                             {"view", dataset, "-o", d.file("site")},
+                             {"trajectory", dataset, "--material", material, "-o", d.file("t.csv")},
+                             {"merge", dataset, "-o", d.file("m.h5")}});
+  for (const char* output : {"s.json", "s.plots", "site", "t.csv", "m.h5"}) EXPECT_FALSE(fs::exists(d.file(output))) << output;
+}
+
+TEST(DamagedHeader, AGelsightFileWithADamagedAttributeHeaderIsRefusedByAlign) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string gelsight = d.file("g.h5");
+  copy_with_damaged_attribute(p.gelsight, "fps", gelsight);
+  expect_refused_everywhere(d, gelsight,
+                            {{"info", gelsight}, {"align", "--recordings", p.recordings, "--gelsight", gelsight, "-o", d.file("a.h5")}});
+  EXPECT_FALSE(fs::exists(d.file("a.h5")));
+}
+
+TEST(DamagedHeader, APressFileWithADamagedRootAttributeIsRefusedByExtractAndReplay) {
+  const TempDir d;
+  ASSERT_EQ(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "--presses", "1", "-o",
+                        d.file("s")}).exit_code, 0);
+  fs::create_directory(d.file("take"));
+  const std::string press = d.file("take/press_0.h5");
+  copy_with_damaged_attribute(d.file("s/press_0.h5"), "material_id", press);
+  expect_refused_everywhere(d, press,
+                            {{"capture", "extract", d.file("take"), "-o", d.file("g.h5")},
+                             {"capture", "record", "--device", "replay:" + press + ",lockstep", "--material", "Cork", "-o", d.file("r")}});
+  for (const char* output : {"g.h5", "g_sheets", "r"}) EXPECT_FALSE(fs::exists(d.file(output))) << output;
+}
+
+}  // namespace
+}  // namespace haptex::test
