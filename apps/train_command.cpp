@@ -20,6 +20,7 @@
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
 #include "core/json/schema.hpp"
+#include "core/sha256.hpp"
 #include "core/text/utf8.hpp"
 #include "core/version.hpp"
 #include "dataset/format.hpp"
@@ -80,6 +81,7 @@ class TrainCommand : public Command {
     refuse_output_among_inputs(log_, input_.files());
     check_output_path(output_, force_);
     if (force_) h5::require_replaceable(output_, dataset::format_name(dataset::Kind::model));  // before the training, not after
+    const EarlierModel earlier = earlier_model();
     json::check_replaceable_json(log_, force_, predict::kTrainingLogFormat);
     options_.variant = per_material_ ? predict::Variant::per_material : predict::Variant::unified;
     const auto start = std::chrono::steady_clock::now();
@@ -107,9 +109,16 @@ class TrainCommand : public Command {
                                 {"parameters", parameters(model)}, {"seconds", seconds}};
     PartialFile log_file(log_, force_, [](const std::string& p) { json::check_replaceable_json(p, true, predict::kTrainingLogFormat); });
     json::write_file(log, "training-log.schema.json", log_file);
-    // --force with --log elsewhere: the log beside the model it replaces describes that model, so it goes too.
+    model_file.root().set_attr(predict::kTrainingLogAttribute, path_from_output(log_, output_));
+    model_file.root().set_attr(predict::kTrainingLogSha256Attribute, sha256_file(log_file.path()));
+    // --force with --log elsewhere: the log beside the model it replaces describes that model, so it goes
+    // too; so does the log the replaced model names (written under --log), while it is that run's.
     EarlierOutput earlier_log(default_log(), [this](const std::string& path) { return describes_this_model(path); });
-    commit_together({&model_file, &log_file, force_ && !same_output_path(log_, default_log()) ? &earlier_log : nullptr});
+    EarlierOutput recorded_log(earlier.log, [&earlier](const std::string& path) { return still_written(path, earlier.sha256); });
+    const bool recorded_elsewhere =
+        !earlier.log.empty() && !same_output_path(earlier.log, log_) && !same_output_path(earlier.log, default_log());
+    commit_together({&model_file, &log_file, force_ && !same_output_path(log_, default_log()) ? &earlier_log : nullptr,
+                     force_ && recorded_elsewhere ? &recorded_log : nullptr});
     if (global.json)
       std::cout << log.dump(2) << "\n";
     else if (!global.quiet)
@@ -119,6 +128,35 @@ class TrainCommand : public Command {
 
  private:
   std::string default_log() const { return std::filesystem::path(output_).replace_extension(".training.json").string(); }
+
+  // The training log the model at output_ names (empty when it names none, or there is no such model),
+  // and its SHA-256 as written.
+  struct EarlierModel {
+    std::string log, sha256;
+  };
+  EarlierModel earlier_model() const {
+    std::error_code ec;
+    if (!force_ || !std::filesystem::is_regular_file(output_, ec)) return {};
+    try {
+      const h5::Group root = h5::File::open(output_).root();
+      const auto log = root.try_attr<std::string>(predict::kTrainingLogAttribute);
+      const auto sha256 = root.try_attr<std::string>(predict::kTrainingLogSha256Attribute);
+      if (!log || !sha256) return {};
+      return {path_of_recorded(*log, output_), *sha256};
+    } catch (const Error&) {
+      return {};
+    }
+  }
+
+  // A training log haptex wrote, holding the bytes whose SHA-256 is `sha256`.
+  static bool still_written(const std::string& path, const std::string& sha256) {
+    try {
+      json::check_replaceable_json(path, true, predict::kTrainingLogFormat);
+      return sha256_file(path) == sha256;
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
 
   // A training log haptex wrote for the model at output_.
   bool describes_this_model(const std::string& path) const {

@@ -74,7 +74,7 @@ void EarlierOutput::drop_earlier() {
   moved_ = false;
 }
 
-void commit_together(std::initializer_list<StagedOutput*> outputs) {
+void commit_together(const std::vector<StagedOutput*>& outputs) {
   std::vector<StagedOutput*> members;
   for (StagedOutput* output : outputs)
     if (output) members.push_back(output);
@@ -90,6 +90,14 @@ void commit_together(std::initializer_list<StagedOutput*> outputs) {
     throw;
   }
   for (StagedOutput* output : members) output->drop_earlier();
+}
+
+std::string path_from_output(const std::string& companion, const std::string& output) {
+  return fs::absolute(companion).lexically_relative(fs::absolute(output).parent_path()).string();
+}
+
+std::string path_of_recorded(const std::string& recorded, const std::string& output) {
+  return (fs::path(output).parent_path() / recorded).lexically_normal().string();
 }
 
 }  // namespace haptex

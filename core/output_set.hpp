@@ -7,8 +7,8 @@
 // versions it replaced included, before it rethrows. Only when all are in place are the earlier
 // versions removed. A signal taken meanwhile waits (hold_temporaries).
 #include <functional>
-#include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace haptex {
 
@@ -63,8 +63,16 @@ class EarlierOutput : public StagedOutput {
   int fd_ = -1;  // the lock of aside_ (core/temporary_name.hpp)
 };
 
-// finish(), check_place(), put_in_place() of every output, then drop_earlier(); on an error, every
-// output already in place is taken back (last first) and the error rethrown.
-void commit_together(std::initializer_list<StagedOutput*> outputs);
+// finish(), check_place(), put_in_place() of every output (null ones left out), then drop_earlier(); on
+// an error, every output already in place is taken back (last first) and the error rethrown.
+void commit_together(const std::vector<StagedOutput*>& outputs);
+
+// A companion as its output records it (a model's training log, a press's contact sheet): its path
+// relative to the output's folder, so the record holds wherever the two are moved together. An output
+// replaced with --force names the companions its run wrote, which go with it when the new run writes
+// them elsewhere or not at all (docs/architecture.md, "Outputs are atomic").
+std::string path_from_output(const std::string& companion, const std::string& output);
+// The companion's path again, from what path_from_output recorded in `output`.
+std::string path_of_recorded(const std::string& recorded, const std::string& output);
 
 }  // namespace haptex

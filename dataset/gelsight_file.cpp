@@ -34,6 +34,7 @@ void set_press_attributes(h5::Group& g, const GelsightPress& p) {
   g.set_attr(layout::kTrigger, double(p.trigger));
   g.set_attr(layout::kRelease, double(p.release));
   if (!p.contact_sheet.empty()) g.set_attr(layout::kContactSheet, p.contact_sheet);
+  if (!p.contact_sheet_sha256.empty()) g.set_attr(layout::kContactSheetSha256, p.contact_sheet_sha256);
   g.set_attr(layout::kSourceFramesUnreadable, p.source_frames_unreadable);
 }
 

@@ -35,6 +35,7 @@ struct GelsightPress {
   std::string reference_note;
   float noise = 0, pixel_threshold = 0, level = 0, trigger = 0, release = 0;
   std::string contact_sheet;                        // path of its PNG relative to the gelsight file, or empty
+  std::string contact_sheet_sha256;                 // that PNG's SHA-256
   std::int64_t source_frames_unreadable = 0;        // frames of the source that did not decode (none is kept)
 };
 

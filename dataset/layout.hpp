@@ -84,6 +84,9 @@ inline constexpr const char* kPixelThreshold = "pixel_threshold";
 inline constexpr const char* kTrigger = "trigger";
 inline constexpr const char* kRelease = "release";
 inline constexpr const char* kContactSheet = "contact_sheet";
+// The SHA-256 of the press's contact sheet as written, by which --force knows an earlier sheet folder
+// as the file's (capture extract).
+inline constexpr const char* kContactSheetSha256 = "contact_sheet_sha256";
 inline constexpr const char* kSourceFramesUnreadable = "source_frames_unreadable";
 
 inline constexpr const char* kPressMaterial = "material";     // the press file's material name

@@ -7,6 +7,7 @@
 #include <future>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 
 #include <opencv2/imgproc.hpp>
@@ -21,6 +22,8 @@
 #include "core/durable_file.hpp"
 #include "core/output_is_input.hpp"
 #include "core/error.hpp"
+#include "core/h5/file.hpp"
+#include "dataset/layout.hpp"
 #include "core/naming.hpp"
 #include "core/parallel.hpp"
 #include "core/partial_directory.hpp"
@@ -35,8 +38,54 @@ namespace haptex::capture {
 namespace fs = std::filesystem;
 namespace {
 
+constexpr const char* kExtractCommand = "haptex capture extract";
+
 // Folders an earlier extraction wrote, which --force retires with the file they describe.
-bool extraction_folder(const std::string& dir) { return is_haptex_folder(dir, "haptex capture extract"); }
+bool extraction_folder(const std::string& dir) { return is_haptex_folder(dir, kExtractCommand); }
+
+// The contact sheets an earlier gelsight file at `output` names, by folder: each sheet's file name and
+// its SHA-256 as written. Empty when there is no such file or it cannot be read.
+using RecordedSheets = std::map<std::string, std::map<std::string, std::string>>;
+
+RecordedSheets recorded_sheets(const std::string& output) {
+  RecordedSheets recorded;
+  try {
+    std::error_code ec;
+    if (!fs::is_regular_file(output, ec)) return recorded;
+    const h5::Group materials = h5::File::open(output).root().open_group(dataset::layout::kMaterials);
+    for (const std::string& material : materials.children()) {
+      const h5::Group presses = materials.open_group(material).open_group(dataset::layout::kPresses);
+      for (const std::string& j : presses.children()) {
+        const h5::Group press = presses.open_group(j);
+        const auto sheet = press.try_attr<std::string>(dataset::layout::kContactSheet);
+        const auto sha256 = press.try_attr<std::string>(dataset::layout::kContactSheetSha256);
+        if (!sheet || !sha256) continue;
+        const fs::path path = path_of_recorded(*sheet, output);
+        recorded[path.parent_path().string()][path.filename().string()] = *sha256;
+      }
+    }
+  } catch (const Error&) {
+    return {};
+  }
+  return recorded;
+}
+
+// Whether `folder` holds, beside its haptex-files.json, exactly the `sheets` an earlier extraction wrote
+// there, each still the bytes it wrote (review 27, F2: `--sheets shx` was kept beside the file that
+// replaced the one it described).
+bool holds_just(const std::string& folder, const std::map<std::string, std::string>& sheets) {
+  if (!extraction_folder(folder)) return false;
+  std::size_t files = 0;
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name == kFileListName) continue;
+    const auto recorded = sheets.find(name);
+    if (recorded == sheets.end() || !entry.is_regular_file(ec) || sha256_file(entry.path().string()) != recorded->second) return false;
+    ++files;
+  }
+  return !ec && files == sheets.size();
+}
 
 
 // One PNG (a contact sheet, a score chart) into a folder being built.
@@ -78,11 +127,6 @@ SourceDetection detection_of(const std::string& path, const SourceScores& scores
   return d;
 }
 
-std::string relative_to_output(const std::string& file, const std::string& output) {
-  const fs::path base = fs::absolute(output).parent_path();
-  return fs::absolute(file).lexically_relative(base).string();
-}
-
 // The source's scores, thresholds, reference frames and presses, for a chart.
 ScoreChart chart_of(const SourceScores& scores, const std::vector<PressPlan>& plans, const SourceDetection& d) {
   ScoreChart c;
@@ -106,19 +150,20 @@ bool sheets_at_default_place(const std::string& output, const ExtractOptions& op
 
 class Extraction {
  public:
-  Extraction(const std::string& output, const ExtractOptions& options)
-      : output_(output), options_(options), settings_(options.settings), writer_(output, options.overwrite, options.provenance) {
+  Extraction(const std::string& output, const ExtractOptions& options, std::vector<std::string> inputs)
+      : output_(output), options_(options), settings_(options.settings), writer_(output, options.overwrite, options.provenance),
+        inputs_(std::move(inputs)) {
     if (options.reference_path) {
       settings_.reference_image = load_reference(*options.reference_path);
       settings_.reference_image_path = *options.reference_path;
     }
     if (options.sheets)
       sheets_ = std::make_unique<PartialDirectory>(options.sheets_dir.empty() ? default_sheets_dir(output) : options.sheets_dir,
-                                                   FolderOptions{options.overwrite, "contact sheet folder", "--sheets", "haptex capture extract"});
+                                                   FolderOptions{options.overwrite, "contact sheet folder", "--sheets", kExtractCommand});
     if (options.explain)
       explain_ = std::make_unique<PartialDirectory>(default_explain_dir(output),
                                                     FolderOptions{options.overwrite, "explain folder", "-o (the folder is named after it)",
-                                                                  "haptex capture extract"});
+                                                                  kExtractCommand});
   }
 
   // One source opened, its frames scored and its presses planned: what write() reads the kept frames
@@ -198,8 +243,21 @@ class Extraction {
     // extraction wrote for the file replaced describe it, so they go too; anything else there stays.
     EarlierOutput earlier_sheets(default_sheets_dir(output_), extraction_folder), earlier_explain(default_explain_dir(output_), extraction_folder);
     const bool retire = options_.overwrite;
-    commit_together({&writer_.output(), explain_.get(), sheets_.get(), retire && !sheets_at_default_place(output_, options_) ? &earlier_sheets : nullptr,
-                     !explain_ && retire ? &earlier_explain : nullptr});
+    std::vector<StagedOutput*> outputs{&writer_.output(), explain_.get(), sheets_.get(),
+                                       retire && !sheets_at_default_place(output_, options_) ? &earlier_sheets : nullptr,
+                                       !explain_ && retire ? &earlier_explain : nullptr};
+    // Sheets the earlier file names under a name of their own (--sheets) go too, when the new run does
+    // not write there and they are still those the earlier file names (checked again as they go).
+    std::vector<std::unique_ptr<EarlierOutput>> recorded;
+    if (retire)
+      for (const auto& [folder, sheets] : recorded_sheets(output_)) {
+        if (same_output_path(folder, default_sheets_dir(output_)) || (sheets_ && same_output_path(folder, sheets_->final_path())) ||
+            holds_an_input(folder))
+          continue;
+        recorded.push_back(std::make_unique<EarlierOutput>(folder, [sheets](const std::string& dir) { return holds_just(dir, sheets); }));
+        outputs.push_back(recorded.back().get());
+      }
+    commit_together(outputs);
     if (explain_) result_.explain_dir = explain_->final_path();
     if (sheets_) result_.sheets_dir = sheets_->final_path();
     return result_;
@@ -286,14 +344,18 @@ class Extraction {
     p.release = contact.release();
     p.source_frames_unreadable = scores.unreadable_frames + source.frames_missing();
     const std::string id = material_id(material);
-    std::string sheet_name;
+    // The sheet is made first: the file records its SHA-256 (layout::kContactSheetSha256).
+    const int number = next_press_number(id);
+    const std::string sheet_name = id + "_press_" + std::to_string(number) + ".png";
+    std::vector<std::uint8_t> sheet;
     if (sheets_) {
-      sheet_name = id + "_press_" + std::to_string(next_press_number(id)) + ".png";
-      p.contact_sheet = relative_to_output((fs::path(sheets_->final_path()) / sheet_name).string(), output_);
+      sheet = contact_sheet_png(sheet_input(material, number, source, scores, plan, peak, result_.detections.back()));
+      p.contact_sheet = path_from_output((fs::path(sheets_->final_path()) / sheet_name).string(), output_);
+      p.contact_sheet_sha256 = sha256_hex({reinterpret_cast<const char*>(sheet.data()), sheet.size()});
     }
     const int j = writer_.add_press(material, p);
-    if (sheets_)
-      write_png(*sheets_, sheet_name, contact_sheet_png(sheet_input(material, j, source, scores, plan, peak, result_.detections.back())));
+    if (j != number) throw failure("internal: press " + std::to_string(j) + " of " + id + " was numbered " + std::to_string(number));
+    if (sheets_) write_png(*sheets_, sheet_name, sheet);
     result_.presses.push_back({material, id, source.path(), j, plan.press_in_source, p.frame_start, p.frame_end,
                                p.contact_first, p.contact_last, p.peak_index, p.peak_score, p.contact_sheet});
   }
@@ -326,6 +388,15 @@ class Extraction {
   ExtractSettings settings_;
   dataset::GelsightWriter writer_;
   std::unique_ptr<PartialDirectory> sheets_, explain_;
+  std::vector<std::string> inputs_;  // every file read, those found in input folders included
+
+  // Whether `folder` is, or holds, one of the inputs: never retired, though the earlier file names it.
+  bool holds_an_input(const std::string& folder) const {
+    for (const std::string& input : inputs_)
+      for (fs::path at = fs::absolute(input); at.has_relative_path(); at = at.parent_path())
+        if (same_output_path(at.string(), folder)) return true;
+    return false;
+  }
   std::set<std::string> explain_names_;
   std::map<std::string, std::string> source_by_sha_;                      // SHA-256 -> the source first with it
   std::map<std::string, std::pair<std::string, std::string>> spelling_;  // material id -> (name, the source first with it)
@@ -380,7 +451,7 @@ ExtractResult extract_presses(const std::vector<std::string>& inputs, const std:
   if (options.overwrite && !options.explain)
     EarlierOutput::require_retirable(default_explain_dir(output), extraction_folder, "the score chart folder",
                                      "Move your files out of it (or the folder away), or add --explain");
-  Extraction extraction(output, options);
+  Extraction extraction(output, options, found);
   // Videos and image sequences are analysed a few at a time on as many threads, the next few while
   // the last are written, and written in their order, so the output is the same whatever the cores.
   // Press files go one at a time (HDF5 runs one call at a time even in its thread-safe build; their

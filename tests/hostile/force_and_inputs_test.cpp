@@ -572,6 +572,50 @@ TEST(Force, CompanionsOfAReplacedOutputGoWithIt) {
   EXPECT_TRUE(fs::exists(d.file("other.json")));
 }
 
+// Review 27, F2: companions written under a chosen name (--sheets shx, --log a.json) were kept beside
+// the output that replaced theirs. The replaced output names them and the SHA-256 they were written
+// with (a gelsight file's contact_sheets and the hash of their haptex-files.json, a model's
+// training_log and the log's hash): those go, while a folder holding a file of the user's, or a
+// companion another run wrote since at that name, stays.
+TEST(Force, CompanionsAtChosenNamesGoWithTheirOutput) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const std::string videos = (fs::path(p.recordings).parent_path() / "synth" / "gelsight").string(), woven = videos + "/Woven 1";
+  const auto extract = [&](const std::string& input, const std::string& output, std::vector<std::string> more) {
+    std::vector<std::string> args{"capture", "extract", input, "-o", d.file(output), "-q"};
+    args.insert(args.end(), more.begin(), more.end());
+    return run_haptex(args).exit_code;
+  };
+  ASSERT_EQ(extract(videos, "g.h5", {"--sheets", d.file("shx")}), 0);
+  ASSERT_EQ(extract(woven, "g.h5", {"--force"}), 0);
+  EXPECT_FALSE(fs::exists(d.file("shx"))) << "the replaced file's sheets";
+  EXPECT_TRUE(fs::exists(d.file("g_sheets")));
+  ASSERT_EQ(extract(videos, "g.h5", {"--force", "--sheets", d.file("shy")}), 0);
+  EXPECT_FALSE(fs::exists(d.file("g_sheets"))) << "the default-named sheets of the file replaced";
+  std::ofstream(d.file("shy/mine.txt")) << "precious\n";
+  ASSERT_EQ(extract(woven, "g.h5", {"--force", "--no-sheets"}), 0);
+  EXPECT_EQ(file_bytes(d.file("shy/mine.txt")), "precious\n") << "a folder holding a file of the user's stays";
+  // Another run's sheets now at the name the earlier file recorded: not that file's, so they stay.
+  ASSERT_EQ(extract(videos, "g1.h5", {"--sheets", d.file("shz")}), 0);
+  ASSERT_EQ(extract(woven, "g2.h5", {"--sheets", d.file("shz"), "--force"}), 0);
+  ASSERT_EQ(extract(woven, "g1.h5", {"--force", "--no-sheets"}), 0);
+  EXPECT_TRUE(fs::exists(d.file("shz/haptex-files.json"))) << "g2.h5's sheets";
+
+  const auto train = [&](const std::string& model, std::vector<std::string> more) {
+    std::vector<std::string> args = quick_train_args(p.dataset, p.split, d.file(model));
+    args.insert(args.end(), more.begin(), more.end());
+    return run_haptex(args).exit_code;
+  };
+  ASSERT_EQ(train("m.h5", {"--log", d.file("a.json")}), 0);
+  ASSERT_EQ(train("m.h5", {"--force"}), 0);
+  EXPECT_FALSE(fs::exists(d.file("a.json"))) << "the log of the model replaced";
+  EXPECT_TRUE(fs::exists(d.file("m.training.json")));
+  ASSERT_EQ(train("m.h5", {"--force", "--log", d.file("b.json")}), 0);
+  ASSERT_EQ(train("n.h5", {"--log", d.file("b.json"), "--force"}), 0);
+  ASSERT_EQ(train("m.h5", {"--force"}), 0);
+  EXPECT_TRUE(fs::exists(d.file("b.json"))) << "n.h5's log now, not the replaced model's";
+}
+
 // A dangling link at the output path is refused, with --force or without: it is not haptex's.
 TEST(Force, ADanglingLinkAtTheOutputIsRefused) {
   const TempDir d;
