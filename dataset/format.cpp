@@ -126,11 +126,12 @@ void require_kind(const h5::File& file, Kind kind) {
 
 namespace {
 
-// The kinds whose encoded images (or frames) a reader of the kind reads: their variable-length values
+// The kinds whose every reader reads their encoded images (or frames): their variable-length values
 // are probed when the file is opened (core/h5/structure_probe.hpp), so damage there is the file's
-// refusal, not a finding on whichever press is read first.
+// refusal, not a finding on whichever press is read first. A dataset's are probed when the first is
+// read, since most of its readers (trajectory, windows, split) read none.
 void probe_images(const std::string& path, Kind kind) {
-  if (kind == Kind::press || kind == Kind::gelsight || kind == Kind::dataset) h5::probe_values(path);
+  if (kind == Kind::press || kind == Kind::gelsight) h5::probe_values(path);
 }
 
 }  // namespace
