@@ -102,19 +102,20 @@ class TrainCommand : public Command {
     predict::write_model(model, model_file, global.command_line);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const nlohmann::json log = {{"format", predict::kTrainingLogFormat}, {"haptex_version", kVersion}, {"created_utc", h5::utc_now_iso8601()},
-                                {"source", global.command_line}, {"model", output_},
+                                {"source", global.command_line}, {"model", output_}, {"model_file", relative_to_folder_of(output_, log_)},
                                 {"dataset", {{"path", input_.dataset}, {"sha256", split.dataset_sha256}}},
                                 {"split", {{"path", input_.split}, {"sha256", split.manifest_sha256}}},
                                 {"options", options_.to_json()}, {"epochs", epochs}, {"metrics", model.metrics},
                                 {"parameters", parameters(model)}, {"seconds", seconds}};
     PartialFile log_file(log_, force_, [](const std::string& p) { json::check_replaceable_json(p, true, predict::kTrainingLogFormat); });
     json::write_file(log, "training-log.schema.json", log_file);
-    model_file.root().set_attr(predict::kTrainingLogAttribute, path_from_output(log_, output_));
+    model_file.root().set_attr(predict::kTrainingLogAttribute, relative_to_folder_of(log_, output_));
     model_file.root().set_attr(predict::kTrainingLogSha256Attribute, sha256_file(log_file.path()));
     // --force with --log elsewhere: the log beside the model it replaces describes that model, so it goes
     // too; so does the log the replaced model names (written under --log), while it is that run's.
     EarlierOutput earlier_log(default_log(), [this](const std::string& path) { return describes_this_model(path); });
-    EarlierOutput recorded_log(earlier.log, [&earlier](const std::string& path) { return still_written(path, earlier.sha256); });
+    EarlierOutput recorded_log(earlier.log,
+                               [&](const std::string& path) { return still_written(path, earlier.sha256) && describes_this_model(path); });
     const bool recorded_elsewhere =
         !earlier.log.empty() && !same_output_path(earlier.log, log_) && !same_output_path(earlier.log, default_log());
     commit_together({&model_file, &log_file, force_ && !same_output_path(log_, default_log()) ? &earlier_log : nullptr,
@@ -142,7 +143,7 @@ class TrainCommand : public Command {
       const auto log = root.try_attr<std::string>(predict::kTrainingLogAttribute);
       const auto sha256 = root.try_attr<std::string>(predict::kTrainingLogSha256Attribute);
       if (!log || !sha256) return {};
-      return {path_of_recorded(*log, output_), *sha256};
+      return {resolved_beside(*log, output_), *sha256};
     } catch (const Error&) {
       return {};
     }
@@ -158,12 +159,17 @@ class TrainCommand : public Command {
     }
   }
 
-  // A training log haptex wrote for the model at output_.
+  // A training log haptex wrote for the model at output_: its `model_file` (relative to the log's
+  // folder) is that file, however either is spelled; a log of an older haptex names it by `model`, as
+  // typed. A log the model names that names another file (a copy's original, a merge's shard) is not it.
   bool describes_this_model(const std::string& path) const {
     try {
       json::check_replaceable_json(path, true, predict::kTrainingLogFormat);
       const nlohmann::json log = json::read_file(path);
-      return log.is_object() && log.value("model", nlohmann::json()) == nlohmann::json(output_);
+      if (!log.is_object()) return false;
+      if (const auto file = log.find("model_file"); file != log.end() && file->is_string())
+        return same_output_path(resolved_beside(file->get<std::string>(), path), output_);
+      return log.value("model", nlohmann::json()) == nlohmann::json(output_);
     } catch (const std::exception&) {
       return false;
     }

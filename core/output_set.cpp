@@ -92,12 +92,12 @@ void commit_together(const std::vector<StagedOutput*>& outputs) {
   for (StagedOutput* output : members) output->drop_earlier();
 }
 
-std::string path_from_output(const std::string& companion, const std::string& output) {
-  return fs::absolute(companion).lexically_relative(fs::absolute(output).parent_path()).string();
+std::string relative_to_folder_of(const std::string& path, const std::string& file) {
+  return fs::absolute(path).lexically_relative(fs::absolute(file).parent_path()).string();
 }
 
-std::string path_of_recorded(const std::string& recorded, const std::string& output) {
-  return (fs::path(output).parent_path() / recorded).lexically_normal().string();
+std::string resolved_beside(const std::string& recorded, const std::string& file) {
+  return (fs::path(file).parent_path() / recorded).lexically_normal().string();
 }
 
 }  // namespace haptex

@@ -67,12 +67,13 @@ class EarlierOutput : public StagedOutput {
 // an error, every output already in place is taken back (last first) and the error rethrown.
 void commit_together(const std::vector<StagedOutput*>& outputs);
 
-// A companion as its output records it (a model's training log, a press's contact sheet): its path
-// relative to the output's folder, so the record holds wherever the two are moved together. An output
-// replaced with --force names the companions its run wrote, which go with it when the new run writes
-// them elsewhere or not at all (docs/architecture.md, "Outputs are atomic").
-std::string path_from_output(const std::string& companion, const std::string& output);
-// The companion's path again, from what path_from_output recorded in `output`.
-std::string path_of_recorded(const std::string& recorded, const std::string& output);
+// How an output and its companion name each other (a model and its training log, a gelsight file and
+// its contact sheets): `path` relative to the folder of `file`, so the record holds wherever the two
+// are moved together. An output replaced with --force names the companions its run wrote, which go
+// with it when the new run writes them elsewhere or not at all, while they still hold the bytes it
+// recorded and name it back (docs/architecture.md, "Outputs are atomic").
+std::string relative_to_folder_of(const std::string& path, const std::string& file);
+// The path again, from what relative_to_folder_of recorded in (or beside) `file`.
+std::string resolved_beside(const std::string& recorded, const std::string& file);
 
 }  // namespace haptex

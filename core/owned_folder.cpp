@@ -49,18 +49,19 @@ FileList listed_files(const std::string& folder, const fs::path& list_path) {
 
 }  // namespace
 
-void write_file_list(const std::string& dir, std::string_view written_by) {
+void write_file_list(const std::string& dir, std::string_view written_by, std::string_view owner) {
   nlohmann::json files = nlohmann::json::array(), hashes = nlohmann::json::object();
   for (const fs::directory_entry& entry : fs::recursive_directory_iterator(dir)) {
     files.push_back(listed_name(entry.path(), dir));
     if (entry.is_regular_file()) hashes[listed_name(entry.path(), dir)] = sha256_file(entry.path().string());
   }
-  const nlohmann::json list = {
+  nlohmann::json list = {
       {"about", "The files haptex wrote in this folder. haptex --force replaces the folder only while it holds "
                 "nothing else; add a file of your own and it refuses."},
       {"written_by", written_by},
       {"files", files},
       {"sha256", hashes}};
+  if (!owner.empty()) list["owner"] = owner;
   write_file_durably((fs::path(dir) / kFileListName).string(), list.dump(1) + "\n", false);
 }
 
@@ -106,6 +107,17 @@ bool is_haptex_folder(const std::string& folder, std::string_view written_by) {
     return false;
   }
   return true;
+}
+
+std::string folder_owner(const std::string& folder) {
+  try {
+    const nlohmann::json list = json::read_file((fs::path(folder) / kFileListName).string());
+    const auto owner = list.is_object() ? list.find("owner") : list.end();
+    if (!list.is_object() || owner == list.end() || !owner->is_string()) return "";
+    return (fs::path(folder) / owner->get<std::string>()).lexically_normal().string();
+  } catch (const Error&) {
+    return "";
+  }
 }
 
 }  // namespace haptex

@@ -10,8 +10,14 @@ namespace haptex {
 inline constexpr std::string_view kFileListName = "haptex-files.json";
 
 // Writes dir/haptex-files.json naming every file and folder now under dir (paths relative to it),
-// with each file's SHA-256. Call it last, just before the folder is synced and renamed into place.
-void write_file_list(const std::string& dir, std::string_view written_by);
+// with each file's SHA-256, and `owner`, when given: the output the folder belongs to, relative to the
+// folder (a gelsight file's contact sheets: "../g.h5"). Call it last, just before the folder is synced
+// and renamed into place.
+void write_file_list(const std::string& dir, std::string_view written_by, std::string_view owner = {});
+
+// The output folder's haptex-files.json names as its owner (resolved from the folder's place), or
+// empty when it names none or cannot be read.
+std::string folder_owner(const std::string& folder);
 
 // For --force on a folder about to be replaced: throws haptex::Error (bad input) when folder holds
 // anything its haptex-files.json does not list (naming the first such file), a listed file whose

@@ -101,13 +101,18 @@ void PartialDirectory::fill(const std::function<void(const std::string& dir)>& w
 void PartialDirectory::finish() {
   if (finished_) return;
   fill([&](const std::string& dir) {
-    write_file_list(dir, options_.written_by);
+    write_file_list(dir, options_.written_by, owner_);
     fsync_tree(dir);
   });
   finished_ = true;
 }
 
 void PartialDirectory::commit() { commit_together({this}); }
+
+void PartialDirectory::belongs_to(const std::string& output) {
+  // The folder's own place, not its temporary one: the list is read there.
+  owner_ = std::filesystem::absolute(output).lexically_relative(std::filesystem::absolute(final_)).string();
+}
 
 void PartialDirectory::check_place() const {
   std::error_code ec;

@@ -44,6 +44,8 @@ class PartialDirectory : public StagedOutput {
   // naming DIR, not the temporary folder: the user asked for DIR ("REPORT/report.md: cannot write
   // it: the disk is full").
   void fill(const std::function<void(const std::string& dir)>& write) const;
+  // The output the folder belongs to, which its haptex-files.json then names (write_file_list).
+  void belongs_to(const std::string& output);
   // Lists the files and syncs them all (failed: a full disk), without renaming: outputs that appear
   // together finish every one of them before the first is renamed. commit() finishes when not done.
   void finish() override;
@@ -58,7 +60,7 @@ class PartialDirectory : public StagedOutput {
   void drop_earlier() override;
 
  private:
-  std::string final_, path_;
+  std::string final_, path_, owner_;
   FolderOptions options_;
   int fd_ = -1;
   bool finished_ = false, committed_ = false;

@@ -60,7 +60,7 @@ RecordedSheets recorded_sheets(const std::string& output) {
         const auto sheet = press.try_attr<std::string>(dataset::layout::kContactSheet);
         const auto sha256 = press.try_attr<std::string>(dataset::layout::kContactSheetSha256);
         if (!sheet || !sha256) continue;
-        const fs::path path = path_of_recorded(*sheet, output);
+        const fs::path path = resolved_beside(*sheet, output);
         recorded[path.parent_path().string()][path.filename().string()] = *sha256;
       }
     }
@@ -164,6 +164,8 @@ class Extraction {
       explain_ = std::make_unique<PartialDirectory>(default_explain_dir(output),
                                                     FolderOptions{options.overwrite, "explain folder", "-o (the folder is named after it)",
                                                                   kExtractCommand});
+    for (PartialDirectory* folder : {sheets_.get(), explain_.get()})
+      if (folder) folder->belongs_to(output);
   }
 
   // One source opened, its frames scored and its presses planned: what write() reads the kept frames
@@ -247,14 +249,17 @@ class Extraction {
                                        retire && !sheets_at_default_place(output_, options_) ? &earlier_sheets : nullptr,
                                        !explain_ && retire ? &earlier_explain : nullptr};
     // Sheets the earlier file names under a name of their own (--sheets) go too, when the new run does
-    // not write there and they are still those the earlier file names (checked again as they go).
+    // not write there, they are still those the earlier file names, and their haptex-files.json names
+    // this file as theirs: not a copy's original, nor a merged file's shard (checked again as they go).
     std::vector<std::unique_ptr<EarlierOutput>> recorded;
     if (retire)
       for (const auto& [folder, sheets] : recorded_sheets(output_)) {
         if (same_output_path(folder, default_sheets_dir(output_)) || (sheets_ && same_output_path(folder, sheets_->final_path())) ||
             holds_an_input(folder))
           continue;
-        recorded.push_back(std::make_unique<EarlierOutput>(folder, [sheets](const std::string& dir) { return holds_just(dir, sheets); }));
+        recorded.push_back(std::make_unique<EarlierOutput>(folder, [this, sheets](const std::string& dir) {
+          return holds_just(dir, sheets) && same_output_path(folder_owner(dir), output_);
+        }));
         outputs.push_back(recorded.back().get());
       }
     commit_together(outputs);
@@ -350,7 +355,7 @@ class Extraction {
     std::vector<std::uint8_t> sheet;
     if (sheets_) {
       sheet = contact_sheet_png(sheet_input(material, number, source, scores, plan, peak, result_.detections.back()));
-      p.contact_sheet = path_from_output((fs::path(sheets_->final_path()) / sheet_name).string(), output_);
+      p.contact_sheet = relative_to_folder_of((fs::path(sheets_->final_path()) / sheet_name).string(), output_);
       p.contact_sheet_sha256 = sha256_hex({reinterpret_cast<const char*>(sheet.data()), sheet.size()});
     }
     const int j = writer_.add_press(material, p);

@@ -1,5 +1,6 @@
 #include "core/h5/structure_probe.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -50,11 +51,31 @@ std::vector<std::string> sanitizer_environment() {
 // A file as it was probed, and how deep.
 using FileVersion = std::tuple<dev_t, ino_t, off_t, long, long, ProbeDepth>;
 
+FileVersion version_of(const struct stat& s, ProbeDepth depth) {
+  return FileVersion{s.st_dev, s.st_ino, s.st_size, s.st_mtim.tv_sec, s.st_mtim.tv_nsec, depth};
+}
+
 std::optional<FileVersion> version_of(const std::string& path, ProbeDepth depth) {
   struct stat s {};
   if (::stat(path.c_str(), &s) != 0) return std::nullopt;
-  return FileVersion{s.st_dev, s.st_ino, s.st_size, s.st_mtim.tv_sec, s.st_mtim.tv_nsec, depth};
+  return version_of(s, depth);
 }
+
+// The file opened for the probe: it reads this very file through the descriptor, whatever the path
+// names in this process alone (/dev/stdin, /dev/fd/N: review 28, F3).
+class OpenedForProbe {
+ public:
+  explicit OpenedForProbe(const std::string& path) : fd_(::open(path.c_str(), O_RDONLY | O_CLOEXEC)) {}
+  ~OpenedForProbe() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  OpenedForProbe(const OpenedForProbe&) = delete;
+  OpenedForProbe& operator=(const OpenedForProbe&) = delete;
+  int fd() const { return fd_; }
+
+ private:
+  int fd_;
+};
 
 // What the probe said of each file: nothing when it read it all (or could not run), else the place,
 // finding and fix of the read that failed.
@@ -101,16 +122,16 @@ bool crash_signal(int signal) {
 
 // Runs the probe, under the sanitizer when it starts there (it does not under `ulimit -v`, which its
 // shadow memory exceeds), else without. Returns the exit code (128 + N for signal N) and its output.
-int run_probe(const std::string& path, ProbeDepth depth, std::string& output) {
+int run_probe(int fd, ProbeDepth depth, std::string& output) {
   process::ProgramRun run;
   run.argv = {probe_program()};
   if (depth == ProbeDepth::values) run.argv.push_back("--values");
-  run.argv.push_back(path);
+  run.argv.push_back("/dev/fd/" + std::to_string(process::kPassedDescriptor));
   run.environment = sanitizer_environment();
-  int code = process::run_program_reading(run, output, kMostProgressKept);
+  int code = process::run_program_reading(run, output, kMostProgressKept, fd);
   if (!run.environment.empty() && output.empty() && code != kProbeRead) {
     run.environment.clear();
-    code = process::run_program_reading(run, output, kMostProgressKept);
+    code = process::run_program_reading(run, output, kMostProgressKept, fd);
   }
   return code;
 }
@@ -118,14 +139,17 @@ int run_probe(const std::string& path, ProbeDepth depth, std::string& output) {
 Error damaged(const std::string& path, const std::vector<std::string>& said) { return input_error(path, said[0], said[1], said[2]); }
 
 void probe(const std::string& path, ProbeDepth depth) {
-  const std::optional<FileVersion> version = version_of(path, depth);
-  if (probe_program().empty() || !version) return;
+  if (probe_program().empty()) return;
+  const OpenedForProbe file(path);
+  struct stat s {};
+  if (file.fd() < 0 || ::fstat(file.fd(), &s) != 0) return;  // File::open says why
+  const std::optional<FileVersion> version = version_of(s, depth);
   if (const std::optional<std::vector<std::string>> said = verdicts().find(*version)) {
     if (said->empty()) return;
     throw damaged(path, *said);
   }
   std::string output;
-  const int code = run_probe(path, depth, output);
+  const int code = run_probe(file.fd(), depth, output);
   if (code == kProbeRefused) {
     const std::vector<std::string> said = last_records(output, 3);
     verdicts().keep(*version, said);

@@ -56,15 +56,17 @@ std::vector<char*> environment_of(const ProgramRun& run) {
 }
 
 // Starts the program; its standard output goes to `stdout_pipe` when that is a descriptor (>= 0), else
-// to run.stdout_path. Returns its pid, or -1 when it could not be started.
-pid_t start_program(const ProgramRun& run, int stdout_pipe) {
+// to run.stdout_path; `passed`, when one, becomes its kPassedDescriptor. Returns its pid, or -1 when it
+// could not be started.
+pid_t start_program(const ProgramRun& run, int stdout_pipe, int passed = -1) {
   if (run.argv.empty()) return -1;
   FileActions actions;
   const int out_flags = O_WRONLY | O_CREAT | O_TRUNC;  // no O_CLOEXEC: these are the child's own descriptors
   const bool out = stdout_pipe >= 0 ? actions.dup(stdout_pipe, STDOUT_FILENO) : actions.open(STDOUT_FILENO, run.stdout_path, out_flags);
   // Nothing else of haptex's reaches the child: not an output's lock, not a temporary being written.
   if (!actions.open(STDIN_FILENO, run.stdin_path, O_RDONLY) || !out || !actions.open(STDERR_FILENO, run.stderr_path, out_flags) ||
-      !actions.chdir(run.directory) || !actions.close_from(STDERR_FILENO + 1))
+      !actions.chdir(run.directory) || (passed >= 0 && !actions.dup(passed, kPassedDescriptor)) ||
+      !actions.close_from(passed >= 0 ? kPassedDescriptor + 1 : STDERR_FILENO + 1))
     return -1;
   std::vector<char*> argv;
   for (const std::string& arg : run.argv) argv.push_back(const_cast<char*>(arg.c_str()));
@@ -101,11 +103,11 @@ int run_program(const ProgramRun& run) {
   return pid < 0 ? kNotStarted : wait_for_program(pid);
 }
 
-int run_program_reading(const ProgramRun& run, std::string& tail, std::size_t most) {
+int run_program_reading(const ProgramRun& run, std::string& tail, std::size_t most, int descriptor) {
   tail.clear();
   int ends[2];
   if (pipe2(ends, O_CLOEXEC) != 0) return kNotStarted;
-  const pid_t pid = start_program(run, ends[1]);
+  const pid_t pid = start_program(run, ends[1], descriptor);
   ::close(ends[1]);
   char buffer[4096];
   for (;;) {

@@ -21,7 +21,9 @@ int run_program(const ProgramRun& run);
 
 // run_program, its standard output read through a pipe instead (stdout_path is not used): the last
 // `most` bytes of it in `tail`, the rest read and dropped so the program never waits on a full pipe.
-int run_program_reading(const ProgramRun& run, std::string& tail, std::size_t most);
+// `descriptor`, when one (>= 0), is given to the program as its descriptor 3 (kPassedDescriptor).
+int run_program_reading(const ProgramRun& run, std::string& tail, std::size_t most, int descriptor = -1);
+inline constexpr int kPassedDescriptor = 3;
 
 // Whether name is an executable file in one of PATH's folders (or, with a '/', at that path).
 bool program_on_path(const std::string& name);

@@ -42,6 +42,20 @@ TEST(DamagedHeader, ADatasetWithADamagedAttributeHeaderIsRefusedByEveryReader) {
   for (const char* output : {"s.json", "s.plots", "site", "t.csv", "m.h5"}) EXPECT_FALSE(fs::exists(d.file(output))) << output;
 }
 
+// Review 28, F3: named by a descriptor of haptex's own (/dev/stdin, /dev/fd/N), the file was not
+// opened by the probe, and haptex read it unprobed: SIGSEGV. The probe now reads the file haptex opened.
+TEST(DamagedHeader, AFileNamedByADescriptorIsProbedToo) {
+  const TempDir d;
+  const std::string dataset = d.file("d.h5");
+  copy_with_damaged_attribute(small_pipeline().dataset, "lowpass_filter", dataset);
+  for (const std::vector<std::string>& command :
+       {std::vector<std::string>{"info", "/dev/stdin"}, {"qa", "/dev/stdin"}, {"split", "/dev/stdin", "-o", d.file("s.json")}}) {
+    SCOPED_TRACE(command.front());
+    expect_refusal(run_haptex_fed(command, dataset), {"/dev/stdin", "damaged"});
+    EXPECT_EQ(partial_files(d.path()), std::vector<std::string>{});
+  }
+}
+
 TEST(DamagedHeader, AGelsightFileWithADamagedAttributeHeaderIsRefusedByAlign) {
   const SmallPipeline& p = small_pipeline();
   const TempDir d;

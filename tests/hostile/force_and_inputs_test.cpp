@@ -616,6 +616,39 @@ TEST(Force, CompanionsAtChosenNamesGoWithTheirOutput) {
   EXPECT_TRUE(fs::exists(d.file("b.json"))) << "n.h5's log now, not the replaced model's";
 }
 
+// Review 28, F1: a copy (or a merge) of an output carries its record of its companions, and --force over
+// the copy took the original's: its log, its sheets. A companion goes only when it names the output
+// replaced (the log's model_file, the sheet folder's owner). F2: the earlier default log was kept when
+// the model's path was spelled otherwise (./m.h5).
+TEST(Force, ACopysRecordTakesNotTheOriginalsCompanions) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  const auto train = [&](const std::string& model, std::vector<std::string> more) {
+    std::vector<std::string> args = quick_train_args(p.dataset, p.split, model);
+    args.insert(args.end(), more.begin(), more.end());
+    return run_haptex_in(d.path().string(), args).exit_code;
+  };
+  ASSERT_EQ(train("m.h5", {}), 0);
+  fs::copy_file(d.file("m.h5"), d.file("m_copy.h5"));
+  ASSERT_EQ(train("m_copy.h5", {"--force"}), 0);
+  EXPECT_TRUE(fs::exists(d.file("m.training.json"))) << "m.h5's log";
+  ASSERT_EQ(train("./m.h5", {"--force", "--log", "other.json"}), 0);
+  EXPECT_FALSE(fs::exists(d.file("m.training.json"))) << "the replaced model's log, however its path is spelled";
+
+  const std::string videos = (fs::path(p.recordings).parent_path() / "synth" / "gelsight").string();
+  const auto extract = [&](const std::string& input, const std::string& output, std::vector<std::string> more) {
+    std::vector<std::string> args{"capture", "extract", input, "-o", d.file(output), "-q"};
+    args.insert(args.end(), more.begin(), more.end());
+    return run_haptex(args).exit_code;
+  };
+  ASSERT_EQ(extract(videos, "g.h5", {}), 0);
+  fs::copy_file(d.file("g.h5"), d.file("g_copy.h5"));
+  ASSERT_EQ(run_haptex({"merge", "-o", d.file("all.h5"), d.file("g.h5"), "-q"}).exit_code, 0);
+  ASSERT_EQ(extract(videos + "/Woven 1", "g_copy.h5", {"--force"}), 0);
+  ASSERT_EQ(extract(videos + "/Woven 1", "all.h5", {"--force"}), 0);
+  EXPECT_TRUE(fs::exists(d.file("g_sheets/haptex-files.json"))) << "g.h5's sheets";
+}
+
 // A dangling link at the output path is refused, with --force or without: it is not haptex's.
 TEST(Force, ADanglingLinkAtTheOutputIsRefused) {
   const TempDir d;

@@ -47,5 +47,20 @@ TEST(StuckRead, AHeapThatLoopsHDF5IsBadInputNamingTheFrame) {
   EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{}) << "the run's temporaries are removed";
 }
 
+// Review 28, F4: the probe's processor time followed the file's size, so the same damage padded with a
+// sparse hole to 3 GB looped 86 s before it was refused. A hole counts for nothing.
+TEST(StuckRead, AHoleInTheFileBuysTheProbeNoTime) {
+  const TempDir dir;
+  const std::string damaged = press_file_with_a_looping_heap(dir);
+  ASSERT_FALSE(damaged.empty());
+  fs::resize_file(damaged, std::uintmax_t(3) << 30);  // sparse: a few hundred KB on disk
+  const auto start = std::chrono::steady_clock::now();
+  const CommandResult r = run_haptex({"capture", "extract", damaged, "-o", dir.file("g.h5"), "--no-sheets"});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  expect_refusal(r, {damaged, "does not end", "damaged"});
+  EXPECT_LT(seconds, 4 * kStuckCallSeconds) << "ended by the bound, not by the test's time limit";
+  EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+}
+
 }  // namespace
 }  // namespace haptex::test
