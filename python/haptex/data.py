@@ -57,6 +57,21 @@ def _regular_file(path):
     return path
 
 
+_MISSING = object()
+
+
+def _attribute(obj, name, path, default=_MISSING):
+    """obj.attrs[name] (`default` when it is missing and one is given); a HaptexFileError naming the file
+    and the attribute when HDF5 cannot read it, as haptex names it (review 29, F1: h5py's bare text)."""
+    try:
+        if default is not _MISSING and name not in obj.attrs:
+            return default
+        return obj.attrs[name]
+    except (KeyError, OSError, RuntimeError, ValueError) as e:
+        raise HaptexFileError(f"{path}: {obj.name.rstrip('/')}/@{name}: HDF5 could not read it ({e}); the file is damaged: copy it "
+                              f"again, or make it again with the haptex command that wrote it") from None
+
+
 def _text(value, where=""):
     """A string attribute or element as text; a HaptexFileError naming `where` when it is no UTF-8
     text (review 15, R15: a traceback)."""
@@ -71,7 +86,7 @@ def _text(value, where=""):
 
 
 def _check_format(f, path, wanted):
-    found = _text(f.attrs.get("haptex_format", ""))
+    found = _text(_attribute(f, "haptex_format", path, ""))
     if found != wanted:
         raise HaptexFileError(f"{path}: /@haptex_format is '{found}', not {wanted}")
 
@@ -148,8 +163,8 @@ def read_windows(path):
         _check_format(f, path, "windows/2")
         require_plain_objects(f, path)
         w = _read_table(f["windows"], path)
-        w.dataset_sha256 = _text(f.attrs["dataset_sha256"], f"{path}: /@dataset_sha256")
-        w.split_sha256 = _text(f.attrs["split_sha256"], f"{path}: /@split_sha256")
+        w.dataset_sha256 = _text(_attribute(f, "dataset_sha256", path), f"{path}: /@dataset_sha256")
+        w.split_sha256 = _text(_attribute(f, "split_sha256", path), f"{path}: /@split_sha256")
     return w
 
 
@@ -365,7 +380,7 @@ def read_set_windows(dataset_path, split, sets=("train",)):
             wanted = [s for name in sets for s in split.material_sections[material_id][name]]
             for k in np.unique(w.recording[w.material == m]):
                 rows = (w.material == m) & (w.recording == k)
-                samples = int(f[f"materials/{material_id}/recordings/{k}"].attrs["samples"])
+                samples = int(_attribute(f[f"materials/{material_id}/recordings/{k}"], "samples", dataset_path))
                 w.section[rows] = section_of(w.start[rows], samples, split.sections)
                 keep |= rows & np.isin(w.section, wanted)
     w.dataset_sha256, w.split_sha256 = split.dataset_sha256, split.sha256
@@ -402,7 +417,7 @@ def read_presses(dataset_path, split, material_id, sets=("train",)):
         require_plain_objects(f, dataset_path)
         for j in numbers:
             g = f[f"materials/{material_id}/presses/{j}"]
-            order = _text(g.attrs.get("channel_order", ""))
+            order = _text(_attribute(g, "channel_order", dataset_path, ""))
             if order not in ("RGB", "BGR"):
                 raise HaptexFileError(f"{dataset_path}: {g.name}/@channel_order is '{order}', not RGB or BGR")
             out.append(Press(material_id, j, decode_image(g["peak"][0], order), decode_image(g["reference"][0], order)))

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 import h5py
 import numpy as np
 
-from .data import ACTION_SAMPLES, TARGET_BINS, HaptexFileError, _regular_file, _text, require_plain_objects, strict_json
+from .data import ACTION_SAMPLES, TARGET_BINS, HaptexFileError, _attribute, _regular_file, _text, require_plain_objects, strict_json
 
 FORMAT = "model/3"
 ACTIVATIONS = ("linear", "relu", "softplus")
@@ -164,9 +164,10 @@ class _Reader:
         return a
 
     def attr(self, obj, name):
-        if name not in obj.attrs:
+        value = _attribute(obj, name, self.path, None)
+        if value is None:
             self.fail(f"{obj.name}@{name}", "is missing")
-        return obj.attrs[name]
+        return value
 
     def layers(self, name, inputs):
         """GROUP/layers/0, 1, ...; each layer's inputs must be the previous one's outputs."""
@@ -221,7 +222,7 @@ def read_model(path):
     positive scales); raises HaptexFileError naming the file and the object otherwise."""
     with h5py.File(_regular_file(path), "r") as f:
         r = _Reader(f, path)
-        found = _text(f.attrs.get("haptex_format", ""))
+        found = _text(_attribute(f, "haptex_format", path, ""))
         if found != FORMAT:
             raise HaptexFileError(f"{path}: /@haptex_format is '{found}', not {FORMAT} (haptex train writes it)")
         variant = _text(r.attr(f, "variant"))
@@ -244,9 +245,10 @@ def read_model(path):
                   action_scale=r.array("normalisation/action_scale", (2 * half,), positive=True),
                   target_scale=r.array("normalisation/target_scale", (TARGET_BINS,), positive=True),
                   low=np.repeat(np.float32([bounds[0], bounds[2]]), half), high=np.repeat(np.float32([bounds[1], bounds[3]]), half),
-                  nets=[], dataset_sha256=_text(f.attrs.get("dataset_sha256", "")), split_sha256=_text(f.attrs.get("split_sha256", "")))
+                  nets=[], dataset_sha256=_text(_attribute(f, "dataset_sha256", path, "")),
+                  split_sha256=_text(_attribute(f, "split_sha256", path, "")))
         for name in ("config", "metrics"):
-            setattr(m, name, strict_json(_text(f.attrs.get(name, "{}")), f"{path}: /@{name}"))
+            setattr(m, name, strict_json(_text(_attribute(f, name, path, "{}")), f"{path}: /@{name}"))
         latent = 0
         if variant == "unified":
             if "feature_spec" not in f:
