@@ -107,8 +107,14 @@ int run_program_reading(const ProgramRun& run, std::string& tail, std::size_t mo
   tail.clear();
   int ends[2];
   if (pipe2(ends, O_CLOEXEC) != 0) return kNotStarted;
-  const pid_t pid = start_program(run, ends[1], descriptor);
+  // Above the descriptors the child's are put at (0 to kPassedDescriptor): with haptex's stdin closed
+  // (`<&-`) the pipe or the passed file could be descriptor 0 and be replaced before it is moved.
+  const int write_end = fcntl(ends[1], F_DUPFD_CLOEXEC, kPassedDescriptor + 1);
+  const int passed = descriptor >= 0 ? fcntl(descriptor, F_DUPFD_CLOEXEC, kPassedDescriptor + 1) : -1;
   ::close(ends[1]);
+  const pid_t pid = write_end >= 0 && (descriptor < 0 || passed >= 0) ? start_program(run, write_end, passed) : -1;
+  if (write_end >= 0) ::close(write_end);
+  if (passed >= 0) ::close(passed);
   char buffer[4096];
   for (;;) {
     const ssize_t got = ::read(ends[0], buffer, sizeof buffer);

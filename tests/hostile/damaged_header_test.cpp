@@ -56,6 +56,19 @@ TEST(DamagedHeader, AFileNamedByADescriptorIsProbedToo) {
   }
 }
 
+// With haptex's standard input closed (`<&-`, as a daemon may start it), the file opened for the probe
+// was descriptor 0 and was replaced by /dev/null in the child before it was passed: read unprobed, SIGSEGV.
+TEST(DamagedHeader, AFileIsProbedWithStandardInputClosed) {
+  if (!python_has("os")) GTEST_SKIP() << "python3 is not installed";
+  const TempDir d;
+  const std::string dataset = d.file("d.h5");
+  copy_with_damaged_attribute(small_pipeline().dataset, "lowpass_filter", dataset);
+  const CommandResult r = run_python({"-c", "import os, subprocess, sys\n"
+                                            "sys.exit(subprocess.run(sys.argv[1:], preexec_fn=lambda: os.close(0)).returncode)",
+                                      haptex_binary(), "info", dataset});
+  expect_refusal(r, {dataset, "damaged"});
+}
+
 TEST(DamagedHeader, AGelsightFileWithADamagedAttributeHeaderIsRefusedByAlign) {
   const SmallPipeline& p = small_pipeline();
   const TempDir d;
