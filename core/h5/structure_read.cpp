@@ -17,8 +17,8 @@ namespace {
 // (kLongestText). The probe reads values up to this size and only opens larger ones.
 constexpr std::uint64_t kMostAttributeBytesRead = std::uint64_t(16) << 20;
 
-// Reads the value of attribute `name` of `object` as its own native type (any class), then frees what
-// HDF5 allocated for variable-length parts.
+// Reads the value of attribute `name` of `object` as its own native type, when it is of a class haptex's
+// readers read (integer, float, string), then frees what HDF5 allocated for a variable-length string.
 void read_attribute(hid_t object, const std::string& name, const std::string& where, const std::string& file) {
   Handle attr(check_input(H5Aopen(object, name.c_str(), H5P_DEFAULT), "open the attribute " + where, file));
   Handle stored(check_input(H5Aget_type(attr.get()), "read the type of " + where, file));
