@@ -23,7 +23,6 @@
 #include "core/output_is_input.hpp"
 #include "core/error.hpp"
 #include "core/h5/file.hpp"
-#include "dataset/layout.hpp"
 #include "core/naming.hpp"
 #include "core/parallel.hpp"
 #include "core/partial_directory.hpp"
@@ -33,6 +32,7 @@
 #include "core/output_set.hpp"
 #include "core/owned_folder.hpp"
 #include "dataset/decode_image.hpp"
+#include "dataset/layout.hpp"
 
 namespace haptex::capture {
 namespace fs = std::filesystem;

@@ -143,8 +143,8 @@ void probe(const std::string& path, ProbeDepth depth) {
   const OpenedForProbe file(path);
   struct stat s {};
   if (file.fd() < 0 || ::fstat(file.fd(), &s) != 0) return;  // File::open says why
-  const std::optional<FileVersion> version = version_of(s, depth);
-  if (const std::optional<std::vector<std::string>> said = verdicts().find(*version)) {
+  const FileVersion version = version_of(s, depth);
+  if (const std::optional<std::vector<std::string>> said = verdicts().find(version)) {
     if (said->empty()) return;
     throw damaged(path, *said);
   }
@@ -152,11 +152,11 @@ void probe(const std::string& path, ProbeDepth depth) {
   const int code = run_probe(file.fd(), depth, output);
   if (code == kProbeRefused) {
     const std::vector<std::string> said = last_records(output, 3);
-    verdicts().keep(*version, said);
+    verdicts().keep(version, said);
     throw damaged(path, said);
   }
   if (code <= 128 || !crash_signal(code - 128)) {
-    verdicts().keep(*version, {});
+    verdicts().keep(version, {});
     return;
   }
   const int signal = code - 128;
@@ -168,7 +168,7 @@ void probe(const std::string& path, ProbeDepth depth) {
                 " in haptex-h5-probe, the separate program that reads each file first, so haptex does not)";
   const std::vector<std::string> said = {last_records(output, 1)[0], what,
                                          "The file is damaged: copy it again, or make it again with the haptex command that wrote it"};
-  verdicts().keep(*version, said);
+  verdicts().keep(version, said);
   throw damaged(path, said);
 }
 
