@@ -10,6 +10,8 @@
 // every time rather than by chance. When it dies of a signal, or HDF5 refuses one of its reads, the
 // file is refused as damaged, naming the place, before this process's HDF5 has read it
 // (docs/architecture.md, "Damaged files").
+#include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <string>
 
@@ -40,7 +42,9 @@ inline constexpr int kProbeNotOpened = 3;  // HDF5 could not open it at all: Fil
 // before each read it writes the place ("PATH", "PATH@NAME", "PATH, element N"), NUL-ended, to `out`.
 // Returns kProbeRead once all was read and the file closed, as a reader closes it; at the first read
 // HDF5 refuses, writes the error's place, finding and fix (each NUL-ended) and returns kProbeRefused,
-// leaving the file open (HDF5 1.10 may crash closing it).
-int read_structure(const std::string& path, ProbeDepth depth, std::ostream& out);
+// leaving the file open (HDF5 1.10 may crash closing it). Once HDF5 has opened the file, `opened` gets
+// its end of address (the superblock's: HDF5 reads no byte past it), before anything else is read.
+int read_structure(const std::string& path, ProbeDepth depth, std::ostream& out,
+                   const std::function<void(std::uint64_t end_of_address)>& opened = {});
 
 }  // namespace haptex::h5

@@ -98,11 +98,14 @@ void read_members(hid_t group, const std::string& path, const std::string& file,
 
 }  // namespace
 
-int read_structure(const std::string& path, ProbeDepth depth, std::ostream& out) {
+int read_structure(const std::string& path, ProbeDepth depth, std::ostream& out,
+                   const std::function<void(std::uint64_t end_of_address)>& opened) {
   out << '\0' << std::flush;  // started (AddressSanitizer's runtime, when preloaded, could not stop it)
   silence_library_errors();
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0) return kProbeNotOpened;  // File::open says why
+  haddr_t end_of_address = 0;
+  if (opened && H5Fget_eoa(id, &end_of_address) >= 0) opened(end_of_address);
   try {
     {
       Handle root(check_input(H5Gopen2(id, "/", H5P_DEFAULT), "open the root group", path));
