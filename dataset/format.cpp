@@ -130,8 +130,8 @@ namespace {
 // are probed when the file is opened (core/h5/structure_probe.hpp), so damage there is the file's
 // refusal, not a finding on whichever press is read first. A dataset's are probed when the first is
 // read, since most of its readers (trajectory, windows, split) read none.
-void probe_images(const std::string& path, Kind kind) {
-  if (kind == Kind::press || kind == Kind::gelsight) h5::probe_values(path);
+void probe_images(const h5::File& file, Kind kind) {
+  if (kind == Kind::press || kind == Kind::gelsight) h5::probe_values(file.root().id(), file.path());
 }
 
 }  // namespace
@@ -140,7 +140,7 @@ h5::File open_checked(const std::string& path, Kind kind) {
   h5::File file = h5::File::open(path);
   require_kind(file, kind);
   h5::require_link_rule(file.root());
-  probe_images(path, kind);
+  probe_images(file, kind);
   return file;
 }
 
@@ -152,7 +152,7 @@ OpenedFile open_any(const std::string& path, std::span<const Kind> kinds, const 
     if (family_of(found) == format_of(kind).family) {
       require_kind(file, kind);
       if (links == Links::refuse) h5::require_link_rule(file.root());
-      probe_images(path, kind);
+      probe_images(file, kind);
       return {std::move(file), kind};
     }
   throw input_error(path, "/@" + std::string(h5::kFormatAttribute), "is '" + text::shortened(found) + "': " + who + " " + format_list(kinds) + " files", fix);

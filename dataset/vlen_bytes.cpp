@@ -50,7 +50,7 @@ std::vector<std::uint8_t> read_vlen_bytes(const h5::Dataset& dataset, std::size_
     throw input_error(dataset.file(), dataset.object_path(), "expected variable-length uint8 (one encoded image or frame per element)",
                       "Was the file written by haptex? Write it again with the haptex command that makes it");
   dataset.require_sensible_chunks();
-  h5::probe_values(dataset.file());
+  h5::probe_values(dataset.id(), dataset.file());
   if (dataset.shape().size() != 1 || index >= dataset.shape()[0])
     throw input_error(dataset.file(), dataset.object_path(), "element " + std::to_string(index) + " does not exist",
                       "The file is damaged; write it again with the haptex command that makes it");

@@ -331,7 +331,7 @@ CheckResult check_gelsight_images(const h5::Group& root) {
 std::vector<CheckResult> check_gelsight(const h5::Group& root) {
   // Every image is read below, and a press's finding is its own: damage HDF5 cannot read safely is the
   // file's refusal (core/h5/structure_probe.hpp), made before the first.
-  h5::probe_values(root.file());
+  h5::probe_values(root.id(), root.file());
   const GelsightPresses file = read_presses(root);
   const NoContactBaselines baselines = no_contact_baselines(file.presses);
   return {check_gelsight_reference(file.presses, baselines),

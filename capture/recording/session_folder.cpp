@@ -19,6 +19,7 @@
 #include "core/content_mark.hpp"
 #include "core/json/schema.hpp"
 #include "core/output_is_input.hpp"
+#include "core/sha256.hpp"
 #include "core/temporary_name.hpp"
 #include "core/version.hpp"
 #include "dataset/format.hpp"
@@ -73,10 +74,13 @@ std::vector<fs::path> old_session_files(const std::string& dir) {
     refuse_replacing(dir, manifest, "is not as haptex wrote it (edited, copied, or written by a haptex before the mark: docs/architecture.md, \"Outputs are atomic\")");
   }
   std::vector<fs::path> owned{manifest};
+  std::vector<std::pair<fs::path, std::string>> recorded;  // each listed press and the SHA-256 it was saved with
   for (const nlohmann::json& press : doc["presses"])
     if (press.is_object() && press.contains("file") && press["file"].is_string() &&
-        is_press_file_name(press["file"].get<std::string>()))
+        is_press_file_name(press["file"].get<std::string>())) {
       owned.push_back(fs::path(dir) / press["file"].get<std::string>());
+      recorded.emplace_back(owned.back(), press.contains("sha256") && press["sha256"].is_string() ? press["sha256"].get<std::string>() : "");
+    }
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (std::find(owned.begin(), owned.end(), entry.path()) == owned.end())
       refuse_replacing(dir, entry.path(), "is not one of them (session.json does not list it)");
@@ -88,6 +92,12 @@ std::vector<fs::path> old_session_files(const std::string& dir) {
   });
   for (const fs::path& p : owned)
     if (p.extension() == ".h5") h5::require_replaceable(p.string(), dataset::format_name(dataset::Kind::press));
+  // Review 30, F4: another take's press moved in under a listed name is a haptex press file too.
+  for (const auto& [press, sha256] : recorded)
+    if (fs::exists(fs::symlink_status(press, ec)) && sha256_file(press.string()) != sha256)
+      refuse_replacing(dir, press,
+                       sha256.empty() ? "has no SHA-256 in session.json (an earlier haptex recorded none), so nothing says it is the press that session saved"
+                                      : "is not the press that session saved (its SHA-256 differs from session.json's: moved or copied in from elsewhere, or changed)");
   return owned;
 }
 

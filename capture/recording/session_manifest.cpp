@@ -38,6 +38,7 @@ nlohmann::json press_json(const RecordedPress& p) {
           {"dropped_frames", p.dropped_frames},
           {"error_frames", p.error_frames},
           {"corrupt_frames", p.corrupt_frames},
+          {"sha256", p.sha256},
           {"ended_by", p.ended_by}};
 }
 

@@ -44,6 +44,7 @@ struct RecordedPress {
   std::uint32_t first_sequence = 0, last_sequence = 0;
   std::uint64_t frames = 0, dropped_frames = 0, error_frames = 0, corrupt_frames = 0;
   std::string ended_by;
+  std::string sha256;  // of the press file as saved: --force replaces only this file (session_folder.cpp)
 };
 
 struct TakeTotals {

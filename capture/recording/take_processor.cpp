@@ -10,6 +10,7 @@
 
 #include "capture/scoring/scoring_image.hpp"
 #include "core/error.hpp"
+#include "core/sha256.hpp"
 #include "dataset/decode_image.hpp"
 
 namespace haptex::capture {
@@ -199,6 +200,7 @@ void TakeProcessor::close_press(const std::string& ended_by) {
   current_.error_frames = summary.error_frames;
   current_.corrupt_frames = summary.corrupt_frames;
   current_.ended_by = ended_by;
+  current_.sha256 = sha256_file((std::filesystem::path(output_dir_) / current_.file).string());
   presses_.push_back(current_);
   write_manifest("recording");
   if (progress_)

@@ -37,6 +37,7 @@ File File::open(const std::string& path, bool writable) {
     throw input_failure("open the file", path, detail);
   }
   Handle file(id);
+  if (!writable) probe_structure(id, path);
   return File(std::move(file), path);
 }
 

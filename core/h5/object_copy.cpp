@@ -98,7 +98,7 @@ struct Copy {
       throw input_error(source_file, source_path, fault->what, fault->fix);
     Handle creation(check_input(H5Dget_create_plist(from.get()), "read the layout of " + source_path, source_file));
     require_readable(type.get(), space.get(), source_path);
-    if (variable_length(type.get())) probe_values(source_file);
+    if (variable_length(type.get())) probe_values(from.get(), source_file);
     const Handle memory = memory_type(type.get(), source_path, source_file);
     Values values(memory.get(), space.get());
     if (!values.empty()) {

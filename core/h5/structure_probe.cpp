@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/h5/handle.hpp"
 #include "core/process/run_program.hpp"
 
 namespace haptex::h5 {
@@ -37,17 +38,6 @@ const std::string& probe_program() {
   return found;
 }
 
-// AddressSanitizer's runtime (HAPTEX_PROBE_SANITIZER: the compiler's libasan, found at configure time),
-// preloaded into the probe: a read or copy past a heap block then stops it every time. Its errors
-// abort (SIGABRT); a segmentation fault stays one; nothing else of it is kept. Empty when absent.
-std::vector<std::string> sanitizer_environment() {
-  const std::string runtime = HAPTEX_PROBE_SANITIZER;
-  if (runtime.empty() || ::access(runtime.c_str(), R_OK) != 0) return {};
-  return {"LD_PRELOAD=" + runtime,
-          "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:handle_segv=0:handle_sigbus=0:handle_abort=0:allocator_may_return_null=1:"
-          "malloc_context_size=0:quarantine_size_mb=0"};
-}
-
 // A file as it was probed, and how deep.
 using FileVersion = std::tuple<dev_t, ino_t, off_t, long, long, ProbeDepth>;
 
@@ -55,14 +45,14 @@ FileVersion version_of(const struct stat& s, ProbeDepth depth) {
   return FileVersion{s.st_dev, s.st_ino, s.st_size, s.st_mtim.tv_sec, s.st_mtim.tv_nsec, depth};
 }
 
-std::optional<FileVersion> version_of(const std::string& path, ProbeDepth depth) {
+std::optional<FileVersion> version_of(int fd, ProbeDepth depth) {
   struct stat s {};
-  if (::stat(path.c_str(), &s) != 0) return std::nullopt;
+  if (fd < 0 || ::fstat(fd, &s) != 0) return std::nullopt;
   return version_of(s, depth);
 }
 
-// The file opened for the probe: it reads this very file through the descriptor, whatever the path
-// names in this process alone (/dev/stdin, /dev/fd/N: review 28, F3).
+// The file opened for the probe, whatever the path names in this process alone (/dev/stdin, /dev/fd/N:
+// review 28, F3).
 class OpenedForProbe {
  public:
   explicit OpenedForProbe(const std::string& path) : fd_(::open(path.c_str(), O_RDONLY | O_CLOEXEC)) {}
@@ -76,6 +66,14 @@ class OpenedForProbe {
  private:
   int fd_;
 };
+
+// The descriptor HDF5 reads the file holding `object` by (its default driver's).
+std::optional<int> hdf5_descriptor(hid_t object) {
+  const Handle file(H5Iget_file_id(object));
+  int* fd = nullptr;
+  if (!file.valid() || H5Fget_vfd_handle(file.get(), H5P_DEFAULT, reinterpret_cast<void**>(&fd)) < 0 || fd == nullptr) return std::nullopt;
+  return *fd;
+}
 
 // What the probe said of each file: nothing when it read it all (or could not run), else the place,
 // finding and fix of the read that failed.
@@ -120,17 +118,17 @@ bool crash_signal(int signal) {
   return signal == SIGSEGV || signal == SIGBUS || signal == SIGABRT || signal == SIGFPE || signal == SIGILL || signal == SIGXCPU;
 }
 
-// Runs the probe, under the sanitizer when it starts there (it does not under `ulimit -v`, which its
-// shadow memory exceeds), else without. Returns the exit code (128 + N for signal N) and its output.
+// Runs the probe (under AddressSanitizer's runtime when it can: tools/h5-probe/main.cpp), and once more
+// as it is when that runtime did not let it start. Returns the exit code (128 + N for signal N) and its
+// output.
 int run_probe(int fd, ProbeDepth depth, std::string& output) {
   process::ProgramRun run;
   run.argv = {probe_program()};
   if (depth == ProbeDepth::values) run.argv.push_back("--values");
   run.argv.push_back("/dev/fd/" + std::to_string(process::kPassedDescriptor));
-  run.environment = sanitizer_environment();
   int code = process::run_program_reading(run, output, kMostProgressKept, fd);
-  if (!run.environment.empty() && output.empty() && code != kProbeRead) {
-    run.environment.clear();
+  if (output.empty() && code != kProbeRead) {
+    run.environment = {"HAPTEX_PROBE_AS_IS=1"};
     code = process::run_program_reading(run, output, kMostProgressKept, fd);
   }
   return code;
@@ -138,18 +136,18 @@ int run_probe(int fd, ProbeDepth depth, std::string& output) {
 
 Error damaged(const std::string& path, const std::vector<std::string>& said) { return input_error(path, said[0], said[1], said[2]); }
 
-void probe(const std::string& path, ProbeDepth depth) {
+// Probes the file open as `fd`, named `path` in messages.
+void probe(int fd, const std::string& path, ProbeDepth depth) {
   if (probe_program().empty()) return;
-  const OpenedForProbe file(path);
-  struct stat s {};
-  if (file.fd() < 0 || ::fstat(file.fd(), &s) != 0) return;  // File::open says why
-  const FileVersion version = version_of(s, depth);
+  const std::optional<FileVersion> version_found = version_of(fd, depth);
+  if (!version_found) return;  // File::open says why
+  const FileVersion& version = *version_found;
   if (const std::optional<std::vector<std::string>> said = verdicts().find(version)) {
     if (said->empty()) return;
     throw damaged(path, *said);
   }
   std::string output;
-  const int code = run_probe(file.fd(), depth, output);
+  const int code = run_probe(fd, depth, output);
   if (code == kProbeRefused) {
     const std::vector<std::string> said = last_records(output, 3);
     verdicts().keep(version, said);
@@ -174,11 +172,20 @@ void probe(const std::string& path, ProbeDepth depth) {
 
 }  // namespace
 
-void probe_structure(const std::string& path) { probe(path, ProbeDepth::structure); }
+void probe_structure(const std::string& path) {
+  const OpenedForProbe file(path);
+  probe(file.fd(), path, ProbeDepth::structure);
+}
 
-void probe_values(const std::string& path) {
-  const std::optional<FileVersion> structure = version_of(path, ProbeDepth::structure);
-  if (structure && verdicts().find(*structure)) probe(path, ProbeDepth::values);
+void probe_structure(hid_t file, const std::string& path) {
+  if (const std::optional<int> fd = hdf5_descriptor(file)) probe(*fd, path, ProbeDepth::structure);
+}
+
+void probe_values(hid_t object, const std::string& path) {
+  const std::optional<int> fd = hdf5_descriptor(object);
+  if (!fd) return;
+  const std::optional<FileVersion> structure = version_of(*fd, ProbeDepth::structure);
+  if (structure && verdicts().find(*structure)) probe(*fd, path, ProbeDepth::values);
 }
 
 }  // namespace haptex::h5

@@ -15,19 +15,27 @@
 #include <iosfwd>
 #include <string>
 
+#include <H5Ipublic.h>
+
 namespace haptex::h5 {
 
-// Probes the structure of `path` (File::open, reading), once per file (device, inode, size,
-// modification time) in this process. Throws haptex::Error (bad_input) naming the file and the place
-// when the probe crashed, did not end within its processor time, or HDF5 refused one of its reads.
-// Returns at once when the probe is not installed beside this program (a program that links haptex:
-// docs/library.md) or could not be started.
+// Probes the structure of `path` (File::open, reading, before HDF5 opens it), once per file (device,
+// inode, size, modification time) in this process. Throws haptex::Error (bad_input) naming the file and
+// the place when the probe crashed, did not end within its processor time, or HDF5 refused one of its
+// reads. Returns at once when the probe is not installed beside this program (a program that links
+// haptex: docs/library.md) or could not be started.
 void probe_structure(const std::string& path);
 
-// Probes the variable-length byte values of `path` the same way, before the first is read
-// (dataset::read_vlen_bytes, Group::copy_from); does nothing for a file probe_structure has not seen
-// (a file this process writes).
-void probe_values(const std::string& path);
+// The same for the file HDF5 opened as `file` (File::open, right after H5Fopen, through the descriptor
+// HDF5 reads): a file put at the path after probe_structure(path) read the one there (a rename, an
+// in-place write) is probed before HDF5 reads more than its first headers (review 30, F1); the same
+// file is not probed again.
+void probe_structure(hid_t file, const std::string& path);
+
+// Probes the variable-length byte values of the file holding `object` (named `path`) the same way,
+// through the descriptor HDF5 reads, before the first is read (dataset::read_vlen_bytes,
+// Group::copy_from); does nothing for a file probe_structure has not seen (a file this process writes).
+void probe_values(hid_t object, const std::string& path);
 
 // What haptex-h5-probe reads (tools/h5-probe/main.cpp: `haptex-h5-probe [--values] FILE`).
 enum class ProbeDepth { structure, values };

@@ -25,6 +25,8 @@ except ImportError:
     raise ImportError("haptex needs h5py, which this Python cannot import: install python3-h5py "
                       "(Debian: apt-get install python3-h5py), or pip install h5py") from None
 
+from .hdf5_probe import damage
+
 WINDOW_SAMPLES = 1000  # dataset/window.hpp: a window uses samples [start, start + 1000)
 ACTION_SAMPLES = 10    # the action: 10 force samples (N), then 10 speed samples (mm/s), 5 ms apart up to the middle
 TARGET_BINS = 100      # 10, 20, ..., 1000 Hz
@@ -55,6 +57,29 @@ def _regular_file(path):
     if not stat.S_ISREG(mode):
         raise HaptexFileError(f"{path}: is not a regular file (a folder, FIFO or device): give a regular file")
     return path
+
+
+def open_hdf5(path, values=False):
+    """The HDF5 file at path, read-only, once haptex-h5-probe has read it (hdf5_probe.py): its structure
+    before h5py opens it, then the file h5py opened (a file renamed over the path meanwhile is probed
+    too), with values its encoded images; a HaptexFileError naming the place where it finds damage."""
+    with open(_regular_file(path), "rb") as before:
+        _refuse_damage(path, before.fileno(), False)
+    f = h5py.File(path, "r")
+    try:
+        for depth in (False, True) if values else (False,):
+            _refuse_damage(path, f.id.get_vfd_handle(), depth)
+    except HaptexFileError:
+        f.close()
+        raise
+    return f
+
+
+def _refuse_damage(path, fd, values):
+    found = damage(fd, values=values)
+    if found:
+        place, finding, fix = found
+        raise HaptexFileError(f"{path}: {place + ': ' if place else ''}{finding}; {fix[:1].lower() + fix[1:]}")
 
 
 _MISSING = object()
@@ -156,7 +181,7 @@ def _read_table(group, path):
 def read_windows(path):
     """The evaluation's grid written by `haptex windows` (windows/2), in the order evaluate scores it."""
     try:
-        f = h5py.File(_regular_file(path), "r")
+        f = open_hdf5(path)
     except OSError as e:
         raise HaptexFileError(f"{path}: not an HDF5 file haptex windows wrote ({e}); make it again with haptex windows") from None
     with f:
@@ -371,7 +396,7 @@ def read_set_windows(dataset_path, split, sets=("train",)):
     with their section numbers. Refuses a split made from another dataset file."""
     if sha256_file(dataset_path) != split.dataset_sha256:
         raise HaptexFileError(f"{split.path}: was made from another dataset than {dataset_path} (dataset.sha256)")
-    with h5py.File(_regular_file(dataset_path), "r") as f:
+    with open_hdf5(dataset_path) as f:
         _check_format(f, dataset_path, "dataset/4")
         require_plain_objects(f, dataset_path)
         w = _read_table(f["windows"], dataset_path)
@@ -412,7 +437,7 @@ def read_presses(dataset_path, split, material_id, sets=("train",)):
         raise HaptexFileError(f"{split.path}: was made from another dataset than {dataset_path} (dataset.sha256)")
     numbers = [p for name in sets for p in split.material_presses[material_id][name]]
     out = []
-    with h5py.File(_regular_file(dataset_path), "r") as f:
+    with open_hdf5(dataset_path, values=True) as f:
         _check_format(f, dataset_path, "dataset/4")
         require_plain_objects(f, dataset_path)
         for j in numbers:
@@ -690,7 +715,7 @@ def check_output(path, inputs=(), overwrite=False):
     if not overwrite:
         raise HaptexFileError(f"{path}: the output file already exists: remove it, choose another -o, or pass --force")
     try:
-        with h5py.File(_regular_file(path), "r") as f:
+        with open_hdf5(path) as f:
             found = f.attrs.get("predictions_format")
     except OSError:
         found = None

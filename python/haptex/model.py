@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 import h5py
 import numpy as np
 
-from .data import ACTION_SAMPLES, TARGET_BINS, HaptexFileError, _attribute, _regular_file, _text, require_plain_objects, strict_json
+from .data import ACTION_SAMPLES, TARGET_BINS, HaptexFileError, _attribute, _text, open_hdf5, require_plain_objects, strict_json
 
 FORMAT = "model/3"
 ACTIVATIONS = ("linear", "relu", "softplus")
@@ -220,7 +220,7 @@ def _check_ids(r, ids, names):
 def read_model(path):
     """A model file, every array checked as haptex's reader checks it (float32, shapes, finite,
     positive scales); raises HaptexFileError naming the file and the object otherwise."""
-    with h5py.File(_regular_file(path), "r") as f:
+    with open_hdf5(path) as f:
         r = _Reader(f, path)
         found = _text(_attribute(f, "haptex_format", path, ""))
         if found != FORMAT:

@@ -208,6 +208,22 @@ TEST(PythonExamples, ADamagedAttributeIsNamedWithItsFile) {
   }
 }
 
+// Review 30, F2: the package reads HDF5 through h5py, on the same libhdf5 as haptex: a windows file
+// whose global heap claims more than it holds crashed knn_baseline.py (SIGSEGV, SIGABRT). The package
+// runs haptex-h5-probe, found beside the haptex binary, on each file first, as haptex does.
+TEST(PythonExamples, ADamagedHeapIsRefusedNotACrash) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const Knn knn;
+  const TempDir d;
+  const std::string windows = d.file("w.h5");
+  copy_with_damaged_heap(knn.windows, windows);
+  const SmallPipeline& p = small_pipeline();
+  const CommandResult r = run_program({"/usr/bin/env", std::string("HAPTEX_BINARY=") + HAPTEX_BINARY, "/usr/bin/python3",
+                                       kExamples + "knn_baseline.py", p.dataset, p.split, windows, "-o", d.file("k.h5")});
+  expect_refusal(r, {windows, "HDF5 crashes reading it", "damaged"});
+  EXPECT_FALSE(fs::exists(d.file("k.h5")));
+}
+
 // Review 23, F5: the examples printed a file's attribute and the output's name as they were, so a
 // windows file whose format held ESC[2J cleared the screen through knn_baseline.py's error, where
 // haptex info prints it escaped. The package escapes as haptex does, on the same code points.

@@ -60,6 +60,20 @@ TEST(SessionFolder, ForceRefusesASessionJsonHaptexDidNotWrite) {
   EXPECT_EQ(file_bytes(o + "/press_0.h5"), "my own");
 }
 
+// Review 30, F4: another take's press moved in under a name session.json lists is a haptex press file
+// too; it was replaced, its only copy lost. session.json records each press's SHA-256.
+TEST(SessionFolder, ForceKeepsAnotherTakesPressMovedInUnderAListedName) {
+  const TempDir d;
+  const std::string foo = d.file("foo"), bar = d.file("bar");
+  ASSERT_EQ(record(kFake, foo, false, "Foo").exit_code, 0);
+  ASSERT_EQ(record("fake:size=160x120,lockstep,speed=2", bar, false, "Bar").exit_code, 0);
+  fs::rename(bar + "/press_0.h5", foo + "/press_0.h5");
+  const std::string moved = file_bytes(foo + "/press_0.h5");
+  expect_refusal(record(kFake, foo, true, "Foo"), {foo, "press_0.h5", "SHA-256"});
+  EXPECT_EQ(file_bytes(foo + "/press_0.h5"), moved);
+  EXPECT_EQ(record(kFake, bar, true, "Bar").exit_code, 0) << "a session whose presses are its own is replaced";
+}
+
 // Review 21, F6: session.json carried no content mark, so --force replaced one the user had edited.
 TEST(SessionFolder, ForceKeepsASessionJsonTheUserEdited) {
   const TempDir d;

@@ -6,13 +6,19 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <thread>
+#include <vector>
 
 #include "core/bounded_call.hpp"
 #include "tests/hostile/hostile_support.hpp"
@@ -88,6 +94,59 @@ TEST(StuckRead, ZerosOnDiskPastTheFilesEndBuyTheProbeNoTime) {
   expect_refusal(r, {damaged, "does not end", "damaged"});
   EXPECT_LT(seconds, 4 * kStuckCallSeconds) << "ended by the bound, not by the test's time limit";
   EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+}
+
+// The haptex-h5-probe processes whose parent is `parent`.
+std::vector<pid_t> probes_of(pid_t parent) {
+  std::vector<pid_t> found;
+  for (const fs::directory_entry& entry : fs::directory_iterator("/proc")) {
+    std::ifstream stat(entry.path() / "stat");
+    std::string line;
+    if (!std::getline(stat, line) || line.find("(haptex-h5-probe)") == std::string::npos) continue;
+    std::istringstream after(line.substr(line.rfind(')') + 2));
+    char state = 0;
+    pid_t ppid = 0;
+    after >> state >> ppid;
+    if (ppid == parent && state != 'Z') found.push_back(pid_t(std::stoi(entry.path().filename().string())));
+  }
+  return found;
+}
+
+bool running(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  return std::getline(stat, line) && line.substr(line.rfind(')') + 2, 1) != "Z";
+}
+
+// Review 30, F3: haptex stopped by a signal sent to it alone (kill PID, a batch system's TERM) left its
+// probe running, orphaned, until the probe's processor limit ended it. The probe ends with haptex.
+TEST(StuckRead, TheProbeEndsWithHaptex) {
+  const TempDir dir;
+  const std::string damaged = press_file_with_a_looping_heap(dir);
+  ASSERT_FALSE(damaged.empty());
+  const std::string output = dir.file("g.h5");
+  const pid_t haptex = fork();
+  ASSERT_GE(haptex, 0);
+  if (haptex == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    execl(HAPTEX_BINARY, HAPTEX_BINARY, "capture", "extract", damaged.c_str(), "-o", output.c_str(), "--no-sheets",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::vector<pid_t> probes;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  while ((probes = probes_of(haptex)).empty() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_EQ(probes.size(), 1u) << "haptex runs one probe on the looping heap";
+  kill(haptex, SIGTERM);
+  int status = 0;
+  waitpid(haptex, &status, 0);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << "haptex ends by the signal, once it has cleaned up: " << status;
+  const auto gone_by = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+  while (running(probes[0]) && std::chrono::steady_clock::now() < gone_by) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_FALSE(running(probes[0])) << "the probe outlived haptex";
+  EXPECT_FALSE(fs::exists(output));
 }
 
 }  // namespace

@@ -120,4 +120,15 @@ void copy_with_damaged_attribute(const std::string& file, const std::string& nam
   throw std::runtime_error("no attribute message for " + name + " in " + file);
 }
 
+void copy_with_damaged_heap(const std::string& file, const std::string& copy) {
+  std::ifstream in(file, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t heap = bytes.find("GCOL");
+  if (heap == std::string::npos) throw std::runtime_error("no global heap in " + file);
+  const std::size_t size_field = heap + 16 + 8;  // the collection's 16-byte header, then the object's index, count, reserve
+  const std::uint64_t claimed = 16384;
+  for (int byte = 0; byte < 8; ++byte) bytes[size_field + std::size_t(byte)] = char((claimed >> (8 * byte)) & 0xff);
+  std::ofstream(copy, std::ios::binary) << bytes;
+}
+
 }  // namespace haptex::test

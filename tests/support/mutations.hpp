@@ -57,6 +57,9 @@ void Edit::replace(const std::string& path, const std::vector<T>& values, const 
 // them) reads 44 800 bytes longer, as one flipped byte on a disk makes it: libhdf5 1.10 crashes reading
 // some such files (review 27, F1). Throws std::runtime_error when no such message is found.
 void copy_with_damaged_attribute(const std::string& file, const std::string& name, const std::string& copy);
+// A copy of `file` whose first global heap collection's first object claims 16 KiB, more than the
+// collection holds: libhdf5 1.10 copies past the heap reading it (review 30, F2).
+void copy_with_damaged_heap(const std::string& file, const std::string& copy);
 
 nlohmann::json read_json(const std::string& path);
 void write_json(const std::string& path, const nlohmann::json& doc);

@@ -3,22 +3,31 @@
 // program, not haptex (core/h5/structure_probe.hpp). Writes the place it reads next, NUL-ended, to
 // standard output.
 // Exit code 0 when all was read, 1 when HDF5 refused a read (its place, finding and fix follow), 3 when
-// HDF5 could not open the file, 64 on a wrong command line; a signal when it crashed, SIGXCPU once it
-// used its processor time (HDF5 loops on some damage), SIGALRM when it waited four times as long.
+// HDF5 could not open the file, 64 on a wrong command line, 65 when its caller had already ended; a
+// signal when it crashed, SIGXCPU once it used its processor time (HDF5 loops on some damage), SIGALRM
+// when it waited four times as long. It starts itself again under AddressSanitizer's runtime when it
+// can; a caller that gets no output at all runs it again with HAPTEX_PROBE_AS_IS=1, without.
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <csignal>
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "core/bounded_call.hpp"
 #include "core/h5/structure_probe.hpp"
 
 namespace {
+
+constexpr int kOrphaned = 65;  // its caller was gone before it started: no one reads the answer
 
 // The processor time the probe may use: a reader's bound on one stuck call (kStuckCallSeconds), plus
 // a second per 50 MB of the file HDF5 can read, far slower than HDF5 reads any file haptex writes. What
@@ -39,6 +48,33 @@ void set_limit(int resource, rlim_t value, rlim_t hard) {
   setrlimit(resource, &limit);
 }
 
+// AddressSanitizer's runtime (HAPTEX_PROBE_SANITIZER: the compiler's libasan, found at configure time)
+// preloaded: a read or copy past a heap block then stops the probe every time, not only when it happens
+// to reach unmapped memory. Its errors abort (SIGABRT); a segmentation fault stays one. Not under a
+// limit on address space (`ulimit -v`), which its shadow memory exceeds, nor when asked not to.
+void start_again_under_sanitizer(char** argv) {
+  const std::string runtime = HAPTEX_PROBE_SANITIZER;
+  rlimit address_space{};
+  if (runtime.empty() || ::access(runtime.c_str(), R_OK) != 0 || std::getenv("HAPTEX_PROBE_AS_IS") != nullptr ||
+      getrlimit(RLIMIT_AS, &address_space) != 0 || address_space.rlim_cur != RLIM_INFINITY)
+    return;
+  std::vector<std::string> set = {
+      "LD_PRELOAD=" + runtime, "HAPTEX_PROBE_AS_IS=1",
+      "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:handle_segv=0:handle_sigbus=0:handle_abort=0:allocator_may_return_null=1:"
+      "malloc_context_size=0:quarantine_size_mb=0"};
+  std::vector<char*> environment;
+  for (char** variable = environ; *variable != nullptr; ++variable) {
+    const std::string_view name = std::string_view(*variable).substr(0, std::string_view(*variable).find('=') + 1);
+    if (name != "LD_PRELOAD=" && name != "ASAN_OPTIONS=" && name != "HAPTEX_PROBE_AS_IS=") environment.push_back(*variable);
+  }
+  for (std::string& variable : set) environment.push_back(variable.data());
+  environment.push_back(nullptr);
+  // By its own path, not /proc/self/exe: the process keeps its name (ps, pgrep).
+  std::array<char, 4096> self{};
+  const ssize_t length = ::readlink("/proc/self/exe", self.data(), self.size() - 1);
+  if (length > 0) ::execve(self.data(), argv, environment.data());  // when it fails, the probe runs as it is
+}
+
 // SIGXCPU at `seconds` of processor time (counted from the start), SIGKILL 5 s later. A probe that
 // waits instead (a lock, a stalled disk) ends by SIGALRM, which haptex takes as no answer: it then reads
 // the file itself, as without the probe.
@@ -56,6 +92,11 @@ int main(int argc, char** argv) {
     return 64;
   }
   const char* path = argv[argc - 1];
+  // Ends with its caller: haptex stopped by a signal sent to it alone (kill PID, a batch system's TERM)
+  // leaves no probe running on (review 30, F3). A caller gone before this line has made it an orphan.
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() == 1) std::_Exit(kOrphaned);
+  start_again_under_sanitizer(argv);
   set_limit(RLIMIT_CORE, 0, 0);  // a crash here is an answer, not a bug to keep a core of
   const double on_disk = bytes_on_disk(path);
   limit_time(processor_seconds(on_disk));
