@@ -58,6 +58,16 @@ TEST(StuckRead, AHeapThatLoopsHDF5IsBadInputNamingTheFrame) {
   EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{}) << "the run's temporaries are removed";
 }
 
+// capture extract refuses `damaged` as a read that does not end, within the probe's bound.
+void expect_refused_by_the_bound(const TempDir& dir, const std::string& damaged) {
+  const auto start = std::chrono::steady_clock::now();
+  const CommandResult r = run_haptex({"capture", "extract", damaged, "-o", dir.file("g.h5"), "--no-sheets"});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  expect_refusal(r, {damaged, "does not end", "damaged"});
+  EXPECT_LT(seconds, 4 * kStuckCallSeconds) << "ended by the bound, not by the test's time limit";
+  EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+}
+
 // Review 28, F4: the probe's processor time followed the file's size, so the same damage padded with a
 // sparse hole to 3 GB looped 86 s before it was refused. A hole counts for nothing.
 TEST(StuckRead, AHoleInTheFileBuysTheProbeNoTime) {
@@ -65,12 +75,7 @@ TEST(StuckRead, AHoleInTheFileBuysTheProbeNoTime) {
   const std::string damaged = press_file_with_a_looping_heap(dir);
   ASSERT_FALSE(damaged.empty());
   fs::resize_file(damaged, std::uintmax_t(3) << 30);  // sparse: a few hundred KB on disk
-  const auto start = std::chrono::steady_clock::now();
-  const CommandResult r = run_haptex({"capture", "extract", damaged, "-o", dir.file("g.h5"), "--no-sheets"});
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  expect_refusal(r, {damaged, "does not end", "damaged"});
-  EXPECT_LT(seconds, 4 * kStuckCallSeconds) << "ended by the bound, not by the test's time limit";
-  EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+  expect_refused_by_the_bound(dir, damaged);
 }
 
 // Review 29, F2: zeros really on disk past the file's end (a copy or download of the padded file, or
@@ -88,12 +93,7 @@ TEST(StuckRead, ZerosOnDiskPastTheFilesEndBuyTheProbeNoTime) {
   struct stat s {};
   ASSERT_EQ(::stat(damaged.c_str(), &s), 0);
   ASSERT_GE(off_t(s.st_blocks) * 512, padding) << "the padding is on disk, not a hole";
-  const auto start = std::chrono::steady_clock::now();
-  const CommandResult r = run_haptex({"capture", "extract", damaged, "-o", dir.file("g.h5"), "--no-sheets"});
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  expect_refusal(r, {damaged, "does not end", "damaged"});
-  EXPECT_LT(seconds, 4 * kStuckCallSeconds) << "ended by the bound, not by the test's time limit";
-  EXPECT_EQ(partial_files(dir.path().string()), std::vector<std::string>{});
+  expect_refused_by_the_bound(dir, damaged);
 }
 
 // The haptex-h5-probe processes whose parent is `parent`.

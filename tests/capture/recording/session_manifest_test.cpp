@@ -37,6 +37,7 @@ TEST(SessionManifest, FollowsItsSchemaAndIsWrittenAtomically) {
   p.file = "press_0.h5";
   p.frames = 40;
   p.ended_by = "release";
+  p.sha256 = std::string(64, 'a');
   const ReferenceSummary reference{.noise = 0.4f, .pixel_threshold = 0.4f, .level = 0.1f, .trigger = 0.25f,
                                     .release = 0.175f, .restarts = 1};
   const nlohmann::json doc = session_manifest(session(), reference, {p}, {}, "presses");
