@@ -83,6 +83,7 @@ class TrainCommand : public Command {
     if (force_) h5::require_replaceable(output_, dataset::format_name(dataset::Kind::model));  // before the training, not after
     const EarlierModel earlier = earlier_model();
     json::check_replaceable_json(log_, force_, predict::kTrainingLogFormat);
+    refuse_another_models_log();
     options_.variant = per_material_ ? predict::Variant::per_material : predict::Variant::unified;
     const auto start = std::chrono::steady_clock::now();
     const split::DatasetSplit split = input_.read();
@@ -163,16 +164,35 @@ class TrainCommand : public Command {
   // folder) is that file, however either is spelled; a log of an older haptex names it by `model`, as
   // typed. A log the model names that names another file (a copy's original, a merge's shard) is not it.
   bool describes_this_model(const std::string& path) const {
+    const std::optional<std::string> model = model_of_log(path);
+    return model && same_output_path(*model, output_);
+  }
+
+  // The model a training log haptex wrote names (its `model_file` resolved from the log's folder; an
+  // older haptex's `model`, as typed), or nothing for any other file.
+  static std::optional<std::string> model_of_log(const std::string& path) {
     try {
       json::check_replaceable_json(path, true, predict::kTrainingLogFormat);
       const nlohmann::json log = json::read_file(path);
-      if (!log.is_object()) return false;
+      if (!log.is_object()) return std::nullopt;
       if (const auto file = log.find("model_file"); file != log.end() && file->is_string())
-        return same_output_path(resolved_beside(file->get<std::string>(), path), output_);
-      return log.value("model", nlohmann::json()) == nlohmann::json(output_);
+        return resolved_beside(file->get<std::string>(), path);
+      if (const auto model = log.find("model"); model != log.end() && model->is_string()) return model->get<std::string>();
+      return std::nullopt;
     } catch (const std::exception&) {
-      return false;
+      return std::nullopt;
     }
+  }
+
+  // Review 31, F5: --log with --force names another model's log, that model still there: not this
+  // model's to replace.
+  void refuse_another_models_log() const {
+    std::error_code ec;
+    if (!force_ || !std::filesystem::exists(std::filesystem::symlink_status(log_, ec))) return;
+    const std::optional<std::string> model = model_of_log(log_);
+    if (model && !same_output_path(*model, output_) && std::filesystem::exists(std::filesystem::symlink_status(*model, ec)))
+      throw input_error(log_, "", "is the training log of " + *model + ", which is still there (its model_file names it)",
+                        "Give --log another name, or remove " + *model + " first");
   }
 
   // Which epoch lines go to stderr (docs/predict.md, "haptex train"): with -v every one; otherwise

@@ -10,6 +10,7 @@
 
 #include "core/durable_file.hpp"
 #include "core/error.hpp"
+#include "core/output_is_input.hpp"
 #include "core/owned_folder.hpp"
 #include "core/temporary_name.hpp"
 
@@ -110,6 +111,13 @@ void PartialDirectory::finish() {
 void PartialDirectory::commit() { commit_together({this}); }
 
 void PartialDirectory::belongs_to(const std::string& output) {
+  // Review 31, F5: a folder whose list names another output, still there, as its owner is that
+  // output's companion (a.h5's sheets), which --force over this output does not take.
+  const std::string earlier = folder_owner(final_);
+  std::error_code ec;
+  if (!earlier.empty() && !same_output_path(earlier, output) && fs::exists(fs::symlink_status(earlier, ec)))
+    throw input_error(final_, "", "is the " + options_.what + " of " + earlier + ", which is still there (its " + std::string(kFileListName) + " names it)",
+                      "Give " + options_.option + " another folder, or remove " + earlier + " first");
   // The folder's own place, not its temporary one: the list is read there.
   owner_ = std::filesystem::absolute(output).lexically_relative(std::filesystem::absolute(final_)).string();
 }

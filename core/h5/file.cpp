@@ -53,6 +53,11 @@ File File::create(const std::string& path, const std::string& shown_as) {
   return File(std::move(file), named);
 }
 
+bool not_hdf5(const std::string& path) {
+  silence_library_errors();
+  return H5Fis_hdf5(path.c_str()) == 0;
+}
+
 Group File::root() const {
   return Group(Handle(check_input(H5Gopen2(handle_.get(), "/", H5P_DEFAULT), "open the root group", path_)), path_, "/");
 }

@@ -28,6 +28,10 @@ class File {
   std::string path_;
 };
 
+// Whether `path` was read and found not to be an HDF5 file (a file HDF5 cannot open at all is
+// File::open's to explain).
+bool not_hdf5(const std::string& path);
+
 // Root attributes every haptex file carries (docs/architecture.md, "Formats"): haptex_format (e.g. "recordings/1"),
 // haptex_version, created_utc (ISO 8601; SOURCE_DATE_EPOCH is honoured for reproducible files), source.
 inline constexpr const char* kFormatAttribute = "haptex_format";

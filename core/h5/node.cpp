@@ -1,5 +1,6 @@
 #include "core/h5/node.hpp"
 
+
 #include <type_traits>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include "core/bounded_call.hpp"
 #include "core/error.hpp"
 #include "core/h5/link_rule.hpp"
+#include "core/h5/stored_type.hpp"
 #include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
 
@@ -339,6 +341,8 @@ std::string Dataset::dtype() const {
 }
 
 void Dataset::read_raw(hid_t memory_type, void* out) const {
+  const Handle stored(check_input(H5Dget_type(id()), "read the type of " + object_path_, file_));
+  require_sound_number_type(stored.get(), file_, object_path_);
   check_input_status(H5Dread(id(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out), "read dataset", where());
 }
 

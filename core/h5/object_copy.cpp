@@ -15,6 +15,7 @@
 #include "core/h5/link_rule.hpp"
 #include "core/h5/structure_probe.hpp"
 #include "core/h5/node.hpp"
+#include "core/h5/stored_type.hpp"
 
 namespace haptex::h5 {
 namespace {
@@ -66,6 +67,7 @@ struct Copy {
   void require_readable(hid_t type, hid_t space, const std::string& where) const {
     require_plain_type(type, where);
     require_readable_size(double(std::max<hssize_t>(0, H5Sget_simple_extent_npoints(space))), H5Tget_size(type), source_file, where);
+    require_sound_number_type(type, source_file, where);
   }
 
   void attributes(hid_t from, hid_t to, const std::string& source_path, const std::string& target_path) const {

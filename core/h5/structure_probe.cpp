@@ -136,8 +136,9 @@ int run_probe(int fd, ProbeDepth depth, std::string& output) {
 
 Error damaged(const std::string& path, const std::vector<std::string>& said) { return input_error(path, said[0], said[1], said[2]); }
 
-// Probes the file open as `fd`, named `path` in messages.
-void probe(int fd, const std::string& path, ProbeDepth depth) {
+// Probes the file open as `fd`, named `path` in messages; `hdf5_has_it` once this process's HDF5 has
+// opened it.
+void probe(int fd, const std::string& path, ProbeDepth depth, bool hdf5_has_it) {
   if (probe_program().empty()) return;
   const std::optional<FileVersion> version_found = version_of(fd, depth);
   if (!version_found) return;  // File::open says why
@@ -153,10 +154,21 @@ void probe(int fd, const std::string& path, ProbeDepth depth) {
     verdicts().keep(version, said);
     throw damaged(path, said);
   }
-  if (code <= 128 || !crash_signal(code - 128)) {
+  // Not opened is no verdict (review 31, F1: it was taken for one, and the file read unprobed).
+  if (code == kProbeNotOpened && !hdf5_has_it) return;  // File::open's H5Fopen says why
+  if (code == kProbeNotOpened)
+    throw input_error(path, "", "haptex-h5-probe, the separate program that reads each file first, could not open it while haptex's HDF5 had it open (replaced or changed meanwhile)",
+                      "Run again once nothing writes or replaces the file");
+  // Only a probe that read it all says the file can be read (review 31, F6: any other code was taken
+  // for it). One that waited four times its time (a stalled disk) gives no answer: read as without it.
+  if (code == kProbeRead || code == 128 + SIGALRM) {
     verdicts().keep(version, {});
     return;
   }
+  if (code <= 128 || !crash_signal(code - 128))
+    throw failure(path + ": haptex-h5-probe, the separate program that reads each file first, ended with " +
+                  (code > 128 ? "signal " + std::to_string(code - 128) : "exit code " + std::to_string(code)) +
+                  ", which says nothing of the file; run `haptex-h5-probe FILE` (lib/haptex/) to see why");
   const int signal = code - 128;
   const std::string what =
       signal == SIGXCPU
@@ -174,18 +186,18 @@ void probe(int fd, const std::string& path, ProbeDepth depth) {
 
 void probe_structure(const std::string& path) {
   const OpenedForProbe file(path);
-  probe(file.fd(), path, ProbeDepth::structure);
+  probe(file.fd(), path, ProbeDepth::structure, false);
 }
 
 void probe_structure(hid_t file, const std::string& path) {
-  if (const std::optional<int> fd = hdf5_descriptor(file)) probe(*fd, path, ProbeDepth::structure);
+  if (const std::optional<int> fd = hdf5_descriptor(file)) probe(*fd, path, ProbeDepth::structure, true);
 }
 
 void probe_values(hid_t object, const std::string& path) {
   const std::optional<int> fd = hdf5_descriptor(object);
   if (!fd) return;
   const std::optional<FileVersion> structure = version_of(*fd, ProbeDepth::structure);
-  if (structure && verdicts().find(*structure)) probe(*fd, path, ProbeDepth::values);
+  if (structure && verdicts().find(*structure)) probe(*fd, path, ProbeDepth::values, true);
 }
 
 }  // namespace haptex::h5

@@ -7,6 +7,7 @@
 #include "core/h5/handle.hpp"
 #include "core/h5/link_rule.hpp"
 #include "core/h5/node.hpp"
+#include "core/h5/stored_type.hpp"
 
 // haptex-h5-probe's reading (core/h5/structure_probe.hpp): every place it reads is written to `out`
 // first, so that when HDF5 crashes the reader of the pipe knows where.
@@ -23,6 +24,7 @@ void read_attribute(hid_t object, const std::string& name, const std::string& wh
   Handle attr(check_input(H5Aopen(object, name.c_str(), H5P_DEFAULT), "open the attribute " + where, file));
   Handle stored(check_input(H5Aget_type(attr.get()), "read the type of " + where, file));
   Handle space(check_input(H5Aget_space(attr.get()), "read the shape of " + where, file));
+  require_sound_number_type(stored.get(), file, where);
   const H5T_class_t kind = H5Tget_class(stored.get());
   if (kind != H5T_INTEGER && kind != H5T_FLOAT && kind != H5T_STRING) return;  // what haptex's readers read
   Handle memory(check_input(H5Tget_native_type(stored.get(), H5T_DIR_DEFAULT), "read the type of " + where, file));
@@ -88,6 +90,7 @@ void read_members(hid_t group, const std::string& path, const std::string& file,
       progress << member << '\0' << std::flush;
       const Dataset dataset(Handle(check_input(H5Dopen2(group, name.c_str(), H5P_DEFAULT), "open " + member, file)), file, member);
       Handle type(check_input(H5Dget_type(dataset.id()), "read the type of " + member, file));
+      require_sound_number_type(type.get(), file, member);
       Handle space(check_input(H5Dget_space(dataset.id()), "read the shape of " + member, file));
       Handle creation(check_input(H5Dget_create_plist(dataset.id()), "read the layout of " + member, file));
       read_attributes(dataset.id(), member, file, progress);

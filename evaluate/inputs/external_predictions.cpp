@@ -188,7 +188,10 @@ ExternalPredictions read_external_predictions(const PredictionsInput& input, con
                                               const std::vector<GridSection>& grid) {
   const Reader r{input.path};
   require_regular_file(input.path);  // a FIFO or a device is named as such
-  const h5::File file = r.attribute("", "an HDF5 file haptex can read", [&] { return h5::File::open(input.path); });
+  // Only "not HDF5" is the layout's to fix: damage, a writer's lock or permissions are said as File::open
+  // says them, with their place (review 31, F2).
+  if (h5::not_hdf5(input.path)) throw r.error("", "is not an HDF5 file", kLayout);
+  const h5::File file = h5::File::open(input.path);
   const h5::Group root = file.root();
   h5::require_link_rule(root);  // before any lookup by name: an external link to a FIFO would hang it (review 5)
   const std::string format = "/@" + std::string(kPredictionsFormatAttribute);

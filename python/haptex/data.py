@@ -64,19 +64,19 @@ def open_hdf5(path, values=False):
     before h5py opens it, then the file h5py opened (a file renamed over the path meanwhile is probed
     too), with values its encoded images; a HaptexFileError naming the place where it finds damage."""
     with open(_regular_file(path), "rb") as before:
-        _refuse_damage(path, before.fileno(), False)
+        _refuse_damage(path, before.fileno(), False, False)
     f = h5py.File(path, "r")
     try:
         for depth in (False, True) if values else (False,):
-            _refuse_damage(path, f.id.get_vfd_handle(), depth)
+            _refuse_damage(path, f.id.get_vfd_handle(), depth, True)
     except HaptexFileError:
         f.close()
         raise
     return f
 
 
-def _refuse_damage(path, fd, values):
-    found = damage(fd, values=values)
+def _refuse_damage(path, fd, values, h5py_has_it):
+    found = damage(fd, values=values, h5py_has_it=h5py_has_it)
     if found:
         place, finding, fix = found
         raise HaptexFileError(f"{path}: {place + ': ' if place else ''}{finding}; {fix[:1].lower() + fix[1:]}")
@@ -157,6 +157,13 @@ def _read_table(group, path):
                 column("action", 2 * ACTION_SAMPLES), column("target", TARGET_BINS))
     if any(len(a) != n for a in (w.material, w.recording, w.section, w.press, w.action, w.target)):
         raise HaptexFileError(f"{path}: the columns of {group.name} differ in length")
+    # The names the material column indexes: one material each, as haptex writes them (review 31, F3: an
+    # empty or repeated name gave a traceback, or one material's predictions from another's windows).
+    for i, name in enumerate(w.materials):
+        if not name or name in w.materials[:i]:
+            what = f"'{printable(name)}', named twice" if name else "empty"
+            raise HaptexFileError(f"{path}: {group.name}/materials[{i}] is {what}; make the file again with the haptex "
+                                  "command that wrote it")
     # Numbers that index something: a negative material index would pick another material from the
     # end of the list (review 15, R15).
     for name, values, least, most in (("material", w.material, 0, len(w.materials) - 1), ("recording", w.recording, 0, None),
@@ -456,6 +463,10 @@ def read_split_and_grid(split_path, windows_path):
     grid = read_windows(windows_path)
     if (grid.dataset_sha256, grid.split_sha256) != (split.dataset_sha256, split.sha256):
         raise HaptexFileError(f"{windows_path} was made from another dataset or split than {split_path}")
+    for i, name in enumerate(grid.materials):
+        if name not in split.material_sections:
+            raise HaptexFileError(f"{windows_path}: /windows/materials[{i}] is '{printable(name)}', a material {split_path} does not "
+                                  "hold; make the windows file again with haptex windows")
     return split, grid
 
 

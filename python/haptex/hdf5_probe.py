@@ -9,7 +9,7 @@ import shutil
 import signal
 import subprocess
 
-_REFUSED = 1  # tools/h5-probe/main.cpp's exit codes: 0 read, 1 HDF5 refused a read (place, finding, fix follow)
+_REFUSED, _NOT_OPENED = 1, 3  # tools/h5-probe/main.cpp's exit codes: 0 read, 1 HDF5 refused a read (place, finding, fix follow), 3 not opened
 _CRASHES = {signal.SIGSEGV, signal.SIGBUS, signal.SIGABRT, signal.SIGFPE, signal.SIGILL}
 
 
@@ -42,10 +42,11 @@ def _records(output):
 _said = {}  # what the probe said of each file (device, inode, size, modification time, depth) in this process
 
 
-def damage(fd, values=False):
+def damage(fd, values=False, h5py_has_it=False):
     """What the probe finds reading the file open as `fd` (its structure; with values, its
     variable-length byte values: encoded images): None when it read it all (or cannot run), else
-    (place, finding, fix). Each file is probed once per depth."""
+    (place, finding, fix). Each file is probed once per depth. A file the probe cannot open is no
+    verdict before h5py opens it (h5py says why), and damage once h5py has it open."""
     program = probe_program()
     if program is None:
         return None
@@ -53,7 +54,13 @@ def damage(fd, values=False):
     version = (s.st_dev, s.st_ino, s.st_size, s.st_mtime_ns, values)
     if version not in _said:
         _said[version] = _probe(program, fd, values)
-    return _said[version]
+    found = _said[version]
+    if found is _NOT_OPENED:
+        del _said[version]
+        return (("", "haptex-h5-probe, the separate program that reads each file first, could not open it while h5py had it "
+                     "open (replaced or changed meanwhile)", "Run again once nothing writes or replaces the file")
+                if h5py_has_it else None)
+    return found
 
 
 def _probe(program, fd, values):
@@ -61,6 +68,8 @@ def _probe(program, fd, values):
     if not output and code != 0:  # AddressSanitizer's runtime, which it starts under, did not let it start
         code, output = _run(program, fd, values, as_is=True)
     records = _records(output)
+    if code == _NOT_OPENED:
+        return _NOT_OPENED
     if code == _REFUSED and len(records) >= 3:
         return tuple(records[-3:])
     fix = "the file is damaged: copy it again, or make it again with the haptex command that wrote it"
@@ -70,4 +79,9 @@ def _probe(program, fd, values):
     if code < 0 and -code in _CRASHES:
         return (records[-1], f"HDF5 crashes reading it ({signal.Signals(-code).name} in haptex-h5-probe, the separate "
                              "program that reads each file first, so Python does not)", fix)
-    return None
+    if code == 0 or code == -signal.SIGALRM:  # read it all; or waited four times its time (a stalled disk): no answer
+        return None
+    # Only a probe that read it all says the file can be read (review 31, F6).
+    return ("", f"haptex-h5-probe, the separate program that reads each file first, ended with "
+                f"{'signal ' + str(-code) if code < 0 else 'exit code ' + str(code)}, which says nothing of the file",
+            f"run {program} on the file to see why")

@@ -79,6 +79,23 @@ TEST(DamagedHeader, AGelsightFileWithADamagedAttributeHeaderIsRefusedByAlign) {
   EXPECT_FALSE(fs::exists(d.file("a.h5")));
 }
 
+// Review 31, F4: one flipped bit in a float32 datatype's size (4 -> 255 bytes) made qa, merge, view and
+// align read past HDF5's buffers (SIGSEGV; view left its .partial folder). A number type no HDF5 writer
+// makes is damage, refused by the probe and by every read.
+TEST(DamagedHeader, AFloatOfAnImpossibleSizeIsRefusedByEveryReader) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  for (std::size_t nth = 0; nth < 4; ++nth) {
+    SCOPED_TRACE(nth);
+    const std::string dataset = d.file("d" + std::to_string(nth) + ".h5"), recordings = d.file("r" + std::to_string(nth) + ".h5");
+    ASSERT_TRUE(copy_with_damaged_float_size(p.dataset, nth, dataset));
+    ASSERT_TRUE(copy_with_damaged_float_size(p.recordings, nth, recordings));
+    expect_refused_everywhere(d, dataset, {{"qa", dataset}, {"merge", dataset, "-o", d.file("m.h5")}, {"view", dataset, "-o", d.file("site")}});
+    expect_refused_everywhere(d, recordings, {{"qa", recordings}, {"align", "--recordings", recordings, "--gelsight", p.gelsight, "-o", d.file("a.h5")}});
+  }
+  for (const char* output : {"m.h5", "site", "a.h5"}) EXPECT_FALSE(fs::exists(d.file(output))) << output;
+}
+
 TEST(DamagedHeader, APressFileWithADamagedRootAttributeIsRefusedByExtractAndReplay) {
   const TempDir d;
   ASSERT_EQ(run_haptex({"capture", "record", "--device", "fake:size=160x120,lockstep", "--material", "Cork", "--presses", "1", "-o",

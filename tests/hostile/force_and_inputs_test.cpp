@@ -595,8 +595,13 @@ TEST(Force, CompanionsAtChosenNamesGoWithTheirOutput) {
   std::ofstream(d.file("shy/mine.txt")) << "precious\n";
   ASSERT_EQ(extract(woven, "g.h5", {"--force", "--no-sheets"}), 0);
   EXPECT_EQ(file_bytes(d.file("shy/mine.txt")), "precious\n") << "a folder holding a file of the user's stays";
-  // Another run's sheets now at the name the earlier file recorded: not that file's, so they stay.
+  // Review 31, F5: another output's sheets, that output still there, are not this one's to replace.
   ASSERT_EQ(extract(videos, "g1.h5", {"--sheets", d.file("shz")}), 0);
+  const std::string g1_sheets = file_bytes(d.file("shz/haptex-files.json"));
+  EXPECT_EQ(extract(woven, "g2.h5", {"--sheets", d.file("shz"), "--force"}), 2);
+  EXPECT_EQ(file_bytes(d.file("shz/haptex-files.json")), g1_sheets) << "g1.h5's sheets";
+  // Another run's sheets now at the name the earlier file recorded: not that file's, so they stay.
+  fs::rename(d.file("shz"), d.file("shz_g1"));
   ASSERT_EQ(extract(woven, "g2.h5", {"--sheets", d.file("shz"), "--force"}), 0);
   ASSERT_EQ(extract(woven, "g1.h5", {"--force", "--no-sheets"}), 0);
   EXPECT_TRUE(fs::exists(d.file("shz/haptex-files.json"))) << "g2.h5's sheets";
@@ -611,6 +616,10 @@ TEST(Force, CompanionsAtChosenNamesGoWithTheirOutput) {
   EXPECT_FALSE(fs::exists(d.file("a.json"))) << "the log of the model replaced";
   EXPECT_TRUE(fs::exists(d.file("m.training.json")));
   ASSERT_EQ(train("m.h5", {"--force", "--log", d.file("b.json")}), 0);
+  const std::string m_log = file_bytes(d.file("b.json"));
+  EXPECT_EQ(train("n.h5", {"--log", d.file("b.json"), "--force"}), 2) << "m.h5's log, m.h5 still there (review 31, F5)";
+  EXPECT_EQ(file_bytes(d.file("b.json")), m_log);
+  fs::rename(d.file("b.json"), d.file("b_m.json"));
   ASSERT_EQ(train("n.h5", {"--log", d.file("b.json"), "--force"}), 0);
   ASSERT_EQ(train("m.h5", {"--force"}), 0);
   EXPECT_TRUE(fs::exists(d.file("b.json"))) << "n.h5's log now, not the replaced model's";

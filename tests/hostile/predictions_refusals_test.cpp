@@ -15,6 +15,7 @@
 
 #include "core/h5/file.hpp"
 #include "tests/hostile/hostile_support.hpp"
+#include "tests/support/mutations.hpp"
 #include "tests/support/predictions_files.hpp"
 #include "tests/support/small_pipeline.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -170,6 +171,21 @@ TEST(PredictionsRefusals, FilesThatAreNoPredictionsAreRefused) {
     expect_refusal(evaluate(dir, {"x=" + file}), mention.empty() ? std::vector<std::string>{file} : std::vector<std::string>{file, mention});
     EXPECT_FALSE(fs::exists(dir.file("report")));
   }
+}
+
+// Review 31, F2: a damaged predictions file was told "is not an HDF5 file haptex can read ... write the
+// file as the layout says", hiding the place and what HDF5 found; only a file that is not HDF5 is told so.
+TEST(PredictionsRefusals, DamageIsToldAsDamageNotAsAnotherLayout) {
+  const TempDir dir;
+  write_predictions(dir.file("whole.h5"), good());
+  const std::string damaged = dir.file("damaged.h5"), text = dir.file("text.h5");
+  copy_with_damaged_attribute(dir.file("whole.h5"), "predictions_format", damaged);
+  std::ofstream(text) << "not HDF5";
+  const CommandResult r = evaluate(dir, {"x=" + damaged});
+  expect_refusal(r, {damaged, "damaged"});
+  EXPECT_EQ(r.err.find("lays it out"), std::string::npos) << r.err;
+  expect_refusal(evaluate(dir, {"x=" + text}), {text, "is not an HDF5 file", "lays it out"});
+  EXPECT_FALSE(fs::exists(dir.file("report")));
 }
 
 TEST(PredictionsRefusals, SpectraOfAnotherTypeAreRefused) {

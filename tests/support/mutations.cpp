@@ -131,4 +131,18 @@ void copy_with_damaged_heap(const std::string& file, const std::string& copy) {
   std::ofstream(copy, std::ios::binary) << bytes;
 }
 
+bool copy_with_damaged_float_size(const std::string& file, std::size_t nth, const std::string& copy) {
+  std::ifstream in(file, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The float class's size, then its properties: bit offset 0, precision 32, exponent at 23 of 8 bits,
+  // mantissa at 0 of 23 bits, exponent bias 127 (the HDF5 file format's datatype message).
+  const std::string float32("\x04\0\0\0\0\0\x20\0\x17\x08\0\x17\x7f\0\0\0", 16);
+  std::size_t at = bytes.find(float32);
+  for (std::size_t k = 0; k < nth && at != std::string::npos; ++k) at = bytes.find(float32, at + 1);
+  if (at == std::string::npos) return false;
+  bytes[at] = char(255);
+  std::ofstream(copy, std::ios::binary) << bytes;
+  return true;
+}
+
 }  // namespace haptex::test

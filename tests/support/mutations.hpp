@@ -60,6 +60,9 @@ void copy_with_damaged_attribute(const std::string& file, const std::string& nam
 // A copy of `file` whose first global heap collection's first object claims 16 KiB, more than the
 // collection holds: libhdf5 1.10 copies past the heap reading it (review 30, F2).
 void copy_with_damaged_heap(const std::string& file, const std::string& copy);
+// A copy of `file` whose `nth` (from 0) little-endian float32 datatype message says its elements are 255
+// bytes (review 31, F4: HDF5 copies past its buffers reading them); false when the file has fewer.
+bool copy_with_damaged_float_size(const std::string& file, std::size_t nth, const std::string& copy);
 
 nlohmann::json read_json(const std::string& path);
 void write_json(const std::string& path, const nlohmann::json& doc);

@@ -3,10 +3,11 @@
 // program, not haptex (core/h5/structure_probe.hpp). Writes the place it reads next, NUL-ended, to
 // standard output.
 // Exit code 0 when all was read, 1 when HDF5 refused a read (its place, finding and fix follow), 3 when
-// HDF5 could not open the file, 64 on a wrong command line, 65 when its caller had already ended; a
-// signal when it crashed, SIGXCPU once it used its processor time (HDF5 loops on some damage), SIGALRM
-// when it waited four times as long. It starts itself again under AddressSanitizer's runtime when it
+// HDF5 could not open the file, 64 on a wrong command line; a signal when it crashed, SIGXCPU once it
+// used its processor time (HDF5 loops on some damage), SIGALRM when it waited four times as long. It starts itself again under AddressSanitizer's runtime when it
 // can; a caller that gets no output at all runs it again with HAPTEX_PROBE_AS_IS=1, without.
+#include <dlfcn.h>
+#include <limits.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -17,6 +18,7 @@
 #include <csignal>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <string_view>
@@ -27,7 +29,7 @@
 
 namespace {
 
-constexpr int kOrphaned = 65;  // its caller was gone before it started: no one reads the answer
+const char* probed_name = nullptr;  // the FILE argument, as HDF5 is given it
 
 // The processor time the probe may use: a reader's bound on one stuck call (kStuckCallSeconds), plus
 // a second per 50 MB of the file HDF5 can read, far slower than HDF5 reads any file haptex writes. What
@@ -85,6 +87,20 @@ void limit_time(rlim_t seconds) {
 
 }  // namespace
 
+// HDF5 1.10 names a file it opens through a symbolic link by realpath(), and refuses to open it when
+// that has no answer: the probe's /dev/fd/3 of a file renamed over since haptex opened it (its name
+// "x.h5 (deleted)"), or one whose real path is longer than PATH_MAX (review 31, F1). The name serves
+// only to resolve external links, which the probe never follows (check_links' rule), so for the probe's
+// own file realpath answers with the name itself; any other name is resolved as usual.
+extern "C" char* realpath(const char* __restrict name, char* __restrict resolved) noexcept {
+  using Realpath = char* (*)(const char*, char*);
+  static const auto next = reinterpret_cast<Realpath>(dlsym(RTLD_NEXT, "realpath"));
+  if (name == nullptr || probed_name == nullptr || std::strcmp(name, probed_name) != 0) return next(name, resolved);
+  if (resolved == nullptr) return strdup(name);
+  if (std::strlen(name) >= PATH_MAX) return nullptr;
+  return std::strcpy(resolved, name);
+}
+
 int main(int argc, char** argv) {
   const bool values = argc == 3 && std::string(argv[1]) == "--values";
   if (argc != 2 && !values) {
@@ -92,10 +108,11 @@ int main(int argc, char** argv) {
     return 64;
   }
   const char* path = argv[argc - 1];
+  probed_name = path;
   // Ends with its caller: haptex stopped by a signal sent to it alone (kill PID, a batch system's TERM)
-  // leaves no probe running on (review 30, F3). A caller gone before this line has made it an orphan.
+  // leaves no probe running on (review 30, F3). (No check that the caller still lives: as process 1 of
+  // a container, haptex is the parent whose pid is 1; review 31, F6.)
   prctl(PR_SET_PDEATHSIG, SIGKILL);
-  if (getppid() == 1) std::_Exit(kOrphaned);
   start_again_under_sanitizer(argv);
   set_limit(RLIMIT_CORE, 0, 0);  // a crash here is an answer, not a bug to keep a core of
   const double on_disk = bytes_on_disk(path);
