@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <map>
@@ -15,6 +16,7 @@
 
 #include "core/error.hpp"
 #include "core/h5/handle.hpp"
+#include "core/open_files.hpp"
 #include "core/process/run_program.hpp"
 
 namespace haptex::h5 {
@@ -149,6 +151,7 @@ void probe(int fd, const std::string& path, ProbeDepth depth, bool hdf5_has_it) 
   }
   std::string output;
   const int code = run_probe(fd, depth, output);
+  const int not_started = errno;
   if (code == kProbeRefused) {
     const std::vector<std::string> said = last_records(output, 3);
     verdicts().keep(version, said);
@@ -164,6 +167,11 @@ void probe(int fd, const std::string& path, ProbeDepth depth, bool hdf5_has_it) 
   if (code == kProbeRead || code == 128 + SIGALRM) {
     verdicts().keep(version, {});
     return;
+  }
+  if (code == process::kNotStarted) {
+    refuse_if_out_of_descriptors(not_started, path);  // the machine's limit (a merge of many shards), said as such
+    throw failure(path + ": haptex-h5-probe, the separate program that reads each file first, could not be started (" +
+                  std::strerror(not_started) + ")");
   }
   if (code <= 128 || !crash_signal(code - 128))
     throw failure(path + ": haptex-h5-probe, the separate program that reads each file first, ended with " +

@@ -22,8 +22,9 @@ namespace haptex::h5 {
 // Probes the structure of `path` (File::open, reading, before HDF5 opens it), once per file (device,
 // inode, size, modification time) in this process. Throws haptex::Error (bad_input) naming the file and
 // the place when the probe crashed, did not end within its processor time, or HDF5 refused one of its
-// reads. Returns at once when the probe is not installed beside this program (a program that links
-// haptex: docs/library.md) or could not be started.
+// reads; (failed) when it could not be started (out of descriptors: the limit, core/open_files.hpp) or
+// ended another way, which says nothing of the file. Returns at once when the probe is not installed
+// beside this program (a program that links haptex: docs/library.md).
 void probe_structure(const std::string& path);
 
 // The same for the file HDF5 opened as `file` (File::open, right after H5Fopen, through the descriptor

@@ -17,7 +17,6 @@ namespace haptex::process {
 
 namespace {
 
-constexpr int kNotStarted = 127;  // the shell's convention for "command not found"
 
 class FileActions {
  public:
@@ -85,6 +84,7 @@ pid_t start_program(const ProgramRun& run, int stdout_pipe, int passed = -1) {
   pid_t pid = 0;
   const int spawned = posix_spawnp(&pid, argv[0], actions.get(), &attributes, argv.data(), envp.data());
   posix_spawnattr_destroy(&attributes);
+  if (spawned != 0) errno = spawned;  // kNotStarted's reason, as a failed pipe2 leaves it
   return spawned == 0 ? pid : -1;
 }
 
@@ -113,6 +113,7 @@ int run_program_reading(const ProgramRun& run, std::string& tail, std::size_t mo
   const int passed = descriptor >= 0 ? fcntl(descriptor, F_DUPFD_CLOEXEC, kPassedDescriptor + 1) : -1;
   ::close(ends[1]);
   const pid_t pid = write_end >= 0 && (descriptor < 0 || passed >= 0) ? start_program(run, write_end, passed) : -1;
+  const int not_started = errno;  // when pid < 0: why the descriptors or the start failed
   if (write_end >= 0) ::close(write_end);
   if (passed >= 0) ::close(passed);
   char buffer[4096];
@@ -124,7 +125,9 @@ int run_program_reading(const ProgramRun& run, std::string& tail, std::size_t mo
     if (tail.size() > most) tail.erase(0, tail.size() - most);
   }
   ::close(ends[0]);
-  return pid < 0 ? kNotStarted : wait_for_program(pid);
+  if (pid >= 0) return wait_for_program(pid);
+  errno = not_started;
+  return kNotStarted;
 }
 
 bool program_on_path(const std::string& name) {

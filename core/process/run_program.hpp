@@ -15,8 +15,12 @@ struct ProgramRun {
   std::vector<std::string> environment;  // NAME=value set for it, beside (or over) this process's own
 };
 
+// The exit code of a program that could not be started (not installed, not executable, no descriptor
+// or memory left to start it; errno says which): the shell's convention for "command not found".
+inline constexpr int kNotStarted = 127;
+
 // Runs the program to its end and returns its exit code:
-// 127 when it could not be started (not installed, not executable), 128 + N when signal N ended it.
+// kNotStarted when it could not be started, 128 + N when signal N ended it.
 int run_program(const ProgramRun& run);
 
 // run_program, its standard output read through a pipe instead (stdout_path is not used): the last

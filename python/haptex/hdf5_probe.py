@@ -28,8 +28,11 @@ def probe_program():
 def _run(program, fd, values, as_is):
     argv = [program] + (["--values"] if values else []) + [f"/dev/fd/{fd}"]
     environment = dict(os.environ, HAPTEX_PROBE_AS_IS="1") if as_is else None
-    run = subprocess.run(argv, pass_fds=(fd,), stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                         stderr=subprocess.DEVNULL, env=environment)
+    try:
+        run = subprocess.run(argv, pass_fds=(fd,), stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                             stderr=subprocess.DEVNULL, env=environment)
+    except OSError as e:  # not started (no descriptor or memory left): an end that says nothing of the file
+        return 127, str(e).encode()
     return run.returncode, run.stdout
 
 
