@@ -10,4 +10,7 @@ namespace haptex::apps {
 // (HDF5)"), and --force bound to `force`.
 void add_output_options(CLI::App& app, std::string& output, bool& force, const std::string& what);
 
+// --force alone, for a command whose output is optional (play --record).
+void add_force_option(CLI::App& app, bool& force);
+
 }  // namespace haptex::apps

@@ -14,9 +14,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "apps/input_file_option.hpp"
 #include "apps/command.hpp"
+#include "apps/input_file_option.hpp"
 #include "apps/number_checks.hpp"
+#include "apps/output_options.hpp"
 #include "apps/stop_on_signal.hpp"
 #include "apps/texture_options.hpp"
 #include "core/durable_file.hpp"
@@ -58,7 +59,7 @@ class PlayCommand : public Command {
     app.add_option("--device", device_, "ALSA playback device (default, plughw:CARD,DEVICE, or one an ALSA configuration defines)")
         ->capture_default_str();
     app.add_option("--record", record_, "Keep what was played as a WAV (16-bit, the card's rate) and the actions as CSV beside it (NAME.csv)");
-    app.add_flag("--force", force_, "Replace an earlier recording that haptex wrote");
+    add_force_option(app, force_);
     app.add_option("--reconstruct", reconstruction_, "Phase: online (RTISI-LA, 30 ms look-ahead) or noise (shaped white noise, no look-ahead)")
         ->capture_default_str()->check(CLI::IsMember({"online", "noise"}));
     app.add_option("--look-ahead", look_ahead_, "online: frames of look-ahead (latency 10 ms each)")->capture_default_str()->check(CLI::Range(0, 100));

@@ -24,6 +24,7 @@
 #include "core/text/utf8.hpp"
 #include "core/version.hpp"
 #include "dataset/format.hpp"
+#include "dataset/layout.hpp"
 #include "predict/model_file.hpp"
 #include "predict/train.hpp"
 
@@ -110,8 +111,8 @@ class TrainCommand : public Command {
                                 {"parameters", parameters(model)}, {"seconds", seconds}};
     PartialFile log_file(log_, force_, [](const std::string& p) { json::check_replaceable_json(p, true, predict::kTrainingLogFormat); });
     json::write_file(log, "training-log.schema.json", log_file);
-    model_file.root().set_attr(predict::kTrainingLogAttribute, relative_to_folder_of(log_, output_));
-    model_file.root().set_attr(predict::kTrainingLogSha256Attribute, sha256_file(log_file.path()));
+    model_file.root().set_attr(dataset::layout::kTrainingLogAttribute, relative_to_folder_of(log_, output_));
+    model_file.root().set_attr(dataset::layout::kTrainingLogSha256Attribute, sha256_file(log_file.path()));
     // --force with --log elsewhere: the log beside the model it replaces describes that model, so it goes
     // too; so does the log the replaced model names (written under --log), while it is that run's.
     EarlierOutput earlier_log(default_log(), [this](const std::string& path) { return describes_this_model(path); });
@@ -141,8 +142,8 @@ class TrainCommand : public Command {
     if (!force_ || !std::filesystem::is_regular_file(output_, ec)) return {};
     try {
       const h5::Group root = h5::File::open(output_).root();
-      const auto log = root.try_attr<std::string>(predict::kTrainingLogAttribute);
-      const auto sha256 = root.try_attr<std::string>(predict::kTrainingLogSha256Attribute);
+      const auto log = root.try_attr<std::string>(dataset::layout::kTrainingLogAttribute);
+      const auto sha256 = root.try_attr<std::string>(dataset::layout::kTrainingLogSha256Attribute);
       if (!log || !sha256) return {};
       return {resolved_beside(*log, output_), *sha256};
     } catch (const Error&) {

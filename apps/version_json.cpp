@@ -6,7 +6,7 @@
 #include "capture/recording/session_manifest.hpp"
 #include "core/version.hpp"
 #include "dataset/format.hpp"
-#include "evaluate/inputs/external_predictions.hpp"
+#include "dataset/layout.hpp"
 #include "evaluate/report/results_json.hpp"
 #include "predict/train.hpp"
 #include "split/split_manifest.hpp"
@@ -20,7 +20,7 @@ nlohmann::json version_json() {
           {"formats",
            {{"hdf5_written", hdf5},
             {"json_written", {split::kManifestFormat, predict::kTrainingLogFormat, capture::kSessionManifestFormat, evaluate::kResultsFormat}},
-            {"hdf5_read", {std::string(evaluate::kPredictionsFormat)}}}}};
+            {"hdf5_read", {std::string(dataset::layout::kPredictionsFormat)}}}}};
 }
 
 }  // namespace haptex::apps

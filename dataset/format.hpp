@@ -22,7 +22,7 @@ struct Format {
 };
 
 const Format& format_of(Kind kind);
-// Every HDF5 format this haptex writes, in the order of docs/architecture.md's table.
+// Every HDF5 format this haptex writes; docs/architecture.md's table lists each (tests/dataset/format_table_test.cpp).
 std::span<const Format> formats();
 std::string format_name(Kind kind);  // "dataset/4"
 // "recordings/1, gelsight/2 or dataset/4": the current formats of `kinds`, for messages.

@@ -157,6 +157,10 @@ inline constexpr const char* kPredictedSignals = "signals";
 inline constexpr const char* kQuerySeconds = "query_seconds";    // root attribute
 inline constexpr const char* kSignalSeconds = "seconds";         // attribute of /signals
 inline constexpr const char* kPredictionsSource = "source";      // root attribute: the method, one line
+// Its format mark: not haptex_format, since haptex never writes a predictions file, so `--force` of a
+// haptex command never replaces one (docs/architecture.md, "Formats").
+inline constexpr const char* kPredictionsFormatAttribute = "predictions_format";
+inline constexpr const char* kPredictionsFormat = "predictions/1";
 
 // Model file (predict/model_file.cpp; schemas/hdf5-layout.md, "Model file"): root attributes, the
 // materials it knows (/materials/ids, /materials/names), the descriptor's spec, the normalisation,
@@ -164,6 +168,11 @@ inline constexpr const char* kPredictionsSource = "source";      // root attribu
 inline constexpr const char* kModelVariant = "variant";
 inline constexpr const char* kModelConfig = "config";
 inline constexpr const char* kModelMetrics = "metrics";
+// The model's training log, its path relative to the model's folder (core/output_set.hpp,
+// relative_to_folder_of), and the log's SHA-256 as written: --force over the model retires that log
+// with it while it is still those bytes.
+inline constexpr const char* kTrainingLogAttribute = "training_log";
+inline constexpr const char* kTrainingLogSha256Attribute = "training_log_sha256";
 inline constexpr const char* kMaterialIds = "ids";
 inline constexpr const char* kMaterialNames = "names";
 inline constexpr const char* kFeatureSpec = "feature_spec";

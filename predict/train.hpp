@@ -10,11 +10,6 @@ namespace haptex::predict {
 
 // The training log haptex train writes beside the model (docs/predict.md).
 inline constexpr const char* kTrainingLogFormat = "training-log/1";
-// The model file's root attributes naming its training log, relative to the model's folder
-// (core/output_set.hpp, relative_to_folder_of), and the log's SHA-256 as written: --force over the model
-// retires that log with it while it is still those bytes.
-inline constexpr const char* kTrainingLogAttribute = "training_log";
-inline constexpr const char* kTrainingLogSha256Attribute = "training_log_sha256";
 
 // progress may be called from several threads at once in the per-material variant; calls are serialised.
 Model train_model(const TrainingData& data, const TrainOptions& options, const EpochCallback& progress = {});

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "convert/hatt_model_reader.hpp"
 #include "core/ar/expected_spectrum.hpp"
@@ -48,14 +49,18 @@ double extended_power(const dataset::TruthGrid& g, std::size_t s, std::size_t f,
   return a * a;
 }
 
-std::vector<std::vector<double>> grid_section(const dataset::TruthGrid& grid, const dataset::TruthRecording& r, std::int64_t begin,
-                                              const std::vector<std::size_t>& windows, double noise_power) {
+// The grid's spectrum of each window, its power averaged over the oracle's ten points (one every 100
+// samples from the 50th), each at the (speed, force) `action_at(t, sample)` gives for window t, plus
+// the sensor's noise.
+template <typename ActionAt>
+std::vector<std::vector<double>> oracle_spectra(const dataset::TruthGrid& grid, const std::vector<std::size_t>& windows, double noise_power,
+                                              ActionAt action_at) {
   std::vector<std::vector<double>> out;
   for (std::size_t t : windows) {
     std::vector<double> power(dataset::kTargetBins, 0.0);
     for (std::size_t p = 0; p < kGridPoints; ++p) {
-      const std::size_t i = std::size_t(begin) + t + 50 + 100 * p;
-      const auto at = grid_power_at(grid, r.speed_mm_s[i], r.force_n[i]);
+      const auto [speed, force] = action_at(t, t + 50 + 100 * p);
+      const auto at = grid_power_at(grid, speed, force);
       for (std::size_t k = 0; k < power.size(); ++k) power[k] += at[k] / double(kGridPoints);
     }
     for (double& v : power) v = std::sqrt(v);
@@ -65,6 +70,14 @@ std::vector<std::vector<double>> grid_section(const dataset::TruthGrid& grid, co
   return out;
 }
 
+std::vector<std::vector<double>> grid_section(const dataset::TruthGrid& grid, const dataset::TruthRecording& r, std::int64_t begin,
+                                              const std::vector<std::size_t>& windows, double noise_power) {
+  return oracle_spectra(grid, windows, noise_power, [&](std::size_t, std::size_t sample) {
+    const std::size_t i = std::size_t(begin) + sample;
+    return std::pair{double(r.speed_mm_s[i]), double(r.force_n[i])};
+  });
+}
+
 // What the model's input tells of a window (docs/evaluate.md, "The input floor"): the recorded action up
 // to the window's middle, where its action ends, and held there for the second half.
 std::size_t known_action_sample(std::size_t t, std::size_t i) { return std::min(i, t + dataset::kActionEnd); }
@@ -72,19 +85,10 @@ std::size_t known_action_sample(std::size_t t, std::size_t i) { return std::min(
 // The grid's spectrum along that action, at the oracle's ten points.
 std::vector<std::vector<double>> grid_input_section(const dataset::TruthGrid& grid, const SectionSignals& s,
                                                     const std::vector<std::size_t>& windows, double noise_power) {
-  std::vector<std::vector<double>> out;
-  for (std::size_t t : windows) {
-    std::vector<double> power(dataset::kTargetBins, 0.0);
-    for (std::size_t p = 0; p < kGridPoints; ++p) {
-      const std::size_t i = known_action_sample(t, t + 50 + 100 * p);
-      const auto at = grid_power_at(grid, s.speed[i], s.force[i]);
-      for (std::size_t k = 0; k < power.size(); ++k) power[k] += at[k] / double(kGridPoints);
-    }
-    for (double& v : power) v = std::sqrt(v);
-    add_sensor_noise(power, noise_power);
-    out.push_back(std::move(power));
-  }
-  return out;
+  return oracle_spectra(grid, windows, noise_power, [&](std::size_t t, std::size_t sample) {
+    const std::size_t i = known_action_sample(t, sample);
+    return std::pair{double(s.speed[i]), double(s.force[i])};
+  });
 }
 
 // The closed form along that action, one window at a time, blended every 100 samples as the grid's points.

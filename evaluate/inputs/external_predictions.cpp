@@ -194,9 +194,9 @@ ExternalPredictions read_external_predictions(const PredictionsInput& input, con
   const h5::File file = h5::File::open(input.path);
   const h5::Group root = file.root();
   h5::require_link_rule(root);  // before any lookup by name: an external link to a FIFO would hang it (review 5)
-  const std::string format = "/@" + std::string(kPredictionsFormatAttribute);
-  if (const std::string found = r.text(root, kPredictionsFormatAttribute, format); found != kPredictionsFormat)
-    throw r.error(format, "is '" + found.substr(0, 80) + "', expected '" + std::string(kPredictionsFormat) + "'",
+  const std::string format = "/@" + std::string(layout::kPredictionsFormatAttribute);
+  if (const std::string found = r.text(root, layout::kPredictionsFormatAttribute, format); found != layout::kPredictionsFormat)
+    throw r.error(format, "is '" + found.substr(0, 80) + "', expected '" + std::string(layout::kPredictionsFormat) + "'",
                   "Write the file as schemas/hdf5-layout.md (\"Predictions file\") lays it out");
   r.require_hash(root, "dataset_sha256", split.dataset_sha256, "dataset than " + split.dataset_path);
   r.require_hash(root, "split_sha256", split.manifest_sha256, "split than " + split.manifest_path);

@@ -14,11 +14,6 @@
 
 namespace haptex::evaluate {
 
-// The file's /@predictions_format. Not haptex_format: haptex never writes a predictions file, so
-// `--force` of a haptex command never replaces one (docs/architecture.md, "Formats").
-inline constexpr std::string_view kPredictionsFormatAttribute = "predictions_format";
-inline constexpr std::string_view kPredictionsFormat = "predictions/1";
-
 // `--predictions NAME=FILE` as given.
 struct PredictionsInput {
   std::string name, path;
