@@ -327,6 +327,15 @@ def require_plain_objects(f, path):
     while groups:
         group, depth = groups.pop()
         for name in group:
+            if isinstance(name, bytes):  # h5py hands over a name that is not UTF-8 as bytes, then refuses it back
+                try:
+                    name.decode("utf-8")
+                    bad = len(name)
+                except UnicodeDecodeError as e:
+                    bad = e.start
+                shown = printable(f"{group.name.rstrip('/')}/{name.decode('utf-8', 'surrogateescape')}")
+                raise HaptexFileError(f"{path}: {shown}: is not valid UTF-8 (byte {bad} of the name); write it in UTF-8, "
+                                      "as haptex names every object")
             member = f"{group.name.rstrip('/')}/{name}"
             link = group.get(name, getlink=True)
             if isinstance(link, (h5py.SoftLink, h5py.ExternalLink)):

@@ -224,6 +224,21 @@ TEST(PythonExamples, ADamagedHeapIsRefusedNotACrash) {
   EXPECT_FALSE(fs::exists(d.file("k.h5")));
 }
 
+// Review 32, F2: an object whose name is not UTF-8 ended the examples in h5py's UnicodeDecodeError
+// traceback; haptex refuses it naming the byte, and so does the package.
+TEST(PythonExamples, AnObjectNameThatIsNotUtf8IsRefusedNotATraceback) {
+  if (!python_has("h5py, numpy")) GTEST_SKIP() << "python3-h5py is not installed (make deps installs it)";
+  const Knn knn;
+  const TempDir d;
+  const std::string windows = d.file("w.h5");
+  fs::copy_file(knn.windows, windows);
+  ASSERT_EQ(run_python({"-c", "import sys, h5py; f = h5py.File(sys.argv[1], 'r+'); f.create_group(b'notes_caf\\xe9'); f.close()", windows}).exit_code, 0);
+  const SmallPipeline& p = small_pipeline();
+  expect_refusal(run_python({kExamples + "knn_baseline.py", p.dataset, p.split, windows, "-o", d.file("k.h5")}),
+                 {windows, "/notes_caf\\xe9: is not valid UTF-8 (byte 9"});
+  EXPECT_FALSE(fs::exists(d.file("k.h5")));
+}
+
 // Review 23, F5: the examples printed a file's attribute and the output's name as they were, so a
 // windows file whose format held ESC[2J cleared the screen through knn_baseline.py's error, where
 // haptex info prints it escaped. The package escapes as haptex does, on the same code points.
