@@ -160,7 +160,9 @@ void probe(int fd, const std::string& path, ProbeDepth depth, bool hdf5_has_it) 
   // Not opened is no verdict (review 31, F1: it was taken for one, and the file read unprobed).
   if (code == kProbeNotOpened && !hdf5_has_it) return;  // File::open's H5Fopen says why
   if (code == kProbeNotOpened)
-    throw input_error(path, "", "haptex-h5-probe, the separate program that reads each file first, could not open it while haptex's HDF5 had it open (replaced or changed meanwhile)",
+    throw input_error(path, "",
+                      "haptex-h5-probe, the separate program that reads each file first, could not open it while haptex's "
+                      "HDF5 had it open (replaced or changed meanwhile)",
                       "Run again once nothing writes or replaces the file");
   // Only a probe that read it all says the file can be read (review 31, F6: any other code was taken
   // for it). One that waited four times its time (a stalled disk) gives no answer: read as without it.

@@ -1,15 +1,17 @@
 """Damaged HDF5 files, read as haptex reads them (docs/architecture.md, "Damaged files"): libhdf5 1.10,
 which h5py uses too, crashes or loops on some damage with no error to catch (review 30, F2: a windows
 file with one wrong size in its global heap killed the examples). So each HDF5 file is first read by
-haptex-h5-probe, installed with the haptex binary, in a process of its own, through the descriptor
-h5py then opens. Without the probe (no haptex binary found), files are read unprobed."""
+haptex-h5-probe, installed with the haptex binary, in a process of its own: before h5py opens it, and
+again through h5py's own descriptor when that is another file (data.open_hdf5). Without the probe (no
+haptex binary found), files are read unprobed."""
 import glob
 import os
 import shutil
 import signal
 import subprocess
 
-_REFUSED, _NOT_OPENED = 1, 3  # tools/h5-probe/main.cpp's exit codes: 0 read, 1 HDF5 refused a read (place, finding, fix follow), 3 not opened
+# tools/h5-probe/main.cpp's exit codes: 0 read, 1 HDF5 refused a read (place, finding, fix follow), 3 not opened.
+_REFUSED, _NOT_OPENED = 1, 3
 _CRASHES = {signal.SIGSEGV, signal.SIGBUS, signal.SIGABRT, signal.SIGFPE, signal.SIGILL}
 
 
