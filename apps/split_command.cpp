@@ -49,13 +49,22 @@ class SplitCommand : public Command {
     refuse_output_among_inputs(output_, {dataset_});
     refuse_output_among_inputs(plots_folder(), {dataset_});
     json::check_replaceable_json(output_, force_, split::kManifestFormat);
-    const auto split_folder = [](const std::string& dir) { return is_haptex_folder(dir, "haptex split"); };
+    // The plots go with the manifest --force replaces only while it is there and their list names it
+    // back (review 33, F1: the plots of a manifest moved away, or another manifest's, went).
+    std::error_code ec;
+    const bool manifest_there = std::filesystem::is_regular_file(output_, ec);
+    const auto split_folder = [&](const std::string& dir) {
+      return manifest_there && is_haptex_folder(dir, "haptex split") && same_output_path(folder_owner(dir), output_);
+    };
     if (no_plots_ && force_)
       EarlierOutput::require_retirable(plots_folder(), split_folder, "the plot folder",
                                        "Move your files out of it (or the folder away), or run without --no-plots");
     // The plots go into a folder written whole (refused now, before any work, when it may not be replaced).
     std::optional<PartialDirectory> plots_dir;
-    if (!no_plots_) plots_dir.emplace(plots_folder(), FolderOptions{force_, "plot folder", "-o", "haptex split"});
+    if (!no_plots_) {
+      plots_dir.emplace(plots_folder(), FolderOptions{force_, "plot folder", "-o", "haptex split"});
+      plots_dir->belongs_to(output_);
+    }
     qa::require_sound_dataset(dataset_);
     const auto windows = split::read_dataset_windows(dataset_);
     const auto splits = split::search_split(windows, options_, dataset_);

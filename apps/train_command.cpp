@@ -24,7 +24,6 @@
 #include "core/text/utf8.hpp"
 #include "core/version.hpp"
 #include "dataset/format.hpp"
-#include "dataset/layout.hpp"
 #include "predict/model_file.hpp"
 #include "predict/train.hpp"
 
@@ -82,7 +81,7 @@ class TrainCommand : public Command {
     refuse_output_among_inputs(log_, input_.files());
     check_output_path(output_, force_);
     if (force_) h5::require_replaceable(output_, dataset::format_name(dataset::Kind::model));  // before the training, not after
-    const EarlierModel earlier = earlier_model();
+    const predict::TrainingLogRecord earlier = earlier_model();
     json::check_replaceable_json(log_, force_, predict::kTrainingLogFormat);
     refuse_another_models_log();
     options_.variant = per_material_ ? predict::Variant::per_material : predict::Variant::unified;
@@ -111,17 +110,13 @@ class TrainCommand : public Command {
                                 {"parameters", parameters(model)}, {"seconds", seconds}};
     PartialFile log_file(log_, force_, [](const std::string& p) { json::check_replaceable_json(p, true, predict::kTrainingLogFormat); });
     json::write_file(log, "training-log.schema.json", log_file);
-    model_file.root().set_attr(dataset::layout::kTrainingLogAttribute, relative_to_folder_of(log_, output_));
-    model_file.root().set_attr(dataset::layout::kTrainingLogSha256Attribute, sha256_file(log_file.path()));
-    // --force with --log elsewhere: the log beside the model it replaces describes that model, so it goes
-    // too; so does the log the replaced model names (written under --log), while it is that run's.
-    EarlierOutput earlier_log(default_log(), [this](const std::string& path) { return describes_this_model(path); });
+    predict::record_training_log(model_file, output_, {log_, sha256_file(log_file.path())});
+    // --force: the log the replaced model recorded (beside it, or elsewhere under --log) goes with it,
+    // while it is still those bytes and names that model back; a log the model did not record stays,
+    // whatever its name (review 33, F1: a log at the default name of a model moved away went).
     EarlierOutput recorded_log(earlier.log,
                                [&](const std::string& path) { return still_written(path, earlier.sha256) && describes_this_model(path); });
-    const bool recorded_elsewhere =
-        !earlier.log.empty() && !same_output_path(earlier.log, log_) && !same_output_path(earlier.log, default_log());
-    commit_together({&model_file, &log_file, force_ && !same_output_path(log_, default_log()) ? &earlier_log : nullptr,
-                     force_ && recorded_elsewhere ? &recorded_log : nullptr});
+    commit_together({&model_file, &log_file, force_ && !earlier.log.empty() && !same_output_path(earlier.log, log_) ? &recorded_log : nullptr});
     if (global.json)
       std::cout << log.dump(2) << "\n";
     else if (!global.quiet)
@@ -134,21 +129,10 @@ class TrainCommand : public Command {
 
   // The training log the model at output_ names (empty when it names none, or there is no such model),
   // and its SHA-256 as written.
-  struct EarlierModel {
-    std::string log, sha256;
-  };
-  EarlierModel earlier_model() const {
+  predict::TrainingLogRecord earlier_model() const {
     std::error_code ec;
     if (!force_ || !std::filesystem::is_regular_file(output_, ec)) return {};
-    try {
-      const h5::Group root = h5::File::open(output_).root();
-      const auto log = root.try_attr<std::string>(dataset::layout::kTrainingLogAttribute);
-      const auto sha256 = root.try_attr<std::string>(dataset::layout::kTrainingLogSha256Attribute);
-      if (!log || !sha256) return {};
-      return {resolved_beside(*log, output_), *sha256};
-    } catch (const Error&) {
-      return {};
-    }
+    return predict::recorded_training_log(output_).value_or(predict::TrainingLogRecord{});
   }
 
   // A training log haptex wrote, holding the bytes whose SHA-256 is `sha256`.

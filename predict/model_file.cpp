@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/naming.hpp"
+#include "core/output_set.hpp"
 #include "core/text/format.hpp"
 #include "core/text/utf8.hpp"
 #include "core/json/schema.hpp"
@@ -302,6 +303,24 @@ Model read_model(const std::string& path) {
   m.file = path;
   require_finite_outputs(m, path);
   return m;
+}
+
+void record_training_log(h5::AtomicFile& out, const std::string& model_path, const TrainingLogRecord& record) {
+  out.root().set_attr(layout::kTrainingLogAttribute, relative_to_folder_of(record.log, model_path));
+  out.root().set_attr(layout::kTrainingLogSha256Attribute, record.sha256);
+}
+
+std::optional<TrainingLogRecord> recorded_training_log(const std::string& path) {
+  try {
+    const h5::File file = dataset::open_checked(path, dataset::Kind::model);
+    const h5::Group root = file.root();
+    const auto log = root.try_attr<std::string>(layout::kTrainingLogAttribute);
+    const auto sha256 = root.try_attr<std::string>(layout::kTrainingLogSha256Attribute);
+    if (!log || !sha256) return std::nullopt;
+    return TrainingLogRecord{resolved_beside(*log, path), *sha256};
+  } catch (const Error&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace haptex::predict

@@ -87,6 +87,21 @@ bool holds_just(const std::string& folder, const std::map<std::string, std::stri
   return !ec && files == sheets.size();
 }
 
+// A folder at a default name goes with the file --force replaces only while that file is there and the
+// folder's list names it back (`owner`); contact sheets also only while they are the ones that file
+// recorded (`recorded`, read from it before it is replaced). Review 33, F1: the folders of a file moved
+// away, or of another file renamed into its place, went.
+bool companion_of(const std::string& dir, const std::string& output, bool output_there) {
+  return output_there && extraction_folder(dir) && same_output_path(folder_owner(dir), output);
+}
+
+bool sheets_of(const std::string& dir, const std::string& output, bool output_there, const RecordedSheets& recorded) {
+  if (!companion_of(dir, output, output_there)) return false;
+  for (const auto& [folder, sheets] : recorded)
+    if (same_output_path(folder, dir)) return holds_just(dir, sheets);
+  return false;
+}
+
 
 // One PNG (a contact sheet, a score chart) into a folder being built.
 void write_png(const PartialDirectory& folder, const std::string& name, const std::vector<std::uint8_t>& png) {
@@ -243,7 +258,11 @@ class Extraction {
     // The file and its folders appear together or not at all (a full disk while writing any of them, a
     // folder appearing at a folder's name). --force without sheets or --explain: folders an earlier
     // extraction wrote for the file replaced describe it, so they go too; anything else there stays.
-    EarlierOutput earlier_sheets(default_sheets_dir(output_), extraction_folder), earlier_explain(default_explain_dir(output_), extraction_folder);
+    std::error_code ec;
+    const bool output_there = fs::is_regular_file(output_, ec);
+    const RecordedSheets earlier_record = recorded_sheets(output_);
+    EarlierOutput earlier_sheets(default_sheets_dir(output_), [&](const std::string& dir) { return sheets_of(dir, output_, output_there, earlier_record); });
+    EarlierOutput earlier_explain(default_explain_dir(output_), [&](const std::string& dir) { return companion_of(dir, output_, output_there); });
     const bool retire = options_.overwrite;
     std::vector<StagedOutput*> outputs{&writer_.output(), explain_.get(), sheets_.get(),
                                        retire && !sheets_at_default_place(output_, options_) ? &earlier_sheets : nullptr,
@@ -253,7 +272,7 @@ class Extraction {
     // this file as theirs: not a copy's original, nor a merged file's shard (checked again as they go).
     std::vector<std::unique_ptr<EarlierOutput>> recorded;
     if (retire)
-      for (const auto& [folder, sheets] : recorded_sheets(output_)) {
+      for (const auto& [folder, sheets] : earlier_record) {
         if (same_output_path(folder, default_sheets_dir(output_)) || (sheets_ && same_output_path(folder, sheets_->final_path())) ||
             holds_an_input(folder))
           continue;
@@ -450,12 +469,17 @@ ExtractResult extract_presses(const std::vector<std::string>& inputs, const std:
   refuse_output_among_inputs(output, found);
   if (options.sheets) refuse_output_among_inputs(options.sheets_dir.empty() ? default_sheets_dir(output) : options.sheets_dir, found);
   if (options.explain) refuse_output_among_inputs(default_explain_dir(output), found);
-  if (options.overwrite && !sheets_at_default_place(output, options))
-    EarlierOutput::require_retirable(default_sheets_dir(output), extraction_folder, "the contact sheet folder",
-                                     "Move your files out of it (or the folder away), or write sheets again");
+  std::error_code ec;
+  const bool output_there = fs::is_regular_file(output, ec);
+  if (options.overwrite && !sheets_at_default_place(output, options)) {
+    const RecordedSheets recorded = recorded_sheets(output);
+    EarlierOutput::require_retirable(default_sheets_dir(output),
+                                     [&](const std::string& dir) { return sheets_of(dir, output, output_there, recorded); },
+                                     "the contact sheet folder", "Move your files out of it (or the folder away), or write sheets again");
+  }
   if (options.overwrite && !options.explain)
-    EarlierOutput::require_retirable(default_explain_dir(output), extraction_folder, "the score chart folder",
-                                     "Move your files out of it (or the folder away), or add --explain");
+    EarlierOutput::require_retirable(default_explain_dir(output), [&](const std::string& dir) { return companion_of(dir, output, output_there); },
+                                     "the score chart folder", "Move your files out of it (or the folder away), or add --explain");
   Extraction extraction(output, options, found);
   // Videos and image sequences are analysed a few at a time on as many threads, the next few while
   // the last are written, and written in their order, so the output is the same whatever the cores.

@@ -489,6 +489,36 @@ TEST(Force, SplitNeverReplacesAnotherCommandsFolder) {
 
 // --force --no-plots: the earlier split's plots describe the manifest replaced, so they go; a folder of
 // the user's of that name stays (issue 32, review 2).
+// Review 33, F1: --force took a companion at the default name that the output it replaced never wrote:
+// the log of a model moved away (its only record of training), the plots or sheets of a manifest or a
+// gelsight file moved away. A companion at the default name goes only while the output replaced is
+// there and names it back; else it stays, or --no-plots/--no-sheets is refused before any work.
+TEST(Force, ACompanionOfAnOutputMovedAwayStays) {
+  const SmallPipeline& p = small_pipeline();
+  const TempDir d;
+  std::vector<std::string> train = quick_train_args(p.dataset, p.split, d.file("m.h5"));
+  ASSERT_EQ(run_haptex(train).exit_code, 0);
+  const std::string log = file_bytes(d.file("m.training.json"));
+  fs::rename(d.file("m.h5"), d.file("m_v1.h5"));
+  train.insert(train.end(), {"--log", d.file("l.json"), "--force"});
+  ASSERT_EQ(run_haptex(train).exit_code, 0);
+  EXPECT_EQ(file_bytes(d.file("m.training.json")), log) << "m_v1.h5's log";
+
+  ASSERT_EQ(run_haptex({"split", p.dataset, "-o", d.file("s.json")}).exit_code, 0);
+  const std::string plots = file_bytes(d.file("s.plots/haptex-files.json"));
+  fs::rename(d.file("s.json"), d.file("s_v1.json"));
+  expect_refusal(run_haptex({"split", p.dataset, "-o", d.file("s.json"), "--force", "--no-plots"}), {d.file("s.plots"), "the plot folder"});
+  EXPECT_EQ(file_bytes(d.file("s.plots/haptex-files.json")), plots);
+
+  const std::string videos = (fs::path(p.recordings).parent_path() / "synth" / "gelsight" / "Woven 1").string();
+  ASSERT_EQ(run_haptex({"capture", "extract", videos, "-o", d.file("g.h5"), "-q"}).exit_code, 0);
+  const std::string sheets = file_bytes(d.file("g_sheets/haptex-files.json"));
+  fs::rename(d.file("g.h5"), d.file("g_v1.h5"));
+  expect_refusal(run_haptex({"capture", "extract", videos, "-o", d.file("g.h5"), "--force", "--no-sheets", "-q"}),
+                 {d.file("g_sheets"), "the contact sheet folder"});
+  EXPECT_EQ(file_bytes(d.file("g_sheets/haptex-files.json")), sheets);
+}
+
 TEST(Force, SplitWithoutPlotsTakesAwayTheEarlierOnes) {
   const SmallPipeline& p = small_pipeline();
   const TempDir d;
