@@ -4,8 +4,9 @@
 // standard output.
 // Exit code 0 when all was read, 1 when HDF5 refused a read (its place, finding and fix follow), 3 when
 // HDF5 could not open the file, 64 on a wrong command line; a signal when it crashed, SIGXCPU once it
-// used its processor time (HDF5 loops on some damage), SIGALRM when it waited four times as long. It starts itself again under AddressSanitizer's runtime when it
-// can; a caller that gets no output at all runs it again with HAPTEX_PROBE_AS_IS=1, without.
+// used its processor time (HDF5 loops on some damage), SIGALRM when it waited four times as long. Only
+// 0 says the file can be read. It starts itself again under AddressSanitizer's runtime when it can; a
+// caller that gets no output at all runs it again with HAPTEX_PROBE_AS_IS=1, without.
 #include <dlfcn.h>
 #include <limits.h>
 #include <sys/prctl.h>
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <csignal>
 #include <cstdint>
 #include <cstdlib>
@@ -97,7 +99,10 @@ extern "C" char* realpath(const char* __restrict name, char* __restrict resolved
   static const auto next = reinterpret_cast<Realpath>(dlsym(RTLD_NEXT, "realpath"));
   if (name == nullptr || probed_name == nullptr || std::strcmp(name, probed_name) != 0) return next(name, resolved);
   if (resolved == nullptr) return strdup(name);
-  if (std::strlen(name) >= PATH_MAX) return nullptr;
+  if (std::strlen(name) >= PATH_MAX) {
+    errno = ENAMETOOLONG;
+    return nullptr;
+  }
   return std::strcpy(resolved, name);
 }
 
